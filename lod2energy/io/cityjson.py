@@ -1,0 +1,531 @@
+"""CityJSON 1.0 / 1.1 / 2.0 and CityJSONSeq reading and writing, feature by feature.
+
+Reading splits a CityJSON file into features (a first-level CityObject with all its
+descendants, as CityJSONSeq does) with feature-local vertices, so every building is
+processed on its own. Whatever the model does not interpret (attributes, other
+properties, metadata, extensions, appearance, templates) is kept and written back.
+
+Bad input never raises out of :func:`read`: a file-level problem or a broken feature is
+yielded as a :class:`~lod2energy.model.FeatureError` and the other features go on.
+"""
+from __future__ import annotations
+
+import json
+import math
+import os
+from typing import Any, Iterable, Iterator, Mapping
+
+import numpy as np
+
+from lod2energy.errors import FormatNotSupportedError, InputError
+from lod2energy.model import (
+    MULTISOLID_TYPES, SOLID_TYPES, SURFACE_TYPES, Building, CityModel, CityObject, FeatureError,
+    Geometry, Shell, Solid, Surface, frozen_mapping,
+)
+
+SUPPORTED_VERSIONS = ("1.0", "1.1", "2.0")
+_GEOM_TYPES = SOLID_TYPES + MULTISOLID_TYPES + SURFACE_TYPES + (
+    "MultiPoint", "MultiLineString", "GeometryInstance")
+
+
+def normalise_version(v: Any) -> str:
+    """"1.0.3" -> "1.0"; raises FormatNotSupportedError for versions we cannot read."""
+    s = str(v) if v is not None else ""
+    parts = s.split(".")
+    short = ".".join(parts[:2]) if len(parts) >= 2 else s
+    if short not in SUPPORTED_VERSIONS:
+        raise FormatNotSupportedError(
+            f"CityJSON version {s!r} is not supported (supported: {', '.join(SUPPORTED_VERSIONS)})")
+    return short
+
+
+def _load_json_text(text: str, what: str) -> Any:
+    try:
+        return json.loads(text)
+    except json.JSONDecodeError as e:
+        raise InputError(f"{what} is not valid JSON: {e.msg} at line {e.lineno} column {e.colno}") from None
+
+
+def _read_text(path: str) -> str:
+    try:
+        with open(path, "rb") as f:
+            data = f.read()
+    except OSError as e:
+        raise InputError(f"cannot read {path}: {e.strerror}") from None
+    try:
+        return data.decode("utf-8-sig")
+    except UnicodeDecodeError as e:
+        raise InputError(f"{path} is not UTF-8 text (byte {e.start})") from None
+
+
+def _transform_vertices(verts: Any, transform: Mapping | None, what: str) -> np.ndarray:
+    if verts is None:
+        raise InputError(f"{what} has no 'vertices'")
+    if not isinstance(verts, list):
+        raise InputError(f"{what}: 'vertices' is not an array")
+    if len(verts) == 0:
+        return np.zeros((0, 3))
+    try:
+        v = np.array(verts, dtype=np.float64)
+    except (ValueError, TypeError):
+        raise InputError(f"{what}: 'vertices' must be an array of [x, y, z] numbers") from None
+    if v.ndim != 2 or v.shape[1] != 3:
+        raise InputError(f"{what}: 'vertices' must be an array of [x, y, z] numbers")
+    if transform:
+        try:
+            scale = np.asarray(transform["scale"], dtype=np.float64).reshape(3)
+            translate = np.asarray(transform["translate"], dtype=np.float64).reshape(3)
+        except (KeyError, ValueError, TypeError):
+            raise InputError(f"{what}: 'transform' needs 'scale' and 'translate' of 3 numbers") from None
+        v = v * scale + translate
+    return v
+
+
+def _lod_string(lod: Any) -> str | None:
+    if lod is None:
+        return None
+    if isinstance(lod, bool):
+        return None
+    if isinstance(lod, (int, float)):
+        if isinstance(lod, float) and not math.isfinite(lod):
+            return None
+        return str(int(lod)) if float(lod).is_integer() and not isinstance(lod, float) else str(lod)
+    s = str(lod).strip()
+    return s or None
+
+
+class _Collector:
+    """Collects the vertex indices a feature uses, then remaps them to 0..n-1."""
+
+    def __init__(self, n_vertices: int):
+        self.n = n_vertices
+        self.used: list[int] = []
+
+    def ring(self, ring: Any, where: str) -> list[int]:
+        if not isinstance(ring, list):
+            raise InputError(f"{where}: a ring must be an array of vertex indices")
+        for i in ring:
+            if not isinstance(i, int) or isinstance(i, bool):
+                raise InputError(f"{where}: vertex index {i!r} is not an integer")
+            if i < 0 or i >= self.n:
+                raise InputError(f"{where}: vertex index {i} out of range (file has {self.n} vertices)")
+        self.used.extend(ring)
+        return ring
+
+
+def _semantic_values(sem: Mapping | None, gtype: str) -> tuple[tuple, Any]:
+    if not sem or not isinstance(sem, Mapping):
+        return (), None
+    surfaces = sem.get("surfaces")
+    values = sem.get("values")
+    if not isinstance(surfaces, list):
+        return (), None
+    return tuple(frozen_mapping(s) if isinstance(s, Mapping) else frozen_mapping({"type": str(s)})
+                 for s in surfaces), values
+
+
+def _sem_at(values: Any, *idx: int) -> int | None:
+    v = values
+    for i in idx:
+        if not isinstance(v, list) or i >= len(v):
+            return None
+        v = v[i]
+    return v if isinstance(v, int) and not isinstance(v, bool) else None
+
+
+def _parse_surfaces(surfs: Any, col: _Collector, where: str, values: Any, prefix: tuple) -> tuple[Surface, ...]:
+    if not isinstance(surfs, list):
+        raise InputError(f"{where}: expected an array of surfaces")
+    out = []
+    for fi, s in enumerate(surfs):
+        if not isinstance(s, list):
+            raise InputError(f"{where}|face={fi}: a surface must be an array of rings")
+        rings = [col.ring(r, f"{where}|face={fi}") for r in s]
+        out.append(Surface.from_lists(rings, _sem_at(values, *prefix, fi)))
+    return tuple(out)
+
+
+def _parse_geometry(g: Any, col: _Collector, where: str) -> Geometry:
+    if not isinstance(g, Mapping):
+        raise InputError(f"{where}: geometry is not an object")
+    gtype = g.get("type")
+    if gtype not in _GEOM_TYPES:
+        raise InputError(f"{where}: unknown geometry type {gtype!r}")
+    if gtype == "GeometryInstance":
+        b = g.get("boundaries")
+        if not isinstance(b, list) or len(b) != 1:
+            raise InputError(f"{where}: GeometryInstance needs 'boundaries' with one vertex index")
+        col.ring(b, where)
+        return Geometry(gtype, None, raw=frozen_mapping(g))
+    if "lod" not in g:
+        raise InputError(f"{where}: geometry has no 'lod'")
+    lod = _lod_string(g.get("lod"))
+    if lod is None:
+        raise InputError(f"{where}: geometry 'lod' is {g.get('lod')!r}, not a level of detail")
+    b = g.get("boundaries")
+    if b is None:
+        raise InputError(f"{where}: geometry has no 'boundaries'")
+    if not isinstance(b, list):
+        raise InputError(f"{where}: 'boundaries' is not an array")
+    if gtype in ("MultiPoint", "MultiLineString"):
+        if gtype == "MultiPoint":
+            col.ring(b, where)
+        else:
+            for r in b:
+                col.ring(r, where)
+        return Geometry(gtype, lod, raw=frozen_mapping(g))
+    sem_surfaces, values = _semantic_values(g.get("semantics"), gtype)
+    if gtype in SURFACE_TYPES:
+        shell = Shell(_parse_surfaces(b, col, where, values, ()))
+        solids = (Solid((shell,)),)
+    elif gtype == "Solid":
+        shells = []
+        for hi, sh in enumerate(b):
+            shells.append(Shell(_parse_surfaces(sh, col, f"{where}|shell={hi}", values, (hi,))))
+        solids = (Solid(tuple(shells)),)
+    else:
+        solids_l = []
+        for si, so in enumerate(b):
+            if not isinstance(so, list):
+                raise InputError(f"{where}|solid={si}: a solid must be an array of shells")
+            shells = []
+            for hi, sh in enumerate(so):
+                shells.append(Shell(_parse_surfaces(sh, col, f"{where}|solid={si}|shell={hi}", values, (si, hi))))
+            solids_l.append(Solid(tuple(shells)))
+        solids = tuple(solids_l)
+    return Geometry(gtype, lod, solids, sem_surfaces)
+
+
+def _remap_geometry(g: Geometry, lut: np.ndarray) -> Geometry:
+    if g.raw is not None:
+        raw = dict(g.raw)
+        raw["boundaries"] = _remap_nested(raw["boundaries"], lut)
+        return Geometry(g.type, g.lod, (), g.semantic_surfaces, frozen_mapping(raw))
+    solids = tuple(Solid(tuple(Shell(tuple(Surface(tuple(lut[r] for r in s.rings), s.semantic)
+                                             for s in sh.surfaces)) for sh in so.shells))
+                   for so in g.solids)
+    for so in solids:
+        for sh in so.shells:
+            for s in sh.surfaces:
+                for r in s.rings:
+                    r.setflags(write=False)
+    return Geometry(g.type, g.lod, solids, g.semantic_surfaces)
+
+
+def _remap_nested(x: Any, lut: np.ndarray) -> Any:
+    if isinstance(x, list):
+        return [_remap_nested(i, lut) for i in x]
+    return int(lut[x])
+
+
+def _feature_ids(cos: Mapping[str, Any]) -> list[list[str]]:
+    """Group CityObject ids into features: each first-level object with its descendants."""
+    groups = []
+    for oid, co in cos.items():
+        if not isinstance(co, Mapping):
+            continue
+        parents = co.get("parents") or []
+        if parents and any(p in cos for p in parents):
+            continue
+        members = [oid]
+        seen = {oid}
+        stack = [oid]
+        while stack:
+            cur = cos.get(stack.pop())
+            if not isinstance(cur, Mapping):
+                continue
+            for ch in cur.get("children") or []:
+                if ch in cos and ch not in seen:
+                    seen.add(ch)
+                    members.append(ch)
+                    stack.append(ch)
+        groups.append(members)
+    return groups
+
+
+def build_feature(root_id: str, ids: list[str], cos: Mapping[str, Any], vertices: np.ndarray) -> Building:
+    """Turn the CityObjects ``ids`` (root first) into a :class:`Building` with local vertices.
+
+    Raises
+    ------
+    InputError
+        For a broken geometry, a vertex index out of range or a non-finite coordinate.
+    """
+    col = _Collector(len(vertices))
+    objs = []
+    for oid in ids:
+        co = cos[oid]
+        if not isinstance(co, Mapping):
+            raise InputError(f"coid={oid}: CityObject is not a JSON object")
+        otype = co.get("type")
+        if not isinstance(otype, str):
+            raise InputError(f"coid={oid}: CityObject has no 'type'")
+        geoms_raw = co.get("geometry") or []
+        if not isinstance(geoms_raw, list):
+            raise InputError(f"coid={oid}: 'geometry' is not an array")
+        geoms = tuple(_parse_geometry(g, col, f"coid={oid}|geom={gi}") for gi, g in enumerate(geoms_raw))
+        extra = {k: v for k, v in co.items()
+                 if k not in ("type", "geometry", "attributes", "parents", "children")}
+        objs.append(CityObject(oid, otype, geoms, frozen_mapping(co.get("attributes") or {}),
+                               tuple(co.get("parents") or ()), tuple(co.get("children") or ()),
+                               frozen_mapping(extra)))
+    used = np.unique(np.asarray(col.used, dtype=np.intp)) if col.used else np.zeros(0, np.intp)
+    local = vertices[used] if len(used) else np.zeros((0, 3))
+    if local.size and not np.isfinite(local).all():
+        bad = used[~np.isfinite(local).all(axis=1)][:3].tolist()
+        raise InputError(f"coid={root_id}: non-finite (NaN/inf) coordinates at vertex {bad}")
+    lut = np.full(len(vertices), -1, dtype=np.intp)
+    lut[used] = np.arange(len(used))
+    objs = [CityObject(o.id, o.type, tuple(_remap_geometry(g, lut) for g in o.geometries),
+                       o.attributes, o.parents, o.children, o.extra) for o in objs]
+    return Building(root_id, objs[0].type, local, tuple(objs))
+
+
+def _header_from(doc: Mapping[str, Any], path: str, fmt: str) -> CityModel:
+    version = normalise_version(doc.get("version"))
+    known = {"type", "version", "CityObjects", "vertices", "transform", "metadata", "extensions",
+             "appearance", "geometry-templates"}
+    return CityModel(
+        version=version,
+        transform=frozen_mapping(doc["transform"]) if isinstance(doc.get("transform"), Mapping) else None,
+        metadata=frozen_mapping(doc.get("metadata") if isinstance(doc.get("metadata"), Mapping) else {}),
+        extensions=frozen_mapping(doc.get("extensions") if isinstance(doc.get("extensions"), Mapping) else {}),
+        appearance=doc.get("appearance"),
+        geometry_templates=doc.get("geometry-templates"),
+        extra=frozen_mapping({k: v for k, v in doc.items() if k not in known}),
+        source=path, format=fmt,
+    )
+
+
+def _features_of_document(doc: Mapping[str, Any], transform: Mapping | None,
+                          what: str) -> Iterator[Building | FeatureError]:
+    cos = doc.get("CityObjects")
+    if not isinstance(cos, Mapping):
+        yield FeatureError(None, 901, f"{what} has no 'CityObjects' object")
+        return
+    try:
+        verts = _transform_vertices(doc.get("vertices"), transform, what)
+    except InputError as e:
+        yield FeatureError(None, 901, str(e))
+        return
+    for ids in _feature_ids(cos):
+        root = ids[0]
+        rtype = cos[root].get("type", "") if isinstance(cos[root], Mapping) else ""
+        try:
+            yield build_feature(root, ids, cos, verts)
+        except InputError as e:
+            yield FeatureError(root, e.code, str(e), str(rtype))
+
+
+def is_cityjsonseq(path: str) -> bool:
+    p = path.lower()
+    return p.endswith(".jsonl") or p.endswith(".cjseq") or p.endswith(".city.jsonl")
+
+
+def read(path: str) -> tuple[CityModel | None, Iterator[Building | FeatureError]]:
+    """Open a CityJSON or CityJSONSeq file.
+
+    Returns
+    -------
+    model : CityModel or None
+        File-level data; None when the file cannot be used at all (then the iterator
+        yields one file-level :class:`FeatureError`).
+    features : iterator of Building or FeatureError
+        Streamed: CityJSONSeq is read line by line.
+    """
+    if is_cityjsonseq(path):
+        return _read_seq(path)
+    try:
+        doc = _load_json_text(_read_text(path), path)
+        if not isinstance(doc, Mapping):
+            raise InputError(f"{path}: the JSON root is not an object")
+        if doc.get("type") != "CityJSON":
+            raise FormatNotSupportedError(f"{path}: 'type' is {doc.get('type')!r}, not 'CityJSON'")
+        model = _header_from(doc, path, "CityJSON")
+    except InputError as e:
+        return None, iter([FeatureError(None, e.code, str(e))])
+    return model, _features_of_document(doc, model.transform, path)
+
+
+def _read_seq(path: str):
+    try:
+        f = open(path, "rb")
+    except OSError as e:
+        return None, iter([FeatureError(None, 901, f"cannot read {path}: {e.strerror}")])
+    first = f.readline()
+    try:
+        try:
+            text = first.decode("utf-8-sig")
+        except UnicodeDecodeError:
+            raise InputError(f"{path}: first line is not UTF-8") from None
+        if not text.strip():
+            raise InputError(f"{path} is empty")
+        doc = _load_json_text(text, f"{path} line 1")
+        if not isinstance(doc, Mapping) or doc.get("type") != "CityJSON":
+            raise InputError(f"{path} line 1: the first line of a CityJSONSeq must be a 'CityJSON' object")
+        model = _header_from(doc, path, "CityJSONSeq")
+        if model.transform is None:
+            raise InputError(f"{path} line 1: CityJSONSeq needs a 'transform' in its first line")
+    except InputError as e:
+        f.close()
+        return None, iter([FeatureError(None, e.code, str(e))])
+
+    def gen():
+        with f:
+            for lineno, raw in enumerate(f, start=2):
+                if not raw.strip():
+                    continue
+                try:
+                    line = _load_json_text(raw.decode("utf-8"), f"{path} line {lineno}")
+                except (InputError, UnicodeDecodeError) as e:
+                    yield FeatureError(f"line {lineno}", 901, str(e))
+                    continue
+                if not isinstance(line, Mapping) or line.get("type") != "CityJSONFeature":
+                    yield FeatureError(f"line {lineno}", 901, f"{path} line {lineno}: not a CityJSONFeature")
+                    continue
+                yield from _features_of_document(line, model.transform, f"{path} line {lineno}")
+    return model, gen()
+
+
+# ----------------------------------------------------------------------------- writing
+
+def _geometry_json(g: Geometry, offset: int) -> dict:
+    if g.raw is not None:
+        d = dict(g.raw)
+        d["boundaries"] = _offset_nested(d["boundaries"], offset)
+        return d
+
+    def surf(s: Surface):
+        return [(r + offset).tolist() for r in s.rings]
+
+    out: dict[str, Any] = {"type": g.type, "lod": g.lod}
+    if g.type in SURFACE_TYPES:
+        shell = g.solids[0].shells[0] if g.solids else Shell(())
+        out["boundaries"] = [surf(s) for s in shell.surfaces]
+        values: Any = [s.semantic for s in shell.surfaces]
+    elif g.type == "Solid":
+        so = g.solids[0] if g.solids else Solid(())
+        out["boundaries"] = [[surf(s) for s in sh.surfaces] for sh in so.shells]
+        values = [[s.semantic for s in sh.surfaces] for sh in so.shells]
+    else:
+        out["boundaries"] = [[[surf(s) for s in sh.surfaces] for sh in so.shells] for so in g.solids]
+        values = [[[s.semantic for s in sh.surfaces] for sh in so.shells] for so in g.solids]
+    if g.semantic_surfaces:
+        out["semantics"] = {"surfaces": [dict(s) for s in g.semantic_surfaces], "values": values}
+    return out
+
+
+def _offset_nested(x: Any, offset: int) -> Any:
+    if isinstance(x, list):
+        return [_offset_nested(i, offset) for i in x]
+    return int(x) + offset
+
+
+def _plain(x: Any) -> Any:
+    """Deep-convert mapping proxies (and tuples) into JSON-serialisable objects."""
+    if isinstance(x, Mapping):
+        return {k: _plain(v) for k, v in x.items()}
+    if isinstance(x, (list, tuple)):
+        return [_plain(v) for v in x]
+    if isinstance(x, np.generic):
+        return x.item()
+    return x
+
+
+def cityobject_json(o: CityObject, offset: int, version: str) -> dict:
+    d: dict[str, Any] = {"type": o.type}
+    if o.attributes:
+        d["attributes"] = _plain(o.attributes)
+    d.update(_plain(o.extra))
+    if o.parents:
+        d["parents"] = list(o.parents)
+    if o.children:
+        d["children"] = list(o.children)
+    geoms = [_geometry_json(g, offset) for g in o.geometries]
+    if geoms or version != "1.0":
+        d["geometry"] = geoms
+    else:
+        d["geometry"] = []
+    return d
+
+
+def _quantise(vertices: np.ndarray, transform: Mapping) -> list:
+    scale = np.asarray(transform["scale"], dtype=np.float64)
+    translate = np.asarray(transform["translate"], dtype=np.float64)
+    q = np.rint((vertices - translate) / scale).astype(np.int64)
+    return q.tolist()
+
+
+def default_transform(vertices: np.ndarray, scale: float = 0.001) -> dict:
+    lo = vertices.min(axis=0) if len(vertices) else np.zeros(3)
+    return {"scale": [scale] * 3, "translate": [float(round(x, 3)) for x in lo]}
+
+
+def _header_json(model: CityModel, version: str) -> dict:
+    d: dict[str, Any] = {"type": "CityJSON", "version": version}
+    d.update(_plain(model.extra))
+    if model.metadata:
+        d["metadata"] = _plain(model.metadata)
+    if model.extensions:
+        d["extensions"] = _plain(model.extensions)
+    if model.appearance:
+        d["appearance"] = _plain(model.appearance)
+    if model.geometry_templates:
+        d["geometry-templates"] = _plain(model.geometry_templates)
+    return d
+
+
+def _transform_for(model: CityModel, buildings: list[Building]) -> dict:
+    if model.transform:
+        return _plain(model.transform)
+    allv = [b.vertices for b in buildings if len(b.vertices)]
+    return default_transform(np.vstack(allv) if allv else np.zeros((0, 3)))
+
+
+def to_document(model: CityModel, buildings: Iterable[Building], version: str | None = None) -> dict:
+    """A whole CityJSON document (dict) from the model and its features."""
+    version = version or model.version
+    buildings = list(buildings)
+    doc = _header_json(model, version)
+    transform = _transform_for(model, buildings)
+    doc["transform"] = transform
+    cos: dict[str, Any] = {}
+    verts: list = []
+    for b in buildings:
+        off = len(verts)
+        verts.extend(_quantise(b.vertices, transform))
+        for o in b.objects:
+            cos[o.id] = cityobject_json(o, off, version)
+    doc["CityObjects"] = cos
+    doc["vertices"] = verts
+    return doc
+
+
+def feature_document(b: Building, transform: Mapping, version: str) -> dict:
+    """One CityJSONFeature (dict) for ``b``."""
+    return {"type": "CityJSONFeature", "id": b.id,
+            "CityObjects": {o.id: cityobject_json(o, 0, version) for o in b.objects},
+            "vertices": _quantise(b.vertices, transform)}
+
+
+def write(path: str, model: CityModel, buildings: Iterable[Building], version: str | None = None) -> None:
+    """Write CityJSON (``.json``) or CityJSONSeq (``.jsonl``), chosen by the suffix."""
+    version = version or model.version
+    tmp = path + ".part"
+    if is_cityjsonseq(path):
+        buildings = list(buildings)
+        header = _header_json(model, version)
+        transform = _transform_for(model, buildings)
+        header["transform"] = transform
+        header["CityObjects"] = {}
+        header["vertices"] = []
+        with open(tmp, "w", encoding="utf-8") as f:
+            f.write(json.dumps(header, separators=(",", ":"), ensure_ascii=False) + "\n")
+            for b in buildings:
+                f.write(json.dumps(feature_document(b, transform, version), separators=(",", ":"),
+                                   ensure_ascii=False) + "\n")
+    else:
+        doc = to_document(model, buildings, version)
+        with open(tmp, "w", encoding="utf-8") as f:
+            json.dump(doc, f, separators=(",", ":"), ensure_ascii=False)
+    os.replace(tmp, path)

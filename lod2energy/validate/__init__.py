@@ -1,0 +1,1 @@
+"""Validation: val3dity-grade geometry checks, defect codes, reports, energy compliance."""
