@@ -1,0 +1,332 @@
+"""Face-adjacency graph of a building: defect detection features in PyTorch Geometric's layout.
+
+A node per face with the feature vector
+
+    x_i = [area, n_x, n_y, n_z, h, degenerate, planarity, n_boundary_edges, n_nonmanifold_edges, degree]
+
+and an edge per pair of faces sharing a mesh edge with ``[cos dihedral, boundary flag,
+non-manifold flag]``. Mesh edges are the consecutive vertex pairs of every ring (inner rings
+included) after snapping vertices closer than ``snap_tol``; the incidence ``c(e)`` of a mesh
+edge is the number of ring edges on it: ``N_b = |c(e) = 1|`` (open boundary),
+``N_nm = |c(e) > 2|`` (non-manifold).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Sequence
+
+import numpy as np
+from scipy.spatial import cKDTree
+
+from lod2energy.config import DEFAULT, Tolerances
+from lod2energy.model import Building, Surface
+
+FEATURE_NAMES = ("area", "n_x", "n_y", "n_z", "h", "degenerate", "planarity",
+                 "n_boundary_edges", "n_nonmanifold_edges", "degree")
+EDGE_FEATURE_NAMES = ("cos_dihedral", "boundary", "nonmanifold")
+
+
+def snap_ids(vertices: np.ndarray, snap_tol: float) -> np.ndarray:
+    """Canonical vertex id per vertex: vertices closer than ``snap_tol`` share one id.
+
+    Parameters
+    ----------
+    vertices : (n, 3) float
+    snap_tol : float, m
+
+    Returns
+    -------
+    (n,) int
+        The smallest index of each vertex's cluster (transitively merged).
+    """
+    n = len(vertices)
+    ids = np.arange(n)
+    if n < 2 or snap_tol <= 0:
+        return ids
+    pairs = cKDTree(vertices).query_pairs(snap_tol, output_type="ndarray")
+    if len(pairs) == 0:
+        return ids
+    # union-find by repeated min-label propagation (few rounds for tiny clusters)
+    a, b = pairs[:, 0], pairs[:, 1]
+    while True:
+        la, lb = ids[a], ids[b]
+        m = np.minimum(la, lb)
+        changed = (la != m) | (lb != m)
+        if not changed.any():
+            break
+        np.minimum.at(ids, a, m)
+        np.minimum.at(ids, b, m)
+        ids = ids[ids]
+    return ids
+
+
+def newell(points: np.ndarray) -> np.ndarray:
+    """Newell vector of a ring: direction = normal, length = 2 x area.
+
+    Parameters
+    ----------
+    points : (k, 3) float
+
+    Returns
+    -------
+    (3,) float
+    """
+    p = points - points.mean(axis=0)
+    q = np.roll(p, -1, axis=0)
+    return np.array([
+        np.sum((p[:, 1] - q[:, 1]) * (p[:, 2] + q[:, 2])),
+        np.sum((p[:, 2] - q[:, 2]) * (p[:, 0] + q[:, 0])),
+        np.sum((p[:, 0] - q[:, 0]) * (p[:, 1] + q[:, 1])),
+    ])
+
+
+@dataclass(frozen=True, eq=False)
+class FaceGraph:
+    """Face-adjacency graph (arrays in PyTorch Geometric's layout).
+
+    Attributes
+    ----------
+    x : (N, 10) float
+        Node features, see ``FEATURE_NAMES``; area in m2, planarity deviation in m.
+    edge_index : (2, E) int
+        Both directions of every adjacency (PyG convention for undirected graphs).
+    edge_attr : (E, 3) float
+        ``[cos dihedral, boundary flag, non-manifold flag]`` per directed edge.
+    consistent : (E,) bool
+        The two faces run through their shared mesh edge in opposite directions
+        (coherent orientation).
+    mesh_edges : (M, 2) int
+        Undirected mesh edges as canonical vertex-id pairs.
+    incidence : (M,) int
+        ``c(e)`` per mesh edge.
+    face_ids : tuple
+        One ``(object_id, geom_index, solid_index, shell_index, face_index)`` per node.
+    """
+
+    x: np.ndarray
+    edge_index: np.ndarray
+    edge_attr: np.ndarray
+    consistent: np.ndarray
+    mesh_edges: np.ndarray
+    incidence: np.ndarray
+    face_ids: tuple
+
+    @property
+    def n_faces(self) -> int:
+        return len(self.x)
+
+    @property
+    def n_boundary(self) -> int:
+        """N_b: mesh edges used by exactly one face ring."""
+        return int(np.count_nonzero(self.incidence == 1))
+
+    @property
+    def n_nonmanifold(self) -> int:
+        """N_nm: mesh edges used by more than two face rings."""
+        return int(np.count_nonzero(self.incidence > 2))
+
+    @property
+    def n_inconsistent(self) -> int:
+        """Undirected adjacencies whose faces are oriented incoherently."""
+        return int(np.count_nonzero(~self.consistent)) // 2
+
+    @property
+    def status(self) -> str:
+        """"non-manifold", "open" or "watertight"."""
+        if self.n_nonmanifold:
+            return "non-manifold"
+        if self.n_boundary:
+            return "open"
+        return "watertight"
+
+    def summary(self) -> dict:
+        return {"faces": self.n_faces, "adjacencies": int(self.edge_index.shape[1]) // 2,
+                "mesh_edges": int(len(self.incidence)), "N_b": self.n_boundary,
+                "N_nm": self.n_nonmanifold, "inconsistent_adjacencies": self.n_inconsistent,
+                "status": self.status}
+
+    def to_pyg(self):
+        """A ``torch_geometric.data.Data`` (needs the optional ``pyg`` extra)."""
+        try:
+            import torch
+            from torch_geometric.data import Data
+        except ImportError as e:  # pragma: no cover - optional extra
+            raise ImportError("to_pyg() needs torch and torch_geometric: pip install 'lod2energy[pyg]'") from e
+        return Data(x=torch.as_tensor(self.x, dtype=torch.float32),
+                    edge_index=torch.as_tensor(self.edge_index, dtype=torch.long),
+                    edge_attr=torch.as_tensor(self.edge_attr, dtype=torch.float32))
+
+
+def _empty_graph(face_ids=()) -> FaceGraph:
+    return FaceGraph(np.zeros((len(face_ids), 10)), np.zeros((2, 0), np.intp), np.zeros((0, 3)),
+                     np.zeros(0, bool), np.zeros((0, 2), np.intp), np.zeros(0, np.intp), tuple(face_ids))
+
+
+def face_graph(vertices: np.ndarray, surfaces: Sequence[Surface], tol: Tolerances = DEFAULT,
+               z_range: tuple[float, float] | None = None, face_ids: Sequence | None = None,
+               shell_of_face: np.ndarray | None = None) -> FaceGraph:
+    """Build the face-adjacency graph of a set of polygons.
+
+    Parameters
+    ----------
+    vertices : (n, 3) float
+        Coordinates, m.
+    surfaces : sequence of Surface
+        The faces (rings index ``vertices``).
+    tol : Tolerances
+        ``snap_tol`` merges vertices; ``sliver_area`` sets the degenerate flag.
+    z_range : (z_min, z_max), optional
+        Extent used to normalise centroid heights (default: the faces' own extent).
+    face_ids : sequence, optional
+        Identifier per face (default ``range(len(surfaces))``).
+    shell_of_face : (N,) int, optional
+        Faces of different shells never share mesh edges (BuildingParts stay apart).
+    """
+    nf = len(surfaces)
+    face_ids = tuple(face_ids) if face_ids is not None else tuple(range(nf))
+    if nf == 0:
+        return _empty_graph(face_ids)
+    V = np.asarray(vertices, dtype=np.float64)
+    canon = snap_ids(V, tol.snap_tol) if len(V) else np.zeros(0, np.intp)
+    shell_of_face = np.zeros(nf, np.intp) if shell_of_face is None else np.asarray(shell_of_face)
+
+    # flatten every ring: element arrays (vertex id, ring id), ring arrays (face, is_outer)
+    rings, ring_face, ring_outer = [], [], []
+    for fi, s in enumerate(surfaces):
+        for ri, ring in enumerate(s.rings):
+            rings.append(ring)
+            ring_face.append(fi)
+            ring_outer.append(ri == 0)
+    ring_face = np.asarray(ring_face, np.intp)
+    ring_outer = np.asarray(ring_outer, bool)
+    lens = np.fromiter((len(r) for r in rings), np.intp, len(rings))
+    flat = canon[np.concatenate(rings)] if lens.sum() else np.zeros(0, np.intp)
+    rid = np.repeat(np.arange(len(rings)), lens)
+    # drop consecutive repeats (cyclically) after snapping
+    starts = np.cumsum(lens) - lens
+    pos = np.arange(len(flat)) - starts[rid]
+    prev = np.where(pos == 0, starts[rid] + lens[rid] - 1, np.arange(len(flat)) - 1)
+    keep = flat != flat[prev] if len(flat) else np.zeros(0, bool)
+    flat, rid = flat[keep], rid[keep]
+    lens = np.bincount(rid, minlength=len(rings))
+    starts = np.cumsum(lens) - lens
+    nxt = np.arange(len(flat)) + 1
+    last = starts + lens - 1
+    nxt[last[lens > 0]] = starts[lens > 0]
+    # Newell vectors per ring (relative to the ring's mean for precision)
+    P = V[flat] if len(flat) else np.zeros((0, 3))
+    cnt = np.maximum(lens, 1)[:, None]
+    mean = np.stack([np.bincount(rid, P[:, k], minlength=len(rings)) for k in range(3)], axis=1) / cnt
+    p = P - mean[rid]
+    q = p[nxt] if len(p) else p
+    comp = np.stack([(p[:, 1] - q[:, 1]) * (p[:, 2] + q[:, 2]),
+                     (p[:, 2] - q[:, 2]) * (p[:, 0] + q[:, 0]),
+                     (p[:, 0] - q[:, 0]) * (p[:, 1] + q[:, 1])], axis=1)
+    nring = np.stack([np.bincount(rid, comp[:, k], minlength=len(rings)) for k in range(3)], axis=1)
+    nring[lens < 2] = 0.0
+    outer_n = np.zeros((nf, 3))
+    outer_n[ring_face[ring_outer]] = nring[ring_outer]
+    holes = ~ring_outer
+    nvec = outer_n.copy()
+    if holes.any():
+        sgn = np.sign(np.einsum("ij,ij->i", nring[holes], outer_n[ring_face[holes]]))
+        sgn[sgn == 0] = 1.0
+        np.add.at(nvec, ring_face[holes], -sgn[:, None] * nring[holes])
+    areas = 0.5 * np.linalg.norm(nvec, axis=1)
+    normals = np.divide(nvec, (2 * areas)[:, None], out=np.zeros_like(nvec), where=areas[:, None] > 0)
+    outer_idx = np.flatnonzero(ring_outer)
+    centroid_z = np.zeros(nf)
+    centroid_z[ring_face[outer_idx]] = mean[outer_idx, 2]
+    dist = np.abs(np.einsum("ij,ij->i", p, normals[ring_face[rid]])) if len(p) else np.zeros(0)
+    ring_dev = np.zeros(len(rings))
+    np.maximum.at(ring_dev, rid, dist)
+    planarity = np.zeros(nf)
+    planarity[ring_face[outer_idx]] = ring_dev[outer_idx]
+    distinct = np.zeros(nf, np.intp)
+    distinct[ring_face[outer_idx]] = lens[outer_idx]
+    degenerate = ((distinct < 3) | (areas <= tol.sliver_area)).astype(float)
+    src, dst, ef = flat, flat[nxt] if len(flat) else flat, ring_face[rid]
+    if z_range is None:
+        z_range = (float(centroid_z.min()), float(centroid_z.max()))
+    zmin, zmax = z_range
+    h = (centroid_z - zmin) / (zmax - zmin) if zmax > zmin else np.zeros(nf)
+
+    if len(src) == 0:
+        g = _empty_graph(face_ids)
+        x = np.column_stack([areas, normals, h, degenerate, planarity, np.zeros((nf, 3))])
+        return FaceGraph(x, g.edge_index, g.edge_attr, g.consistent, g.mesh_edges, g.incidence, face_ids)
+
+    keep = src != dst
+    src, dst, ef = src[keep], dst[keep], ef[keep]
+    lo, hi = np.minimum(src, dst), np.maximum(src, dst)
+    nv = np.int64(max(len(V), 1))
+    key = (shell_of_face[ef].astype(np.int64) * nv + lo) * nv + hi
+    ukey, inv, counts = np.unique(key, return_inverse=True, return_counts=True)
+    inv = inv.reshape(-1)
+    mesh_edges = np.stack([(ukey // nv) % nv, ukey % nv], axis=1)
+    forward = src < dst
+
+    # node edge counts
+    occ_count = counts[inv]
+    n_bnd = np.bincount(ef[occ_count == 1], minlength=nf)
+    n_nm = np.bincount(ef[occ_count > 2], minlength=nf)
+
+    # face pairs per mesh edge: sort occurrences by edge, pair every two occurrences of a group
+    order = np.argsort(inv, kind="stable")
+    inv_s, ef_s, fw_s = inv[order], ef[order], forward[order]
+    starts = np.r_[0, np.flatnonzero(np.diff(inv_s)) + 1]
+    sizes = np.diff(np.r_[starts, len(inv_s)])
+    pa, pb, pc, pnm = [], [], [], []
+    two = starts[sizes == 2]
+    pa.append(ef_s[two]); pb.append(ef_s[two + 1])
+    pc.append(fw_s[two] != fw_s[two + 1]); pnm.append(np.zeros(len(two), bool))
+    for st, sz in zip(starts[sizes > 2], sizes[sizes > 2]):
+        fa = ef_s[st:st + sz]
+        fw = fw_s[st:st + sz]
+        i, j = np.triu_indices(sz, 1)
+        pa.append(fa[i]); pb.append(fa[j]); pc.append(fw[i] != fw[j]); pnm.append(np.ones(len(i), bool))
+    pa, pb = np.concatenate(pa), np.concatenate(pb)
+    pc, pnm = np.concatenate(pc), np.concatenate(pnm)
+    # the boundary flag marks adjacencies whose shared edge touches the open boundary
+    bnd_vertices = np.zeros(len(V), bool)
+    be = mesh_edges[counts == 1]
+    bnd_vertices[be.ravel()] = True
+    edge_of_pair = np.concatenate([inv_s[two]] + [np.repeat(inv_s[st], sz * (sz - 1) // 2)
+                                                  for st, sz in zip(starts[sizes > 2], sizes[sizes > 2])])
+    pbnd = bnd_vertices[mesh_edges[edge_of_pair]].any(axis=1)
+    valid = pa != pb
+    pa, pb, pc, pnm, pbnd = pa[valid], pb[valid], pc[valid], pnm[valid], pbnd[valid]
+
+    cosd = np.einsum("ij,ij->i", normals[pa], normals[pb])
+    edge_index = np.concatenate([np.stack([pa, pb]), np.stack([pb, pa])], axis=1)
+    attr = np.column_stack([cosd, pbnd.astype(float), pnm.astype(float)])
+    edge_attr = np.concatenate([attr, attr])
+    consistent = np.concatenate([pc, pc])
+    # degree: distinct neighbouring faces
+    if len(pa):
+        pairs = np.unique(np.sort(np.stack([pa, pb], axis=1), axis=1), axis=0)
+        degree = np.bincount(pairs.ravel(), minlength=nf)
+    else:
+        degree = np.zeros(nf, np.intp)
+    x = np.column_stack([areas, normals, h, degenerate, planarity, n_bnd, n_nm, degree]).astype(np.float64)
+    return FaceGraph(x, edge_index, edge_attr, consistent, mesh_edges, counts, face_ids)
+
+
+def building_graph(b: Building, lod: str | None = None, tol: Tolerances = DEFAULT) -> FaceGraph:
+    """Face graph of a building's envelope at ``lod`` (default: highest LoD).
+
+    Every exterior shell of the Building and its BuildingParts contributes its faces; shells
+    never share mesh edges with each other (parts are separate shells).
+    """
+    refs = b.shells(lod)
+    surfaces, ids, shell_of = [], [], []
+    for k, r in enumerate(refs):
+        for fi, s in enumerate(r.shell.surfaces):
+            surfaces.append(s)
+            ids.append((r.object_id, r.geom_index, r.solid_index, r.shell_index, fi))
+            shell_of.append(k)
+    if not surfaces:
+        return _empty_graph()
+    used = np.unique(np.concatenate([ring for s in surfaces for ring in s.rings if len(ring)] or [np.zeros(0, np.intp)]))
+    z = b.vertices[used, 2] if len(used) else np.zeros(1)
+    return face_graph(b.vertices, surfaces, tol, (float(z.min()), float(z.max())), ids, np.asarray(shell_of))
