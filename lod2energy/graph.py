@@ -101,6 +101,10 @@ class FaceGraph:
         ``c(e)`` per mesh edge.
     face_ids : tuple
         One ``(object_id, geom_index, solid_index, shell_index, face_index)`` per node.
+    centroids : (N, 3) float
+        Mean of each face's outer-ring vertices, m.
+    shell_of_face : (N,) int
+        Index of the shell each face belongs to.
     """
 
     x: np.ndarray
@@ -110,6 +114,19 @@ class FaceGraph:
     mesh_edges: np.ndarray
     incidence: np.ndarray
     face_ids: tuple
+    centroids: np.ndarray = None
+    shell_of_face: np.ndarray = None
+
+    def shell_volumes(self) -> np.ndarray:
+        """Signed volume per shell, m3 (divergence theorem over the planar faces).
+
+        Positive when the shell's faces point outwards; only meaningful for closed shells.
+        """
+        if self.centroids is None or not len(self.x):
+            return np.zeros(0)
+        area_n = self.x[:, 0:1] * self.x[:, 1:4]
+        contrib = np.einsum("ij,ij->i", self.centroids - self.centroids.mean(axis=0), area_n) / 3.0
+        return np.bincount(self.shell_of_face, contrib, minlength=int(self.shell_of_face.max()) + 1)
 
     @property
     def n_faces(self) -> int:
@@ -235,8 +252,9 @@ def face_graph(vertices: np.ndarray, surfaces: Sequence[Surface], tol: Tolerance
     areas = 0.5 * np.linalg.norm(nvec, axis=1)
     normals = np.divide(nvec, (2 * areas)[:, None], out=np.zeros_like(nvec), where=areas[:, None] > 0)
     outer_idx = np.flatnonzero(ring_outer)
-    centroid_z = np.zeros(nf)
-    centroid_z[ring_face[outer_idx]] = mean[outer_idx, 2]
+    centroids = np.zeros((nf, 3))
+    centroids[ring_face[outer_idx]] = mean[outer_idx]
+    centroid_z = centroids[:, 2]
     dist = np.abs(np.einsum("ij,ij->i", p, normals[ring_face[rid]])) if len(p) else np.zeros(0)
     ring_dev = np.zeros(len(rings))
     np.maximum.at(ring_dev, rid, dist)
@@ -254,7 +272,8 @@ def face_graph(vertices: np.ndarray, surfaces: Sequence[Surface], tol: Tolerance
     if len(src) == 0:
         g = _empty_graph(face_ids)
         x = np.column_stack([areas, normals, h, degenerate, planarity, np.zeros((nf, 3))])
-        return FaceGraph(x, g.edge_index, g.edge_attr, g.consistent, g.mesh_edges, g.incidence, face_ids)
+        return FaceGraph(x, g.edge_index, g.edge_attr, g.consistent, g.mesh_edges, g.incidence, face_ids,
+                         centroids, shell_of_face)
 
     keep = src != dst
     src, dst, ef = src[keep], dst[keep], ef[keep]
@@ -309,7 +328,8 @@ def face_graph(vertices: np.ndarray, surfaces: Sequence[Surface], tol: Tolerance
     else:
         degree = np.zeros(nf, np.intp)
     x = np.column_stack([areas, normals, h, degenerate, planarity, n_bnd, n_nm, degree]).astype(np.float64)
-    return FaceGraph(x, edge_index, edge_attr, consistent, mesh_edges, counts, face_ids)
+    return FaceGraph(x, edge_index, edge_attr, consistent, mesh_edges, counts, face_ids,
+                     centroids, shell_of_face)
 
 
 def building_graph(b: Building, lod: str | None = None, tol: Tolerances = DEFAULT) -> FaceGraph:

@@ -91,7 +91,11 @@ def _lod_string(lod: Any) -> str | None:
             return None
         return str(int(lod)) if float(lod).is_integer() and not isinstance(lod, float) else str(lod)
     s = str(lod).strip()
-    return s or None
+    try:
+        float(s)
+    except ValueError:
+        return None
+    return s
 
 
 class _Collector:
@@ -100,6 +104,7 @@ class _Collector:
     def __init__(self, n_vertices: int):
         self.n = n_vertices
         self.used: list[int] = []
+        self.issues: list[tuple[int, str, str]] = []
 
     def ring(self, ring: Any, where: str) -> list[int]:
         if not isinstance(ring, list):
@@ -157,11 +162,10 @@ def _parse_geometry(g: Any, col: _Collector, where: str) -> Geometry:
             raise InputError(f"{where}: GeometryInstance needs 'boundaries' with one vertex index")
         col.ring(b, where)
         return Geometry(gtype, None, raw=frozen_mapping(g))
-    if "lod" not in g:
-        raise InputError(f"{where}: geometry has no 'lod'")
     lod = _lod_string(g.get("lod"))
-    if lod is None:
-        raise InputError(f"{where}: geometry 'lod' is {g.get('lod')!r}, not a level of detail")
+    if lod is None:  # reported for this building; the geometry is still validated
+        what = "has no 'lod'" if "lod" not in g else f"has 'lod' {g.get('lod')!r}, not a level of detail"
+        col.issues.append((901, where, f"geometry {what}"))
     b = g.get("boundaries")
     if b is None:
         raise InputError(f"{where}: geometry has no 'boundaries'")
@@ -278,7 +282,8 @@ def build_feature(root_id: str, ids: list[str], cos: Mapping[str, Any], vertices
     lut[used] = np.arange(len(used))
     objs = [CityObject(o.id, o.type, tuple(_remap_geometry(g, lut) for g in o.geometries),
                        o.attributes, o.parents, o.children, o.extra) for o in objs]
-    return Building(root_id, objs[0].type, local, tuple(objs))
+    prov = frozen_mapping({"input_errors": tuple(col.issues)}) if col.issues else frozen_mapping({})
+    return Building(root_id, objs[0].type, local, tuple(objs), prov)
 
 
 def _header_from(doc: Mapping[str, Any], path: str, fmt: str) -> CityModel:
