@@ -1,0 +1,84 @@
+"""Command line: exit codes, report shape, bad input without tracebacks."""
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+
+import pytest
+
+from lod2energy.cli import main
+
+from cityjson_docs import box_doc, to_seq, write
+
+
+def run(args, capsys):
+    rc = main(args)
+    out, err = capsys.readouterr()
+    assert "Traceback" not in out + err
+    return rc, out, err
+
+
+def test_valid_file_exits_0_and_writes_a_val3dity_shaped_report(tmp_path, capsys):
+    rep = tmp_path / "r.json"
+    rc, out, _ = run(["validate", write(tmp_path, box_doc()), "--report", str(rep)], capsys)
+    assert rc == 0 and "b.city.json" in out
+    r = json.loads(rep.read_text())
+    assert r["type"] == "val3dity_report" and r["validity"] is True and r["dataset_errors"] == []
+    assert r["parameters"]["snap_tol"] == 0.001 and r["parameters"]["planarity_n_tol"] == 20.0
+    (f,) = r["features"]
+    assert (f["id"], f["type"], f["validity"], f["errors"]) == ("b1", "Building", True, [])
+    e = f["energy"]
+    assert e["closed_2manifold"] and e["outward_normals"] and e["no_degenerate_faces"]
+    assert e["labelled"] is None and e["u_values"] is None and e["compliant"] is False
+    assert (e["N_b"], e["N_nm"], e["status"]) == (0, 0, "watertight")
+    assert f["graph"]["faces"] == 6
+    assert r["features_overview"] == [{"type": "Building", "total": 1, "valid": 1}]
+
+
+def test_broken_building_exits_1_and_the_rest_is_validated(tmp_path, capsys):
+    bad = json.loads(json.dumps(box_doc()["CityObjects"]["b1"]))
+    bad["geometry"][0]["boundaries"][0][0][0][0] = 77
+    doc = box_doc(extra_objects={"bad": bad})
+    rep = tmp_path / "r.json"
+    rc, _, _ = run(["validate", "-q", write(tmp_path, doc), "--report", str(rep)], capsys)
+    assert rc == 1
+    r = json.loads(rep.read_text())
+    v = {f["id"]: f for f in r["features"]}
+    assert v["b1"]["validity"] is True
+    assert v["bad"]["validity"] is False and v["bad"]["errors"][0]["code"] == 901
+
+
+def test_broken_seq_line_keeps_the_other_features(tmp_path, capsys):
+    doc = box_doc(extra_objects={"b2": box_doc()["CityObjects"]["b1"]})
+    lines = to_seq(doc).splitlines()
+    lines.insert(2, "{not json")
+    p = write(tmp_path, None, "s.city.jsonl", "\n".join(lines))
+    rep = tmp_path / "r.json"
+    rc, _, _ = run(["validate", "-q", p, "--report", str(rep)], capsys)
+    r = json.loads(rep.read_text())
+    assert rc == 1 and [f["id"] for f in r["features"]] == ["b1", "line 3", "b2"]
+
+
+@pytest.mark.parametrize("text", ["", "{", '{"type": "CityJSON", "version": "0.9", "CityObjects": {}}'])
+def test_unusable_file_exits_2_with_one_line(tmp_path, capsys, text):
+    rc, _, err = run(["validate", "-q", write(tmp_path, None, "x.city.json", text)], capsys)
+    assert rc == 2 and err.count("lod2energy: error:") == 1
+
+
+def test_missing_file_and_usage_errors_exit_2(tmp_path, capsys):
+    rc, _, err = run(["validate", "-q", str(tmp_path / "nope.json")], capsys)
+    assert rc == 2 and "cannot read" in err
+    with pytest.raises(SystemExit) as e:
+        main(["validate"])
+    assert e.value.code == 2
+    rc, _, err = run(["validate", "-q", "--snap-tol", "nan", write(tmp_path, box_doc())], capsys)
+    assert rc == 2 and "--snap-tol" in err
+    rc, _, err = run(["export", write(tmp_path, box_doc()), "-o", str(tmp_path / "o")], capsys)
+    assert rc == 2 and "--idf" in err
+
+
+def test_help_documents_exit_codes():
+    out = subprocess.run([sys.executable, "-m", "lod2energy", "validate", "--help"],
+                         capture_output=True, text=True, check=True).stdout
+    assert "exit codes" in out and "unusable input" in out and "--snap-tol" in out
