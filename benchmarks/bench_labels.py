@@ -1,0 +1,129 @@
+"""Benchmark: area-weighted agreement of the labelling rules alone with the input's labels.
+
+Runs over every CityJSON / CityJSONSeq file of the shared real tiles (``../shared/data``
+relative to the repo root, or the folder given as the first argument) and prints, per
+tile, the labelled area, the share on which the rules agree, and the largest confusions.
+With ``--repair`` the buildings are first repaired (``lod2energy.repair.pipeline``) and
+labelled with :func:`lod2energy.semantics.label_building`; agreement is then also reported
+for the final labels against the input's own labels.
+
+Usage: python benchmarks/bench_labels.py [DATA_DIR] [--repair] [--json OUT]
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+import time
+from pathlib import Path
+
+REPO = Path(__file__).resolve().parents[1]
+SHARED = REPO.parent / "shared"
+TILE_DIRS = ("3dbag", "rotterdam", "denhaag", "delft-3dfier-lod1", "france-roofer", "japan-plateau",
+             "montreal", "swiss-building")
+
+
+def tiles(root: Path) -> list[Path]:
+    out = []
+    for d in TILE_DIRS:
+        p = root / d
+        if p.is_dir():
+            out += sorted(x for x in p.iterdir() if x.suffix in (".json", ".jsonl"))
+    return out
+
+
+def run_tile(path: Path, repair: bool) -> dict:
+    from lod2energy.io import cityjson
+    from lod2energy.model import Building
+    from lod2energy import semantics
+
+    model, feats = cityjson.read(str(path))
+    agree = total = 0.0
+    final_agree = final_total = 0.0
+    conf: dict = {}
+    n = n_err = n_rep = 0
+    for f in feats:
+        if not isinstance(f, Building):
+            n_err += 1
+            continue
+        n += 1
+        a, t = semantics.rule_agreement(f)
+        agree += a
+        total += t
+        for k, v in semantics.label_confusion(f).items():
+            conf[k] = conf.get(k, 0.0) + v
+        if repair:
+            from lod2energy.repair.pipeline import repair_building
+            try:
+                rb = repair_building(f)
+                if isinstance(rb, tuple):
+                    rb = rb[0]
+            except Exception as e:  # benchmark: report and continue
+                print(f"  repair failed on {f.id}: {e}", file=sys.stderr)
+                continue
+            n_rep += 1
+            lb = semantics.label_building(rb, source=f)
+            fa, ft = final_label_agreement(f, lb)
+            final_agree += fa
+            final_total += ft
+    top = sorted(((v, k) for k, v in conf.items() if k[0] != k[1]), reverse=True)[:3]
+    return {"tile": f"{path.parent.name}/{path.name}", "buildings": n, "unreadable": n_err,
+            "labelled_area_m2": round(total, 1),
+            "rule_agreement_pct": round(100 * agree / total, 2) if total else None,
+            "top_confusions": [f"{k[0]}->{k[1]}: {v:.1f} m2" for v, k in top],
+            **({"repaired": n_rep,
+                "final_agreement_pct": round(100 * final_agree / final_total, 2) if final_total else None}
+               if repair else {})}
+
+
+def final_label_agreement(source, labelled) -> tuple[float, float]:
+    """Area of labelled output faces whose label equals the nearest input face's label.
+
+    Each output face is compared with the input face of compatible normal nearest to its
+    centroid (the same look-up label transfer uses); faces with no such input face count
+    as disagreeing.
+    """
+    from lod2energy import semantics as S
+    import numpy as np
+
+    src = S._SourceFaces(source, None)
+    agree = total = 0.0
+    for o, gi, g in labelled.energy_objects():
+        t = S.face_table(labelled.vertices, g)
+        for i, s in enumerate(t.surfaces):
+            ty = g.semantic_type(s)
+            if t.area[i] <= 0:
+                continue
+            total += t.area[i]
+            hit = src.nearest(t.normal[i], t.centroid[i], S.DEFAULT_RULES)
+            if hit is not None and hit[0] == ty:
+                agree += t.area[i]
+    return agree, total
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("data", nargs="?", default=str(SHARED / "data"))
+    ap.add_argument("--repair", action="store_true")
+    ap.add_argument("--json")
+    a = ap.parse_args(argv)
+    rows = []
+    tot_a = tot_t = 0.0
+    t0 = time.time()
+    for p in tiles(Path(a.data)):
+        r = run_tile(p, a.repair)
+        rows.append(r)
+        if r["rule_agreement_pct"] is not None:
+            tot_a += r["rule_agreement_pct"] * r["labelled_area_m2"] / 100
+            tot_t += r["labelled_area_m2"]
+        print(json.dumps(r))
+    summary = {"all_tiles_rule_agreement_pct": round(100 * tot_a / tot_t, 2) if tot_t else None,
+               "labelled_area_m2": round(tot_t, 1), "seconds": round(time.time() - t0, 1)}
+    print(json.dumps(summary))
+    if a.json:
+        Path(a.json).write_text(json.dumps({"tiles": rows, "summary": summary}, indent=1))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,349 @@
+"""U-values per surface and the building's transmission heat-loss coefficient UA.
+
+Table lookup (``country`` x ``building_type`` x construction period), most specific first:
+
+1. rows of ``--u-table`` (user CSV), then the built-in tables (``data/u_values.csv``,
+   ``data/tabula_de.csv``; sources in ``data/SOURCES.md``);
+2. within those: the country's row for the building type whose period contains the year;
+   the same with ``building_type = *``; then the related type (terraced <-> single-family,
+   apartment block <-> multi-family); then the country's nearest period; then the generic
+   ``*`` rows (same order);
+3. per-element overrides (``--u-wall`` ...) replace the looked-up values last.
+
+Per surface (in ``semantic_surfaces``): RoofSurface / OuterCeilingSurface -> roof U,
+``"exterior"``; WallSurface -> wall U (opaque part), ``"exterior"``; GroundSurface -> ground
+U, ``"ground"``; OuterFloorSurface -> ground U, ``"exterior"``; ClosureSurface -> wall U,
+``"interior"`` (a virtual boundary between parts of one heated building: no heat loss, so
+it is left out of the areas and UA).
+
+UA = U_roof A_roof + A_wall ((1 - wwr) U_wall + wwr U_window) + U_ground A_ground (W/K),
+without temperature-correction factors (b = 1 also towards the ground).
+"""
+from __future__ import annotations
+
+import csv
+import io
+import math
+from dataclasses import dataclass, field, replace
+from functools import lru_cache
+from importlib import resources
+from pathlib import Path
+from typing import Any, Mapping
+
+import numpy as np
+
+from lod2energy.errors import ParameterError
+from lod2energy.model import Building, frozen_mapping
+from lod2energy.semantics import (CLOSURE, GROUND, OUTER_CEILING, OUTER_FLOOR, ROOF, WALL,
+                                  face_table)
+from lod2energy.thermal.typology import Typology, classify
+from lod2energy.validate.defect import Defect
+
+ELEMENTS = ("roof", "wall", "ground", "window")
+RELATED_TYPE = {"terraced": "single-family", "single-family": "terraced",
+                "apartment-block": "multi-family", "multi-family": "apartment-block"}
+U_RANGE = (0.05, 6.0)  # W/(m2 K): plausible U-values of envelope elements
+
+
+@dataclass(frozen=True)
+class URow:
+    """One table row: U-values (W/(m2 K)) for a country, building type and period."""
+
+    country: str
+    building_type: str
+    period_start: int
+    period_end: int
+    u: Mapping[str, float]
+    wwr: float | None
+    source: str
+
+
+@dataclass(frozen=True)
+class ThermalOptions:
+    """Choices for :func:`assign_u_values`.
+
+    Parameters
+    ----------
+    country : str, optional
+        ISO code (NL, DE, AT, CH, FI, ...); ``None``: guessed from ``crs``, else generic.
+    crs : str, optional
+        CRS of the input (used only to guess the country).
+    u_table : str or Path, optional
+        CSV with columns ``country, building_type, period_start, period_end, u_roof, u_wall,
+        u_ground, u_window`` (optional ``wwr``, ``source``); empty cells and missing
+        ``country`` / ``building_type`` / period columns mean "any". Its rows take
+        precedence over the built-in ones.
+    overrides : mapping
+        ``{"wall": 0.35, ...}``, W/(m2 K): replace the looked-up values for every building.
+    wwr : float, optional
+        Window-to-wall ratio for every building (default: per building type).
+    lod : str, optional
+        LoD of the energy geometries.
+    """
+
+    country: str | None = None
+    crs: str | None = None
+    u_table: str | Path | None = None
+    overrides: Mapping[str, float] = field(default_factory=dict)
+    wwr: float | None = None
+    lod: str | None = None
+
+    def __post_init__(self):
+        for k, v in dict(self.overrides).items():
+            if k not in ELEMENTS:
+                raise ParameterError(f"unknown U-value class {k!r} (use one of {', '.join(ELEMENTS)})")
+            if v is None or not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0):
+                raise ParameterError(f"--u-{k} must be a positive number of W/(m2 K), got {v!r}")
+        if self.wwr is not None and not (0.0 <= self.wwr < 1.0):
+            raise ParameterError(f"window-to-wall ratio must be in [0, 1), got {self.wwr!r}")
+
+
+# ----------------------------------------------------------------------------- tables
+
+def _int_or(v: str | None, default: int) -> int:
+    v = (v or "").strip()
+    if not v:
+        return default
+    try:
+        return int(float(v))
+    except ValueError:
+        raise ParameterError(f"period {v!r} is not a year") from None
+
+
+def parse_table(text: str, where: str) -> list[URow]:
+    """Rows of a U-value CSV (see :class:`ThermalOptions`)."""
+    rows = []
+    reader = csv.DictReader(io.StringIO(text))
+    if not reader.fieldnames or not any(f"u_{e}" in reader.fieldnames for e in ELEMENTS):
+        raise ParameterError(f"{where}: a U-value table needs a header with u_roof, u_wall, u_ground, u_window")
+    for i, r in enumerate(reader, start=2):
+        u = {}
+        for e in ELEMENTS:
+            v = (r.get(f"u_{e}") or "").strip()
+            if not v:
+                continue
+            try:
+                x = float(v)
+            except ValueError:
+                raise ParameterError(f"{where} line {i}: u_{e} {v!r} is not a number") from None
+            if not (math.isfinite(x) and x > 0):
+                raise ParameterError(f"{where} line {i}: u_{e} must be positive, got {v}")
+            u[e] = x
+        wwr_s = (r.get("wwr") or "").strip()
+        try:
+            wwr = float(wwr_s) if wwr_s else None
+        except ValueError:
+            raise ParameterError(f"{where} line {i}: wwr {wwr_s!r} is not a number") from None
+        try:
+            c = (r.get("country") or "").strip() or "*"
+            rows.append(URow("*" if c == "*" else c.upper(),
+                             (r.get("building_type") or "").strip() or "*",
+                             _int_or(r.get("period_start"), 0), _int_or(r.get("period_end"), 9999),
+                             frozen_mapping(u), wwr, (r.get("source") or where).strip()))
+        except ParameterError as e:
+            raise ParameterError(f"{where} line {i}: {e}") from None
+    return rows
+
+
+@lru_cache(maxsize=None)
+def builtin_rows() -> tuple[URow, ...]:
+    """The shipped tables (``lod2energy/thermal/data``)."""
+    d = resources.files("lod2energy.thermal") / "data"
+    rows: list[URow] = []
+    for name in ("tabula_de.csv", "u_values.csv"):
+        rows += parse_table(d.joinpath(name).read_text(encoding="utf-8"), name)
+    return tuple(rows)
+
+
+@lru_cache(maxsize=None)
+def builtin_wwr() -> Mapping[str, float]:
+    d = resources.files("lod2energy.thermal") / "data"
+    return frozen_mapping({r["building_type"]: float(r["wwr"])
+                           for r in csv.DictReader(io.StringIO(d.joinpath("wwr.csv").read_text()))})
+
+
+def load_table(path: str | Path) -> list[URow]:
+    """Rows of a user ``--u-table`` file (ParameterError with one line on any problem)."""
+    try:
+        text = Path(path).read_text(encoding="utf-8-sig")
+    except OSError as e:
+        raise ParameterError(f"cannot read U-value table {path}: {e.strerror}") from None
+    return parse_table(text, str(path))
+
+
+def _match(rows, country, btype, year, exact_period=True):
+    for r in rows:
+        if r.country != country or r.building_type != btype:
+            continue
+        if r.period_start <= year <= r.period_end:
+            return r
+    if exact_period:
+        return None
+    cand = [r for r in rows if r.country == country and r.building_type == btype]
+    if not cand:
+        return None
+    return min(cand, key=lambda r: min(abs(year - r.period_start), abs(year - r.period_end)))
+
+
+def lookup(country: str, btype: str, year: int, rows) -> tuple[dict[str, float], list[URow]]:
+    """U-values per element from ``rows`` (most specific row first; see module docstring).
+
+    Elements missing in a row are filled from the next matching row.
+
+    Returns
+    -------
+    u : dict
+        ``{"roof", "wall", "ground", "window"}`` -> W/(m2 K) (only those found).
+    used : list of URow
+        Rows that contributed, most specific first.
+    """
+    countries = [country] + (["*"] if country != "*" else [])
+    types = [btype, "*", RELATED_TYPE.get(btype, "*")]
+    u: dict[str, float] = {}
+    used: list[URow] = []
+    for c in countries:
+        for exact in (True, False):
+            for t in types:
+                r = _match(rows, c, t, year, exact)
+                if r is None or r in used:
+                    continue
+                if any(e not in u for e in r.u):
+                    used.append(r)
+                for e, v in r.u.items():
+                    u.setdefault(e, v)
+                if len(u) == len(ELEMENTS):
+                    return u, used
+    return u, used
+
+
+# ----------------------------------------------------------------------------- geometry sums
+
+def _solid_volume(vertices: np.ndarray, g, origin: np.ndarray) -> float:
+    from lod2energy.semantics import face_metrics
+    vol = 0.0
+    if not g.is_volumetric:
+        return 0.0
+    for si, hi, fi, s in g.iter_surfaces():
+        a, n, c = face_metrics(vertices, s)
+        vol += float((c - origin) @ (n * a)) / 3.0
+    return vol
+
+
+def _azimuth_inclination(n: np.ndarray) -> tuple[float, float]:
+    """Azimuth (deg clockwise from north = +y, of the horizontal normal part) and inclination
+    (deg from the upward vertical: 0 roof facing up, 90 wall, 180 floor facing down)."""
+    incl = math.degrees(math.acos(max(-1.0, min(1.0, float(n[2])))))
+    if math.hypot(n[0], n[1]) < 1e-9:
+        return 0.0, incl
+    return (math.degrees(math.atan2(n[0], n[1])) + 360.0) % 360.0, incl
+
+
+_CLASS = {ROOF: ("roof", "exterior"), OUTER_CEILING: ("roof", "exterior"), WALL: ("wall", "exterior"),
+          GROUND: ("ground", "ground"), OUTER_FLOOR: ("ground", "exterior"), CLOSURE: ("wall", "interior")}
+
+
+def period_label(row: URow | None, typ: Typology) -> str:
+    if row is None:
+        return "unknown"
+    end = "" if row.period_end >= 2100 else str(row.period_end)
+    start = "" if row.period_start <= 0 else str(row.period_start)
+    s = f"{start}-{end}" if (start or end) else "any"
+    return s + (" (assumed)" if typ.year is None else "")
+
+
+def assign_u_values(b: Building, options: ThermalOptions = ThermalOptions()) -> Building:
+    """Typology, per-surface Energy ADE quantities and the UA of one labelled building.
+
+    Parameters
+    ----------
+    b : Building
+        Output of :func:`lod2energy.semantics.label_building` (one semantic entry per surface).
+    options : ThermalOptions
+
+    Returns
+    -------
+    Building
+        Every surface's semantic entry gains ``uValue`` (W/(m2 K)), ``thermalBoundaryType``,
+        ``area`` (m2), ``azimuth`` and ``inclination`` (deg); ``provenance["thermal"]`` holds
+        country, typology, construction_period, u_values, wwr, areas {roof, wall, ground},
+        A_env (m2), volume (m3), UA (W/K) and the attributes used.
+    """
+    from lod2energy.thermal.typology import country_from_crs
+
+    lod = options.lod if options.lod is not None else b.default_lod()
+    energy = b.energy_objects(lod)
+    tables = [face_table(b.vertices, g) for _, _, g in energy]
+    ground_area = sum(float(t.area[i]) for (o, gi, g), t in zip(energy, tables)
+                      for i, s in enumerate(t.surfaces) if g.semantic_type(s) == GROUND)
+    zs = [(t.z_min, t.z_max) for t in tables if len(t.area)]
+    z_extent = (max(z[1] for z in zs) - min(z[0] for z in zs)) if zs else None
+    country = (options.country or country_from_crs(options.crs) or "*")
+    country = country.upper() if country != "*" else "*"
+    typ = classify(b, country, ground_area or None, z_extent)
+    rows = tuple(load_table(options.u_table)) if options.u_table else ()
+    u, used = lookup(typ.country, typ.building_type, typ.lookup_year, rows + builtin_rows())
+    for e, v in dict(options.overrides).items():
+        u[e] = float(v)
+    missing = [e for e in ELEMENTS if e not in u]
+    if missing:
+        raise ParameterError(f"no U-value for {', '.join(missing)} (country {typ.country}); "
+                             f"give them with --u-table or --u-{missing[0]}")
+    wwr = options.wwr
+    if wwr is None:
+        wwr = next((r.wwr for r in used if r.wwr is not None), None)
+    if wwr is None:
+        wwr = builtin_wwr().get(typ.building_type, 0.25)
+
+    areas = {"roof": 0.0, "wall": 0.0, "ground": 0.0}
+    volume = 0.0
+    origin = b.vertices.mean(axis=0) if len(b.vertices) else np.zeros(3)
+    out = b
+    for (o, gi, g), t in zip(energy, tables):
+        entries = list(g.semantic_surfaces)
+        done = set()
+        for i, s in enumerate(t.surfaces):
+            if s.semantic is None or s.semantic >= len(entries) or s.semantic in done:
+                continue
+            done.add(s.semantic)
+            stype = entries[s.semantic].get("type")
+            cls, boundary = _CLASS.get(stype, ("wall", "exterior"))
+            az, inc = _azimuth_inclination(t.normal[i])
+            e = dict(entries[s.semantic])
+            e.update({"uValue": round(u[cls], 4), "thermalBoundaryType": boundary,
+                      "area": round(float(t.area[i]), 4), "azimuth": round(az, 2),
+                      "inclination": round(inc, 2)})
+            entries[s.semantic] = frozen_mapping(e)
+            if boundary != "interior":
+                areas[cls] += float(t.area[i])
+        volume += _solid_volume(b.vertices, g, origin)
+        out = out.replace_geometry(o.id, gi, replace(g, semantic_surfaces=tuple(entries)))
+    ua = (u["roof"] * areas["roof"] + areas["wall"] * ((1 - wwr) * u["wall"] + wwr * u["window"])
+          + u["ground"] * areas["ground"])
+    thermal = {
+        "country": typ.country, "typology": typ.building_type,
+        "construction_period": period_label(used[0] if used else None, typ),
+        "year_of_construction": typ.year,
+        "u_values": {e: round(u[e], 4) for e in ELEMENTS}, "wwr": wwr,
+        "areas": {k: round(v, 3) for k, v in areas.items()},
+        "A_env": round(sum(areas.values()), 3), "volume": round(volume, 3), "UA": round(ua, 3),
+        "storeys": typ.storeys, "footprint": round(typ.footprint, 3), "function": typ.function,
+        "sources": dict(typ.sources), "table_sources": [r.source for r in used],
+        "overrides": dict(options.overrides),
+    }
+    return out.with_provenance(thermal=frozen_mapping(thermal))
+
+
+def check_u_values(b: Building, lod: str | None = None) -> list[Defect]:
+    """Surfaces of the energy geometries without a U-value (1201) or with an implausible one (1202)."""
+    out = []
+    for o, gi, g in b.energy_objects(lod):
+        for si, hi, fi, s in g.iter_surfaces():
+            loc = f"coid={o.id}|" + g.location(gi, si, hi, fi)
+            e = g.semantic_surfaces[s.semantic] if s.semantic is not None and s.semantic < len(
+                g.semantic_surfaces) else {}
+            v = e.get("uValue")
+            if not isinstance(v, (int, float)) or isinstance(v, bool):
+                out.append(Defect(1201, loc, "no uValue"))
+            elif not (U_RANGE[0] <= v <= U_RANGE[1]):
+                out.append(Defect(1202, loc, f"uValue {v} W/(m2 K) outside [{U_RANGE[0]}, {U_RANGE[1]}]"))
+    return out
