@@ -165,3 +165,10 @@ def test_building_is_immutable(tmp_path):
         b.id = "x"
     with pytest.raises(ValueError):
         b.vertices[0, 0] = 1.0
+
+
+def test_absurd_coordinates_spoil_only_their_building(tmp_path):
+    doc = box_doc()
+    doc["transform"]["translate"] = [1e15, 0.0, 0.0]
+    _, (fe,) = _all(write(tmp_path, doc))
+    assert isinstance(fe, FeatureError) and "coordinates beyond" in fe.message

@@ -24,6 +24,9 @@ from lod2energy.model import (
 )
 
 SUPPORTED_VERSIONS = ("1.0", "1.1", "2.0")
+#: Larger coordinates (m) cannot be a building on Earth in a projected CRS; float64 keeps
+#: 1e-4 m only up to about 1e11, so such input is refused per building.
+MAX_COORDINATE = 1e9
 _GEOM_TYPES = SOLID_TYPES + MULTISOLID_TYPES + SURFACE_TYPES + (
     "MultiPoint", "MultiLineString", "GeometryInstance")
 
@@ -278,6 +281,9 @@ def build_feature(root_id: str, ids: list[str], cos: Mapping[str, Any], vertices
     if local.size and not np.isfinite(local).all():
         bad = used[~np.isfinite(local).all(axis=1)][:3].tolist()
         raise InputError(f"coid={root_id}: non-finite (NaN/inf) coordinates at vertex {bad}")
+    if local.size and np.abs(local).max() > MAX_COORDINATE:
+        raise InputError(f"coid={root_id}: coordinates beyond {MAX_COORDINATE:.0e} m "
+                         f"(max |c| = {np.abs(local).max():.3g}); is the CRS projected and metric?")
     lut = np.full(len(vertices), -1, dtype=np.intp)
     lut[used] = np.arange(len(used))
     objs = [CityObject(o.id, o.type, tuple(_remap_geometry(g, lut) for g in o.geometries),
