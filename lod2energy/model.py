@@ -110,6 +110,9 @@ class Geometry:
     raw : mapping or None
         The input JSON for types not modelled as polygons (points, lines, instances), with
         vertex indices already feature-local.
+    extra : mapping
+        Other keys of the input geometry (``texture``, ``material``), written back as they
+        are; a stage that changes the boundaries builds a new Geometry without them.
     """
 
     type: str
@@ -117,6 +120,7 @@ class Geometry:
     solids: tuple[Solid, ...] = ()
     semantic_surfaces: tuple[Mapping[str, Any], ...] = ()
     raw: Mapping[str, Any] | None = None
+    extra: Mapping[str, Any] = field(default_factory=lambda: _EMPTY)
 
     @property
     def is_polygonal(self) -> bool:

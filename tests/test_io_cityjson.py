@@ -172,3 +172,14 @@ def test_absurd_coordinates_spoil_only_their_building(tmp_path):
     doc["transform"]["translate"] = [1e15, 0.0, 0.0]
     _, (fe,) = _all(write(tmp_path, doc))
     assert isinstance(fe, FeatureError) and "coordinates beyond" in fe.message
+
+
+def test_textures_and_version_1_0_lods_round_trip(tmp_path):
+    doc = box_doc("1.0", lod=2)
+    doc["CityObjects"]["b1"]["geometry"][0]["material"] = {"visual": {"value": 0}}
+    model, feats = _all(write(tmp_path, doc))
+    assert feats[0].root.geometries[0].lod == "2"
+    out = tmp_path / "o.city.json"
+    cityjson.write(str(out), model, feats)
+    g = json.loads(out.read_text())["CityObjects"]["b1"]["geometry"][0]
+    assert g["lod"] == 2 and g["material"] == {"visual": {"value": 0}}

@@ -200,7 +200,8 @@ def _parse_geometry(g: Any, col: _Collector, where: str) -> Geometry:
                 shells.append(Shell(_parse_surfaces(sh, col, f"{where}|solid={si}|shell={hi}", values, (si, hi))))
             solids_l.append(Solid(tuple(shells)))
         solids = tuple(solids_l)
-    return Geometry(gtype, lod, solids, sem_surfaces)
+    extra = {k: v for k, v in g.items() if k in ("texture", "material")}
+    return Geometry(gtype, lod, solids, sem_surfaces, extra=frozen_mapping(extra))
 
 
 def _remap_geometry(g: Geometry, lut: np.ndarray) -> Geometry:
@@ -216,7 +217,7 @@ def _remap_geometry(g: Geometry, lut: np.ndarray) -> Geometry:
             for s in sh.surfaces:
                 for r in s.rings:
                     r.setflags(write=False)
-    return Geometry(g.type, g.lod, solids, g.semantic_surfaces)
+    return Geometry(g.type, g.lod, solids, g.semantic_surfaces, extra=g.extra)
 
 
 def _remap_nested(x: Any, lut: np.ndarray) -> Any:
@@ -400,16 +401,24 @@ def _read_seq(path: str):
 
 # ----------------------------------------------------------------------------- writing
 
-def _geometry_json(g: Geometry, offset: int) -> dict:
+def _lod_json(lod: str | None, version: str):
+    if version != "1.0" or lod is None:
+        return lod
+    return float(lod) if "." in lod else int(lod)  # CityJSON 1.0 has numeric LoDs
+
+
+def _geometry_json(g: Geometry, offset: int, version: str = "2.0") -> dict:
     if g.raw is not None:
-        d = dict(g.raw)
+        d = _plain(g.raw)
         d["boundaries"] = _offset_nested(d["boundaries"], offset)
+        if "lod" in d and d["lod"] is not None:
+            d["lod"] = _lod_json(str(d["lod"]), version)
         return d
 
     def surf(s: Surface):
         return [(r + offset).tolist() for r in s.rings]
 
-    out: dict[str, Any] = {"type": g.type, "lod": g.lod}
+    out: dict[str, Any] = {"type": g.type, "lod": _lod_json(g.lod, version)}
     if g.type in SURFACE_TYPES:
         shell = g.solids[0].shells[0] if g.solids else Shell(())
         out["boundaries"] = [surf(s) for s in shell.surfaces]
@@ -422,7 +431,8 @@ def _geometry_json(g: Geometry, offset: int) -> dict:
         out["boundaries"] = [[[surf(s) for s in sh.surfaces] for sh in so.shells] for so in g.solids]
         values = [[[s.semantic for s in sh.surfaces] for sh in so.shells] for so in g.solids]
     if g.semantic_surfaces:
-        out["semantics"] = {"surfaces": [dict(s) for s in g.semantic_surfaces], "values": values}
+        out["semantics"] = {"surfaces": _plain(g.semantic_surfaces), "values": values}
+    out.update(_plain(g.extra))
     return out
 
 
@@ -452,7 +462,7 @@ def cityobject_json(o: CityObject, offset: int, version: str) -> dict:
         d["parents"] = list(o.parents)
     if o.children:
         d["children"] = list(o.children)
-    geoms = [_geometry_json(g, offset) for g in o.geometries]
+    geoms = [_geometry_json(g, offset, version) for g in o.geometries]
     if geoms or version != "1.0":
         d["geometry"] = geoms
     else:
