@@ -1,9 +1,457 @@
-"""Polygon-level checks (101-104, 201-208). STUB: to be implemented."""
+"""Polygon-level checks (101-104, 201-208) with val3dity 2.6's semantics and messages.
+
+What val3dity does for one shell (``Surface::validate_2d_primitives``), reproduced here:
+
+1. vertices are snapped per shell (see :mod:`lod2energy.validate.snap`);
+2. per face, in this order, the first failing test ends the face's checks:
+   101 (a ring with < 3 points), 102 (two consecutive snapped points the same, first-last
+   included), a lone triangle is only tested for collinearity (104), 203 (a point farther
+   than ``planarity_d2p_tol`` from the least-squares plane of all the face's points; the
+   first such point in ring order is reported), 104 (a ring, projected on that plane, is not
+   simple), 208 (an inner ring oriented as the outer), then GEOS ``IsValidReason`` on the
+   projected polygon (201, 202, 205, 206, 207);
+3. only when every face of the shell passed: 204 (the normals of the face's constrained
+   Delaunay triangles deviate from the first one's by more than ``planarity_n_tol``).
+
+The work is vectorised per shell: plane fits are batched by polygon size, ring tests go
+through shapely's array functions, and the 204 triangulation is skipped for polygons
+where no triangle of their vertices could tilt enough (all-triples bound).
+"""
+from __future__ import annotations
+
+import itertools
+import math
+from fractions import Fraction
+from typing import Iterable
+
+import numpy as np
+import shapely
+
+from lod2energy.config import DEFAULT, Tolerances
+from lod2energy.model import Shell
+from lod2energy.validate.snap import snapped_ids
+from lod2energy.validate.triangulate import constrained_delaunay
+
+INFO_104_TRIANGLE = " outer ring (a triangle) is collapsed to a line"
+INFO_104_RING = "ring self-intersects or is collapsed to a line"
+INFO_208 = "same orientation for outer and inner rings"
+
+_GEOS_CODES = (("Self-intersection", 201), ("Duplicate Rings", 202), ("Interior is disconnected", 205),
+               ("Hole lies outside shell", 206), ("Holes are nested", 207))
+_MAX_TRIPLES_POINTS = 14  # above this the all-triples bound costs more than the CDT
 
 
-def check_polygons(vertices, shell, tol):
-    return []
+def _fmt(x: float) -> str:
+    """A number as C++ ``ostream << double`` prints it (6 significant digits)."""
+    return format(float(x), "g")
 
 
-def check_instance(building, obj, gi, geometry, tol):
-    return []
+def info_203(value: float, tol: float) -> str:
+    return f"distance to fitted plane: {_fmt(value)} (tolerance={_fmt(tol)})"
+
+
+def info_204(value: float, tol: float) -> str:
+    return f"deviation normals: {_fmt(value)} (tolerance={_fmt(tol)})"
+
+
+def geos_code(reason: str) -> int:
+    """val3dity code for a GEOS ``IsValidReason`` text (999 when unknown)."""
+    for key, code in _GEOS_CODES:
+        if key in reason:
+            return code
+    return 999
+
+
+def _exactly_collinear(a: np.ndarray, b: np.ndarray, c: np.ndarray) -> bool:
+    """CGAL::collinear on doubles (exact): float test first, exact rationals when close."""
+    u, v = b - a, c - a
+    cr = np.cross(u, v)
+    nu, nv = float(np.linalg.norm(u)), float(np.linalg.norm(v))
+    if float(np.linalg.norm(cr)) > 1e-9 * nu * nv:
+        return False
+    A = [Fraction(float(x)) for x in a]
+    U = [Fraction(float(x)) - A[i] for i, x in enumerate(b)]
+    V = [Fraction(float(x)) - A[i] for i, x in enumerate(c)]
+    return (U[1] * V[2] - U[2] * V[1] == 0 and U[2] * V[0] - U[0] * V[2] == 0
+            and U[0] * V[1] - U[1] * V[0] == 0)
+
+
+def _plane_basis(normals: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Two unit vectors spanning each plane, ``(m, 3)`` each, right-handed with the normal."""
+    m = len(normals)
+    helper = np.zeros((m, 3))
+    ax = np.argmin(np.abs(normals), axis=1)
+    helper[np.arange(m), ax] = 1.0
+    u = _cross(normals, helper)
+    u /= np.linalg.norm(u, axis=1, keepdims=True)
+    v = _cross(normals, u)
+    return u, v
+
+
+def _smallest_eigenvector(cov: np.ndarray) -> np.ndarray:
+    """Unit eigenvector of the smallest eigenvalue of each (3, 3) covariance, as a plane normal.
+
+    Components under 1e-12 are set to 0 as val3dity does (``get_best_fitted_plane``);
+    a degenerate covariance gives (0, 0, 1).
+    """
+    with np.errstate(invalid="ignore"):
+        _, vecs = np.linalg.eigh(cov)
+    n = vecs[:, :, 0]
+    n = np.where(np.abs(n) < 1e-12, 0.0, n)
+    norm = np.linalg.norm(n, axis=1, keepdims=True)
+    bad = ~(norm[:, 0] > 0) | ~np.isfinite(norm[:, 0])
+    return np.where(bad[:, None], np.array([0.0, 0.0, 1.0]), n / np.where(norm > 0, norm, 1.0))
+
+
+def fit_planes(points: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Least-squares planes (CGAL ``linear_least_squares_fitting_3``, points), batched.
+
+    Parameters
+    ----------
+    points : (m, n, 3) float
+        ``m`` polygons of ``n`` points each, m.
+
+    Returns
+    -------
+    centroids : (m, 3) float
+    normals : (m, 3) float
+        Unit normals (eigenvector of the smallest eigenvalue of the covariance); components
+        under 1e-12 are set to 0 as val3dity does.
+    """
+    c = points.mean(axis=1)
+    X = points - c[:, None, :]
+    return c, _smallest_eigenvector(np.einsum("mni,mnj->mij", X, X))
+
+
+def _cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """Row-wise cross product of (..., 3) arrays (cheaper than np.cross on small arrays)."""
+    return np.stack([a[..., 1] * b[..., 2] - a[..., 2] * b[..., 1],
+                     a[..., 2] * b[..., 0] - a[..., 0] * b[..., 2],
+                     a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0]], axis=-1)
+
+
+def _triples(n: int) -> np.ndarray:
+    return np.asarray(list(itertools.combinations(range(n), 3)), dtype=np.intp).reshape(-1, 3)
+
+
+_TRIPLES = {n: _triples(n) for n in range(3, _MAX_TRIPLES_POINTS + 1)}
+
+
+def _triangle_tilt(p0, p1, p2, h0, h1, h2) -> np.ndarray:
+    """Tilt (degrees) from the plane of triangles given in-plane points and heights.
+
+    Parameters
+    ----------
+    p0, p1, p2 : (t, 2) float
+        Corners in the plane, m.
+    h0, h1, h2 : (t,) float
+        Heights of the corners above the plane, m.
+
+    Returns
+    -------
+    (t,) float
+        Degrees; 0 for zero-area triples (no triangulation uses them), large for
+        near-degenerate ones.
+    """
+    e1, e2 = p1 - p0, p2 - p0
+    d1, d2 = h1 - h0, h2 - h0
+    area2 = e1[:, 0] * e2[:, 1] - e1[:, 1] * e2[:, 0]
+    g = np.hypot(d1 * e2[:, 1] - d2 * e1[:, 1], d2 * e1[:, 0] - d1 * e2[:, 0])
+    with np.errstate(divide="ignore", invalid="ignore"):
+        slope = np.where(area2 != 0, g / np.abs(area2), 0.0)
+    return np.degrees(np.arctan(slope))
+
+
+def _normals_deviation(P3: np.ndarray, tri: np.ndarray, tol_deg: float) -> float | None:
+    """First deviation (degrees) above ``tol_deg`` from the first triangle's normal, or None."""
+    if len(tri) < 2:
+        return None
+    a, b, c = P3[tri[:, 0]], P3[tri[:, 1]], P3[tri[:, 2]]
+    nrm = _cross(b - a, c - a)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        nrm = nrm / np.linalg.norm(nrm, axis=1, keepdims=True)
+    v0 = nrm[0]
+    cr = np.linalg.norm(_cross(np.broadcast_to(v0, nrm[1:].shape), nrm[1:]), axis=1)
+    dot = nrm[1:] @ v0
+    ang = np.degrees(np.arctan2(cr, dot))
+    over = np.nonzero(ang > tol_deg)[0]
+    if len(over) == 0:
+        return None
+    return float(ang[over[0]])
+
+
+def check_polygons(vertices: np.ndarray, shell: Shell, tol: Tolerances = DEFAULT) -> list[tuple[int, int, str]]:
+    """Polygon defects of every surface of a shell, as val3dity reports them.
+
+    Parameters
+    ----------
+    vertices : (n, 3) float
+        The building's vertices, m.
+    shell : Shell
+        Surfaces whose rings index ``vertices``.
+    tol : Tolerances
+        ``snap_tol``, ``planarity_d2p_tol`` (m), ``planarity_n_tol`` (degrees), ``ignore204``.
+
+    Returns
+    -------
+    list of (face_index, code, info)
+        In val3dity's order: face by face, then the 204s. Empty when every polygon is valid.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from lod2energy.model import Shell, Surface
+    >>> v = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0.5]])
+    >>> check_polygons(v, Shell((Surface.from_lists([[0, 1, 2, 3]]),)))
+    [(0, 203, 'distance to fitted plane: 0.125 (tolerance=0.01)')]
+    """
+    V = np.asarray(vertices, dtype=np.float64).reshape(-1, 3)
+    surfaces = shell.surfaces
+    if not surfaces:
+        return []
+    rings = [r for s in surfaces for r in s.rings]
+    F = len(surfaces)
+    face_nrings = np.fromiter((len(s.rings) for s in surfaces), dtype=np.intp, count=F)
+    ring_size = np.fromiter((len(r) for r in rings), dtype=np.intp, count=len(rings))
+    ring_face = np.repeat(np.arange(F), face_nrings)
+    face_first_ring = np.cumsum(face_nrings) - face_nrings
+    ring_start = np.cumsum(ring_size) - ring_size
+    K = int(ring_size.sum())
+    flat = (np.concatenate([np.asarray(r, dtype=np.intp).reshape(-1) for r in rings]) if K
+            else np.zeros(0, np.intp))
+    if K and (flat.min() < 0 or flat.max() >= len(V)):
+        pos_ring = np.repeat(np.arange(len(rings)), ring_size)
+        bad = np.unique(ring_face[pos_ring[(flat < 0) | (flat >= len(V))]])
+        return [(int(f), 999, "vertex index out of range") for f in bad]
+    ids = snapped_ids(V, flat, tol.snap_tol) if K else flat
+    pos_ring = np.repeat(np.arange(len(rings)), ring_size)
+    nxt = np.arange(K) + 1
+    if K:
+        nxt[ring_start + ring_size - 1] = ring_start  # rings with size 0 never reach here
+    face_npts = np.bincount(ring_face, weights=ring_size, minlength=F).astype(np.intp)
+    face_start = np.cumsum(face_npts) - face_npts
+
+    # ---- 101, 102
+    few = (face_nrings == 0) | (np.bincount(ring_face[ring_size < 3], minlength=F) > 0)
+    same = ids == ids[nxt] if K else np.zeros(0, bool)
+    dup = np.bincount(ring_face[pos_ring[same]], minlength=F) > 0
+    dup &= ~few
+    finite_pt = np.isfinite(V[ids]).all(axis=1) if K else np.zeros(0, bool)
+    nonfinite = np.bincount(ring_face[pos_ring[~finite_pt]], minlength=F) > 0
+    code = np.zeros(F, dtype=np.int64)
+    code[few] = 101
+    code[dup] = 102
+    info: dict[int, list[tuple[int, int, str]]] = {}
+    # ---- lone triangles: only collinearity
+    tri = (code == 0) & (face_nrings == 1) & (face_npts == 3)
+    if tri.any():
+        fidx = np.nonzero(tri)[0]
+        P = V[ids[face_start[fidx][:, None] + np.arange(3)]]
+        cr = _cross(P[:, 1] - P[:, 0], P[:, 2] - P[:, 0])
+        lim = 1e-9 * np.linalg.norm(P[:, 1] - P[:, 0], axis=1) * np.linalg.norm(P[:, 2] - P[:, 0], axis=1)
+        close = ~(np.linalg.norm(cr, axis=1) > lim)
+        for k in np.nonzero(close)[0].tolist():
+            if not np.isfinite(P[k]).all() or _exactly_collinear(*P[k]):
+                code[fidx[k]] = 104
+                info[int(fidx[k])] = [(int(fidx[k]), 104, INFO_104_TRIANGLE)]
+        code[fidx[code[fidx] == 0]] = -1  # valid triangle: done
+    bad_pts = (code == 0) & nonfinite
+    code[bad_pts] = 104
+    for f in np.nonzero(bad_pts)[0].tolist():
+        info[f] = [(f, 104, INFO_104_RING)]
+
+    # ---- 203 and projection on the fitted plane (segment sums: no grouping by size)
+    general = code == 0
+    thr = float(np.float32(tol.planarity_d2p_tol) * np.float32(tol.planarity_d2p_tol))
+    XY = np.zeros((K, 2))
+    H = np.zeros(K)
+    planar = np.zeros(F, dtype=bool)
+    gf = np.nonzero(general)[0]
+    if len(gf):
+        fp = ring_face[pos_ring]
+        sel = general[fp]
+        P = V[ids]
+        w = fp[sel]
+        cnt = np.maximum(face_npts, 1)
+        c = np.stack([np.bincount(w, weights=P[sel, i], minlength=F) for i in range(3)], axis=1) / cnt[:, None]
+        X = P - c[fp]
+        Xs = X[sel]
+        cov = np.empty((F, 3, 3))
+        for i in range(3):
+            for j in range(i, 3):
+                cov[:, i, j] = cov[:, j, i] = np.bincount(w, weights=Xs[:, i] * Xs[:, j], minlength=F)
+        nrm = np.zeros((F, 3))
+        nrm[gf] = _smallest_eigenvector(cov[gf])
+        h = np.einsum("ki,ki->k", X, nrm[fp])
+        over = sel & (h * h > thr)
+        if over.any():
+            opos = np.nonzero(over)[0]
+            ofaces, first = np.unique(fp[opos], return_index=True)
+            for f, k in zip(ofaces.tolist(), opos[first].tolist()):
+                code[f] = 203
+                info[f] = [(f, 203, info_203(abs(h[k]), tol.planarity_d2p_tol))]
+        u = np.zeros((F, 3))
+        v = np.zeros((F, 3))
+        u[gf], v[gf] = _plane_basis(nrm[gf])
+        XY[:, 0] = np.einsum("ki,ki->k", X, u[fp])
+        XY[:, 1] = np.einsum("ki,ki->k", X, v[fp])
+        H[:] = np.where(sel, h, 0.0)
+        planar = code == 0
+
+    # ---- 104 on projected rings, 208, GEOS
+    pf = np.nonzero(planar)[0]
+    if len(pf):
+        rsel = np.nonzero(planar[ring_face])[0]
+        psel = planar[ring_face[pos_ring]]
+        lr = shapely.linearrings(XY[psel], indices=np.searchsorted(rsel, pos_ring[psel]))
+        simple = np.zeros(len(rings), dtype=bool)
+        simple[rsel] = shapely.is_simple(lr)
+        zero_edge = np.bincount(pos_ring[(XY == XY[nxt]).all(axis=1) & psel], minlength=len(rings)) > 0
+        ring_ok = simple & ~zero_edge
+        cross_terms = XY[:, 0] * XY[nxt, 1] - XY[:, 1] * XY[nxt, 0]
+        ring_area = np.bincount(pos_ring, weights=cross_terms, minlength=len(rings))
+        to_geos = []
+        for f in pf.tolist():
+            r0 = int(face_first_ring[f])
+            if not ring_ok[r0]:
+                info[f] = [(f, 104, INFO_104_RING)]
+                planar[f] = False
+                continue
+            nr = int(face_nrings[f])
+            if nr == 1:
+                continue
+            fe = []
+            kept = [r0]
+            for r in range(r0 + 1, r0 + nr):
+                if ring_ok[r]:
+                    kept.append(r)
+                else:
+                    fe.append((f, 104, INFO_104_RING))
+            if len(kept) > 1:
+                if any((ring_area[r] > 0) == (ring_area[r0] > 0) for r in kept[1:]):
+                    fe.append((f, 208, INFO_208))
+                else:
+                    to_geos.append((f, kept))
+            if fe:
+                info[f] = fe
+                planar[f] = False
+        if to_geos:
+            polys = [shapely.Polygon(XY[ring_start[kept[0]]:ring_start[kept[0]] + ring_size[kept[0]]],
+                                     [XY[ring_start[r]:ring_start[r] + ring_size[r]] for r in kept[1:]])
+                     for f, kept in to_geos]
+            reasons = shapely.is_valid_reason(np.asarray(polys + [None], dtype=object)[:-1])
+            for (f, _), reason in zip(to_geos, reasons.tolist()):
+                if reason is not None and not reason.startswith("Valid Geometry"):
+                    info.setdefault(f, []).append((f, geos_code(reason), reason))
+                    planar[f] = False
+
+    out: list[tuple[int, int, str]] = []
+    for f in range(F):
+        c_ = code[f]
+        if c_ in (101, 102):
+            out.append((f, int(c_), ""))
+        elif f in info:
+            out.extend(info[f])
+    if out or tol.ignore204:
+        return out
+
+    # ---- 204, only for a shell whose every polygon is valid
+    return _check_normals(np.nonzero(planar)[0], face_npts, face_start, face_first_ring, face_nrings,
+                          ring_size, ids, V, XY, H, tol.planarity_n_tol)
+
+
+def _check_normals(faces, face_npts, face_start, face_first_ring, face_nrings, ring_size, ids, V, XY, H,
+                   tol_deg: float) -> list[tuple[int, int, str]]:
+    suspects: list[int] = []
+    trip, owner = [], []
+    for n in np.unique(face_npts[faces]).tolist():
+        fidx = faces[face_npts[faces] == n]
+        if n > _MAX_TRIPLES_POINTS:
+            suspects.extend(fidx.tolist())
+            continue
+        T = _TRIPLES[n]
+        trip.append((face_start[fidx][:, None, None] + T[None]).reshape(-1, 3))
+        owner.append(np.repeat(fidx, len(T)))
+    if trip:
+        T = np.concatenate(trip)
+        own = np.concatenate(owner)
+        tilt = _triangle_tilt(XY[T[:, 0]], XY[T[:, 1]], XY[T[:, 2]], H[T[:, 0]], H[T[:, 1]], H[T[:, 2]])
+        worst = np.zeros(len(face_npts))
+        np.maximum.at(worst, own, tilt)
+        cand = np.unique(own)
+        suspects.extend(cand[~(2 * worst[cand] <= tol_deg)].tolist())
+    out = []
+    for f in sorted(suspects):
+        s, n = int(face_start[f]), int(face_npts[f])
+        r0, nr = int(face_first_ring[f]), int(face_nrings[f])
+        ends = np.cumsum(ring_size[r0:r0 + nr])
+        try:
+            tri = constrained_delaunay(XY[s:s + n], ends)
+        except Exception:  # a triangulation failure is not a planarity defect
+            continue
+        dev = _normals_deviation(V[ids[s:s + n]], tri, tol_deg)
+        if dev is not None:
+            out.append((f, 204, info_204(dev, tol_deg)))
+    return out
+
+
+def check_instance(building, obj, gi, geometry, tol: Tolerances = DEFAULT) -> list:
+    """Defects of a GeometryInstance: its template validated in template coordinates.
+
+    val3dity validates the template geometry itself (``vertices-templates``, no
+    transformation) once per instance. The template comes from
+    ``building.provenance["geometry_templates"]`` (set by the CityJSON reader); an instance
+    whose template cannot be found gives no defect (nothing to validate).
+
+    Returns
+    -------
+    list of Defect
+    """
+    from lod2energy.validate.checks import validate_geometry  # late: checks imports this module
+
+    resolved = template_geometry(building, geometry)
+    if resolved is None:
+        return []
+    tverts, tgeom = resolved
+    return validate_geometry(tverts, obj.id, gi, tgeom, tol)
+
+
+def template_geometry(building, geometry):
+    """``(vertices (n, 3), Geometry)`` of the template an instance refers to, or None."""
+    raw = geometry.raw or {}
+    t = raw.get("template")
+    templates = (building.provenance or {}).get("geometry_templates")
+    if not isinstance(t, int) or isinstance(t, bool) or not templates:
+        return None
+    cache = templates.get("_parsed") if hasattr(templates, "get") else None
+    if cache is not None and t in cache:
+        return cache[t]
+    return parse_template(templates, t)
+
+
+def parse_template(templates, index: int):
+    """Parse template ``index`` of a CityJSON ``geometry-templates`` object, or None."""
+    from lod2energy.io.cityjson import _Collector, _parse_geometry  # reader's own parser
+    from lod2energy.errors import InputError
+
+    try:
+        tlist = templates.get("templates") or []
+        tv = np.asarray(templates.get("vertices-templates") or [], dtype=np.float64).reshape(-1, 3)
+        g = dict(tlist[index])
+    except (TypeError, ValueError, IndexError, AttributeError):
+        return None
+    g.setdefault("lod", "0")
+    try:
+        geom = _parse_geometry(g, _Collector(len(tv)), f"template={index}")
+    except InputError:
+        return None
+    if not geom.is_polygonal:
+        return None
+    return tv, geom
+
+
+def iter_shell_defects(vertices, shells: Iterable[Shell], tol: Tolerances = DEFAULT):
+    """``check_polygons`` over several shells: yields ``(shell_index, face, code, info)``."""
+    for hi, sh in enumerate(shells):
+        for f, code, info in check_polygons(vertices, sh, tol):
+            yield hi, f, code, info

@@ -1,0 +1,139 @@
+"""Constrained Delaunay triangulation of a small planar polygon with holes (for check 204).
+
+val3dity checks the normals deviation (204) on the constrained Delaunay triangulation
+(CDT) of each polygon, projected on its fitted plane (CGAL). The CDT avoids needless
+slivers, whose normals tilt the most on a slightly non-planar polygon, so another
+triangulation (plain ear clipping) would report 204 where val3dity does not. Here: ear
+clipping (mapbox-earcut) followed by Lawson edge flips that never flip a ring edge,
+which converges to the CDT.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+try:
+    import mapbox_earcut as _earcut
+except ImportError:  # pragma: no cover - declared dependency
+    _earcut = None
+
+
+def _incircle(pa, pb, pc, pd) -> float:
+    """> 0 when ``pd`` is inside the circle through the CCW triangle ``pa, pb, pc``."""
+    adx, ady = pa[0] - pd[0], pa[1] - pd[1]
+    bdx, bdy = pb[0] - pd[0], pb[1] - pd[1]
+    cdx, cdy = pc[0] - pd[0], pc[1] - pd[1]
+    ad = adx * adx + ady * ady
+    bd = bdx * bdx + bdy * bdy
+    cd = cdx * cdx + cdy * cdy
+    return (adx * (bdy * cd - bd * cdy) - ady * (bdx * cd - bd * cdx) + ad * (bdx * cdy - bdy * cdx))
+
+
+def _orient(pa, pb, pc) -> float:
+    return (pb[0] - pa[0]) * (pc[1] - pa[1]) - (pb[1] - pa[1]) * (pc[0] - pa[0])
+
+
+def ear_triangles(points2d: np.ndarray, ring_ends: np.ndarray) -> np.ndarray:
+    """Ear-clipping triangulation.
+
+    Parameters
+    ----------
+    points2d : (n, 2) float
+        Ring vertices (outer ring first, then holes), open rings, concatenated.
+    ring_ends : (r,) int
+        Cumulative ring sizes (``ring_ends[-1] == n``).
+
+    Returns
+    -------
+    (t, 3) int
+        Triangles as indices into ``points2d``, each counter-clockwise.
+    """
+    pts = np.ascontiguousarray(points2d, dtype=np.float64)
+    if _earcut is None:  # pragma: no cover
+        raise ImportError("mapbox-earcut is required for the 204 check")
+    tri = np.asarray(_earcut.triangulate_float64(pts, np.asarray(ring_ends, dtype=np.uint32)),
+                     dtype=np.intp).reshape(-1, 3)
+    if len(tri) == 0:
+        return tri
+    a, b, c = pts[tri[:, 0]], pts[tri[:, 1]], pts[tri[:, 2]]
+    area2 = (b[:, 0] - a[:, 0]) * (c[:, 1] - a[:, 1]) - (b[:, 1] - a[:, 1]) * (c[:, 0] - a[:, 0])
+    cw = area2 < 0
+    tri[cw] = tri[cw][:, [0, 2, 1]]
+    return tri
+
+
+def constrained_delaunay(points2d: np.ndarray, ring_ends: np.ndarray, max_flips: int | None = None) -> np.ndarray:
+    """CDT of a polygon with holes whose constraints are its ring edges.
+
+    Parameters
+    ----------
+    points2d : (n, 2) float
+        Ring vertices (outer ring first, then holes), open rings, concatenated.
+    ring_ends : (r,) int
+        Cumulative ring sizes.
+    max_flips : int, optional
+        Safety bound on edge flips (default ``10 n^2``).
+
+    Returns
+    -------
+    (t, 3) int
+        Counter-clockwise triangles, indices into ``points2d``.
+    """
+    pts = np.asarray(points2d, dtype=np.float64)
+    tri = ear_triangles(pts, ring_ends)
+    n = len(pts)
+    if len(tri) < 2:
+        return tri
+    constrained = set()
+    start = 0
+    for end in np.asarray(ring_ends).tolist():
+        for i in range(start, end):
+            j = i + 1 if i + 1 < end else start
+            constrained.add((min(i, j), max(i, j)))
+        start = end
+    tris = [list(t) for t in tri.tolist()]
+    edge_tris: dict[tuple[int, int], list[int]] = {}
+    for ti, (a, b, c) in enumerate(tris):
+        for u, v in ((a, b), (b, c), (c, a)):
+            edge_tris.setdefault((min(u, v), max(u, v)), []).append(ti)
+    stack = [e for e, ts in edge_tris.items() if len(ts) == 2 and e not in constrained]
+    P = pts.tolist()
+    scale = float(np.ptp(pts, axis=0).max()) if n else 1.0
+    eps = 1e-12 * scale ** 4
+    budget = max_flips if max_flips is not None else 10 * n * n + 10
+    while stack and budget > 0:
+        e = stack.pop()
+        ts = edge_tris.get(e)
+        if ts is None or len(ts) != 2:
+            continue
+        t1, t2 = ts
+        a, b = e
+        # orient t1 so that it holds a -> b
+        A, B, C = tris[t1]
+        rot = {(A, B): (A, B, C), (B, C): (B, C, A), (C, A): (C, A, B)}
+        if (a, b) in rot:
+            a, b, c = rot[(a, b)]
+        else:
+            a, b, c = rot[(b, a)]
+        D = [v for v in tris[t2] if v != a and v != b]
+        if len(D) != 1:
+            continue
+        d = D[0]
+        if _incircle(P[a], P[b], P[c], P[d]) <= eps:
+            continue
+        if _orient(P[a], P[d], P[c]) <= 0 or _orient(P[d], P[b], P[c]) <= 0:
+            continue
+        budget -= 1
+        tris[t1] = [a, d, c]
+        tris[t2] = [d, b, c]
+        del edge_tris[(min(a, b), max(a, b))]
+        edge_tris[(min(c, d), max(c, d))] = [t1, t2]
+        # edge (b, d) moved from t2 to t2 (unchanged); (a, c) stays in t1; (b, c) moved t1 -> t2;
+        # (a, d) moved t2 -> t1
+        for (u, v), old, new in (((b, c), t1, t2), ((a, d), t2, t1)):
+            lst = edge_tris[(min(u, v), max(u, v))]
+            lst[lst.index(old)] = new
+        for u, v in ((a, c), (c, b), (b, d), (d, a)):
+            k = (min(u, v), max(u, v))
+            if k not in constrained and len(edge_tris.get(k, ())) == 2:
+                stack.append(k)
+    return np.asarray(tris, dtype=np.intp).reshape(-1, 3)
