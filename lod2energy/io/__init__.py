@@ -1,6 +1,7 @@
 """Readers and writers, chosen by file suffix (a small format registry, as meshio does)."""
 from __future__ import annotations
 
+import re
 from typing import Callable, Iterator
 
 from lod2energy.model import Building, CityModel, FeatureError
@@ -37,10 +38,34 @@ def read(path: str, **options) -> "tuple[CityModel | None, Iterator[Building | F
     return _READERS[".json"][1](path, **options)
 
 
+_TYPE_RE = re.compile(rb'"type"\s*:\s*"([^"]{1,40})"')
+
+
+def _json_document_type(path: str, head: int = 65536) -> str | None:
+    """The first ``"type"`` value in the head of a JSON file (cheap sniffing, no parsing).
+
+    Tells tu3djson and JSON-FG (``"tu3djson"``, ``"Feature"``, ``"FeatureCollection"``)
+    from CityJSON, whose first ``"type"`` is "CityJSON" or a CityObject type.
+    """
+    try:
+        with open(path, "rb") as f:
+            m = _TYPE_RE.search(f.read(head))
+    except OSError:
+        return None
+    return m.group(1).decode("utf-8", "replace") if m else None
+
+
 def _register_builtin() -> None:
     from lod2energy.io import cityjson
 
     def _cj(path, **_):
+        other = _json_document_type(path) if not cityjson.is_cityjsonseq(path) else None
+        if other == "tu3djson":
+            from lod2energy.io import tu3djson
+            return tu3djson.read(path)
+        if other in ("Feature", "FeatureCollection"):
+            from lod2energy.io import jsonfg
+            return jsonfg.read(path)
         return cityjson.read(path)
 
     register_format("CityJSON", (".json", ".city.json"), _cj)

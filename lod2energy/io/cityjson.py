@@ -310,7 +310,19 @@ def _header_from(doc: Mapping[str, Any], path: str, fmt: str) -> CityModel:
 
 
 def _features_of_document(doc: Mapping[str, Any], transform: Mapping | None,
-                          what: str) -> Iterator[Building | FeatureError]:
+                          what: str, templates: Any = None) -> Iterator[Building | FeatureError]:
+    if templates is None:
+        templates = doc.get("geometry-templates")
+    for item in _features_of_document_raw(doc, transform, what):
+        if isinstance(templates, Mapping) and isinstance(item, Building) and any(
+                g.type == "GeometryInstance" for o in item.objects for g in o.geometries):
+            # instances are validated on their template (lod2energy.validate.polygon.check_instance)
+            item = item.with_provenance(geometry_templates=templates)
+        yield item
+
+
+def _features_of_document_raw(doc: Mapping[str, Any], transform: Mapping | None,
+                              what: str) -> Iterator[Building | FeatureError]:
     cos = doc.get("CityObjects")
     if not isinstance(cos, Mapping):
         yield FeatureError(None, 901, f"{what} has no 'CityObjects' object")
@@ -395,7 +407,8 @@ def _read_seq(path: str):
                 if not isinstance(line, Mapping) or line.get("type") != "CityJSONFeature":
                     yield FeatureError(f"line {lineno}", 901, f"{path} line {lineno}: not a CityJSONFeature")
                     continue
-                yield from _features_of_document(line, model.transform, f"{path} line {lineno}")
+                yield from _features_of_document(line, model.transform, f"{path} line {lineno}",
+                                                 model.geometry_templates)
     return model, gen()
 
 

@@ -423,10 +423,18 @@ def template_geometry(building, geometry):
     templates = (building.provenance or {}).get("geometry_templates")
     if not isinstance(t, int) or isinstance(t, bool) or not templates:
         return None
-    cache = templates.get("_parsed") if hasattr(templates, "get") else None
-    if cache is not None and t in cache:
-        return cache[t]
-    return parse_template(templates, t)
+    key = (id(templates), t)
+    hit = _TEMPLATE_CACHE.get(key)
+    if hit is not None and hit[0] is templates:
+        return hit[1]
+    parsed = parse_template(templates, t)
+    if len(_TEMPLATE_CACHE) > 256:
+        _TEMPLATE_CACHE.clear()
+    _TEMPLATE_CACHE[key] = (templates, parsed)
+    return parsed
+
+
+_TEMPLATE_CACHE: dict = {}
 
 
 def parse_template(templates, index: int):

@@ -1,0 +1,156 @@
+"""val3dity's own test suite run through lod2energy (conformance figures).
+
+``../shared/data/val3dity-tests/EXPECTED_RESULTS.json`` lists, for each test file of
+val3dity, the command-line options and the acceptable outcomes (lists of distinct error
+codes, ``[]`` = valid, ``"CRASH"`` = val3dity crashes). :func:`run_case` reads one case
+with the same options and returns the distinct codes lod2energy finds over the whole
+file; :func:`matches` compares them with the expectation (for a CRASH case, not crashing
+and reporting the file as invalid input, 901, is the right outcome).
+"""
+from __future__ import annotations
+
+import json
+from dataclasses import replace
+from pathlib import Path
+from typing import Any, Iterable, Mapping
+
+from lod2energy.config import DEFAULT, Tolerances
+from lod2energy.model import FeatureError
+
+SUITE = Path(__file__).resolve().parents[2].parent / "shared" / "data" / "val3dity-tests"
+"""Default location of val3dity's test data (``../shared/...`` next to the repository)."""
+
+_FLOAT_OPTIONS = {"--snap_tol": "snap_tol", "--overlap_tol": "overlap_tol",
+                  "--planarity_n_tol": "planarity_n_tol", "--planarity_d2p_tol": "planarity_d2p_tol"}
+
+
+def load_cases(root: Path | str = SUITE, statuses: Iterable[str] = ("tested",),
+               skip_suffixes: Iterable[str] = (".gml",)) -> list[dict]:
+    """Cases of ``EXPECTED_RESULTS.json`` with one of ``statuses``, minus CityGML/IndoorGML files."""
+    doc = json.loads((Path(root) / "EXPECTED_RESULTS.json").read_text(encoding="utf-8"))
+    statuses = tuple(statuses)
+    skip = tuple(s.lower() for s in skip_suffixes)
+    return [c for c in doc["cases"]
+            if c.get("status") in statuses and not c["file"].lower().endswith(skip)]
+
+
+def case_id(case: Mapping[str, Any]) -> str:
+    """A short readable id: file, options and inner shells."""
+    opts = [o for o in case.get("options", []) if o != "--unittests"]
+    parts = [case["file"]] + opts + [f"ishell={Path(s).name}" for s in case.get("inner_shells", [])]
+    return " ".join(parts)
+
+
+def parse_options(options: Iterable[str]) -> tuple[dict, Tolerances]:
+    """val3dity command-line options -> (reader options, tolerances).
+
+    Raises
+    ------
+    ValueError
+        An option lod2energy does not know.
+    """
+    opts = list(options)
+    read_opts: dict[str, Any] = {}
+    tol = DEFAULT
+    i = 0
+    while i < len(opts):
+        o = opts[i]
+        if o in ("--unittests", "--verbose", "--notranslate", "--onlyinvalid"):
+            i += 1
+        elif o in ("-p", "--primitive"):
+            read_opts["primitive"] = opts[i + 1]
+            i += 2
+        elif o in _FLOAT_OPTIONS:
+            tol = replace(tol, **{_FLOAT_OPTIONS[o]: float(opts[i + 1])})
+            i += 2
+        elif o == "--ignore204":
+            tol = replace(tol, ignore204=True)
+            i += 1
+        else:
+            raise ValueError(f"unknown val3dity option {o!r}")
+    return read_opts, tol
+
+
+def run_file(path: str, read_opts: Mapping[str, Any] | None = None, tol: Tolerances = DEFAULT) -> list[int]:
+    """Sorted distinct codes lod2energy reports for a whole file (``[]`` when valid)."""
+    from lod2energy.io import read
+    from lod2energy.validate.checks import validate_building
+
+    codes: set[int] = set()
+    mesh_only = {"primitive", "inner_shells"}
+    opts = dict(read_opts or {})
+    if not path.lower().endswith((".poly", ".obj", ".off")):
+        opts = {k: v for k, v in opts.items() if k not in mesh_only}
+    _, features = read(path, **opts)
+    for f in features:
+        if isinstance(f, FeatureError):
+            codes.add(int(f.code))
+            continue
+        codes.update(d.code for d in validate_building(f, tol))
+    return sorted(codes)
+
+
+def run_case(case: Mapping[str, Any], root: Path | str = SUITE) -> list[int]:
+    """Run one case of ``EXPECTED_RESULTS.json``; returns the sorted distinct codes.
+
+    Never raises for bad input; an unexpected exception (a crash of lod2energy) gives
+    ``[999]`` (UNKNOWN_ERROR) so that benchmarks count it as a failure.
+    """
+    root = Path(root)
+    try:
+        read_opts, tol = parse_options(case.get("options", []))
+    except ValueError:
+        return [903]
+    shells = [str(root / s) for s in case.get("inner_shells", [])]
+    if shells:
+        read_opts["inner_shells"] = shells
+    try:
+        return run_file(str(root / case["file"]), read_opts, tol)
+    except Exception:  # noqa: BLE001 - a crash is a result here, not an error
+        return [999]
+
+
+def matches(case: Mapping[str, Any], outcome: list[int]) -> bool:
+    """True when ``outcome`` is one of the case's acceptable outcomes."""
+    got = sorted(set(outcome))
+    for exp in case.get("expected") or []:
+        if exp == "CRASH":
+            if got == [901]:
+                return True
+        elif isinstance(exp, list) and sorted(set(exp)) == got:
+            return True
+    return False
+
+
+def summary(root: Path | str = SUITE, statuses: Iterable[str] = ("tested",)) -> dict:
+    """Pass share over the cases, overall and on polygon-level/input cases (codes < 300).
+
+    Returns
+    -------
+    dict
+        ``{"n", "passed", "share", "n_low", "passed_low", "share_low", "failures": [(id, expected, got)]}``;
+        "low" cases are those whose expectations only involve codes < 300 or 9xx.
+    """
+    cases = load_cases(root, statuses)
+    res = {"n": 0, "passed": 0, "n_low": 0, "passed_low": 0, "failures": []}
+    for c in cases:
+        got = run_case(c, root)
+        ok = matches(c, got)
+        low = all(e == "CRASH" or all(code < 300 or code >= 900 for code in e) for e in c["expected"])
+        res["n"] += 1
+        res["passed"] += ok
+        res["n_low"] += low
+        res["passed_low"] += ok and low
+        if not ok:
+            res["failures"].append((case_id(c), c["expected"], got))
+    res["share"] = res["passed"] / res["n"] if res["n"] else 0.0
+    res["share_low"] = res["passed_low"] / res["n_low"] if res["n_low"] else 0.0
+    return res
+
+
+if __name__ == "__main__":  # python -m lod2energy.validate.conformance
+    s = summary()
+    print(f"val3dity conformance: {s['passed']}/{s['n']} = {s['share']:.1%} "
+          f"(codes < 300 and 9xx: {s['passed_low']}/{s['n_low']} = {s['share_low']:.1%})")
+    for cid, exp, got in s["failures"]:
+        print(f"  FAIL {cid}: expected {exp}, got {got}")
