@@ -32,33 +32,67 @@ def validate_geometry(vertices, coid: str, gi: int, g: Geometry, tol: Tolerances
     gi : int
         Index of the geometry in the CityObject's ``geometry`` array.
     """
-    out: list[Defect] = []
-    if not g.solids or any(not so.shells for so in g.solids) or any(
-            not sh.surfaces for so in g.solids for sh in so.shells):
-        return [Defect(902, f"coid={coid}|geom={gi}", f"empty {g.type}")]
-    volumetric = g.is_volumetric
-    solids_ok = []
-    for si, so in enumerate(g.solids):
-        shells_ok = True
-        for hi, sh in enumerate(so.shells):
-            found = [Defect(code, f"coid={coid}|" + g.location(gi, si, hi, f), info)
-                     for f, code, info in polygon.check_polygons(vertices, sh, tol)]
-            if not found:
+    return validate_geometries(vertices, [(coid, gi, g)], tol)[0]
+
+
+def validate_geometries(vertices, items, tol: Tolerances = DEFAULT) -> list[list[Defect]]:
+    """Defects of several polygonal geometries sharing one vertex array (levels 1xx-5xx).
+
+    Shell checks of all shells whose polygons are valid run in one vectorised batch
+    (:func:`shell.check_shells`). MultiSurfaces get polygon checks only;
+    CompositeSurfaces the shell checks that need no closedness.
+
+    Parameters
+    ----------
+    vertices : (n, 3) float
+        The building's vertices, m.
+    items : sequence of (coid, geom_index, Geometry)
+
+    Returns
+    -------
+    list (one per item) of list of Defect
+    """
+    results: list[list[Defect]] = [[] for _ in items]
+    pending = []                                  # (item, solid, shell, Shell, volumetric)
+    ok: dict[tuple[int, int, int], bool] = {}
+    usable = [False] * len(items)
+    for k, (coid, gi, g) in enumerate(items):
+        if not g.solids or any(not so.shells for so in g.solids) or any(
+                not sh.surfaces for so in g.solids for sh in so.shells):
+            results[k].append(Defect(902, f"coid={coid}|geom={gi}", f"empty {g.type}"))
+            continue
+        usable[k] = True
+        for si, so in enumerate(g.solids):
+            for hi, sh in enumerate(so.shells):
                 found = [Defect(code, f"coid={coid}|" + g.location(gi, si, hi, f), info)
-                         for f, code, info in shell_checks.check_shell(vertices, sh, tol, volumetric or g.type == "CompositeSurface")]
-            if found:
-                shells_ok = False
-                out.extend(found)
-        if shells_ok and volumetric:
-            found = [Defect(code, f"coid={coid}|" + g.location(gi, si, h, None), info)
-                     for h, code, info in solid_checks.check_solid(vertices, so, tol)]
-            out.extend(found)
-            shells_ok = not found
-        solids_ok.append(shells_ok)
-    if g.type in MULTISOLID_TYPES and all(solids_ok):
-        out.extend(Defect(code, f"coid={coid}|geom={gi}" + ("" if s is None else f"|solid={s}"), info)
-                   for s, code, info in solid_checks.check_multisolid(vertices, g, tol))
-    return out
+                         for f, code, info in polygon.check_polygons(vertices, sh, tol)]
+                results[k].extend(found)
+                ok[(k, si, hi)] = not found
+                if not found and g.type != "MultiSurface":
+                    pending.append((k, si, hi, sh, g.is_volumetric))
+    if pending:
+        found_all = shell_checks.check_shells(vertices, [p[3] for p in pending], tol, [p[4] for p in pending])
+        for (k, si, hi, _, _), found in zip(pending, found_all):
+            coid, gi, g = items[k]
+            results[k].extend(Defect(code, f"coid={coid}|" + g.location(gi, si, hi, f), info)
+                              for f, code, info in found)
+            ok[(k, si, hi)] = not found
+    for k, (coid, gi, g) in enumerate(items):
+        if not usable[k] or not g.is_volumetric:
+            continue
+        solids_ok = []
+        for si, so in enumerate(g.solids):
+            good = all(ok[(k, si, hi)] for hi in range(len(so.shells)))
+            if good:
+                found = [Defect(code, f"coid={coid}|" + g.location(gi, si, h, None), info)
+                         for h, code, info in solid_checks.check_solid(vertices, so, tol)]
+                results[k].extend(found)
+                good = not found
+            solids_ok.append(good)
+        if g.type in MULTISOLID_TYPES and all(solids_ok):
+            results[k].extend(Defect(code, f"coid={coid}|geom={gi}" + ("" if s is None else f"|solid={s}"), info)
+                              for s, code, info in solid_checks.check_multisolid(vertices, g, tol))
+    return results
 
 
 def validate_building(b: Building, tol: Tolerances = DEFAULT) -> list[Defect]:
@@ -69,6 +103,8 @@ def validate_building(b: Building, tol: Tolerances = DEFAULT) -> list[Defect]:
     """
     out = [Defect(int(c), loc, msg) for c, loc, msg in b.provenance.get("input_errors", ())]
     geom_ok = True
+    items = [(o.id, gi, g) for o in b.objects for gi, g in enumerate(o.geometries) if g.is_polygonal]
+    batch = iter(validate_geometries(b.vertices, items, tol))
     for o in b.objects:
         for gi, g in enumerate(o.geometries):
             if g.type == "GeometryInstance":
@@ -76,7 +112,7 @@ def validate_building(b: Building, tol: Tolerances = DEFAULT) -> list[Defect]:
             elif not g.is_polygonal:
                 continue
             else:
-                found = validate_geometry(b.vertices, o.id, gi, g, tol)
+                found = next(batch)
             if found:
                 geom_ok = False
                 out.extend(found)

@@ -1,0 +1,672 @@
+"""Shared numeric geometry: normals, snapping, triangulation, volumes, intersections.
+
+Everything here works on plain numpy arrays (a building's ``vertices`` and the integer
+rings of :class:`~lod2energy.model.Surface`) and is vectorised over faces or triangles
+where it matters. Coordinates are metres; callers working with large real-world
+coordinates (national grids) should subtract a local origin before exact-ish tests,
+the functions that need it do so themselves.
+"""
+from __future__ import annotations
+
+from typing import Sequence
+
+import numpy as np
+
+try:  # mapbox_earcut is a declared dependency; keep import errors readable
+    import mapbox_earcut as _earcut
+except ImportError:  # pragma: no cover
+    _earcut = None
+
+__all__ = [
+    "newell_normal", "polygon_normal", "best_fit_plane", "project_2d", "snap_map",
+    "triangulate_surface", "triangulate_surfaces", "triangulate_shell", "triangle_normals", "triangle_areas",
+    "signed_volume", "bbox_pairs", "segment_triangle_intersect", "triangle_pairs_intersect",
+    "winding_number", "points_in_solid",
+]
+
+
+# ----------------------------------------------------------------------------- normals
+
+def newell_normal(points: np.ndarray) -> np.ndarray:
+    """Newell's (area-weighted, unnormalised) normal of a closed ring.
+
+    Parameters
+    ----------
+    points : (k, 3) float
+        Ring vertices, open (first not repeated), m.
+
+    Returns
+    -------
+    (3,) float
+        Normal whose length is twice the ring's vector area, m2; zero for a degenerate ring.
+    """
+    p = np.asarray(points, dtype=np.float64)
+    if len(p) < 3:
+        return np.zeros(3)
+    p = p - p.mean(axis=0)
+    return np.cross(p, np.roll(p, -1, axis=0)).sum(axis=0)
+
+
+def polygon_normal(points: np.ndarray) -> np.ndarray:
+    """Unit normal of a ring (Newell), right-hand rule; zeros when degenerate.
+
+    Parameters
+    ----------
+    points : (k, 3) float
+        Ring vertices, m.
+
+    Returns
+    -------
+    (3,) float
+    """
+    n = newell_normal(points)
+    ln = np.linalg.norm(n)
+    return n / ln if ln > 0 else n
+
+
+def newell_normals(vertices: np.ndarray, rings: Sequence[np.ndarray]) -> np.ndarray:
+    """Newell normals of many rings at once.
+
+    Parameters
+    ----------
+    vertices : (n, 3) float
+    rings : sequence of (k_i,) int
+
+    Returns
+    -------
+    (len(rings), 3) float
+        Unnormalised normals (length = 2 x area), m2.
+    """
+    if len(rings) == 0:
+        return np.zeros((0, 3))
+    lens = np.fromiter((len(r) for r in rings), dtype=np.intp, count=len(rings))
+    idx = np.concatenate([np.asarray(r, dtype=np.intp) for r in rings])
+    starts = np.concatenate(([0], np.cumsum(lens)[:-1]))
+    nxt = np.arange(len(idx)) + 1
+    ends = starts + lens - 1
+    nxt[ends] = starts
+    p = vertices[idx]
+    p = p - p.mean(axis=0)
+    cr = np.cross(p, p[nxt])
+    out = np.add.reduceat(cr, starts, axis=0) if len(idx) else np.zeros((0, 3))
+    out[lens == 0] = 0.0
+    return out
+
+
+def best_fit_plane(points: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Least-squares plane through points (as CGAL's ``linear_least_squares_fitting_3``).
+
+    Parameters
+    ----------
+    points : (k, 3) float
+
+    Returns
+    -------
+    centroid : (3,) float
+    normal : (3,) float
+        Unit normal, oriented like the Newell normal of ``points`` taken as a ring.
+    """
+    p = np.asarray(points, dtype=np.float64)
+    c = p.mean(axis=0)
+    _, _, vt = np.linalg.svd(p - c, full_matrices=False)
+    n = vt[-1]
+    if np.dot(n, newell_normal(p)) < 0:
+        n = -n
+    return c, n
+
+
+def project_2d(points: np.ndarray, normal: np.ndarray) -> np.ndarray:
+    """Project points on the coordinate plane most orthogonal to ``normal``, keeping orientation.
+
+    A ring counter-clockwise around ``normal`` in 3D is counter-clockwise in 2D.
+
+    Parameters
+    ----------
+    points : (k, 3) float
+    normal : (3,) float
+
+    Returns
+    -------
+    (k, 2) float
+    """
+    ax = int(np.argmax(np.abs(normal)))
+    i, j = [(1, 2), (2, 0), (0, 1)][ax]
+    if normal[ax] < 0:
+        i, j = j, i
+    return np.asarray(points)[:, [i, j]]
+
+
+# ----------------------------------------------------------------------------- snapping
+
+def snap_map(points: np.ndarray, tol: float) -> np.ndarray:
+    """Representative of each point after merging points closer than ``tol``.
+
+    Chains of close points merge into one cluster (transitive closure); the representative
+    is the cluster's lowest index, as val3dity keeps the first vertex it met.
+
+    Parameters
+    ----------
+    points : (n, 3) float
+    tol : float, m
+        ``<= 0`` merges only identical coordinates.
+
+    Returns
+    -------
+    (n,) int
+        ``rep[i]`` is the index of the point that ``i`` merges into (``rep[rep] == rep``).
+    """
+    p = np.asarray(points, dtype=np.float64)
+    n = len(p)
+    if n == 0:
+        return np.zeros(0, dtype=np.intp)
+    if tol <= 0:
+        _, first, inv = np.unique(p, axis=0, return_index=True, return_inverse=True)
+        return first[inv.ravel()].astype(np.intp)
+    from scipy.spatial import cKDTree
+    pairs = cKDTree(p).query_pairs(tol, output_type="ndarray")
+    if len(pairs) == 0:
+        return np.arange(n, dtype=np.intp)
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import connected_components
+    g = coo_matrix((np.ones(len(pairs)), (pairs[:, 0], pairs[:, 1])), shape=(n, n))
+    _, lab = connected_components(g, directed=False)
+    first = np.full(lab.max() + 1, n, dtype=np.intp)
+    np.minimum.at(first, lab, np.arange(n))
+    return first[lab]
+
+
+# ----------------------------------------------------------------------------- triangulation
+
+def _fix_orientation(tris: np.ndarray, p2: np.ndarray, local: np.ndarray) -> np.ndarray:
+    """Flip triangles (local indices into p2) whose 2D area is negative."""
+    a, b, c = p2[local[:, 0]], p2[local[:, 1]], p2[local[:, 2]]
+    area = (b[:, 0] - a[:, 0]) * (c[:, 1] - a[:, 1]) - (b[:, 1] - a[:, 1]) * (c[:, 0] - a[:, 0])
+    neg = area < 0
+    if neg.any():
+        tris = tris.copy()
+        tris[neg] = tris[neg][:, [0, 2, 1]]
+    return tris
+
+
+def _earcut_rings(p2: np.ndarray, ring_ends: np.ndarray) -> np.ndarray:
+    if _earcut is None:  # pragma: no cover
+        raise ImportError("mapbox_earcut is required for triangulation (pip install mapbox-earcut)")
+    t = _earcut.triangulate_float64(np.ascontiguousarray(p2, dtype=np.float64),
+                                    np.asarray(ring_ends, dtype=np.uint32))
+    return np.asarray(t, dtype=np.intp).reshape(-1, 3)
+
+
+def _cdt(p2: np.ndarray, ends: np.ndarray) -> np.ndarray:
+    """Constrained Delaunay triangles (as val3dity's CGAL CDT: no needless slivers)."""
+    try:
+        from lod2energy.validate.triangulate import constrained_delaunay
+    except ImportError:  # pragma: no cover
+        return _earcut_rings(p2, ends)
+    return np.asarray(constrained_delaunay(p2, ends), dtype=np.intp).reshape(-1, 3)
+
+
+def triangulate_surface(vertices: np.ndarray, surface, normal: np.ndarray | None = None) -> np.ndarray:
+    """Triangulate one polygon (holes included) in its own plane.
+
+    Parameters
+    ----------
+    vertices : (n, 3) float
+        The building's vertices, m.
+    surface : Surface or sequence of (k,) int
+        The polygon (outer ring first, then holes), or its rings.
+    normal : (3,) float, optional
+        Plane normal; default: Newell normal of the outer ring.
+
+    Returns
+    -------
+    (t, 3) int
+        Triangles as indices into ``vertices``, oriented like the outer ring (their
+        normals agree with ``normal``). Empty for a degenerate polygon.
+    """
+    rings = surface.rings if hasattr(surface, "rings") else surface
+    outer = np.asarray(rings[0], dtype=np.intp)
+    if len(rings) == 1 and len(outer) == 3:
+        return outer.reshape(1, 3).copy()
+    if len(outer) < 3:
+        return np.zeros((0, 3), dtype=np.intp)
+    if normal is None:
+        normal = newell_normal(vertices[outer])
+    if not np.any(normal):
+        return np.zeros((0, 3), dtype=np.intp)
+    ids = np.concatenate([np.asarray(r, dtype=np.intp) for r in rings])
+    p2 = project_2d(vertices[ids], normal)
+    p2 = p2 - p2.mean(axis=0)
+    ends = np.cumsum([len(r) for r in rings])
+    local = _cdt(p2, ends)
+    if len(local) == 0:
+        return np.zeros((0, 3), dtype=np.intp)
+    return _fix_orientation(ids[local], p2, local)
+
+
+def _triangulate_quads(vertices: np.ndarray, quads: np.ndarray, normals: np.ndarray) -> np.ndarray:
+    """Split simple quads (m, 4) along the diagonal through their sharpest corner."""
+    m = len(quads)
+    ax = np.argmax(np.abs(normals), axis=1)
+    ij = np.array([(1, 2), (2, 0), (0, 1)])[ax]
+    flip = normals[np.arange(m), ax] < 0
+    ij[flip] = ij[flip][:, ::-1]
+    pts = vertices[quads]                                        # (m, 4, 3)
+    p2 = np.stack([np.take_along_axis(pts, np.broadcast_to(ij[:, None, k:k + 1], (m, 4, 1)), 2)[..., 0]
+                   for k in range(2)], axis=-1)                  # (m, 4, 2)
+    prv = np.roll(p2, 1, axis=1)
+    nxt = np.roll(p2, -1, axis=1)
+    turn = ((p2[..., 0] - prv[..., 0]) * (nxt[..., 1] - p2[..., 1])
+            - (p2[..., 1] - prv[..., 1]) * (nxt[..., 0] - p2[..., 0]))   # (m, 4) > 0 convex corner
+    # the diagonal leaves the sharpest corner (reflex or collinear): no zero-area triangle
+    use_bd = np.minimum(turn[:, 1], turn[:, 3]) < np.minimum(turn[:, 0], turn[:, 2])
+    a, b, c, d = quads.T
+    t1 = np.where(use_bd[:, None], np.stack([a, b, d], 1), np.stack([a, b, c], 1))
+    t2 = np.where(use_bd[:, None], np.stack([b, c, d], 1), np.stack([a, c, d], 1))
+    return np.stack([t1, t2], axis=1).reshape(-1, 3)
+
+
+def triangulate_surfaces(vertices: np.ndarray, ringsets: Sequence[Sequence[np.ndarray]]
+                         ) -> tuple[np.ndarray, np.ndarray]:
+    """Triangulate many polygons at once.
+
+    Triangles and simple quadrilaterals are handled in bulk; other polygons (and any
+    polygon with holes) are triangulated one by one (constrained Delaunay) in their
+    own plane.
+
+    Parameters
+    ----------
+    vertices : (n, 3) float
+        The building's vertices, m.
+    ringsets : sequence of sequence of (k,) int
+        For each polygon its rings (outer first).
+
+    Returns
+    -------
+    tris : (T, 3) int
+        Indices into ``vertices``, each oriented like its polygon's outer ring, grouped
+        by polygon in input order.
+    poly_of_tri : (T,) int
+        Index (into ``ringsets``) of the polygon of each triangle.
+    """
+    nf = len(ringsets)
+    if nf == 0:
+        return np.zeros((0, 3), dtype=np.intp), np.zeros(0, dtype=np.intp)
+    simple = np.fromiter((len(r) == 1 for r in ringsets), dtype=bool, count=nf)
+    nout = np.fromiter((len(r[0]) for r in ringsets), dtype=np.intp, count=nf)
+    out_t, out_f = [], []
+    tri_f = np.flatnonzero(simple & (nout == 3))
+    if len(tri_f):
+        out_t.append(np.array([ringsets[f][0] for f in tri_f.tolist()], dtype=np.intp).reshape(-1, 3))
+        out_f.append(tri_f)
+    rest = np.flatnonzero(~(simple & (nout == 3)))
+    normals = np.zeros((nf, 3))
+    if len(rest):
+        normals[rest] = newell_normals(vertices, [ringsets[f][0] for f in rest.tolist()])
+    quad_f = np.flatnonzero(simple & (nout == 4) & np.any(normals != 0, axis=1))
+    if len(quad_f):
+        quads = np.array([ringsets[f][0] for f in quad_f.tolist()], dtype=np.intp).reshape(-1, 4)
+        out_t.append(_triangulate_quads(vertices, quads, normals[quad_f]))
+        out_f.append(np.repeat(quad_f, 2))
+    done = np.zeros(nf, dtype=bool)
+    done[tri_f] = True
+    done[quad_f] = True
+    for f in np.flatnonzero(~done).tolist():
+        t = triangulate_surface(vertices, ringsets[f], normals[f])
+        if len(t):
+            out_t.append(t)
+            out_f.append(np.full(len(t), f, dtype=np.intp))
+    if not out_t:
+        return np.zeros((0, 3), dtype=np.intp), np.zeros(0, dtype=np.intp)
+    tris = np.concatenate(out_t).astype(np.intp)
+    fot = np.concatenate(out_f).astype(np.intp)
+    order = np.argsort(fot, kind="stable")
+    return tris[order], fot[order]
+
+
+def triangulate_shell(vertices: np.ndarray, shell, rings_map: np.ndarray | None = None
+                      ) -> tuple[np.ndarray, np.ndarray]:
+    """Triangulate every surface of a shell.
+
+    Parameters
+    ----------
+    vertices : (n, 3) float
+        The building's vertices, m.
+    shell : Shell or sequence of Surface
+    rings_map : (n,) int, optional
+        Index map applied to ring indices first (e.g. snapped representatives).
+
+    Returns
+    -------
+    tris : (T, 3) int
+        Indices into ``vertices``, each oriented like its surface's outer ring.
+    face_of_tri : (T,) int
+        Index of the surface (in ``shell.surfaces``) each triangle comes from.
+    """
+    surfaces = shell.surfaces if hasattr(shell, "surfaces") else shell
+    if rings_map is not None:
+        mp = np.asarray(rings_map)
+        ringsets = [[mp[r] for r in s.rings] for s in surfaces]
+    else:
+        ringsets = [s.rings for s in surfaces]
+    return triangulate_surfaces(vertices, ringsets)
+
+
+# ----------------------------------------------------------------------------- measures
+
+def triangle_normals(vertices: np.ndarray, tris: np.ndarray, unit: bool = True) -> np.ndarray:
+    """Normals of triangles.
+
+    Parameters
+    ----------
+    vertices : (n, 3) float
+    tris : (T, 3) int
+    unit : bool
+        Normalise (zero stays zero); else length = 2 x area.
+
+    Returns
+    -------
+    (T, 3) float
+    """
+    v = vertices[tris]
+    n = np.cross(v[:, 1] - v[:, 0], v[:, 2] - v[:, 0])
+    if unit:
+        ln = np.linalg.norm(n, axis=1, keepdims=True)
+        n = np.divide(n, ln, out=np.zeros_like(n), where=ln > 0)
+    return n
+
+
+def triangle_areas(vertices: np.ndarray, tris: np.ndarray) -> np.ndarray:
+    """Areas of triangles, m2, shape (T,)."""
+    return 0.5 * np.linalg.norm(triangle_normals(vertices, tris, unit=False), axis=1)
+
+
+def signed_volume(vertices: np.ndarray, tris: np.ndarray) -> float:
+    """Signed volume enclosed by triangles (divergence theorem), m3.
+
+    Positive when a closed surface's normals point outwards. Computed about the
+    vertices' centroid, so large real-world coordinates do not cost precision.
+
+    Parameters
+    ----------
+    vertices : (n, 3) float
+    tris : (T, 3) int
+
+    Returns
+    -------
+    float
+    """
+    tris = np.asarray(tris, dtype=np.intp)
+    if len(tris) == 0:
+        return 0.0
+    used = vertices[np.unique(tris)]
+    o = used.mean(axis=0)
+    v = vertices[tris] - o
+    return float(np.einsum("ij,ij->i", v[:, 0], np.cross(v[:, 1], v[:, 2])).sum() / 6.0)
+
+
+# ----------------------------------------------------------------------------- pairs & intersections
+
+def bbox_pairs(lo: np.ndarray, hi: np.ndarray, pad: float = 0.0,
+               lo2: np.ndarray | None = None, hi2: np.ndarray | None = None) -> np.ndarray:
+    """Pairs of overlapping axis-aligned boxes (sort and sweep on x).
+
+    Parameters
+    ----------
+    lo, hi : (m, 3) float
+        Box corners.
+    pad : float, m
+        Boxes are grown by ``pad`` on each side.
+    lo2, hi2 : (k, 3) float, optional
+        A second set: pairs ``(i, j)`` with ``i`` in the first, ``j`` in the second.
+        Without it, pairs ``i < j`` within the first set.
+
+    Returns
+    -------
+    (p, 2) int
+    """
+    lo = np.asarray(lo, dtype=np.float64) - pad
+    hi = np.asarray(hi, dtype=np.float64) + pad
+    if lo2 is None:
+        m = len(lo)
+        if m < 2:
+            return np.zeros((0, 2), dtype=np.intp)
+        order = np.argsort(lo[:, 0], kind="stable")
+        slo = lo[order, 0]
+        end = np.searchsorted(slo, hi[order, 0], side="right")
+        start = np.arange(m) + 1
+        cnt = np.maximum(end - start, 0)
+        tot = int(cnt.sum())
+        if tot == 0:
+            return np.zeros((0, 2), dtype=np.intp)
+        ii = np.repeat(np.arange(m), cnt)
+        off = np.arange(tot) - np.repeat(np.cumsum(cnt) - cnt, cnt)
+        jj = start[ii] + off
+        a, b = order[ii], order[jj]
+        ok = np.all((lo[a, 1:] <= hi[b, 1:]) & (lo[b, 1:] <= hi[a, 1:]), axis=1)
+        a, b = a[ok], b[ok]
+        return np.stack([np.minimum(a, b), np.maximum(a, b)], axis=1)
+    lo2 = np.asarray(lo2, dtype=np.float64) - pad
+    hi2 = np.asarray(hi2, dtype=np.float64) + pad
+    ok = np.all((lo[:, None, :] <= hi2[None, :, :]) & (lo2[None, :, :] <= hi[:, None, :]), axis=2)
+    return np.argwhere(ok)
+
+
+def _unit(v: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    ln = np.linalg.norm(v, axis=-1, keepdims=True)
+    return np.divide(v, ln, out=np.zeros_like(v), where=ln > 0), ln[..., 0]
+
+
+def segment_triangle_intersect(s0: np.ndarray, s1: np.ndarray, t0: np.ndarray, t1: np.ndarray,
+                               t2: np.ndarray, eps: float = 1e-6) -> np.ndarray:
+    """Whether segments properly pierce triangles (by more than ``eps``).
+
+    A segment pierces a triangle when its endpoints lie on both sides of the
+    triangle's plane, each farther than ``eps``, and the crossing point lies inside
+    the triangle, farther than ``eps`` from its edges. Touching (within ``eps``) does
+    not count; segments lying in the plane do not count (test those in 2D).
+
+    Parameters
+    ----------
+    s0, s1 : (m, 3) float
+        Segment endpoints, m (local coordinates).
+    t0, t1, t2 : (m, 3) float
+        Triangle corners.
+    eps : float, m
+
+    Returns
+    -------
+    (m,) bool
+    """
+    un, ln = _unit(np.cross(t1 - t0, t2 - t0))
+    d0 = np.einsum("ij,ij->i", s0 - t0, un)
+    d1 = np.einsum("ij,ij->i", s1 - t0, un)
+    ok = (ln > 0) & (((d0 > eps) & (d1 < -eps)) | ((d0 < -eps) & (d1 > eps)))
+    if not ok.any():
+        return ok
+    den = np.where(ok, d0 - d1, 1.0)
+    x = s0 + (d0 / den)[:, None] * (s1 - s0)
+    for a, b in ((t0, t1), (t1, t2), (t2, t0)):
+        inward, _ = _unit(np.cross(un, b - a))           # points into the (CCW) triangle
+        ok &= np.einsum("ij,ij->i", x - a, inward) > eps
+    return ok
+
+
+def _coplanar_overlap(A: np.ndarray, B: np.ndarray, normal: np.ndarray, eps: float = 1e-6) -> np.ndarray:
+    """Whether coplanar triangles A, B (m, 3, 3) share interior area (beyond ``eps``)."""
+    m = len(A)
+    if m == 0:
+        return np.zeros(0, dtype=bool)
+    un, _ = _unit(normal)
+    ref = np.where(np.abs(un[:, :1]) < 0.9, np.array([[1.0, 0, 0]]), np.array([[0, 1.0, 0]]))
+    e1, _ = _unit(np.cross(un, ref))
+    e2 = np.cross(un, e1)
+    o = A[:, :1]
+    a2 = np.stack([np.einsum("ijk,ik->ij", A - o, e1), np.einsum("ijk,ik->ij", A - o, e2)], -1)
+    b2 = np.stack([np.einsum("ijk,ik->ij", B - o, e1), np.einsum("ijk,ik->ij", B - o, e2)], -1)
+    for t in (a2, b2):                                   # both counter-clockwise
+        neg = _cross2(t[:, 0], t[:, 1], t[:, 2]) < 0
+        t[neg] = t[neg][:, ::-1]
+
+    def side(p, q, r):                                   # signed distance of r from line pq
+        ln = np.linalg.norm(q - p, axis=-1)
+        return np.divide(_cross2(p, q, r), ln, out=np.zeros_like(ln), where=ln > 0)
+
+    hit = np.zeros(m, dtype=bool)
+    for i in range(3):
+        p, q = a2[:, i], a2[:, (i + 1) % 3]
+        for j in range(3):
+            r, s_ = b2[:, j], b2[:, (j + 1) % 3]
+            o1, o2 = side(p, q, r), side(p, q, s_)
+            o3, o4 = side(r, s_, p), side(r, s_, q)
+            hit |= (((o1 > eps) & (o2 < -eps)) | ((o1 < -eps) & (o2 > eps))) & \
+                   (((o3 > eps) & (o4 < -eps)) | ((o3 < -eps) & (o4 > eps)))
+
+    def inside(t, x):
+        return (side(t[:, 0], t[:, 1], x) > eps) & (side(t[:, 1], t[:, 2], x) > eps) & \
+            (side(t[:, 2], t[:, 0], x) > eps)
+    hit |= inside(a2, b2.mean(axis=1)) | inside(b2, a2.mean(axis=1))
+    for k in range(3):
+        hit |= inside(a2, b2[:, k]) | inside(b2, a2[:, k])
+    return hit
+
+
+def _cross2(o, a, b):
+    return (a[..., 0] - o[..., 0]) * (b[..., 1] - o[..., 1]) - (a[..., 1] - o[..., 1]) * (b[..., 0] - o[..., 0])
+
+
+def triangle_pairs_intersect(vertices: np.ndarray, tris: np.ndarray, pairs: np.ndarray,
+                             eps: float = 1e-6) -> np.ndarray:
+    """Whether pairs of triangles of one surface intersect other than along shared elements.
+
+    Triangles sharing an edge intersect only when folded onto each other; triangles
+    sharing a vertex when they meet elsewhere too; others when they meet at all.
+    Contacts within ``eps`` (round-off of touching faces) do not count.
+
+    Parameters
+    ----------
+    vertices : (n, 3) float
+        Use local coordinates (subtract an origin) for real-world data, m.
+    tris : (T, 3) int
+        Triangles; vertex identity is by index (snap first).
+    pairs : (p, 2) int
+        Candidate pairs (e.g. from :func:`bbox_pairs`).
+    eps : float, m
+        Distance under which points count as touching / in the same plane.
+
+    Returns
+    -------
+    (p,) bool
+    """
+    pairs = np.asarray(pairs, dtype=np.intp).reshape(-1, 2)
+    res = np.zeros(len(pairs), dtype=bool)
+    if len(pairs) == 0:
+        return res
+    ta, tb = tris[pairs[:, 0]], tris[pairs[:, 1]]
+    eq = ta[:, :, None] == tb[:, None, :]                        # (p, 3, 3)
+    in_b = eq.any(axis=2)                                        # vertex k of a is in b
+    in_a = eq.any(axis=1)
+    nshared = in_b.sum(axis=1)
+    A, B = vertices[ta], vertices[tb]
+    na = np.cross(A[:, 1] - A[:, 0], A[:, 2] - A[:, 0])
+    nb = np.cross(B[:, 1] - B[:, 0], B[:, 2] - B[:, 0])
+    ua, _ = _unit(na)
+    dist_b = np.abs(np.einsum("ijk,ik->ij", B - A[:, :1], ua))   # (p, 3) distances of B to plane A
+    coplanar = np.all(dist_b <= eps, axis=1)
+
+    res[nshared == 3] = True
+    # shared edge: only a fold (coplanar, third vertices on the same side) intersects
+    s2 = np.flatnonzero(nshared == 2)
+    if len(s2):
+        kb = np.argmin(in_a[s2], axis=1)
+        d = B[s2, kb]
+        dn = np.abs(np.einsum("ij,ij->i", d - A[s2, 0], ua[s2]))
+        folded = np.einsum("ij,ij->i", na[s2], nb[s2]) < 0
+        res[s2] = folded & (dn <= eps)
+    # shared vertex: the opposite edges must not pierce the other triangle
+    s1 = np.flatnonzero(nshared == 1)
+    if len(s1):
+        ka = np.argmax(in_b[s1], axis=1)
+        kb = np.argmax(in_a[s1], axis=1)
+        a1, a2 = A[s1, (ka + 1) % 3], A[s1, (ka + 2) % 3]
+        b1, b2 = B[s1, (kb + 1) % 3], B[s1, (kb + 2) % 3]
+        hit = (segment_triangle_intersect(a1, a2, B[s1, 0], B[s1, 1], B[s1, 2], eps)
+               | segment_triangle_intersect(b1, b2, A[s1, 0], A[s1, 1], A[s1, 2], eps))
+        cop = coplanar[s1]
+        out = np.where(cop, False, hit)
+        if cop.any():
+            ci = s1[cop]
+            out[cop] = _coplanar_overlap(A[ci], B[ci], na[ci], eps)
+        res[s1] = out
+    # disjoint vertex sets
+    s0 = np.flatnonzero(nshared == 0)
+    if len(s0):
+        hit = np.zeros(len(s0), dtype=bool)
+        a, b = A[s0], B[s0]
+        for i in range(3):
+            hit |= segment_triangle_intersect(a[:, i], a[:, (i + 1) % 3], b[:, 0], b[:, 1], b[:, 2], eps)
+            hit |= segment_triangle_intersect(b[:, i], b[:, (i + 1) % 3], a[:, 0], a[:, 1], a[:, 2], eps)
+        cop = coplanar[s0]
+        out = np.where(cop, False, hit)
+        if cop.any():
+            ci = s0[cop]
+            out[cop] = _coplanar_overlap(A[ci], B[ci], na[ci], eps)
+        res[s0] = out
+    return res
+
+
+# ----------------------------------------------------------------------------- inside / outside
+
+def winding_number(points: np.ndarray, vertices: np.ndarray, tris: np.ndarray,
+                   chunk: int = 2_000_000) -> np.ndarray:
+    """Generalised winding number of points w.r.t. a triangle surface.
+
+    About 1 inside a closed outward-oriented surface, 0 outside, -1 inside an inward one.
+
+    Parameters
+    ----------
+    points : (P, 3) float
+    vertices : (n, 3) float
+    tris : (T, 3) int
+    chunk : int
+        Largest P x T block evaluated at once.
+
+    Returns
+    -------
+    (P,) float
+    """
+    pts = np.asarray(points, dtype=np.float64).reshape(-1, 3)
+    tris = np.asarray(tris, dtype=np.intp)
+    if len(tris) == 0 or len(pts) == 0:
+        return np.zeros(len(pts))
+    o = vertices[np.unique(tris)].mean(axis=0)
+    V = vertices[tris] - o                                        # (T, 3, 3)
+    pts = pts - o
+    out = np.empty(len(pts))
+    step = max(1, chunk // max(len(tris), 1))
+    for s in range(0, len(pts), step):
+        p = pts[s:s + step]
+        a = V[None, :, 0] - p[:, None]
+        b = V[None, :, 1] - p[:, None]
+        c = V[None, :, 2] - p[:, None]
+        la, lb, lc = (np.linalg.norm(x, axis=2) for x in (a, b, c))
+        det = np.einsum("ptk,ptk->pt", a, np.cross(b, c))
+        den = (la * lb * lc + np.einsum("ptk,ptk->pt", a, b) * lc
+               + np.einsum("ptk,ptk->pt", b, c) * la + np.einsum("ptk,ptk->pt", c, a) * lb)
+        out[s:s + step] = np.arctan2(det, den).sum(axis=1) / (2 * np.pi)
+    return out
+
+
+def points_in_solid(points: np.ndarray, vertices: np.ndarray, tris: np.ndarray) -> np.ndarray:
+    """Whether points lie inside a closed triangle surface (either orientation).
+
+    Parameters
+    ----------
+    points : (P, 3) float
+    vertices : (n, 3) float
+    tris : (T, 3) int
+
+    Returns
+    -------
+    (P,) bool
+    """
+    return np.abs(winding_number(points, vertices, tris)) > 0.5

@@ -1,0 +1,142 @@
+"""Agreement of our per-feature validation with a val3dity report.
+
+A feature agrees on the *verdict* when both say valid or both say invalid, and on the
+*code set* when both report the same set of distinct error codes. Used by the tests
+and to measure conformance on real tiles; nothing here special-cases a file.
+"""
+from __future__ import annotations
+
+import json
+import os
+import time
+from dataclasses import dataclass, field
+from typing import Iterable, Mapping
+
+from lod2energy.config import DEFAULT, Tolerances
+
+
+@dataclass(frozen=True)
+class Agreement:
+    """Outcome of a comparison.
+
+    Parameters
+    ----------
+    n : int
+        Features compared (those of the selected types in the reference).
+    verdict : float
+        Share of them with the same valid/invalid verdict (1.0 when ``n == 0``).
+    codes : float
+        Share with the same set of error codes.
+    disagreements : list of (id, our codes, reference codes)
+        Features whose code sets differ (sorted code lists).
+    missing : list of str
+        Reference features we did not report at all (counted as disagreeing).
+    seconds : float
+        Time spent reading and validating (0 when not measured here).
+    """
+
+    n: int
+    verdict: float
+    codes: float
+    disagreements: list = field(default_factory=list)
+    missing: list = field(default_factory=list)
+    seconds: float = 0.0
+
+
+def reference_features(report: Mapping, types: Iterable[str] | None = ("Building",)) -> dict[str, tuple[bool, frozenset, str]]:
+    """``{id: (valid, codes, type)}`` of a val3dity report's features of ``types`` (None: all)."""
+    types = None if types is None else set(types)
+    out = {}
+    for f in report.get("features", []):
+        if types is not None and f.get("type") not in types:
+            continue
+        codes = frozenset(int(e["code"]) for e in f.get("errors", []))
+        out[str(f.get("id"))] = (bool(f.get("validity", not codes)), codes, f.get("type", ""))
+    return out
+
+
+def compare(ours: Mapping[str, Iterable[int]], report: Mapping,
+            types: Iterable[str] | None = ("Building",)) -> Agreement:
+    """Compare our codes per feature id with a val3dity report.
+
+    Parameters
+    ----------
+    ours : mapping id -> iterable of int
+        Distinct error codes we found per first-level feature (empty = valid).
+    report : mapping
+        A parsed val3dity JSON report.
+    types : iterable of str or None
+        Reference feature types compared (default Buildings; None = every type).
+
+    Returns
+    -------
+    Agreement
+    """
+    ref = reference_features(report, types)
+    same_v = same_c = 0
+    dis, missing = [], []
+    for fid, (valid, rcodes, _) in ref.items():
+        if fid not in ours:
+            missing.append(fid)
+            dis.append((fid, None, sorted(rcodes)))
+            continue
+        oc = frozenset(int(c) for c in ours[fid])
+        same_v += (not oc) == valid
+        if oc == rcodes:
+            same_c += 1
+        else:
+            dis.append((fid, sorted(oc), sorted(rcodes)))
+    n = len(ref)
+    return Agreement(n, same_v / n if n else 1.0, same_c / n if n else 1.0, dis, missing)
+
+
+def validate_codes(path: str, tol: Tolerances = DEFAULT) -> dict[str, set[int]]:
+    """Read a file and validate every feature: ``{first-level id: set of codes}``.
+
+    Unreadable features count with their reader code (901/902/904).
+    """
+    from lod2energy.io import read
+    from lod2energy.validate.checks import validate_building
+
+    _, feats = read(path)
+    out: dict[str, set[int]] = {}
+    for b in feats:
+        if hasattr(b, "objects"):
+            out[b.id] = {d.code for d in validate_building(b, tol) if d.code < 1000}
+        elif b.id is not None:
+            out.setdefault(b.id, set()).add(int(b.code))
+    return out
+
+
+def agreement_with_report(report_path: str, shared_root: str | None = None, tol: Tolerances | None = None,
+                          types: Iterable[str] | None = ("Building",)) -> Agreement:
+    """Validate the data file a val3dity report names and compare.
+
+    Parameters
+    ----------
+    report_path : str
+        A ``*.report.json``; its ``input_file`` is relative to ``shared_root``.
+    shared_root : str, optional
+        Default: the parent of the report's folder.
+    tol : Tolerances, optional
+        Default: the report's ``parameters`` (snap_tol, planarity, overlap_tol).
+    types : iterable of str or None
+
+    Returns
+    -------
+    Agreement (with ``seconds`` = read + validation time)
+    """
+    with open(report_path, encoding="utf-8") as f:
+        report = json.load(f)
+    root = shared_root or os.path.dirname(os.path.dirname(os.path.abspath(report_path)))
+    if tol is None:
+        p = report.get("parameters", {})
+        tol = Tolerances(snap_tol=p.get("snap_tol", DEFAULT.snap_tol),
+                         planarity_d2p_tol=p.get("planarity_d2p_tol", DEFAULT.planarity_d2p_tol),
+                         planarity_n_tol=p.get("planarity_n_tol", DEFAULT.planarity_n_tol),
+                         overlap_tol=p.get("overlap_tol", DEFAULT.overlap_tol))
+    t0 = time.perf_counter()
+    ours = validate_codes(os.path.join(root, report["input_file"]), tol)
+    dt = time.perf_counter() - t0
+    a = compare(ours, report, types)
+    return Agreement(a.n, a.verdict, a.codes, a.disagreements, a.missing, dt)
