@@ -140,9 +140,11 @@ class _Tokens:
 def parse_poly(path: str) -> tuple[np.ndarray, list[list[list[int]]], list[int]]:
     """Vertices and faces of a TetGen POLY file, read as val3dity reads it.
 
-    Facet lines are ``<#polygons> [#holes] [boundary marker]``; like val3dity, the last
-    number on that line is taken as the number of hole points, whose lines are skipped.
-    A ring given with ``-1`` points is a ring that is not closed (103).
+    Facet lines are ``<#polygons> [#holes] [boundary marker]`` (TetGen manual); the hole
+    point lines that follow the rings are skipped. (val3dity 2.6 takes the *last* number of
+    that line as the number of holes, so it misreads a facet with both holes and a
+    boundary marker; files without boundary markers read the same.) A ring given with
+    ``-1`` points is a ring that is not closed (103).
 
     Returns
     -------
@@ -174,12 +176,10 @@ def parse_poly(path: str) -> tuple[np.ndarray, list[list[list[int]]], list[int]]
     for fi in range(nf):
         nrings = tk.int(f"the number of polygons of facet {fi}")
         header = tk.rest_of_line()
-        nholes = 0
-        for tok in header:
-            try:
-                nholes = int(tok)
-            except ValueError:
-                raise InputError(f"{path}: bad facet header for facet {fi}: {tok!r}") from None
+        try:
+            nholes = int(header[0]) if header else 0
+        except ValueError:
+            raise InputError(f"{path}: bad facet header for facet {fi}: {header[0]!r}") from None
         rings = []
         bad = False
         for ri in range(max(nrings, 0)):
