@@ -10,6 +10,8 @@ which converges to the CDT.
 from __future__ import annotations
 
 import numpy as np
+import shapely
+from scipy.spatial import Delaunay
 
 try:
     import mapbox_earcut as _earcut
@@ -25,7 +27,11 @@ def _incircle(pa, pb, pc, pd) -> float:
     ad = adx * adx + ady * ady
     bd = bdx * bdx + bdy * bdy
     cd = cdx * cdx + cdy * cdy
-    return (adx * (bdy * cd - bd * cdy) - ady * (bdx * cd - bd * cdx) + ad * (bdx * cdy - bdy * cdx))
+    det = adx * (bdy * cd - bd * cdy) - ady * (bdx * cd - bd * cdx) + ad * (bdx * cdy - bdy * cdx)
+    # Shewchuk's permanent: below ~1e-14 of it the sign is rounding noise (cocircular)
+    perm = ((abs(bdx * cdy) + abs(bdy * cdx)) * ad + (abs(cdx * ady) + abs(cdy * adx)) * bd
+            + (abs(adx * bdy) + abs(ady * bdx)) * cd)
+    return det if abs(det) > 1e-14 * perm else 0.0
 
 
 def _orient(pa, pb, pc) -> float:
@@ -64,6 +70,9 @@ def ear_triangles(points2d: np.ndarray, ring_ends: np.ndarray) -> np.ndarray:
 def constrained_delaunay(points2d: np.ndarray, ring_ends: np.ndarray, max_flips: int | None = None) -> np.ndarray:
     """CDT of a polygon with holes whose constraints are its ring edges.
 
+    When the plain Delaunay triangulation (Qhull) already holds every ring edge, the CDT is
+    its triangles inside the polygon; otherwise ear clipping + constrained Lawson flips.
+
     Parameters
     ----------
     points2d : (n, 2) float
@@ -79,17 +88,65 @@ def constrained_delaunay(points2d: np.ndarray, ring_ends: np.ndarray, max_flips:
         Counter-clockwise triangles, indices into ``points2d``.
     """
     pts = np.asarray(points2d, dtype=np.float64)
-    tri = ear_triangles(pts, ring_ends)
-    n = len(pts)
-    if len(tri) < 2:
-        return tri
-    constrained = set()
+    fast = _delaunay_if_conforming(pts, ring_ends)
+    if fast is not None:
+        return fast
+    return lawson_cdt(pts, ring_ends, max_flips)
+
+
+def _ring_edges(ring_ends) -> set[tuple[int, int]]:
+    edges = set()
     start = 0
     for end in np.asarray(ring_ends).tolist():
         for i in range(start, end):
             j = i + 1 if i + 1 < end else start
-            constrained.add((min(i, j), max(i, j)))
+            edges.add((min(i, j), max(i, j)))
         start = end
+    return edges
+
+
+def _delaunay_if_conforming(pts: np.ndarray, ring_ends) -> np.ndarray | None:
+    """Inside triangles of the Delaunay triangulation when it contains all ring edges, else None."""
+    if len(np.unique(pts, axis=0)) != len(pts):
+        return None  # a ring touching another at a vertex: leave it to the general path
+    try:
+        dt = Delaunay(pts)
+    except Exception:  # Qhull refuses degenerate input
+        return None
+    n = len(pts)
+    simp = np.sort(dt.simplices, axis=1)
+    have = np.concatenate([simp[:, 0] * n + simp[:, 1], simp[:, 1] * n + simp[:, 2], simp[:, 0] * n + simp[:, 2]])
+    ends = np.asarray(ring_ends, dtype=np.intp)
+    sizes = np.diff(np.concatenate([[0], ends]))
+    i = np.arange(n)
+    j = i + 1
+    j[ends - 1] = ends - sizes
+    need = np.minimum(i, j) * n + np.maximum(i, j)
+    if not np.isin(need, have).all():
+        return None
+    tri = dt.simplices
+    c = pts[tri].mean(axis=1)
+    start = 0
+    rings = []
+    for end in np.asarray(ring_ends).tolist():
+        rings.append(pts[start:end])
+        start = end
+    poly = shapely.Polygon(rings[0], rings[1:])
+    inside = shapely.contains_xy(poly, c[:, 0], c[:, 1])
+    tri = tri[inside].astype(np.intp)
+    a, b, cc = pts[tri[:, 0]], pts[tri[:, 1]], pts[tri[:, 2]]
+    cw = (b[:, 0] - a[:, 0]) * (cc[:, 1] - a[:, 1]) - (b[:, 1] - a[:, 1]) * (cc[:, 0] - a[:, 0]) < 0
+    tri[cw] = tri[cw][:, [0, 2, 1]]
+    return tri
+
+
+def lawson_cdt(pts: np.ndarray, ring_ends, max_flips: int | None = None) -> np.ndarray:
+    """CDT by ear clipping then constrained Lawson flips (general, slower path)."""
+    tri = ear_triangles(pts, ring_ends)
+    n = len(pts)
+    if len(tri) < 2:
+        return tri
+    constrained = _ring_edges(ring_ends)
     tris = [list(t) for t in tri.tolist()]
     edge_tris: dict[tuple[int, int], list[int]] = {}
     for ti, (a, b, c) in enumerate(tris):
@@ -97,8 +154,6 @@ def constrained_delaunay(points2d: np.ndarray, ring_ends: np.ndarray, max_flips:
             edge_tris.setdefault((min(u, v), max(u, v)), []).append(ti)
     stack = [e for e, ts in edge_tris.items() if len(ts) == 2 and e not in constrained]
     P = pts.tolist()
-    scale = float(np.ptp(pts, axis=0).max()) if n else 1.0
-    eps = 1e-12 * scale ** 4
     budget = max_flips if max_flips is not None else 10 * n * n + 10
     while stack and budget > 0:
         e = stack.pop()
@@ -118,7 +173,7 @@ def constrained_delaunay(points2d: np.ndarray, ring_ends: np.ndarray, max_flips:
         if len(D) != 1:
             continue
         d = D[0]
-        if _incircle(P[a], P[b], P[c], P[d]) <= eps:
+        if _incircle(P[a], P[b], P[c], P[d]) <= 0.0:
             continue
         if _orient(P[a], P[d], P[c]) <= 0 or _orient(P[d], P[b], P[c]) <= 0:
             continue
