@@ -7,7 +7,13 @@ With ``--repair`` the buildings are first repaired (``lod2energy.repair.pipeline
 labelled with :func:`lod2energy.semantics.label_building`; agreement is then also reported
 for the final labels against the input's own labels.
 
-Usage: python benchmarks/bench_labels.py [DATA_DIR] [--repair] [--json OUT]
+With ``--export DIR`` (implies ``--repair``) the labelled buildings also get U-values and
+are exported with :mod:`lod2energy.exporters.cityjson` in every CityJSON version
+(``--versions``), and the self-check result is reported per tile and version, with the
+number of exported surfaces, those labelled and those with a positive U-value (counted by
+re-reading the exported file).
+
+Usage: python benchmarks/bench_labels.py [DATA_DIR] [--repair] [--export DIR] [--json OUT]
 """
 from __future__ import annotations
 
@@ -32,12 +38,15 @@ def tiles(root: Path) -> list[Path]:
     return out
 
 
-def run_tile(path: Path, repair: bool) -> dict:
+def run_tile(path: Path, repair: bool, export: str | None = None, versions=("1.0", "1.1", "2.0")) -> dict:
     from lod2energy.io import cityjson
     from lod2energy.model import Building
     from lod2energy import semantics
 
     model, feats = cityjson.read(str(path))
+    if model is None:
+        return {"tile": f"{path.parent.name}/{path.name}", "unreadable_file": [f.message for f in feats]}
+    labelled = []
     agree = total = 0.0
     final_agree = final_total = 0.0
     conf: dict = {}
@@ -63,17 +72,59 @@ def run_tile(path: Path, repair: bool) -> dict:
                 continue
             n_rep += 1
             lb = semantics.label_building(rb, source=f)
+            labelled.append(lb)
             fa, ft = final_label_agreement(f, lb)
             final_agree += fa
             final_total += ft
     top = sorted(((v, k) for k, v in conf.items() if k[0] != k[1]), reverse=True)[:3]
+    exports = {}
+    if export:
+        exports = export_tile(path, model, labelled, export, versions)
     return {"tile": f"{path.parent.name}/{path.name}", "buildings": n, "unreadable": n_err,
             "labelled_area_m2": round(total, 1),
             "rule_agreement_pct": round(100 * agree / total, 2) if total else None,
             "top_confusions": [f"{k[0]}->{k[1]}: {v:.1f} m2" for v, k in top],
             **({"repaired": n_rep,
                 "final_agreement_pct": round(100 * final_agree / final_total, 2) if final_total else None}
-               if repair else {})}
+               if repair else {}), **({"exports": exports} if export else {})}
+
+
+def export_tile(path: Path, model, labelled, outdir: str, versions) -> dict:
+    """Export the labelled buildings in each version; self-check result and surface counts."""
+    from lod2energy import thermal
+    from lod2energy.exporters import cityjson as X
+    from lod2energy.io import cityjson
+    from lod2energy.model import Building
+
+    opts = thermal.ThermalOptions(crs=model.crs)
+    ready = []
+    for b in labelled:
+        try:
+            ready.append(thermal.assign_u_values(b, opts))
+        except Exception as e:  # benchmark: report and continue
+            print(f"  thermal failed on {b.id}: {e}", file=sys.stderr)
+    out = {}
+    for v in versions:
+        target = Path(outdir) / f"{path.parent.name}__{path.name.split('.')[0]}.v{v.replace('.', '')}.city.json"
+        t0 = time.time()
+        r = X.write(str(target), model, ready, v)
+        n_s = n_lab = n_u = 0
+        if r.ok:
+            _, feats = cityjson.read(r.path)
+            for f in feats:
+                if not isinstance(f, Building):
+                    continue
+                for o, gi, g in __import__("lod2energy.semantics", fromlist=["x"]).envelope_objects(f):
+                    for *_, s in g.iter_surfaces():
+                        n_s += 1
+                        e = g.semantic_surfaces[s.semantic] if s.semantic is not None else {}
+                        n_lab += e.get("type") is not None
+                        n_u += isinstance(e.get("uValue"), (int, float)) and e.get("uValue") > 0
+        out[v] = {"ok": r.ok, "buildings": len(r.building_ids), "skipped": len(r.skipped),
+                  "skip_reasons": sorted({s[1].split(":")[-1].strip()[:60] for s in r.skipped})[:3],
+                  "problems": list(r.problems[:3]), "surfaces": n_s, "labelled": n_lab,
+                  "with_u": n_u, "seconds": round(time.time() - t0, 1), "notes": list(r.notes[:3])}
+    return out
 
 
 def final_label_agreement(source, labelled) -> tuple[float, float]:
@@ -88,7 +139,7 @@ def final_label_agreement(source, labelled) -> tuple[float, float]:
 
     src = S._SourceFaces(source, None)
     agree = total = 0.0
-    for o, gi, g in labelled.energy_objects():
+    for o, gi, g in S.envelope_objects(labelled):
         t = S.face_table(labelled.vertices, g)
         for i, s in enumerate(t.surfaces):
             ty = g.semantic_type(s)
@@ -106,14 +157,21 @@ def main(argv=None) -> int:
     ap.add_argument("data", nargs="?", default=str(SHARED / "data"))
     ap.add_argument("--repair", action="store_true")
     ap.add_argument("--json")
+    ap.add_argument("--export")
+    ap.add_argument("--versions", default="1.0,1.1,2.0")
+    ap.add_argument("--only", help="substring of tile paths to run")
     a = ap.parse_args(argv)
+    if a.export:
+        a.repair = True
     rows = []
     tot_a = tot_t = 0.0
     t0 = time.time()
     for p in tiles(Path(a.data)):
-        r = run_tile(p, a.repair)
+        if a.only and a.only not in str(p):
+            continue
+        r = run_tile(p, a.repair, a.export, tuple(a.versions.split(",")))
         rows.append(r)
-        if r["rule_agreement_pct"] is not None:
+        if r.get("rule_agreement_pct") is not None:
             tot_a += r["rule_agreement_pct"] * r["labelled_area_m2"] / 100
             tot_t += r["labelled_area_m2"]
         print(json.dumps(r))

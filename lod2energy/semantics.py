@@ -31,7 +31,7 @@ from typing import Any, Iterable, Mapping
 
 import numpy as np
 
-from lod2energy.model import Building, Geometry, Shell, Solid, Surface, frozen_mapping
+from lod2energy.model import BUILDING_TYPES, Building, Geometry, Shell, Solid, Surface, frozen_mapping
 from lod2energy.validate.defect import Defect
 
 ROOF, WALL, GROUND, CLOSURE = "RoofSurface", "WallSurface", "GroundSurface", "ClosureSurface"
@@ -92,6 +92,15 @@ class LabelRules:
 
 
 DEFAULT_RULES = LabelRules()
+
+
+def envelope_objects(b: Building, lod: str | None = None) -> list:
+    """``b.energy_objects(lod)`` restricted to Building / BuildingPart objects.
+
+    Installations (balconies, chimneys, ...) and other descendants are not part of the
+    thermal envelope: they are neither labelled nor given U-values.
+    """
+    return [(o, gi, g) for o, gi, g in b.energy_objects(lod) if o.type in BUILDING_TYPES]
 
 
 # ----------------------------------------------------------------------------- face geometry
@@ -285,7 +294,7 @@ class _SourceFaces:
     def __init__(self, source: Building, lod: str | None):
         self.vertices = source.vertices
         self.items = []  # (type, entry, normal, centroid, polygon-data)
-        for o, gi, g in source.energy_objects(lod):
+        for o, gi, g in envelope_objects(source, lod):
             t = face_table(source.vertices, g)
             for i, s in enumerate(t.surfaces):
                 st = _known_type(g, s)
@@ -382,7 +391,7 @@ def label_building(b: Building, lod: str | None = None, rules: LabelRules = DEFA
         New building; ``provenance["labels"]`` counts surfaces per ``labelSource``.
     """
     lod = lod if lod is not None else b.default_lod()
-    energy = b.energy_objects(lod)
+    energy = envelope_objects(b, lod)
     tables = [face_table(b.vertices, g) for _, _, g in energy]
     repaired = "repair" in b.provenance
     src = _SourceFaces(source, lod) if (repaired and source is not None) else None
@@ -427,7 +436,7 @@ def check_labels(b: Building, lod: str | None = None, rules: LabelRules = DEFAUL
         Located as ``coid=..|geom=..|shell=..|face=..``.
     """
     out: list[Defect] = []
-    for o, gi, g in b.energy_objects(lod):
+    for o, gi, g in envelope_objects(b, lod):
         t = face_table(b.vertices, g)
         hr = t.h_rel
         types = [_known_type(g, s) for s in t.surfaces]
@@ -469,7 +478,7 @@ def rule_agreement(b: Building, lod: str | None = None,
         Area of all labelled faces.
     """
     agree = total = 0.0
-    for o, gi, g in b.energy_objects(lod):
+    for o, gi, g in envelope_objects(b, lod):
         t = face_table(b.vertices, g)
         rl = rule_labels(t, rules)
         for i, s in enumerate(t.surfaces):
@@ -486,7 +495,7 @@ def label_confusion(b: Building, lod: str | None = None,
                     rules: LabelRules = DEFAULT_RULES) -> dict[tuple[str, str], float]:
     """Area (m2) per (input label, rule label) pair, for benchmarks."""
     out: dict[tuple[str, str], float] = {}
-    for o, gi, g in b.energy_objects(lod):
+    for o, gi, g in envelope_objects(b, lod):
         t = face_table(b.vertices, g)
         rl = rule_labels(t, rules)
         for i, s in enumerate(t.surfaces):

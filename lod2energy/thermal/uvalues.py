@@ -35,7 +35,7 @@ import numpy as np
 from lod2energy.errors import ParameterError
 from lod2energy.model import Building, frozen_mapping
 from lod2energy.semantics import (CLOSURE, GROUND, OUTER_CEILING, OUTER_FLOOR, ROOF, WALL,
-                                  face_table)
+                                  envelope_objects, face_table)
 from lod2energy.thermal.typology import Typology, classify
 from lod2energy.validate.defect import Defect
 
@@ -271,7 +271,7 @@ def assign_u_values(b: Building, options: ThermalOptions = ThermalOptions()) -> 
     from lod2energy.thermal.typology import country_from_crs
 
     lod = options.lod if options.lod is not None else b.default_lod()
-    energy = b.energy_objects(lod)
+    energy = envelope_objects(b, lod)
     tables = [face_table(b.vertices, g) for _, _, g in energy]
     ground_area = sum(float(t.area[i]) for (o, gi, g), t in zip(energy, tables)
                       for i, s in enumerate(t.surfaces) if g.semantic_type(s) == GROUND)
@@ -320,7 +320,7 @@ def assign_u_values(b: Building, options: ThermalOptions = ThermalOptions()) -> 
     ua = (u["roof"] * areas["roof"] + areas["wall"] * ((1 - wwr) * u["wall"] + wwr * u["window"])
           + u["ground"] * areas["ground"])
     thermal = {
-        "country": typ.country, "typology": typ.building_type,
+        "lod": lod, "country": typ.country, "typology": typ.building_type,
         "construction_period": period_label(used[0] if used else None, typ),
         "year_of_construction": typ.year,
         "u_values": {e: round(u[e], 4) for e in ELEMENTS}, "wwr": wwr,
@@ -336,7 +336,7 @@ def assign_u_values(b: Building, options: ThermalOptions = ThermalOptions()) -> 
 def check_u_values(b: Building, lod: str | None = None) -> list[Defect]:
     """Surfaces of the energy geometries without a U-value (1201) or with an implausible one (1202)."""
     out = []
-    for o, gi, g in b.energy_objects(lod):
+    for o, gi, g in envelope_objects(b, lod):
         for si, hi, fi, s in g.iter_surfaces():
             loc = f"coid={o.id}|" + g.location(gi, si, hi, fi)
             e = g.semantic_surfaces[s.semantic] if s.semantic is not None and s.semantic < len(
