@@ -1,0 +1,154 @@
+"""Stage 4 of the repair ladder: alpha-shape reconstruction with a search over alpha.
+
+Candidates are CGAL's 3D alpha wrap (through pymeshlab's ``generate_alpha_wrap``, fed a
+triangle soup so that no face is silently skipped) at several alphas, each decimated with
+planar quadric edge collapse and its coplanar triangles merged back into polygons, and our
+own alpha complex of the building's points (Delaunay tetrahedra whose circumradius is under
+alpha). Among the valid candidates that are not hollow (volume at least a third of the
+convex hull's) the one closest to the input (two-way mean vertex-to-surface distance) wins.
+"""
+from __future__ import annotations
+
+import time
+
+import numpy as np
+
+from lod2energy.config import DEFAULT, Tolerances
+from lod2energy.repair._mesh import PolyMesh, merge_coplanar, triangles_to_mesh, triangulate_mesh
+from lod2energy.repair.metrics import point_triangle_distance
+from lod2energy.repair.validity import shell_defects
+
+ALPHAS = (1.0, 2.0, 4.0, 8.0)  # m
+OFFSET = 0.01  # m
+
+
+def _soup(m: PolyMesh) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    tris, _ = triangulate_mesh(m)
+    origin = m.vertices[np.unique(tris)].mean(axis=0) if len(tris) else np.zeros(3)
+    P = m.vertices[tris.ravel()] - origin
+    F = np.arange(len(P)).reshape(-1, 3)
+    return P, F, origin
+
+
+def alpha_wrap(m: PolyMesh, alpha: float, offset: float = OFFSET, target_faces: int = 400) -> PolyMesh | None:
+    """CGAL alpha wrap of ``m`` (alpha and offset in m), decimated and merged into polygons."""
+    import pymeshlab
+    P, F, origin = _soup(m)
+    if len(F) == 0:
+        return None
+    diag = float(np.linalg.norm(P.max(axis=0) - P.min(axis=0)))
+    if diag <= 0:
+        return None
+    ms = pymeshlab.MeshSet()
+    ms.add_mesh(pymeshlab.Mesh(vertex_matrix=P, face_matrix=F))
+    try:
+        ms.generate_alpha_wrap(alpha=pymeshlab.PercentageValue(100 * alpha / diag),
+                               offset=pymeshlab.PercentageValue(100 * offset / diag))
+        if ms.current_mesh().face_number() > target_faces:
+            ms.meshing_decimation_quadric_edge_collapse(targetfacenum=target_faces, preservetopology=True,
+                                                        planarquadric=True, preservenormal=True,
+                                                        qualitythr=0.3, autoclean=True)
+    except Exception:  # noqa: BLE001 - pymeshlab raises its own error types
+        return None
+    cm = ms.current_mesh()
+    V = np.asarray(cm.vertex_matrix(), dtype=np.float64) + origin
+    T = np.asarray(cm.face_matrix(), dtype=np.int64)
+    if len(T) < 4:
+        return None
+    return merge_coplanar(triangles_to_mesh(V, T))
+
+
+def alpha_complex(m: PolyMesh, alpha: float) -> PolyMesh | None:
+    """Boundary of the union of Delaunay tetrahedra with circumradius <= alpha (m)."""
+    from scipy.spatial import Delaunay, QhullError
+    used = np.unique([i for f in m.faces for r in f.rings for i in r])
+    if len(used) < 4:
+        return None
+    P = m.vertices[used]
+    o = P.mean(axis=0)
+    Q = P - o
+    try:
+        d = Delaunay(Q)
+    except (QhullError, ValueError):
+        return None
+    S = d.simplices
+    A = Q[S]
+    # circumradius of each tetrahedron
+    a = A[:, 1:] - A[:, :1]
+    rhs = 0.5 * np.einsum("ijk,ijk->ij", a, a)
+    det = np.linalg.det(a)
+    ok = np.abs(det) > 1e-12
+    c = np.zeros((len(S), 3))
+    c[ok] = np.linalg.solve(a[ok], rhs[ok][..., None])[..., 0]
+    R = np.where(ok, np.linalg.norm(c, axis=1), np.inf)
+    keep = S[R <= alpha]
+    if len(keep) == 0:
+        return None
+    faces = np.concatenate([keep[:, [1, 2, 3]], keep[:, [0, 3, 2]], keep[:, [0, 1, 3]], keep[:, [0, 2, 1]]])
+    # orient each face away from its tetrahedron's fourth vertex
+    opp = np.concatenate([keep[:, 0], keep[:, 1], keep[:, 2], keep[:, 3]])
+    T = Q[faces]
+    n = np.cross(T[:, 1] - T[:, 0], T[:, 2] - T[:, 0])
+    flip = np.einsum("ij,ij->i", n, Q[opp] - T[:, 0]) > 0
+    faces[flip] = faces[flip][:, ::-1]
+    key = np.sort(faces, axis=1)
+    _, inv, cnt = np.unique(key, axis=0, return_inverse=True, return_counts=True)
+    bnd = faces[cnt[inv.ravel()] == 1]
+    if len(bnd) < 4:
+        return None
+    vid = np.unique(bnd)
+    lut = np.full(len(P), -1)
+    lut[vid] = np.arange(len(vid))
+    return merge_coplanar(triangles_to_mesh(P[vid], lut[bnd]), angle_tol=1e-6, dist_tol=1e-4)
+
+
+def _hull_volume(m: PolyMesh) -> float:
+    from scipy.spatial import ConvexHull, QhullError
+    used = np.unique([i for f in m.faces for r in f.rings for i in r])
+    try:
+        return float(ConvexHull(m.vertices[used]).volume)
+    except (QhullError, ValueError):
+        return 0.0
+
+
+def _volume(m: PolyMesh) -> float:
+    from lod2energy.repair._mesh import signed_volume
+    return signed_volume(m)
+
+
+def alpha_repair(m: PolyMesh, tol: Tolerances = DEFAULT, deadline: float | None = None,
+                 alphas=ALPHAS, accept=None) -> PolyMesh | None:
+    """Stage 4: the best valid alpha reconstruction of ``m`` (None if no candidate is valid).
+
+    Parameters
+    ----------
+    accept : callable or None
+        Extra validity test (the pipeline passes its full criterion).
+    """
+    tris, _ = triangulate_mesh(m)
+    if len(tris) == 0:
+        return None
+    hv = _hull_volume(m)
+    pts = m.vertices[np.unique(tris)]
+    best, best_score = None, None
+    cands = []
+    for a in alphas:
+        cands.append(("complex", a))
+    for a in alphas:
+        cands.append(("wrap", a))
+    for kind, a in cands:
+        if deadline is not None and time.monotonic() > deadline:
+            break
+        r = alpha_complex(m, a) if kind == "complex" else alpha_wrap(m, a)
+        if r is None or shell_defects(r, tol, first_only=True):
+            continue
+        if accept is not None and not accept(r):
+            continue
+        if _volume(r) < hv / 3:
+            continue  # a hollow skin around missing walls, not a building
+        rt, _ = triangulate_mesh(r)
+        score = point_triangle_distance(pts, r.vertices, rt).mean() + \
+            point_triangle_distance(r.vertices, m.vertices, tris).mean()
+        if best_score is None or score < best_score - 1e-9:
+            best, best_score = r, score
+    return best

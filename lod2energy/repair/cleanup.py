@@ -1,0 +1,305 @@
+"""Stage 0 of the repair ladder: clean-up that moves nothing by more than the snap tolerance.
+
+Snap and merge vertices within ``snap_tol``; drop repeated points, spikes, rings with fewer
+than three points, duplicate and zero-area faces; split edges at T-junction vertices (a vertex
+of one polygon lying on another polygon's edge); split rings pinched at a repeated vertex;
+triangulate non-planar polygons (203/204); merge sliver faces into a coplanar neighbour.
+"""
+from __future__ import annotations
+
+from collections import defaultdict
+
+import numpy as np
+from scipy.spatial import cKDTree
+
+from lod2energy.config import DEFAULT, Tolerances
+from lod2energy.repair._mesh import (
+    Face, PolyMesh, edge_faces, face_area, face_normal, plane_basis, planarity, ring_is_simple_2d,
+    triangulate_face,
+)
+
+
+def snap_vertices(m: PolyMesh, snap_tol: float) -> PolyMesh:
+    """Merge vertices closer than ``snap_tol`` (m); the lowest index of a cluster survives."""
+    V = m.vertices
+    if len(V) < 2:
+        return m
+    pairs = cKDTree(V).query_pairs(snap_tol * (1 + 1e-9) + 1e-12, output_type="ndarray")
+    if len(pairs) == 0:
+        return m
+    parent = np.arange(len(V))
+
+    def find(x):
+        while parent[x] != x:
+            parent[x] = parent[parent[x]]
+            x = parent[x]
+        return x
+    for a, b in sorted(map(tuple, pairs.tolist())):
+        ra, rb = find(a), find(b)
+        if ra != rb:
+            parent[max(ra, rb)] = min(ra, rb)
+    lut = np.array([find(i) for i in range(len(V))])
+    faces = [Face(tuple(tuple(int(lut[i]) for i in r) for r in f.rings), f.source, f.semantic)
+             for f in m.faces]
+    return m.with_faces(faces)
+
+
+def clean_ring(r: tuple[int, ...]) -> tuple[int, ...]:
+    """Drop repeated consecutive points and spikes (``a b a``) of an open ring."""
+    r = list(r)
+    changed = True
+    while changed and len(r) >= 3:
+        changed = False
+        out = [v for i, v in enumerate(r) if v != r[i - 1]] if len(r) > 1 else r
+        if len(out) != len(r):
+            changed = True
+        r = out
+        if len(r) < 3:
+            break
+        n = len(r)
+        for i in range(n):
+            if r[i - 1] == r[(i + 1) % n]:
+                # spike at i: remove it and its echo
+                j = (i + 1) % n
+                r = [v for k, v in enumerate(r) if k not in (i, j)]
+                changed = True
+                break
+    return tuple(r)
+
+
+def clean_rings(m: PolyMesh) -> PolyMesh:
+    """Clean every ring; drop holes with < 3 points and faces whose outer ring has < 3."""
+    faces = []
+    for f in m.faces:
+        rings = [clean_ring(r) for r in f.rings]
+        if len(set(rings[0])) < 3:
+            continue
+        rings = [rings[0]] + [r for r in rings[1:] if len(set(r)) >= 3]
+        faces.append(Face(tuple(rings), f.source, f.semantic))
+    return m.with_faces(faces)
+
+
+def split_pinched(m: PolyMesh) -> PolyMesh:
+    """Split an outer ring passing twice through one vertex into simple rings (no holes)."""
+    faces = []
+    for f in m.faces:
+        r = f.outer
+        if len(f.rings) > 1 or len(set(r)) == len(r):
+            faces.append(f)
+            continue
+        for sub in _split_loop(list(r)):
+            if len(set(sub)) >= 3:
+                faces.append(Face((tuple(sub),), f.source, f.semantic))
+    return m.with_faces(faces)
+
+
+def _split_loop(r: list[int]) -> list[list[int]]:
+    """Split a closed vertex loop at repeated vertices into loops without repeats."""
+    out, stack, pos = [], [], {}
+    for v in r:
+        if v in pos:
+            k = pos[v]
+            sub = stack[k:]
+            out.append(sub)
+            for u in sub[1:]:
+                pos.pop(u, None)
+            stack = stack[:k + 1]
+        else:
+            pos[v] = len(stack)
+            stack.append(v)
+    if len(stack) >= 3:
+        out.append(stack)
+    return out
+
+
+def split_t_junctions(m: PolyMesh, tol: float, min_gap: float = 0.001) -> PolyMesh:
+    """Insert into each ring edge the shell's vertices lying on it.
+
+    Parameters
+    ----------
+    tol : float, m
+        Largest distance of a vertex to the edge.
+    min_gap : float, m
+        The vertex must be farther than this from both ends of the edge (the snap tolerance).
+    """
+    V = m.vertices
+    used = np.array(sorted({i for f in m.faces for r in f.rings for i in r}), dtype=np.int64)
+    if len(used) < 3:
+        return m
+    P = V[used]
+    tree = cKDTree(P)
+    changed = False
+    faces = []
+    for f in m.faces:
+        rings = []
+        for r in f.rings:
+            new = []
+            n = len(r)
+            for i in range(n):
+                a, b = r[i], r[(i + 1) % n]
+                new.append(a)
+                pa, pb = V[a], V[b]
+                e = pb - pa
+                L = float(np.linalg.norm(e))
+                if L <= 2 * min_gap:
+                    continue
+                cand = tree.query_ball_point((pa + pb) / 2, L / 2 + tol)
+                if len(cand) <= 2:
+                    continue
+                ids = used[cand]
+                Q = V[ids]
+                t = (Q - pa) @ e / (L * L)
+                d = np.linalg.norm(pa + t[:, None] * e - Q, axis=1)
+                ok = (d <= tol) & (t * L > min_gap) & ((1 - t) * L > min_gap) & (ids != a) & (ids != b)
+                if ok.any():
+                    sel = np.flatnonzero(ok)
+                    sel = sel[np.argsort(t[sel], kind="stable")]
+                    new.extend(int(ids[k]) for k in sel)
+                    changed = True
+            rings.append(clean_ring(tuple(new)))
+        faces.append(Face(tuple(rings), f.source, f.semantic))
+    return m.with_faces(faces) if changed else m
+
+
+def drop_duplicate_faces(m: PolyMesh) -> PolyMesh:
+    """Keep the first of faces with the same vertex set (either orientation)."""
+    seen = set()
+    faces = []
+    for f in m.faces:
+        key = tuple(sorted(i for r in f.rings for i in r))
+        if key in seen:
+            continue
+        seen.add(key)
+        faces.append(f)
+    return m.with_faces(faces) if len(faces) != len(m.faces) else m
+
+
+def drop_degenerate(m: PolyMesh, area_eps: float = 1e-10) -> PolyMesh:
+    """Drop faces of (near) zero area."""
+    faces = [f for f in m.faces if face_area(m.vertices, f) > area_eps]
+    return m.with_faces(faces) if len(faces) != len(m.faces) else m
+
+
+def invalid_polygons(m: PolyMesh, tol: Tolerances) -> dict[int, set[int]]:
+    """Faces the project's polygon validator rejects: ``{face_index: {codes}}``."""
+    from lod2energy.model import Shell, Surface
+    from lod2energy.validate.polygon import check_polygons
+    shell = Shell(tuple(Surface.from_lists([list(r) for r in f.rings]) for f in m.faces))
+    out: dict[int, set[int]] = defaultdict(set)
+    for fi, code, _ in check_polygons(m.vertices, shell, tol):
+        if fi is not None:
+            out[int(fi)].add(int(code))
+    return out
+
+
+def fix_nonplanar(m: PolyMesh, tol: Tolerances, rounds: int = 3) -> PolyMesh:
+    """Triangulate polygons that are non-planar (203/204) or whose rings cross (104, 2xx).
+
+    The project's polygon validator decides (204 is only checked once every polygon is
+    otherwise valid, hence the rounds).
+    """
+    from lod2energy.repair.holefill import triangulate_loop
+    for _ in range(rounds):
+        bad = {f: c for f, c in invalid_polygons(m, tol).items() if c & {104, 201, 203, 204, 205, 206, 207, 208}}
+        if not bad:
+            return m
+        V = m.vertices
+        faces = []
+        for fi, f in enumerate(m.faces):
+            if fi not in bad or (len(f.outer) == 3 and len(f.rings) == 1):
+                faces.append(f)
+                continue
+            tris = triangulate_loop(V, list(f.outer)) if len(f.rings) == 1 else None
+            if tris is None:
+                tris = [tuple(int(i) for i in t) for t in triangulate_face(V, f)]
+            faces.extend(Face((t,), f.source, f.semantic) for t in tris)
+        m = m.with_faces(faces)
+    return m
+
+
+def merge_ring_pair(r1: tuple[int, ...], r2: tuple[int, ...]) -> tuple[int, ...] | None:
+    """Union of two rings sharing an edge in opposite directions (None if they share none)."""
+    e1 = {(r1[i], r1[(i + 1) % len(r1)]): i for i in range(len(r1))}
+    for j in range(len(r2)):
+        a, b = r2[(j + 1) % len(r2)], r2[j]  # r2 walks b->a, r1 walks a->b
+        if (a, b) in e1:
+            i = e1[(a, b)]
+            # r2 rotated to start at a (= r2[j+1]) and end at b (= r2[j])
+            k = (j + 1) % len(r2)
+            path = [r2[(k + s) % len(r2)] for s in range(len(r2))]  # a ... b
+            rot1 = [r1[(i + 1 + s) % len(r1)] for s in range(len(r1))]  # b ... a
+            merged = rot1[:-1] + path[:-1]
+            # rot1 = b..a ; path = a..b -> b..(before a), a..(before b)
+            return clean_ring(tuple(merged))
+    return None
+
+
+def merge_slivers(m: PolyMesh, tol: Tolerances, only_new: bool = False) -> PolyMesh:
+    """Merge each face with area <= ``tol.sliver_area`` into an edge-adjacent face.
+
+    The merged polygon must stay simple and planar within ``tol``; the neighbour keeps its
+    source and semantic. A sliver no neighbour can absorb is kept.
+    """
+    V = m.vertices
+    faces = list(m.faces)
+    areas = [face_area(V, f) for f in faces]
+    slivers = [i for i, a in enumerate(areas) if a <= tol.sliver_area and (not only_new or faces[i].source < 0)]
+    if not slivers:
+        return m
+    alive = [True] * len(faces)
+    for s in slivers:
+        if not alive[s] or len(faces[s].rings) > 1:
+            continue
+        inc = edge_faces([f if alive[k] else Face(((),)) for k, f in enumerate(faces)])
+        nbrs = []
+        for a, b in faces[s].edges():
+            for g, _ in inc.get((min(a, b), max(a, b)), ()):
+                if g != s and alive[g] and g not in nbrs:
+                    nbrs.append(g)
+        # biggest neighbour first: it absorbs the sliver with the smallest relative change
+        nbrs.sort(key=lambda g: -areas[g])
+        for g in nbrs:
+            fg = faces[g]
+            merged = merge_ring_pair(fg.outer, faces[s].outer)
+            if merged is None or len(set(merged)) < 3 or len(set(merged)) != len(merged):
+                continue
+            nf = Face((merged,) + fg.rings[1:], fg.source, fg.semantic)
+            d2p, dev = planarity(V, nf)
+            if d2p > tol.planarity_d2p_tol * 0.5:
+                continue
+            B = plane_basis(face_normal(V, nf))
+            if not all(ring_is_simple_2d(V[list(r)] @ B.T) for r in nf.rings):
+                continue
+            if face_area(V, nf) <= tol.sliver_area:
+                continue
+            faces[g] = nf
+            areas[g] = face_area(V, nf)
+            alive[s] = False
+            break
+    return m.with_faces([f for k, f in enumerate(faces) if alive[k]])
+
+
+TJUNCTION_TOL = 0.005  # m: a vertex this close to another polygon's edge is on it
+
+
+def cleanup(m: PolyMesh, tol: Tolerances = DEFAULT, tjunction_tol: float | None = None) -> PolyMesh:
+    """Stage 0: every clean-up step in order (see the module docstring).
+
+    Parameters
+    ----------
+    tjunction_tol : float, m
+        Distance under which a vertex is inserted into a polygon edge; default
+        ``max(snap_tol, TJUNCTION_TOL)`` (half the planarity tolerance: the polygon stays
+        planar within it).
+    """
+    tj = max(tol.snap_tol, TJUNCTION_TOL) if tjunction_tol is None else tjunction_tol
+    m = snap_vertices(m, tol.snap_tol)
+    m = clean_rings(m)
+    m = split_pinched(m)
+    m = split_t_junctions(m, tj, tol.snap_tol)
+    m = drop_duplicate_faces(m)
+    m = drop_degenerate(m)
+    m = fix_nonplanar(m, tol)
+    m = drop_degenerate(m)
+    m = merge_slivers(m, tol)
+    return m

@@ -1,0 +1,246 @@
+"""Stage 2 of the repair ladder ("Output A"): fill the holes bounded by open edges.
+
+Open (boundary) edges are walked into closed loops, oriented so that the filling face agrees
+with its neighbours. A planar loop becomes one new polygon; a non-planar one is split into
+triangles by a constrained Delaunay triangulation in its projected plane (ear clipping, then
+Lawson flips of the interior edges). Nothing outside the holes moves.
+"""
+from __future__ import annotations
+
+from collections import defaultdict
+
+import numpy as np
+
+from lod2energy.config import DEFAULT, Tolerances
+from lod2energy.repair._mesh import (
+    Face, PolyMesh, edge_faces, newell_normal, plane_basis, ring_is_simple_2d,
+)
+from lod2energy.repair.cleanup import _split_loop
+
+try:
+    import mapbox_earcut as _earcut
+except ImportError:  # pragma: no cover
+    _earcut = None
+
+
+def boundary_loops(m: PolyMesh) -> list[list[int]]:
+    """Closed loops of open edges, each walked in the direction a filling face needs.
+
+    Returns
+    -------
+    list of list of int
+        Vertex loops without repeated vertices (pinched loops are split).
+    """
+    inc = edge_faces(m.faces)
+    out_edges: dict[int, list[int]] = defaultdict(list)
+    for (a, b), lst in inc.items():
+        if len(lst) != 1:
+            continue
+        _, d = lst[0]
+        # the face walks a->b when d == 1; the filling face must walk b->a
+        s, t = (b, a) if d == 1 else (a, b)
+        out_edges[s].append(t)
+    for v in out_edges:
+        out_edges[v].sort()
+    loops = []
+    for s in sorted(out_edges):
+        while out_edges[s]:
+            loop = [s]
+            cur = out_edges[s].pop(0)
+            guard = 0
+            while cur != s and guard < 100000:
+                guard += 1
+                loop.append(cur)
+                if not out_edges.get(cur):
+                    loop = None
+                    break
+                cur = out_edges[cur].pop(0)
+            if loop is None:
+                continue
+            loops.extend(sub for sub in _split_loop(loop) if len(sub) >= 3)
+    return loops
+
+
+def _loop_plane(P: np.ndarray) -> tuple[np.ndarray, float]:
+    n = newell_normal(P)
+    ln = np.linalg.norm(n)
+    if ln < 1e-12:
+        c = P.mean(axis=0)
+        _, _, vt = np.linalg.svd(P - c, full_matrices=False)
+        n = vt[2]
+    else:
+        n = n / ln
+    c = P.mean(axis=0)
+    return n, float(np.abs((P - c) @ n).max())
+
+
+def _lawson(P2: np.ndarray, tris: list[list[int]], n_ring: int) -> list[list[int]]:
+    """Delaunay flips of interior edges (constrained by the ring, indices local to P2)."""
+    def ccw(a, b, c):
+        return (P2[b, 0] - P2[a, 0]) * (P2[c, 1] - P2[a, 1]) - (P2[b, 1] - P2[a, 1]) * (P2[c, 0] - P2[a, 0])
+
+    def incircle(a, b, c, d):
+        m = np.array([[P2[i, 0] - P2[d, 0], P2[i, 1] - P2[d, 1],
+                       (P2[i, 0] - P2[d, 0]) ** 2 + (P2[i, 1] - P2[d, 1]) ** 2] for i in (a, b, c)])
+        return np.linalg.det(m)
+
+    ring_edges = {(i, (i + 1) % n_ring) for i in range(n_ring)}
+    ring_edges |= {(b, a) for a, b in ring_edges}
+    for _ in range(4 * len(tris) + 4):
+        emap = {}
+        for ti, t in enumerate(tris):
+            for k in range(3):
+                emap[(t[k], t[(k + 1) % 3])] = ti
+        flipped = False
+        for (a, b), ti in sorted(emap.items()):
+            if (a, b) in ring_edges or (b, a) not in emap or a > b:
+                continue
+            tj = emap[(b, a)]
+            c = [v for v in tris[ti] if v not in (a, b)][0]
+            d = [v for v in tris[tj] if v not in (a, b)][0]
+            # triangles (a, b, c) and (b, a, d); flip to (c, a, d)/(d, b, c) if d is in circle abc
+            if ccw(a, b, c) <= 0:
+                continue
+            if incircle(a, b, c, d) > 1e-12 and ccw(c, a, d) > 1e-12 and ccw(d, b, c) > 1e-12:
+                tris[ti] = [c, a, d]
+                tris[tj] = [d, b, c]
+                flipped = True
+                break
+        if not flipped:
+            break
+    return tris
+
+
+def triangulate_loop(V: np.ndarray, loop: list[int]) -> list[tuple[int, ...]] | None:
+    """Constrained Delaunay triangles of a (possibly non-planar) loop, or None.
+
+    The loop is projected on its Newell plane, then on the coordinate planes, until a
+    projection keeps it simple; triangles are oriented like the loop.
+    """
+    P = V[loop]
+    n, _ = _loop_plane(P)
+    cands = [n] + [np.eye(3)[k] * (1 if n[k] >= 0 else -1) for k in np.argsort(-np.abs(n))]
+    for nn in cands:
+        B = plane_basis(nn)
+        P2 = (P - P.mean(axis=0)) @ B.T
+        if not ring_is_simple_2d(P2):
+            continue
+        # earcut wants any orientation; keep ours by checking the 2D signed area
+        area = 0.5 * np.sum(P2[:, 0] * np.roll(P2[:, 1], -1) - np.roll(P2[:, 0], -1) * P2[:, 1])
+        if abs(area) < 1e-14:
+            continue
+        t = np.asarray(_earcut.triangulate_float64(P2, np.array([len(loop)], dtype=np.uint32)),
+                       dtype=np.int64).reshape(-1, 3)
+        if len(t) != len(loop) - 2:
+            continue
+        tl = [list(map(int, x)) for x in t]
+        # orient every triangle counter-clockwise in 2D when the loop is, else clockwise
+        sgn = 1 if area > 0 else -1
+        fixed = []
+        for a, b, c in tl:
+            s = (P2[b, 0] - P2[a, 0]) * (P2[c, 1] - P2[a, 1]) - (P2[b, 1] - P2[a, 1]) * (P2[c, 0] - P2[a, 0])
+            fixed.append([a, b, c] if s * sgn > 0 else [a, c, b])
+        if sgn < 0:
+            P2f = P2.copy()
+            P2f[:, 1] *= -1
+            fixed = [[a, c, b] for a, b, c in fixed]
+            fixed = _lawson(P2f, fixed, len(loop))
+            fixed = [[a, c, b] for a, b, c in fixed]
+        else:
+            fixed = _lawson(P2, fixed, len(loop))
+        return [tuple(loop[i] for i in tri) for tri in fixed]
+    return None
+
+
+def _d2p(P: np.ndarray) -> float:
+    if len(P) <= 3:
+        return 0.0
+    c = P.mean(axis=0)
+    _, _, vt = np.linalg.svd(P - c, full_matrices=False)
+    return float(np.abs((P - c) @ vt[2]).max())
+
+
+def _planar_polygon(V: np.ndarray, loop: list[int], tol: Tolerances) -> bool:
+    P = V[loop]
+    n, d2p = _loop_plane(P)
+    if d2p > tol.planarity_d2p_tol * 0.5:
+        return False
+    B = plane_basis(n)
+    P2 = (P - P.mean(axis=0)) @ B.T
+    area = 0.5 * abs(np.sum(P2[:, 0] * np.roll(P2[:, 1], -1) - np.roll(P2[:, 0], -1) * P2[:, 1]))
+    return area > tol.sliver_area and ring_is_simple_2d(P2)
+
+
+def best_chord(V: np.ndarray, loop: list[int], tol: Tolerances) -> tuple[int, int] | None:
+    """Chord ``(i, j)`` splitting a non-planar loop into the most planar pair of loops.
+
+    Both halves planar beats one, which beats none; ties go to the smallest summed
+    distance to plane. None when no chord makes a half planar.
+    """
+    n = len(loop)
+    P = V[loop]
+    best, best_key = None, None
+    lim = tol.planarity_d2p_tol * 0.5
+    for i in range(n):
+        for j in range(i + 2, n):
+            if i == 0 and j == n - 1:
+                continue
+            if loop[i] == loop[j]:
+                continue
+            a = P[i:j + 1]
+            b = np.vstack([P[j:], P[:i + 1]])
+            da, db = _d2p(a), _d2p(b)
+            n_ok = (da <= lim) + (db <= lim)
+            if n_ok == 0:
+                continue
+            # prefer big planar pieces: fewer left-over vertices in the non-planar half
+            left = (0 if da <= lim else len(a)) + (0 if db <= lim else len(b))
+            key = (-n_ok, left, da + db)
+            if best_key is None or key < best_key:
+                best, best_key = (i, j), key
+    return best
+
+
+def fill_loop(V: np.ndarray, loop: list[int], tol: Tolerances, depth: int = 0) -> tuple[list[Face], np.ndarray]:
+    """Faces closing one loop (and extra vertices when a centroid fan was needed).
+
+    A planar, simple loop becomes one polygon; a non-planar loop is split along the chord
+    giving the most planar halves (recursively), and what stays non-planar is triangulated.
+    """
+    if len(loop) == 3:
+        return [Face((tuple(loop),))], np.zeros((0, 3))
+    if _planar_polygon(V, loop, tol):
+        return [Face((tuple(loop),))], np.zeros((0, 3))
+    if depth < 12 and len(loop) <= 64:
+        ch = best_chord(V, loop, tol)
+        if ch is not None:
+            i, j = ch
+            a = loop[i:j + 1]
+            b = loop[j:] + loop[:i + 1]
+            fa, ea = fill_loop(V, a, tol, depth + 1)
+            if len(ea) == 0:
+                fb, eb = fill_loop(V, b, tol, depth + 1)
+                if len(eb) == 0:
+                    return fa + fb, np.zeros((0, 3))
+    tris = triangulate_loop(V, loop)
+    if tris is not None:
+        return [Face((t,)) for t in tris], np.zeros((0, 3))
+    # last resort: a fan around the loop's centroid (one new vertex)
+    c = len(V)
+    faces = [Face(((loop[i], loop[(i + 1) % len(loop)], c),)) for i in range(len(loop))]
+    return faces, V[loop].mean(axis=0)[None, :]
+
+
+def fill_holes(m: PolyMesh, tol: Tolerances = DEFAULT) -> PolyMesh:
+    """Stage 2: close every boundary loop with new faces (source -1, semantic None)."""
+    loops = boundary_loops(m)
+    if not loops:
+        return m
+    V = m.vertices
+    faces = list(m.faces)
+    for loop in loops:
+        new, extra = fill_loop(V, loop, tol)
+        if len(extra):
+            V = np.vstack([V, extra])
+        faces.extend(new)
+    return PolyMesh(V, tuple(faces))

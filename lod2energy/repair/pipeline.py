@@ -1,0 +1,385 @@
+"""The repair ladder: least invasive stage first, re-validating after each, per building.
+
+Stages (:data:`STAGES`): ``valid`` (untouched) -> ``cleanup`` (0) -> ``orientation`` (1) ->
+``holefill`` (2, "Output A") -> ``refill`` (3, "Output A+") -> ``alphashape`` (4) ->
+``footprint`` (5) -> ``hull`` (6) -> ``irreparable`` (7, the original is kept). The first
+result that is a closed, outward 2-manifold without degenerate, sliver or crossing faces and
+without a val3dity-level error (601 aside) is kept.
+
+Every Building/BuildingPart geometry of LoD >= 1 (or of ``lod`` when given) that fails the
+criterion is replaced by a closed Solid at the same LoD; faces derived from an input face keep
+its semantic index, new faces have none. Parts stay separate solids unless ``merge_parts``.
+"""
+from __future__ import annotations
+
+import time
+from collections import Counter
+from dataclasses import replace
+from typing import Iterable, Iterator, Mapping
+
+import numpy as np
+
+from lod2energy.config import DEFAULT, Tolerances
+from lod2energy.model import (
+    BUILDING_TYPES, Building, FeatureError, Geometry, Shell, Solid, Surface, frozen_mapping, lod_key,
+)
+from lod2energy.repair._mesh import Face, PolyMesh, compact, topology
+from lod2energy.repair.alphashape import alpha_repair
+from lod2energy.repair.cleanup import cleanup, merge_slivers, snap_vertices
+from lod2energy.repair.footprint import extrude_footprint
+from lod2energy.repair.holefill import fill_holes
+from lod2energy.repair.hull import convex_hull
+from lod2energy.repair.metrics import fidelity
+from lod2energy.repair.orientation import orient
+from lod2energy.repair.refill import close, refill
+from lod2energy.repair.validity import energy_codes, shell_defects
+
+STAGES = ("valid", "cleanup", "orientation", "holefill", "refill", "alphashape", "footprint",
+          "hull", "irreparable")
+LOCAL = ("cleanup", "orientation", "holefill", "refill")
+GLOBAL = ("alphashape", "footprint", "hull")
+DEFAULT_TIMEOUT = 30.0
+
+
+# ----------------------------------------------------------------------------- geometry <-> mesh
+
+def mesh_of_geometry(vertices: np.ndarray, g: Geometry) -> PolyMesh:
+    """All exterior-shell surfaces of ``g`` as one PolyMesh with its own vertices.
+
+    ``Face.source`` numbers the surfaces in :meth:`Geometry.iter_surfaces` order (exterior
+    shells only).
+    """
+    faces = []
+    k = 0
+    for si, hi, fi, s in g.iter_surfaces():
+        if hi > 0:
+            continue
+        faces.append(Face(tuple(tuple(int(i) for i in r) for r in s.rings), k, s.semantic))
+        k += 1
+    m = PolyMesh(np.asarray(vertices, dtype=np.float64), tuple(faces))
+    return compact(m)
+
+
+def geometry_of_mesh(m: PolyMesh, g: Geometry, lookup: dict, extra: list, base: int) -> Geometry:
+    """A Solid geometry at ``g``'s LoD from ``m``; vertex indices into the building's array.
+
+    ``lookup`` maps coordinate tuples of the building's vertices to their index; vertices not
+    found are appended to ``extra`` (their index is ``base + position``).
+    """
+    idx = np.empty(len(m.vertices), dtype=np.int64)
+    for i, p in enumerate(m.vertices):
+        key = (float(p[0]), float(p[1]), float(p[2]))
+        j = lookup.get(key)
+        if j is None:
+            j = base + len(extra)
+            extra.append(p)
+            lookup[key] = j
+        idx[i] = j
+    sem_ok = len(g.semantic_surfaces)
+    surfaces = tuple(Surface.from_lists([[int(idx[v]) for v in r] for r in f.rings],
+                                        f.semantic if (f.semantic is not None and f.semantic < sem_ok) else None)
+                     for f in m.faces)
+    return Geometry("Solid", g.lod, (Solid((Shell(surfaces),)),), g.semantic_surfaces)
+
+
+def _probe_geometry(m: PolyMesh, lod) -> Geometry:
+    surfaces = tuple(Surface.from_lists([list(r) for r in f.rings]) for f in m.faces)
+    return Geometry("Solid", lod, (Solid((Shell(surfaces),)),))
+
+
+def val3dity_codes(m: PolyMesh, lod, tol: Tolerances, coid: str = "probe") -> list[int]:
+    """Codes the project's validator finds on ``m`` as a Solid (601 cannot occur here)."""
+    from lod2energy.validate.checks import validate_geometry
+    return sorted({d.code for d in validate_geometry(m.vertices, coid, 0, _probe_geometry(m, lod), tol)})
+
+
+def is_repaired(m: PolyMesh | None, lod, tol: Tolerances) -> bool:
+    """The ladder's stopping criterion."""
+    if m is None or not m.faces:
+        return False
+    if shell_defects(m, tol, first_only=True):
+        return False
+    return not val3dity_codes(m, lod, tol)
+
+
+# ----------------------------------------------------------------------------- the ladder
+
+def _input_defects(V: np.ndarray, g: Geometry, coid: str, gi: int, m: PolyMesh, tol: Tolerances) -> list[int]:
+    from lod2energy.validate.checks import validate_geometry
+    codes = {d.code for d in validate_geometry(V, coid, gi, g, tol)}
+    sd = shell_defects(snap_vertices(m, tol.snap_tol), tol)
+    if g.is_volumetric:
+        codes |= {c if c < 1000 else 1003 for _, c, _ in sd}
+    else:
+        codes |= set(energy_codes(sd))
+    if len(g.solids) > 1:
+        codes.add(1001) if not g.is_volumetric else None
+    return sorted(codes)
+
+
+def ladder(m: PolyMesh, lod, tol: Tolerances, deadline: float) -> tuple[str, PolyMesh | None, list[str]]:
+    """Run the stages on one shell.
+
+    Returns
+    -------
+    stage : str
+    result : PolyMesh or None
+        None for "irreparable".
+    log : list of str
+        One line per stage tried.
+    """
+    log: list[str] = []
+
+    def ok(name, r):
+        good = is_repaired(r, lod, tol)
+        log.append(f"{name}: {'ok' if good else ('no result' if r is None else 'failed')}")
+        return good
+
+    def late():
+        return time.monotonic() > deadline
+
+    m0 = cleanup(m, tol)
+    if ok("cleanup", m0):
+        return "cleanup", m0, log
+    m1 = orient(m0)
+    if ok("orientation", m1):
+        return "orientation", m1, log
+    m2 = close(m1, tol)
+    if not topology(m2).boundary and shell_defects(m2, tol, first_only=True):
+        # filled faces may leave new slivers or T-junctions: one more clean-up round
+        m2b = close(cleanup(m2, tol), tol)
+        if ok("holefill", m2b):
+            return "holefill", m2b, log
+    if ok("holefill", m2):
+        return "holefill", m2, log
+    if not late():
+        m3 = refill(m2, tol)
+        if m3 is None:
+            m3 = refill(m1, tol)
+        if ok("refill", m3):
+            return "refill", m3, log
+    if not late():
+        m4 = alpha_repair(m0, tol, deadline=deadline,
+                          accept=lambda r: not val3dity_codes(r, lod, tol))
+        if ok("alphashape", m4):
+            return "alphashape", m4, log
+    m5 = extrude_footprint(m0)
+    if ok("footprint", m5):
+        return "footprint", m5, log
+    m6 = convex_hull(m0)
+    if ok("hull", m6):
+        return "hull", m6, log
+    return "irreparable", None, log
+
+
+def _targets(b: Building, lod: str | None) -> list[tuple[int, int, Geometry]]:
+    """(object index, geometry index, geometry) of the geometries the ladder looks at."""
+    out = []
+    for oi, o in enumerate(b.objects):
+        if o.type not in BUILDING_TYPES:
+            continue
+        for gi, g in enumerate(o.geometries):
+            if not g.is_polygonal or not g.solids:
+                continue
+            if lod is not None and g.lod != lod:
+                continue
+            if lod is None and lod_key(g.lod) < 1:
+                continue  # LoD0 footprints and roof edges are not volumes
+            out.append((oi, gi, g))
+    return out
+
+
+def repair_building(b: Building, tol: Tolerances = DEFAULT, timeout: float = DEFAULT_TIMEOUT,
+                    merge_parts: bool = False, lod: str | None = None) -> Building:
+    """Repair every defective Building/BuildingPart geometry of ``b`` (see the module docstring).
+
+    Parameters
+    ----------
+    b : Building
+    tol : Tolerances
+    timeout : float, s
+        Budget for the whole building; once spent, remaining geometries jump to the convex
+        hull (or stay as they are, "irreparable").
+    merge_parts : bool
+        Union overlapping BuildingParts (601) into one solid on the Building.
+    lod : str or None
+        Only repair geometries at this LoD (None: every LoD >= 1).
+
+    Returns
+    -------
+    Building
+        ``b`` itself when nothing needed a repair (with provenance when it carried none);
+        else a new building with ``provenance["repair"]`` set.
+    """
+    t0 = time.monotonic()
+    deadline = t0 + timeout
+    targets = _targets(b, lod)
+    lookup = {}
+    for i, p in enumerate(b.vertices):
+        lookup.setdefault((float(p[0]), float(p[1]), float(p[2])), i)
+    extra: list = []
+    objs = list(b.objects)
+    per_geom = []
+    defects_before: set[int] = set()
+    changed = False
+    for oi, gi, g in targets:
+        o = b.objects[oi]
+        m = mesh_of_geometry(b.vertices, g)
+        codes = _input_defects(b.vertices, g, o.id, gi, m, tol)
+        defects_before |= set(codes)
+        entry = {"object": o.id, "geometry": gi, "lod": g.lod, "type": g.type,
+                 "n_faces_before": m.n_faces, "defects_before": codes}
+        if not codes and g.type == "Solid" and len(g.solids) == 1 and len(g.solids[0].shells) == 1:
+            entry.update(stage="valid", n_faces_after=m.n_faces, iou=1.0, mean_displacement=0.0,
+                         mean_displacement_back=0.0, hausdorff=0.0, closure="closed", seconds=0.0)
+            per_geom.append(entry)
+            continue
+        t1 = time.monotonic()
+        if not m.faces:
+            stage, res, log = "irreparable", None, ["empty geometry"]
+        elif time.monotonic() > deadline:
+            res = convex_hull(cleanup(m, tol))
+            stage = "hull" if is_repaired(res, g.lod, tol) else "irreparable"
+            res = res if stage == "hull" else None
+            log = ["timeout: jumped to the convex hull"]
+        else:
+            stage, res, log = ladder(m, g.lod, tol, deadline)
+        entry["log"] = log
+        if res is None:
+            entry.update(stage="irreparable", n_faces_after=m.n_faces, iou=None,
+                         mean_displacement=None, mean_displacement_back=None, hausdorff=None,
+                         closure=None)
+        else:
+            res = compact(res)
+            input_closed = not shell_defects(snap_vertices(m, tol.snap_tol), tol, first_only=True,
+                                             self_intersection=False) or _closed_after_cleanup(m, tol)
+            entry.update(stage=stage, n_faces_after=res.n_faces, **fidelity(m, res, input_closed))
+            ng = geometry_of_mesh(res, g, lookup, extra, len(b.vertices))
+            geoms = list(objs[oi].geometries)
+            geoms[gi] = ng
+            objs[oi] = replace(objs[oi], geometries=tuple(geoms))
+            changed = True
+        entry["seconds"] = round(time.monotonic() - t1, 4)
+        per_geom.append(entry)
+    if not changed and all(e["stage"] == "valid" for e in per_geom):
+        if "repair" in b.provenance:
+            return b
+        return b if not per_geom else b  # untouched: same object
+    V = np.vstack([b.vertices, np.asarray(extra).reshape(-1, 3)]) if extra else b.vertices
+    nb = replace(b, objects=tuple(objs), vertices=V)
+    if merge_parts:
+        from lod2energy.repair.parts import merge_overlapping_parts
+        nb = merge_overlapping_parts(nb, tol)
+    return nb.with_provenance(repair=_summary(nb, per_geom, sorted(defects_before), tol, time.monotonic() - t0))
+
+
+def _closed_after_cleanup(m: PolyMesh, tol: Tolerances) -> bool:
+    c = orient(cleanup(m, tol))
+    return not shell_defects(c, tol, first_only=True, self_intersection=False)
+
+
+def _summary(b: Building, per_geom: list, before: list[int], tol: Tolerances, seconds: float) -> dict:
+    from lod2energy.validate.checks import validate_building
+    after = set()
+    for d in validate_building(b, tol):
+        after.add(d.code)
+    for e in per_geom:
+        if e["stage"] == "irreparable":
+            after |= set(e["defects_before"])
+    rank = {s: i for i, s in enumerate(STAGES)}
+    stage = max((e["stage"] for e in per_geom), key=lambda s: rank[s]) if per_geom else "valid"
+    main_lod = b.default_lod()
+    main = [e for e in per_geom if e["lod"] == main_lod and e["iou"] is not None] or \
+        [e for e in per_geom if e["iou"] is not None]
+    nv = [max(e["n_faces_before"], 1) for e in main]
+    out = {
+        "stage": stage,
+        "iou": float(np.average([e["iou"] for e in main], weights=nv)) if main else None,
+        "mean_displacement": float(np.average([e["mean_displacement"] for e in main], weights=nv)) if main else None,
+        "mean_displacement_back": float(np.average([e["mean_displacement_back"] for e in main], weights=nv)) if main else None,
+        "hausdorff": float(max(e["hausdorff"] for e in main)) if main else None,
+        "closure": ",".join(sorted({e["closure"] for e in main if e["closure"]})) or None,
+        "n_faces_before": int(sum(e["n_faces_before"] for e in per_geom if e["lod"] == main_lod)),
+        "n_faces_after": int(sum(e["n_faces_after"] for e in per_geom if e["lod"] == main_lod)),
+        "seconds": round(seconds, 4),
+        "defects_before": before,
+        "defects_after": sorted(after),
+        "geometries": per_geom,
+    }
+    return out
+
+
+def repair_features(features: Iterable[Building | FeatureError], tol: Tolerances = DEFAULT,
+                    timeout: float = DEFAULT_TIMEOUT, merge_parts: bool = False,
+                    lod: str | None = None) -> Iterator[Building | FeatureError]:
+    """Repair each Building of a feature stream; everything else passes through in order."""
+    for f in features:
+        if isinstance(f, Building) and f.objects and any(o.type in BUILDING_TYPES for o in f.objects):
+            try:
+                yield repair_building(f, tol, timeout, merge_parts, lod)
+            except Exception as e:  # noqa: BLE001 - one broken building never stops the stream
+                yield f.with_provenance(repair={"stage": "irreparable", "error": f"{type(e).__name__}: {e}",
+                                                "iou": None, "mean_displacement": None, "hausdorff": None,
+                                                "defects_before": [], "defects_after": [999]})
+        else:
+            yield f
+
+
+def repair_info(b: Building) -> Mapping:
+    """``b.provenance["repair"]``, or the record of an untouched valid building."""
+    r = b.provenance.get("repair")
+    if r is not None:
+        return r
+    return {"stage": "valid", "iou": 1.0, "mean_displacement": 0.0, "hausdorff": 0.0,
+            "defects_before": [], "defects_after": []}
+
+
+def dataset_table(buildings: Iterable[Building]) -> dict:
+    """Per-dataset summary like the method's Tables 5/6.
+
+    Returns
+    -------
+    dict
+        ``total``, ``invalid`` (val3dity-level error other than 601, or not energy-compliant),
+        ``valid_before``/``valid_after`` (no val3dity-level error other than 601),
+        ``compliant_before``/``compliant_after`` (also closed, outward, no sliver),
+        ``local_repairs``, ``global_repairs``, ``left``, ``repaired_share``, ``miou``,
+        ``map_v`` (m), ``mean_hausdorff`` (m), ``stages`` (histogram).
+    """
+    rows = [repair_info(b) for b in buildings if isinstance(b, Building)]
+    n = len(rows)
+
+    def val3dity_ok(codes):
+        return all(c == 601 or c >= 1000 for c in codes)
+
+    def compliant(codes):
+        return all(c == 601 for c in codes)
+
+    stages = Counter(r["stage"] for r in rows)
+    invalid = sum(1 for r in rows if not compliant(r["defects_before"]))
+    local = sum(stages[s] for s in LOCAL)
+    glob = sum(stages[s] for s in GLOBAL)
+    left = stages["irreparable"] + sum(1 for r in rows if r["stage"] not in ("irreparable",)
+                                       and not compliant(r["defects_after"]))
+    fixed = [r for r in rows if r["stage"] not in ("valid", "irreparable") and r.get("iou") is not None]
+    return {
+        "total": n,
+        "invalid": invalid,
+        "valid_before": sum(1 for r in rows if val3dity_ok(r["defects_before"])),
+        "valid_after": sum(1 for r in rows if val3dity_ok(r["defects_after"])),
+        "compliant_before": n - invalid,
+        "compliant_after": sum(1 for r in rows if compliant(r["defects_after"])),
+        "local_repairs": local,
+        "global_repairs": glob,
+        "left": left,
+        "repaired_share": (invalid - left) / invalid if invalid else 1.0,
+        "miou": float(np.mean([r["iou"] for r in fixed])) if fixed else None,
+        "map_v": float(np.mean([r["mean_displacement"] for r in fixed])) if fixed else None,
+        "mean_hausdorff": float(np.mean([r["hausdorff"] for r in fixed])) if fixed else None,
+        "stages": {s: stages[s] for s in STAGES if stages[s]},
+    }
+
+
+__all__ = ["STAGES", "DEFAULT_TIMEOUT", "repair_building", "repair_features", "dataset_table",
+           "repair_info", "ladder", "mesh_of_geometry", "is_repaired", "merge_slivers", "fill_holes",
+           "frozen_mapping"]

@@ -1,0 +1,187 @@
+"""The repair ladder's stopping criterion: is a shell an energy-ready closed solid boundary?
+
+A shell passes when every ring has >= 3 distinct points, no face is non-planar (203/204),
+degenerate or a sliver (area <= ``tol.sliver_area``), every edge is used by exactly two faces
+in opposite directions (N_b = N_nm = 0, 302/303/307), every vertex is a single fan (303),
+the faces form one component (305), the signed volume is positive (outward normals, 405)
+and no two faces cross (306). Codes are val3dity's; the energy ones (1001-1003) are used by
+:func:`energy_codes` for surface geometries that val3dity would not check as shells.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from lod2energy.config import DEFAULT, Tolerances
+from lod2energy.repair._mesh import (
+    PolyMesh, face_area, face_normal, plane_basis, planarity, ring_is_simple_2d, signed_volume,
+    topology, triangulate_mesh,
+)
+
+
+def polygon_defects(m: PolyMesh, tol: Tolerances = DEFAULT) -> list[tuple[int, int, str]]:
+    """Polygon-level problems: ``(face_index, code, info)``."""
+    V = m.vertices
+    out = []
+    for fi, f in enumerate(m.faces):
+        bad = False
+        for r in f.rings:
+            if len(set(r)) < 3:
+                out.append((fi, 101, f"{len(set(r))} distinct points"))
+                bad = True
+                break
+            P = V[list(r)]
+            d = np.linalg.norm(P - np.roll(P, -1, axis=0), axis=1)
+            if (d <= tol.snap_tol).any():
+                out.append((fi, 102, f"points {float(d.min()):.4f} m apart"))
+                bad = True
+                break
+        if bad:
+            continue
+        a = face_area(V, f)
+        if a <= tol.sliver_area:
+            out.append((fi, 1003, f"area {a:.2e} m2"))
+            continue
+    if out:
+        return out
+    from lod2energy.repair.cleanup import invalid_polygons
+    for fi, codes in sorted(invalid_polygons(m, tol).items()):
+        for c in sorted(codes):
+            out.append((fi, c, "polygon validator"))
+    return out
+
+
+def shell_defects(m: PolyMesh, tol: Tolerances = DEFAULT, first_only: bool = False,
+                  self_intersection: bool = True) -> list[tuple[int | None, int, str]]:
+    """Every reason why ``m`` is not a closed, outward, clean 2-manifold shell.
+
+    Returns
+    -------
+    list of (face_index or None, code, info)
+        Empty when the shell passes.
+    """
+    if len(m.faces) < 4:
+        return [(None, 301, f"{len(m.faces)} faces")]
+    out = polygon_defects(m, tol)
+    if out and first_only:
+        return out
+    topo = topology(m)
+    if topo.boundary:
+        out.append((None, 302, f"N_b={len(topo.boundary)}"))
+    if topo.nonmanifold:
+        out.append((None, 303, f"N_nm={len(topo.nonmanifold)} edges"))
+    if topo.nm_vertices:
+        out.append((None, 303, f"{len(topo.nm_vertices)} non-manifold vertices"))
+    if topo.misoriented:
+        out.append((None, 307, f"{len(topo.misoriented)} edges used twice in one direction"))
+    if topo.components > 1:
+        out.append((None, 305, f"{topo.components} components"))
+    if out:
+        return out
+    tris, owner = triangulate_mesh(m)
+    if signed_volume(m, tris) <= 0:
+        out.append((None, 405, "normals point inwards"))
+        if first_only:
+            return out
+    if self_intersection:
+        pairs = self_intersections(m.vertices, tris, owner)
+        if len(pairs):
+            out.append((int(owner[pairs[0][0]]), 306, f"{len(pairs)} crossing triangle pairs"))
+    return out
+
+
+def is_closed_solid(m: PolyMesh, tol: Tolerances = DEFAULT) -> bool:
+    """True when :func:`shell_defects` finds nothing."""
+    return not shell_defects(m, tol, first_only=True)
+
+
+def energy_codes(defects) -> list[int]:
+    """Map shell codes to the energy-compliance ones (for surface geometries)."""
+    out = set()
+    for _, c, _ in defects:
+        if c in (301, 302, 303, 305):
+            out.add(1001)
+        elif c in (307, 405):
+            out.add(1002)
+        elif c in (101, 102, 1003):
+            out.add(1003)
+        else:
+            out.add(c)
+    return sorted(out)
+
+
+# ----------------------------------------------------------------------------- self-intersection
+
+def _candidate_pairs(T: np.ndarray) -> np.ndarray:
+    """Pairs of triangles whose bounding boxes overlap: (p, 2) int, i < j."""
+    lo, hi = T.min(axis=1), T.max(axis=1)
+    eps = 1e-9
+    order = np.argsort(lo[:, 0], kind="stable")
+    slo, shi = lo[order], hi[order]
+    out = []
+    n = len(T)
+    for k in range(n):
+        end = np.searchsorted(slo[:, 0], shi[k, 0] + eps, side="right")
+        if end <= k + 1:
+            continue
+        j = np.arange(k + 1, end)
+        ok = np.all((slo[j, 1:] <= shi[k, 1:] + eps) & (shi[j, 1:] >= slo[k, 1:] - eps), axis=1)
+        j = j[ok]
+        if len(j):
+            out.append(np.column_stack([np.full(len(j), order[k]), order[j]]))
+    if not out:
+        return np.zeros((0, 2), dtype=np.int64)
+    p = np.vstack(out)
+    return np.sort(p, axis=1)
+
+
+def _seg_tri_cross(p0, p1, a, b, c, eps):
+    """Vectorised: does segment p0-p1 cross the interior of triangle abc (strictly)?"""
+    n = np.cross(b - a, c - a)
+    ln = np.linalg.norm(n, axis=1)
+    ok = ln > 1e-14
+    n = n / np.where(ok, ln, 1.0)[:, None]
+    d0 = np.einsum("ij,ij->i", p0 - a, n)
+    d1 = np.einsum("ij,ij->i", p1 - a, n)
+    cross = ok & (((d0 > eps) & (d1 < -eps)) | ((d0 < -eps) & (d1 > eps)))
+    t = d0 / np.where(cross, d0 - d1, 1.0)
+    x = p0 + (p1 - p0) * t[:, None]
+    res = cross.copy()
+    for u, v in ((a, b), (b, c), (c, a)):
+        e = v - u
+        s = np.einsum("ij,ij->i", np.cross(e, x - u), n)
+        el = np.linalg.norm(e, axis=1)
+        res &= s > eps * np.maximum(el, 1e-12)
+    return res
+
+
+def self_intersections(V: np.ndarray, tris: np.ndarray, owner: np.ndarray) -> np.ndarray:
+    """Pairs of triangles of different faces that cross, touch or overlap (val3dity's 306).
+
+    Uses :func:`lod2energy.geometry.triangle_pairs_intersect` (touching counts, as with
+    exact predicates; shared vertices and edges do not).
+
+    Parameters
+    ----------
+    V : (n, 3) float
+    tris : (t, 3) int
+    owner : (t,) int
+        Face of each triangle; triangles of one face are never compared.
+
+    Returns
+    -------
+    (p, 2) int
+        Indices into ``tris``.
+    """
+    from lod2energy.geometry import triangle_pairs_intersect
+    if len(tris) < 2:
+        return np.zeros((0, 2), dtype=np.int64)
+    origin = V[tris[0, 0]]
+    T = V[tris] - origin
+    pairs = _candidate_pairs(T)
+    if len(pairs) == 0:
+        return pairs
+    pairs = pairs[owner[pairs[:, 0]] != owner[pairs[:, 1]]]
+    if len(pairs) == 0:
+        return pairs
+    hit = triangle_pairs_intersect(V - origin, tris, pairs)
+    return pairs[hit]
