@@ -19,7 +19,7 @@ except ImportError:  # pragma: no cover
 
 __all__ = [
     "newell_normal", "polygon_normal", "best_fit_plane", "project_2d", "snap_map",
-    "triangulate_surface", "triangulate_surfaces", "triangulate_shell", "triangle_normals", "triangle_areas",
+    "triangulate_surface", "triangulate_surfaces", "triangulate_flat", "triangulate_shell", "triangle_normals", "triangle_areas",
     "signed_volume", "bbox_pairs", "segment_triangle_intersect", "triangle_pairs_intersect",
     "winding_number", "points_in_solid",
 ]
@@ -44,7 +44,7 @@ def newell_normal(points: np.ndarray) -> np.ndarray:
     if len(p) < 3:
         return np.zeros(3)
     p = p - p.mean(axis=0)
-    return np.cross(p, np.roll(p, -1, axis=0)).sum(axis=0)
+    return _cross(p, np.roll(p, -1, axis=0)).sum(axis=0)
 
 
 def polygon_normal(points: np.ndarray) -> np.ndarray:
@@ -87,7 +87,7 @@ def newell_normals(vertices: np.ndarray, rings: Sequence[np.ndarray]) -> np.ndar
     nxt[ends] = starts
     p = vertices[idx]
     p = p - p.mean(axis=0)
-    cr = np.cross(p, p[nxt])
+    cr = _cross(p, p[nxt])
     out = np.add.reduceat(cr, starts, axis=0) if len(idx) else np.zeros((0, 3))
     out[lens == 0] = 0.0
     return out
@@ -237,7 +237,15 @@ def triangulate_surface(vertices: np.ndarray, surface, normal: np.ndarray | None
     p2 = project_2d(vertices[ids], normal)
     p2 = p2 - p2.mean(axis=0)
     ends = np.cumsum([len(r) for r in rings])
-    local = _cdt(p2, ends)
+    local = _earcut_rings(p2, ends)
+    if len(local):
+        a, b, c = p2[local[:, 0]], p2[local[:, 1]], p2[local[:, 2]]
+        area2 = np.abs((b[:, 0] - a[:, 0]) * (c[:, 1] - a[:, 1]) - (b[:, 1] - a[:, 1]) * (c[:, 0] - a[:, 0]))
+        scale2 = float(np.ptp(p2, axis=0).max()) ** 2
+        if (area2 <= 1e-10 * scale2).any():
+            # collinear vertices: a constrained Delaunay triangulation (val3dity's) has no
+            # zero-area triangles where ear clipping may leave some
+            local = _cdt(p2, ends)
     if len(local) == 0:
         return np.zeros((0, 3), dtype=np.intp)
     return _fix_orientation(ids[local], p2, local)
@@ -323,6 +331,74 @@ def triangulate_surfaces(vertices: np.ndarray, ringsets: Sequence[Sequence[np.nd
     return tris[order], fot[order]
 
 
+def triangulate_flat(vertices: np.ndarray, ids: np.ndarray, ring_len: np.ndarray,
+                     rings_per_poly: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """:func:`triangulate_surfaces` on a flat encoding of the polygons (no Python per polygon
+    for triangles and quadrilaterals).
+
+    Parameters
+    ----------
+    vertices : (n, 3) float
+    ids : (m,) int
+        All ring vertex indices, rings and polygons concatenated.
+    ring_len : (r,) int
+        Length of each ring.
+    rings_per_poly : (f,) int
+        Number of rings of each polygon (outer first).
+
+    Returns
+    -------
+    tris : (T, 3) int
+    poly_of_tri : (T,) int
+    """
+    ids = np.asarray(ids, dtype=np.intp)
+    ring_len = np.asarray(ring_len, dtype=np.intp)
+    rpp = np.asarray(rings_per_poly, dtype=np.intp)
+    nf = len(rpp)
+    if nf == 0:
+        return np.zeros((0, 3), dtype=np.intp), np.zeros(0, dtype=np.intp)
+    ring_start = np.concatenate(([0], np.cumsum(ring_len)[:-1]))
+    first_ring = np.concatenate(([0], np.cumsum(rpp)[:-1]))
+    ostart = ring_start[first_ring]
+    nout = ring_len[first_ring]
+    simple = rpp == 1
+    out_t, out_f = [], []
+    tri_f = np.flatnonzero(simple & (nout == 3))
+    if len(tri_f):
+        out_t.append(ids[ostart[tri_f, None] + np.arange(3)])
+        out_f.append(tri_f)
+    quad_c = np.flatnonzero(simple & (nout == 4))
+    normals = np.zeros((nf, 3))
+    if len(quad_c):
+        q = ids[ostart[quad_c, None] + np.arange(4)]
+        P = vertices[q]
+        P = P - P.mean(axis=1, keepdims=True)
+        normals[quad_c] = _cross(P, np.roll(P, -1, axis=1)).sum(axis=1)
+        good = np.any(normals[quad_c] != 0, axis=1)
+        quad_f = quad_c[good]
+        if len(quad_f):
+            out_t.append(_triangulate_quads(vertices, q[good], normals[quad_f]))
+            out_f.append(np.repeat(quad_f, 2))
+    else:
+        quad_f = quad_c
+    done = np.zeros(nf, dtype=bool)
+    done[tri_f] = True
+    done[quad_f] = True
+    for f in np.flatnonzero(~done).tolist():
+        r0 = first_ring[f]
+        rings = [ids[ring_start[r]:ring_start[r] + ring_len[r]] for r in range(r0, r0 + rpp[f])]
+        t = triangulate_surface(vertices, rings)
+        if len(t):
+            out_t.append(t)
+            out_f.append(np.full(len(t), f, dtype=np.intp))
+    if not out_t:
+        return np.zeros((0, 3), dtype=np.intp), np.zeros(0, dtype=np.intp)
+    tris = np.concatenate(out_t).astype(np.intp)
+    fot = np.concatenate(out_f).astype(np.intp)
+    order = np.argsort(fot, kind="stable")
+    return tris[order], fot[order]
+
+
 def triangulate_shell(vertices: np.ndarray, shell, rings_map: np.ndarray | None = None
                       ) -> tuple[np.ndarray, np.ndarray]:
     """Triangulate every surface of a shell.
@@ -368,7 +444,7 @@ def triangle_normals(vertices: np.ndarray, tris: np.ndarray, unit: bool = True) 
     (T, 3) float
     """
     v = vertices[tris]
-    n = np.cross(v[:, 1] - v[:, 0], v[:, 2] - v[:, 0])
+    n = _cross(v[:, 1] - v[:, 0], v[:, 2] - v[:, 0])
     if unit:
         ln = np.linalg.norm(n, axis=1, keepdims=True)
         n = np.divide(n, ln, out=np.zeros_like(n), where=ln > 0)
@@ -401,7 +477,7 @@ def signed_volume(vertices: np.ndarray, tris: np.ndarray) -> float:
     used = vertices[np.unique(tris)]
     o = used.mean(axis=0)
     v = vertices[tris] - o
-    return float(np.einsum("ij,ij->i", v[:, 0], np.cross(v[:, 1], v[:, 2])).sum() / 6.0)
+    return float(np.einsum("ij,ij->i", v[:, 0], _cross(v[:, 1], v[:, 2])).sum() / 6.0)
 
 
 # ----------------------------------------------------------------------------- pairs & intersections
@@ -451,6 +527,13 @@ def bbox_pairs(lo: np.ndarray, hi: np.ndarray, pad: float = 0.0,
     return np.argwhere(ok)
 
 
+def _cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """Row-wise cross product of (..., 3) arrays (cheaper than np.cross on small batches)."""
+    a0, a1, a2 = a[..., 0], a[..., 1], a[..., 2]
+    b0, b1, b2 = b[..., 0], b[..., 1], b[..., 2]
+    return np.stack([a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0], axis=-1)
+
+
 def _unit(v: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     ln = np.linalg.norm(v, axis=-1, keepdims=True)
     return np.divide(v, ln, out=np.zeros_like(v), where=ln > 0), ln[..., 0]
@@ -477,7 +560,7 @@ def segment_triangle_intersect(s0: np.ndarray, s1: np.ndarray, t0: np.ndarray, t
     -------
     (m,) bool
     """
-    un, ln = _unit(np.cross(t1 - t0, t2 - t0))
+    un, ln = _unit(_cross(t1 - t0, t2 - t0))
     d0 = np.einsum("ij,ij->i", s0 - t0, un)
     d1 = np.einsum("ij,ij->i", s1 - t0, un)
     ok = (ln > 0) & (((d0 > eps) & (d1 < -eps)) | ((d0 < -eps) & (d1 > eps)))
@@ -486,7 +569,7 @@ def segment_triangle_intersect(s0: np.ndarray, s1: np.ndarray, t0: np.ndarray, t
     den = np.where(ok, d0 - d1, 1.0)
     x = s0 + (d0 / den)[:, None] * (s1 - s0)
     for a, b in ((t0, t1), (t1, t2), (t2, t0)):
-        inward, _ = _unit(np.cross(un, b - a))           # points into the (CCW) triangle
+        inward, _ = _unit(_cross(un, b - a))           # points into the (CCW) triangle
         ok &= np.einsum("ij,ij->i", x - a, inward) > eps
     return ok
 
@@ -498,8 +581,8 @@ def _coplanar_overlap(A: np.ndarray, B: np.ndarray, normal: np.ndarray, eps: flo
         return np.zeros(0, dtype=bool)
     un, _ = _unit(normal)
     ref = np.where(np.abs(un[:, :1]) < 0.9, np.array([[1.0, 0, 0]]), np.array([[0, 1.0, 0]]))
-    e1, _ = _unit(np.cross(un, ref))
-    e2 = np.cross(un, e1)
+    e1, _ = _unit(_cross(un, ref))
+    e2 = _cross(un, e1)
     o = A[:, :1]
     a2 = np.stack([np.einsum("ijk,ik->ij", A - o, e1), np.einsum("ijk,ik->ij", A - o, e2)], -1)
     b2 = np.stack([np.einsum("ijk,ik->ij", B - o, e1), np.einsum("ijk,ik->ij", B - o, e2)], -1)
@@ -567,11 +650,21 @@ def triangle_pairs_intersect(vertices: np.ndarray, tris: np.ndarray, pairs: np.n
     in_a = eq.any(axis=1)
     nshared = in_b.sum(axis=1)
     A, B = vertices[ta], vertices[tb]
-    na = np.cross(A[:, 1] - A[:, 0], A[:, 2] - A[:, 0])
-    nb = np.cross(B[:, 1] - B[:, 0], B[:, 2] - B[:, 0])
+    na = _cross(A[:, 1] - A[:, 0], A[:, 2] - A[:, 0])
+    nb = _cross(B[:, 1] - B[:, 0], B[:, 2] - B[:, 0])
     ua, _ = _unit(na)
-    dist_b = np.abs(np.einsum("ijk,ik->ij", B - A[:, :1], ua))   # (p, 3) distances of B to plane A
+    ub, _ = _unit(nb)
+    sd_b = np.einsum("ijk,ik->ij", B - A[:, :1], ua)            # (p, 3) signed distances of B to plane A
+    sd_a = np.einsum("ijk,ik->ij", A - B[:, :1], ub)
+    dist_b = np.abs(sd_b)
     coplanar = np.all(dist_b <= eps, axis=1)
+    # a triangle whose own (non-shared) vertices are all strictly on one side of the other's
+    # plane meets that plane at most in the shared vertex: no intersection
+    sep = (np.where(in_a, np.inf, sd_b).min(axis=1) > eps) | \
+        (np.where(in_a, -np.inf, sd_b).max(axis=1) < -eps) | \
+        (np.where(in_b, np.inf, sd_a).min(axis=1) > eps) | \
+        (np.where(in_b, -np.inf, sd_a).max(axis=1) < -eps)
+    sep &= nshared < 2
 
     res[nshared == 3] = True
     # shared edge: only a fold (coplanar, third vertices on the same side) intersects
@@ -583,7 +676,7 @@ def triangle_pairs_intersect(vertices: np.ndarray, tris: np.ndarray, pairs: np.n
         folded = np.einsum("ij,ij->i", na[s2], nb[s2]) < 0
         res[s2] = folded & (dn <= eps)
     # shared vertex: the opposite edges must not pierce the other triangle
-    s1 = np.flatnonzero(nshared == 1)
+    s1 = np.flatnonzero((nshared == 1) & ~sep)
     if len(s1):
         ka = np.argmax(in_b[s1], axis=1)
         kb = np.argmax(in_a[s1], axis=1)
@@ -598,7 +691,7 @@ def triangle_pairs_intersect(vertices: np.ndarray, tris: np.ndarray, pairs: np.n
             out[cop] = _coplanar_overlap(A[ci], B[ci], na[ci], eps)
         res[s1] = out
     # disjoint vertex sets
-    s0 = np.flatnonzero(nshared == 0)
+    s0 = np.flatnonzero((nshared == 0) & ~sep)
     if len(s0):
         hit = np.zeros(len(s0), dtype=bool)
         a, b = A[s0], B[s0]

@@ -90,21 +90,31 @@ def compare(ours: Mapping[str, Iterable[int]], report: Mapping,
     return Agreement(n, same_v / n if n else 1.0, same_c / n if n else 1.0, dis, missing)
 
 
-def validate_codes(path: str, tol: Tolerances = DEFAULT) -> dict[str, set[int]]:
+def validate_codes(path: str, tol: Tolerances = DEFAULT, chunk_size: int = 256) -> dict[str, set[int]]:
     """Read a file and validate every feature: ``{first-level id: set of codes}``.
 
-    Unreadable features count with their reader code (901/902/904).
+    Features are validated in chunks of ``chunk_size`` (shell checks batched across
+    them). Unreadable features count with their reader code (901/902/904).
     """
     from lod2energy.io import read
-    from lod2energy.validate.checks import validate_building
+    from lod2energy.validate.checks import validate_buildings
 
     _, feats = read(path)
     out: dict[str, set[int]] = {}
+    chunk: list = []
+
+    def flush():
+        for b, defects in zip(chunk, validate_buildings(chunk, tol)):
+            out[b.id] = {d.code for d in defects if d.code < 1000}
+        chunk.clear()
     for b in feats:
         if hasattr(b, "objects"):
-            out[b.id] = {d.code for d in validate_building(b, tol) if d.code < 1000}
+            chunk.append(b)
+            if len(chunk) >= chunk_size:
+                flush()
         elif b.id is not None:
             out.setdefault(b.id, set()).add(int(b.code))
+    flush()
     return out
 
 

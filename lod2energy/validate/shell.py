@@ -22,9 +22,10 @@ from typing import Sequence
 import numpy as np
 from scipy.sparse import coo_matrix
 from scipy.sparse.csgraph import connected_components
+from scipy.spatial import cKDTree
 
 from lod2energy.config import DEFAULT, Tolerances
-from lod2energy.geometry import bbox_pairs, triangle_pairs_intersect, triangulate_surfaces
+from lod2energy.geometry import bbox_pairs, triangle_pairs_intersect, triangulate_flat
 from lod2energy.model import Shell
 from lod2energy.validate.snap import snapped_ids
 
@@ -76,10 +77,7 @@ def _snap_lut(vertices: np.ndarray, shell: Shell, snap_tol: float):
 
 
 def shell_meshes(vertices: np.ndarray, shells: Sequence[Shell], tol: Tolerances = DEFAULT) -> list[ShellMesh]:
-    """Snapped triangulations of shells, computed in one batch and cached per shell.
-
-    Snapping is per shell (val3dity's ``snap_tol``); the cache is keyed by the shell
-    object, the vertex array object and ``snap_tol``.
+    """Snapped triangulations of shells of one building (see :func:`shell_meshes_multi`).
 
     Parameters
     ----------
@@ -92,35 +90,98 @@ def shell_meshes(vertices: np.ndarray, shells: Sequence[Shell], tol: Tolerances 
     -------
     list of ShellMesh
     """
-    out: list[ShellMesh | None] = [None] * len(shells)
+    return shell_meshes_multi([(vertices, sh) for sh in shells], tol)
+
+
+def shell_meshes_multi(items: Sequence[tuple[np.ndarray, Shell]], tol: Tolerances = DEFAULT) -> list[ShellMesh]:
+    """Snapped triangulations of shells of one or more buildings, in one batch, cached.
+
+    Snapping is per shell (val3dity's ``snap_tol``, first-come representative); shells
+    without any pair of vertices closer than ``snap_tol`` are left as they are. The
+    cache is keyed by the shell object, the vertex array object and ``snap_tol``.
+
+    Parameters
+    ----------
+    items : sequence of (vertices (n, 3) float, Shell)
+    tol : Tolerances
+
+    Returns
+    -------
+    list of ShellMesh (triangles index the item's own vertex array)
+    """
+    out: list[ShellMesh | None] = [None] * len(items)
     todo = []
-    for i, sh in enumerate(shells):
+    for i, (v, sh) in enumerate(items):
         hit = _MESHES.get(sh)
-        if hit is not None and hit[0] is vertices and hit[1] == tol.snap_tol:
+        if hit is not None and hit[0] is v and hit[1] == tol.snap_tol:
             out[i] = hit[2]
         else:
             todo.append(i)
-    if todo:
-        ringsets, owner = [], []
-        for i in todo:
-            sh = shells[i]
-            lut = _snap_lut(vertices, sh, tol.snap_tol)
-            if lut is None:
-                ringsets.extend(s.rings for s in sh.surfaces)
-            else:
-                ringsets.extend([lut[r] for r in s.rings] for s in sh.surfaces)
-            owner.append(len(sh.surfaces))
-        tris, poly = triangulate_surfaces(vertices, ringsets)
-        offs = np.concatenate(([0], np.cumsum(owner)))
-        cut = np.searchsorted(poly, offs)
-        for k, i in enumerate(todo):
-            lo_, hi_ = cut[k], cut[k + 1]
-            mesh = ShellMesh(tris[lo_:hi_], poly[lo_:hi_] - offs[k], owner[k])
-            out[i] = mesh
-            try:
-                _MESHES[shells[i]] = (vertices, tol.snap_tol, mesh)
-            except TypeError:  # pragma: no cover
-                pass
+    if not todo:
+        return out  # type: ignore[return-value]
+    offs: dict[int, int] = {}
+    blocks = []
+    n = 0
+    for i in todo:
+        v = items[i][0]
+        if id(v) not in offs:
+            offs[id(v)] = n
+            blocks.append(np.asarray(v, dtype=np.float64))
+            n += len(v)
+    V = np.concatenate(blocks) if len(blocks) > 1 else blocks[0]
+    # vertices closer than snap_tol: clusters whose points are all mutually close merge
+    # into their lowest index (any member is the same point within snap_tol); shells
+    # touching a chain of close points get val3dity's order-dependent snapping
+    rep = None
+    chain = np.zeros(n, dtype=bool)
+    if tol.snap_tol > 0 and n > 1:
+        pairs = cKDTree(V).query_pairs(tol.snap_tol * (1 + 1e-9), output_type="ndarray")
+        if len(pairs):
+            d = V[pairs[:, 0]] - V[pairs[:, 1]]
+            bid = np.repeat(np.arange(len(blocks)), [len(b) for b in blocks])
+            pairs = pairs[(np.einsum("ij,ij->i", d, d) <= tol.snap_tol ** 2)
+                          & (bid[pairs[:, 0]] == bid[pairs[:, 1]])]
+        if len(pairs):
+            g = coo_matrix((np.ones(len(pairs)), (pairs[:, 0], pairs[:, 1])), shape=(n, n))
+            _, lab = connected_components(g, directed=False)
+            size = np.bincount(lab)
+            npairs = np.bincount(lab[pairs[:, 0]], minlength=len(size))
+            clique = npairs == size * (size - 1) // 2
+            first = np.full(len(size), n, dtype=np.intp)
+            np.minimum.at(first, lab, np.arange(n))
+            rep = np.where(clique[lab], first[lab], np.arange(n))
+            chain = ~clique[lab]
+    flat, ring_len, rpp, owner, item_off = [], [], [], [], []
+    any_chain = bool(chain.any())
+    for i in todo:
+        v, sh = items[i]
+        off = offs[id(v)]
+        rings = [r for f in sh.surfaces for r in f.rings]
+        ids = np.concatenate(rings).astype(np.intp, copy=False) if rings else np.zeros(0, dtype=np.intp)
+        g = ids + off
+        if any_chain and len(ids) and chain[g].any():
+            lut = _snap_lut(v, sh, tol.snap_tol)
+            if lut is not None:
+                g = lut[ids] + off
+        elif rep is not None:
+            g = rep[g]
+        flat.append(g)
+        ring_len.append(np.fromiter((len(r) for r in rings), dtype=np.intp, count=len(rings)))
+        rpp.append(np.fromiter((len(f.rings) for f in sh.surfaces), dtype=np.intp, count=len(sh.surfaces)))
+        owner.append(len(sh.surfaces))
+        item_off.append(off)
+    tris, poly = triangulate_flat(V, np.concatenate(flat), np.concatenate(ring_len), np.concatenate(rpp))
+    starts = np.concatenate(([0], np.cumsum(owner)))
+    cut = np.searchsorted(poly, starts)
+    for k, i in enumerate(todo):
+        lo_, hi_ = cut[k], cut[k + 1]
+        t = tris[lo_:hi_]
+        mesh = ShellMesh(t - item_off[k] if item_off[k] else t, poly[lo_:hi_] - starts[k], owner[k])
+        out[i] = mesh
+        try:
+            _MESHES[items[i][1]] = (items[i][0], tol.snap_tol, mesh)
+        except TypeError:  # pragma: no cover
+            pass
     return out  # type: ignore[return-value]
 
 
@@ -209,12 +270,47 @@ def check_shells(vertices: np.ndarray, shells: Sequence[Shell], tol: Tolerances 
     list (one per shell) of lists of ``(face_index | None, code, info)``
     """
     vertices = np.asarray(vertices, dtype=np.float64)
-    S = len(shells)
-    vol = np.broadcast_to(np.asarray(volumetric, dtype=bool), (S,))
+    vol = np.broadcast_to(np.asarray(volumetric, dtype=bool), (len(shells),))
+    return check_meshes(vertices, shell_meshes(vertices, shells, tol), vol)
+
+
+def check_shells_multi(items: Sequence[tuple[np.ndarray, Shell, bool]], tol: Tolerances = DEFAULT
+                       ) -> list[list[tuple[int | None, int, str]]]:
+    """Shell checks of shells from several buildings in one vectorised pass.
+
+    Parameters
+    ----------
+    items : sequence of (vertices (n, 3) float, Shell, volumetric bool)
+        Shells whose polygons passed; shells of one building share its vertex array.
+    tol : Tolerances
+
+    Returns
+    -------
+    list (one per item) of lists of ``(face_index | None, code, info)``
+    """
+    base = shell_meshes_multi([(v, sh) for v, sh, _ in items], tol)
+    offsets: dict[int, int] = {}
+    blocks, off = [], 0
+    meshes = []
+    for (v, _, _), m in zip(items, base):
+        if id(v) not in offsets:
+            offsets[id(v)] = off
+            blocks.append(np.asarray(v, dtype=np.float64))
+            off += len(v)
+        o = offsets[id(v)]
+        meshes.append(ShellMesh(m.tris + o, m.face_of_tri, m.n_faces) if o else m)
+    V = np.concatenate(blocks) if blocks else np.zeros((0, 3))
+    vol = np.fromiter((bool(it[2]) for it in items), dtype=bool, count=len(items))
+    return check_meshes(V, meshes, vol)  # type: ignore[arg-type]
+
+
+def check_meshes(vertices: np.ndarray, meshes: Sequence[ShellMesh], vol: np.ndarray
+                 ) -> list[list[tuple[int | None, int, str]]]:
+    """Shell checks on already snapped and triangulated shells (see :func:`check_shells`)."""
+    S = len(meshes)
     out: list[list] = [[] for _ in range(S)]
     if S == 0:
         return out
-    meshes = shell_meshes(vertices, shells, tol)
     active = np.ones(S, dtype=bool)
     for s, m in enumerate(meshes):
         if vol[s] and m.n_faces < 4:
@@ -333,7 +429,12 @@ def check_shells(vertices: np.ndarray, shells: Sequence[Shell], tol: Tolerances 
         P = vertices[tris[sel_t]]
         origin = P.reshape(-1, 3).min(axis=0)
         local = vertices - origin
-        pairs = bbox_pairs(P.min(axis=1) - origin, P.max(axis=1) - origin, pad=1e-9)
+        lo_b, hi_b = P.min(axis=1) - origin, P.max(axis=1) - origin
+        # shift each shell along x so that the sweep only pairs triangles of one shell
+        shift = tsh[sel_t] * (float(hi_b[:, 0].max()) + 1.0)
+        lo_b[:, 0] += shift
+        hi_b[:, 0] += shift
+        pairs = bbox_pairs(lo_b, hi_b, pad=1e-6)
         if len(pairs):
             pa, pb = sel_t[pairs[:, 0]], sel_t[pairs[:, 1]]
             keep = (tsh[pa] == tsh[pb]) & (fot[pa] != fot[pb])

@@ -16,7 +16,7 @@ from typing import Sequence
 import numpy as np
 
 from lod2energy.config import DEFAULT, Tolerances
-from lod2energy.geometry import bbox_pairs, signed_volume
+from lod2energy.geometry import _cross, bbox_pairs, signed_volume
 from lod2energy.model import Building, Geometry, Solid
 from lod2energy.validate.shell import shell_meshes
 
@@ -95,6 +95,35 @@ def _same_shell(vertices: np.ndarray, t1: np.ndarray, t2: np.ndarray, snap_tol: 
     if p1.shape != p2.shape or not np.array_equal(p1, p2):
         return False
     return abs(abs(signed_volume(vertices, t1)) - abs(signed_volume(vertices, t2))) <= VOLUME_EPS
+
+
+def _face_planes(vertices: np.ndarray, tris: np.ndarray, origin: np.ndarray):
+    """(points (k, 3), unit normals (p, 3), offsets (p,)) of a closed triangle set, about origin."""
+    pts = vertices[np.unique(tris)] - origin
+    P = vertices[tris] - origin
+    n = _cross(P[:, 1] - P[:, 0], P[:, 2] - P[:, 0])
+    ln = np.sqrt(np.einsum("ij,ij->i", n, n))
+    keep = ln > 0
+    n = n[keep] / ln[keep, None]
+    return pts, n, np.einsum("ij,ij->i", n, P[keep, 0])
+
+
+def _separated(a, b, eps: float = 1e-6) -> bool:
+    """Whether a face plane of one solid has the whole solid behind it and the other in front.
+
+    Such a plane proves that the interiors do not overlap (parts sharing a wall), without
+    a boolean operation.
+    """
+    for (pa, n, d), pb in ((a, b[0]), (b, a[0])):
+        if len(n) == 0:
+            continue
+        behind = (pa @ n.T - d).max(axis=0) <= eps
+        if not behind.any():
+            continue
+        front = (pb @ n[behind].T - d[behind]).min(axis=0) >= -eps
+        if front.any():
+            return True
+    return False
 
 
 # ----------------------------------------------------------------------------- 401-405
@@ -259,8 +288,14 @@ def check_parts_overlap(building: Building, tol: Tolerances = DEFAULT) -> list[t
         if len(pairs) == 0:
             continue
         origin = lo[np.isfinite(lo).all(1)].min(axis=0)
+        planes: dict[int, tuple] = {}
         mans: dict[int, object] = {}
         for i, j in pairs.tolist():
+            for k in (i, j):
+                if k not in planes:
+                    planes[k] = _face_planes(v, tris[k], origin)
+            if _separated(planes[i], planes[j]):
+                continue
             for k in (i, j):
                 if k not in mans:
                     mans[k] = to_manifold(v, tris[k], origin)
