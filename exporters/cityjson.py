@@ -167,7 +167,12 @@ def _schema_errors(schemas: _SchemaSet, doc: Any, what: str, feature: bool = Fal
     def collect(v, inst, prefix):
         for e in sorted(v.iter_errors(inst), key=lambda e: list(e.absolute_path))[:_MAX_PROBLEMS]:
             where = "/".join(str(p) for p in list(prefix) + list(e.absolute_path)) or "(root)"
-            msg = e.message if len(e.message) < 300 else e.message[:300] + "..."
+            msg = e.message
+            if e.validator in ("oneOf", "anyOf"):
+                t = e.instance.get("type") if isinstance(e.instance, Mapping) else None
+                msg = (f"{t!r} is not valid under any of the given schemas" if t else
+                       "not valid under any of the given schemas")
+            msg = msg if len(msg) < 300 else msg[:300] + "..."
             out.append(f"{what}: schema: {where}: {msg}")
 
     cos = doc.get("CityObjects") if isinstance(doc, Mapping) else None
@@ -234,6 +239,8 @@ def _ready_problem(b: Building, lod: str | None, keep_other_lods: bool = False, 
     from lod2energy.config import DEFAULT
     from lod2energy.validate.checks import validate_building
 
+    if b.type != "Building":
+        return f"not a Building (type {b.type!r})"
     if "thermal" not in b.provenance:
         return "no thermal data (labels / U-values not assigned)"
     energy = envelope_objects(b, lod)

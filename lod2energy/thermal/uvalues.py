@@ -2,12 +2,12 @@
 
 Table lookup (``country`` x ``building_type`` x construction period), most specific first:
 
-1. rows of ``--u-table`` (user CSV), then the built-in tables (``data/u_values.csv``,
-   ``data/tabula_de.csv``; sources in ``data/SOURCES.md``);
-2. within those: the country's row for the building type whose period contains the year;
-   the same with ``building_type = *``; then the related type (terraced <-> single-family,
-   apartment block <-> multi-family); then the country's nearest period; then the generic
-   ``*`` rows (same order);
+1. rows whose period contains the year: those of ``--u-table`` (user CSV) first, then the
+   built-in tables (``data/u_values.csv``, ``data/tabula_de.csv``; sources in
+   ``data/SOURCES.md``); within each, the country's row for the building type, the same
+   with ``building_type = *``, the related type (terraced <-> single-family, apartment
+   block <-> multi-family), then the generic ``*`` country rows in the same order;
+2. only then rows of the nearest period (same order);
 3. per-element overrides (``--u-wall`` ...) replace the looked-up values last.
 
 Per surface (in ``semantic_surfaces``): RoofSurface / OuterCeilingSurface -> roof U,
@@ -75,6 +75,8 @@ class ThermalOptions:
         precedence over the built-in ones.
     overrides : mapping
         ``{"wall": 0.35, ...}``, W/(m2 K): replace the looked-up values for every building.
+    u_roof, u_wall, u_ground, u_window : float, optional
+        The same per class (the CLI's ``--u-wall`` ...); they win over ``overrides``.
     wwr : float, optional
         Window-to-wall ratio for every building (default: per building type).
     lod : str, optional
@@ -87,12 +89,28 @@ class ThermalOptions:
     overrides: Mapping[str, float] = field(default_factory=dict)
     wwr: float | None = None
     lod: str | None = None
+    u_roof: float | None = None
+    u_wall: float | None = None
+    u_ground: float | None = None
+    u_window: float | None = None
+
+    @property
+    def all_overrides(self) -> dict[str, float]:
+        """``overrides`` merged with the ``u_*`` fields, W/(m2 K)."""
+        out = {k: float(v) for k, v in dict(self.overrides).items()}
+        for e in ELEMENTS:
+            v = getattr(self, f"u_{e}")
+            if v is not None:
+                out[e] = float(v)
+        return out
 
     def __post_init__(self):
-        for k, v in dict(self.overrides).items():
+        items = list(dict(self.overrides).items()) + [(e, getattr(self, f"u_{e}")) for e in ELEMENTS
+                                                       if getattr(self, f"u_{e}") is not None]
+        for k, v in items:
             if k not in ELEMENTS:
                 raise ParameterError(f"unknown U-value class {k!r} (use one of {', '.join(ELEMENTS)})")
-            if v is None or not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0):
+            if isinstance(v, bool) or not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0):
                 raise ParameterError(f"--u-{k} must be a positive number of W/(m2 K), got {v!r}")
         if self.wwr is not None and not (0.0 <= self.wwr < 1.0):
             raise ParameterError(f"window-to-wall ratio must be in [0, 1), got {self.wwr!r}")
@@ -171,24 +189,21 @@ def load_table(path: str | Path) -> list[URow]:
     return parse_table(text, str(path))
 
 
-def _match(rows, country, btype, year, exact_period=True):
-    for r in rows:
-        if r.country != country or r.building_type != btype:
-            continue
-        if r.period_start <= year <= r.period_end:
-            return r
-    if exact_period:
-        return None
+def _matches(rows, country, btype, year, exact_period=True) -> list[URow]:
+    """Rows of ``country`` and ``btype`` whose period holds ``year`` (or, when not
+    ``exact_period``, all of them, nearest period first)."""
     cand = [r for r in rows if r.country == country and r.building_type == btype]
-    if not cand:
-        return None
-    return min(cand, key=lambda r: min(abs(year - r.period_start), abs(year - r.period_end)))
+    if exact_period:
+        return [r for r in cand if r.period_start <= year <= r.period_end]
+    return sorted(cand, key=lambda r: min(abs(year - r.period_start), abs(year - r.period_end)))
 
 
-def lookup(country: str, btype: str, year: int, rows) -> tuple[dict[str, float], list[URow]]:
-    """U-values per element from ``rows`` (most specific row first; see module docstring).
+def lookup(country: str, btype: str, year: int, rows, *more_tiers) -> tuple[dict[str, float], list[URow]]:
+    """U-values per element (most specific row first; see the module docstring).
 
-    Elements missing in a row are filled from the next matching row.
+    Elements missing in a row are filled from the next matching row. ``more_tiers`` are
+    further row sets searched only for what ``rows`` left open (the user's table is the
+    first tier, the built-in tables the second).
 
     Returns
     -------
@@ -201,18 +216,18 @@ def lookup(country: str, btype: str, year: int, rows) -> tuple[dict[str, float],
     types = [btype, "*", RELATED_TYPE.get(btype, "*")]
     u: dict[str, float] = {}
     used: list[URow] = []
-    for c in countries:
-        for exact in (True, False):
-            for t in types:
-                r = _match(rows, c, t, year, exact)
-                if r is None or r in used:
-                    continue
-                if any(e not in u for e in r.u):
-                    used.append(r)
-                for e, v in r.u.items():
-                    u.setdefault(e, v)
-                if len(u) == len(ELEMENTS):
-                    return u, used
+    for exact in (True, False):
+        for tier in (rows,) + more_tiers:
+            for c in countries:
+                for t in types:
+                    for r in _matches(tier, c, t, year, exact):
+                        if r in used or all(e in u for e in r.u):
+                            continue
+                        used.append(r)
+                        for e, v in r.u.items():
+                            u.setdefault(e, v)
+                        if len(u) == len(ELEMENTS):
+                            return u, used
     return u, used
 
 
@@ -281,9 +296,9 @@ def assign_u_values(b: Building, options: ThermalOptions = ThermalOptions()) -> 
     country = country.upper() if country != "*" else "*"
     typ = classify(b, country, ground_area or None, z_extent)
     rows = tuple(load_table(options.u_table)) if options.u_table else ()
-    u, used = lookup(typ.country, typ.building_type, typ.lookup_year, rows + builtin_rows())
-    for e, v in dict(options.overrides).items():
-        u[e] = float(v)
+    u, used = lookup(typ.country, typ.building_type, typ.lookup_year, rows, builtin_rows())
+    for e, v in options.all_overrides.items():
+        u[e] = v
     missing = [e for e in ELEMENTS if e not in u]
     if missing:
         raise ParameterError(f"no U-value for {', '.join(missing)} (country {typ.country}); "
@@ -328,7 +343,7 @@ def assign_u_values(b: Building, options: ThermalOptions = ThermalOptions()) -> 
         "A_env": round(sum(areas.values()), 3), "volume": round(volume, 3), "UA": round(ua, 3),
         "storeys": typ.storeys, "footprint": round(typ.footprint, 3), "function": typ.function,
         "sources": dict(typ.sources), "table_sources": [r.source for r in used],
-        "overrides": dict(options.overrides),
+        "overrides": options.all_overrides,
     }
     return out.with_provenance(thermal=frozen_mapping(thermal))
 
