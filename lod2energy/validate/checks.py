@@ -60,6 +60,8 @@ def _validate_entries(entries, tol: Tolerances) -> list[list[Defect]]:
     no closedness.
     """
     results: list[list[Defect]] = [[] for _ in entries]
+    # polygon checks of all the shells in one vectorised pass; check_polygons below reads them
+    polygon.prefetch_shells([(v, sh) for v, _, _, g in entries for _, _, sh in g.iter_shells()], tol)
     pending = []                                  # (entry, solid, shell, Shell, volumetric)
     ok: dict[tuple[int, int, int], bool] = {}
     usable = [False] * len(entries)

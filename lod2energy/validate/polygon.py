@@ -21,11 +21,13 @@ from __future__ import annotations
 
 import itertools
 import math
+import weakref
 from fractions import Fraction
-from typing import Iterable
+from typing import Iterable, Sequence
 
 import numpy as np
 import shapely
+from scipy.spatial import cKDTree
 
 from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.model import Shell
@@ -205,10 +207,55 @@ def check_polygons(vertices: np.ndarray, shell: Shell, tol: Tolerances = DEFAULT
     >>> check_polygons(v, Shell((Surface.from_lists([[0, 1, 2, 3]]),)))
     [(0, 203, 'distance to fitted plane: 0.117072 (tolerance=0.01)')]
     """
-    V = np.asarray(vertices, dtype=np.float64).reshape(-1, 3)
-    surfaces = shell.surfaces
+    hit = _cached(vertices, shell, tol)
+    if hit is not None:
+        return hit
+    return check_shells(vertices, [shell], tol)[0]
+
+
+def check_shells(vertices: np.ndarray, shells: Sequence[Shell], tol: Tolerances = DEFAULT) -> list[list[tuple[int, int, str]]]:
+    """:func:`check_polygons` for several shells of one vertex array at once.
+
+    Snapping and the 204 gate stay per shell, as in val3dity.
+
+    Returns
+    -------
+    list (one per shell) of lists of (face_index, code, info)
+    """
+    return check_polygons_multi([(vertices, sh) for sh in shells], tol)
+
+
+def check_polygons_multi(items: Sequence[tuple[np.ndarray, Shell]], tol: Tolerances = DEFAULT) -> list[list[tuple[int, int, str]]]:
+    """:func:`check_polygons` for many ``(vertices, shell)`` pairs in one vectorised pass.
+
+    The shells may belong to different buildings (different vertex arrays); each shell is
+    checked exactly as :func:`check_polygons` would.
+
+    Returns
+    -------
+    list (one per item) of lists of (face_index, code, info)
+    """
+    S = len(items)
+    groups: dict[int, int] = {}
+    arrays: list[np.ndarray] = []
+    shell_group = np.empty(S, dtype=np.intp)
+    for k, (v, _) in enumerate(items):
+        g = groups.get(id(v))
+        if g is None:
+            g = groups[id(v)] = len(arrays)
+            arrays.append(np.asarray(v, dtype=np.float64).reshape(-1, 3))
+        shell_group[k] = g
+    sizes = np.fromiter((len(a) for a in arrays), dtype=np.intp, count=len(arrays))
+    offsets = np.cumsum(sizes) - sizes
+    V = np.concatenate(arrays) if arrays else np.zeros((0, 3))
+    shells = [sh for _, sh in items]
+    shell_nfaces = np.fromiter((len(sh.surfaces) for sh in shells), dtype=np.intp, count=S)
+    shell_first_face = np.cumsum(shell_nfaces) - shell_nfaces
+    surfaces = [s for sh in shells for s in sh.surfaces]
+    results: list[list[tuple[int, int, str]]] = [[] for _ in range(S)]
     if not surfaces:
-        return []
+        return results
+    face_shell = np.repeat(np.arange(S), shell_nfaces)
     rings = [r for s in surfaces for r in s.rings]
     F = len(surfaces)
     face_nrings = np.fromiter((len(s.rings) for s in surfaces), dtype=np.intp, count=F)
@@ -219,12 +266,24 @@ def check_polygons(vertices: np.ndarray, shell: Shell, tol: Tolerances = DEFAULT
     K = int(ring_size.sum())
     flat = (np.concatenate([np.asarray(r, dtype=np.intp).reshape(-1) for r in rings]) if K
             else np.zeros(0, np.intp))
-    if K and (flat.min() < 0 or flat.max() >= len(V)):
-        pos_ring = np.repeat(np.arange(len(rings)), ring_size)
-        bad = np.unique(ring_face[pos_ring[(flat < 0) | (flat >= len(V))]])
-        return [(int(f), 999, "vertex index out of range") for f in bad]
-    ids = snapped_ids(V, flat, tol.snap_tol) if K else flat
     pos_ring = np.repeat(np.arange(len(rings)), ring_size)
+    pos_shell = face_shell[ring_face[pos_ring]]
+    pos_group = shell_group[pos_shell]
+    if K:
+        out_of_range = (flat < 0) | (flat >= sizes[pos_group])
+        if out_of_range.any():
+            bad = np.unique(ring_face[pos_ring[out_of_range]])
+            for f in bad.tolist():
+                sh = int(face_shell[f])
+                results[sh].append((f - int(shell_first_face[sh]), 999, "vertex index out of range"))
+            bad_shells = set(np.unique(face_shell[bad]).tolist())
+            keep = [i for i in range(S) if i not in bad_shells]
+            if keep:
+                for i, r in zip(keep, check_polygons_multi([items[i] for i in keep], tol)):
+                    results[i] = r
+            return results
+        flat = flat + offsets[pos_group]
+    ids = _snap_shells(V, flat, pos_shell, offsets, tol.snap_tol) if K else flat
     nxt = np.arange(K) + 1
     nonempty = ring_size > 0
     nxt[(ring_start + ring_size - 1)[nonempty]] = ring_start[nonempty]
@@ -345,19 +404,67 @@ def check_polygons(vertices: np.ndarray, shell: Shell, tol: Tolerances = DEFAULT
                     info.setdefault(f, []).append((f, geos_code(reason), reason))
                     planar[f] = False
 
-    out: list[tuple[int, int, str]] = []
-    for f in range(F):
-        c_ = code[f]
-        if c_ in (101, 102):
-            out.append((f, int(c_), ""))
-        elif f in info:
-            out.extend(info[f])
-    if out or tol.ignore204:
-        return out
+    bad_face = np.zeros(F, dtype=bool)
+    for f in np.nonzero((code == 101) | (code == 102))[0].tolist():
+        sh = int(face_shell[f])
+        results[sh].append((f - int(shell_first_face[sh]), int(code[f]), ""))
+        bad_face[f] = True
+    for f in sorted(info):
+        sh = int(face_shell[f])
+        base = int(shell_first_face[sh])
+        results[sh].extend((g - base, c_, i_) for g, c_, i_ in info[f])
+        bad_face[f] = True
+    for sh in range(S):
+        results[sh].sort(key=lambda e: e[0])  # face order, as val3dity's loop
+    if tol.ignore204:
+        return results
 
     # ---- 204, only for a shell whose every polygon is valid
-    return _check_normals(np.nonzero(planar)[0], face_npts, face_start, face_first_ring, face_nrings,
-                          ring_size, ids, V, XY, H, tol.planarity_n_tol)
+    shell_bad = np.bincount(face_shell[bad_face], minlength=S) > 0
+    cand = np.nonzero(planar & ~shell_bad[face_shell])[0]
+    for f, c_, i_ in _check_normals(cand, face_npts, face_start, face_first_ring, face_nrings,
+                                    ring_size, ids, V, XY, H, tol.planarity_n_tol):
+        sh = int(face_shell[f])
+        results[sh].append((f - int(shell_first_face[sh]), c_, i_))
+    return results
+
+
+def _snap_shells(V: np.ndarray, flat: np.ndarray, pos_shell: np.ndarray, offsets: np.ndarray,
+                 snap_tol: float) -> np.ndarray:
+    """Snapped vertex ids, shell by shell (val3dity snaps per shell, in ring order).
+
+    One k-d tree finds the few close pairs; only shells holding both ends of a pair (of the
+    same vertex array) are snapped one by one.
+    """
+    if not snap_tol or snap_tol <= 0 or len(flat) < 2:
+        return flat.copy()
+    used, inv = np.unique(flat, return_inverse=True)
+    pts = V[used]
+    if not np.isfinite(pts).all():
+        return flat.copy()
+    pairs = cKDTree(pts).query_pairs(snap_tol * (1 + 1e-9) + 1e-300, output_type="ndarray")
+    if len(pairs):  # pairs across vertex arrays (neighbouring buildings) do not matter
+        grp = np.searchsorted(offsets, used, side="right")
+        pairs = pairs[grp[pairs[:, 0]] == grp[pairs[:, 1]]]
+    if len(pairs) == 0:
+        return flat.copy()
+    involved = np.zeros(len(used), dtype=bool)
+    involved[pairs.ravel()] = True
+    out = flat.copy()
+    inv = np.asarray(inv).reshape(-1)
+    hit = involved[inv]
+    # a shell needs snapping only if it holds both ends of some pair
+    pair_set = {(int(a), int(b)) for a, b in pairs.tolist()}
+    for sh in np.unique(pos_shell[hit]).tolist():
+        m = pos_shell == sh
+        local = np.unique(inv[m & hit])
+        if len(local) < 2:
+            continue
+        ls = set(local.tolist())
+        if not any(a in ls and b in ls for a, b in pair_set):
+            continue
+        out[m] = snapped_ids(V, flat[m], snap_tol)
+    return out
 
 
 def _check_normals(faces, face_npts, face_start, face_first_ring, face_nrings, ring_size, ids, V, XY, H,
@@ -393,6 +500,41 @@ def _check_normals(faces, face_npts, face_start, face_first_ring, face_nrings, r
         if dev is not None:
             out.append((f, 204, info_204(dev, tol_deg)))
     return out
+
+
+_CACHE: "weakref.WeakKeyDictionary[Shell, tuple]" = weakref.WeakKeyDictionary()
+
+
+def _cached(vertices, shell: Shell, tol: Tolerances):
+    try:
+        hit = _CACHE.get(shell)
+    except TypeError:
+        return None
+    if hit is not None and hit[0] is vertices and hit[1] == tol:
+        return list(hit[2])
+    return None
+
+
+def prefetch(building, tol: Tolerances = DEFAULT) -> None:
+    """Check every polygonal shell of ``building`` in one pass and keep the results.
+
+    Later :func:`check_polygons` calls with the same vertices array, shell and tolerances
+    return the kept result (a weak cache: nothing outlives the building).
+    """
+    prefetch_shells([(building.vertices, sh) for o in building.objects for g in o.geometries
+                     if g.is_polygonal for _, _, sh in g.iter_shells()], tol)
+
+
+def prefetch_shells(items: Sequence[tuple[np.ndarray, Shell]], tol: Tolerances = DEFAULT,
+                    chunk: int = 500) -> None:
+    """:func:`check_polygons_multi` on ``(vertices, shell)`` pairs, results kept for
+    :func:`check_polygons` (call it first when validating many buildings: several times
+    faster than shell by shell)."""
+    items = [(v, sh) for v, sh in items if _cached(v, sh, tol) is None]
+    for i in range(0, len(items), chunk):
+        part = items[i:i + chunk]
+        for (v, sh), res in zip(part, check_polygons_multi(part, tol)):
+            _CACHE[sh] = (v, tol, tuple(res))
 
 
 def check_instance(building, obj, gi, geometry, tol: Tolerances = DEFAULT) -> list:
