@@ -238,3 +238,65 @@ def test_denhaag_polygon_defects_match_val3dity_report(denhaag_path):
                         mine.add((f"coid={o.id}|" + g.location(gi, si, hi, f), code, info))
     assert len(theirs) > 100
     assert mine == theirs
+
+
+# ----------------------------------------------------------------------------- batching, cache
+
+def _named_shells():
+    out = []
+    for name in sorted(NAMED):
+        rings, _ = NAMED[name]
+        b = building_from_polygons([[np.asarray(r, float) for r in rings]], "MultiSurface", id=name)
+        out.append((b.vertices, b.objects[0].geometries[0].solids[0].shells[0]))
+    for bld in (box(), gabled_house()):
+        out.append((bld.vertices, bld.objects[0].geometries[0].solids[0].shells[0]))
+    return out
+
+
+@pytest.mark.parametrize("tol", [DEFAULT, Tolerances(planarity_d2p_tol=1.0)])
+def test_batched_checks_equal_shell_by_shell(tol):
+    items = _named_shells()
+    one_by_one = [polygon.check_polygons_multi([it], tol)[0] for it in items]
+    assert polygon.check_polygons_multi(items, tol) == one_by_one
+    assert any(one_by_one) and not all(one_by_one)
+
+
+def test_prefetch_cache_is_keyed_on_vertices_shell_and_tolerances():
+    bent = building_from_polygons([[_ring([[0, 0, 0], [1, 0, 0], [1, 1, 0.5], [0, 1, 0]])]], "MultiSurface")
+    sh = bent.objects[0].geometries[0].solids[0].shells[0]
+    polygon.prefetch(bent, DEFAULT)
+    assert [c for _, c, _ in check_polygons(bent.vertices, sh)] == [203]
+    # other tolerances, or other vertices for the same shell: computed afresh
+    assert [c for _, c, _ in check_polygons(bent.vertices, sh, Tolerances(planarity_d2p_tol=1.0))] == [204]
+    flat = bent.vertices.copy()
+    flat[:, 2] = 0
+    assert check_polygons(flat, sh) == []
+
+
+def test_geometry_instance_is_validated_on_its_template(tmp_path):
+    import json
+
+    from lod2energy.io import cityjson, read
+    from lod2energy.validate.checks import validate_building
+
+    bent = [[0, 1, 2, 3]]
+    doc = {"type": "CityJSON", "version": "2.0",
+           "transform": {"scale": [0.001] * 3, "translate": [0, 0, 0]},
+           "geometry-templates": {"templates": [{"type": "MultiSurface", "lod": "2", "boundaries": [bent]}],
+                                  "vertices-templates": [[0, 0, 0], [1, 0, 0], [1, 1, 0.5], [0, 1, 0]]},
+           "CityObjects": {"tree": {"type": "SolitaryVegetationObject", "geometry": [
+               {"type": "GeometryInstance", "template": 0, "boundaries": [0],
+                "transformationMatrix": [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1]}]}},
+           "vertices": [[100, 200, 0]]}
+    p = tmp_path / "tpl.city.json"
+    p.write_text(json.dumps(doc))
+    model, feats = read(str(p))
+    (b,) = list(feats)
+    defects = validate_building(b)
+    assert [(d.code, d.location) for d in defects] == [(203, "coid=tree|geom=0|face=0")]
+    # the template reference does not leak into what is written back
+    out = tmp_path / "out.city.json"
+    cityjson.write(str(out), model, [b])
+    back = json.loads(out.read_text())
+    assert back["geometry-templates"] == doc["geometry-templates"]
+    assert back["CityObjects"]["tree"]["geometry"][0]["template"] == 0
