@@ -18,7 +18,7 @@ from lod2energy.repair._mesh import PolyMesh, merge_coplanar, triangles_to_mesh,
 from lod2energy.repair.metrics import point_triangle_distance
 from lod2energy.repair.validity import shell_defects
 
-ALPHAS = (1.0, 2.0, 4.0, 8.0)  # m
+ALPHAS = (8.0, 4.0)  # m: wide enough to bridge missing party walls (smaller ones give hollow skins)
 OFFSET = 0.01  # m
 
 
@@ -30,7 +30,7 @@ def _soup(m: PolyMesh) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     return P, F, origin
 
 
-def alpha_wrap(m: PolyMesh, alpha: float, offset: float = OFFSET, target_faces: int = 400) -> PolyMesh | None:
+def alpha_wrap(m: PolyMesh, alpha: float, offset: float = OFFSET, target_faces: int | None = 400) -> PolyMesh | None:
     """CGAL alpha wrap of ``m`` (alpha and offset in m), decimated and merged into polygons."""
     import pymeshlab
     P, F, origin = _soup(m)
@@ -44,7 +44,7 @@ def alpha_wrap(m: PolyMesh, alpha: float, offset: float = OFFSET, target_faces: 
     try:
         ms.generate_alpha_wrap(alpha=pymeshlab.PercentageValue(100 * alpha / diag),
                                offset=pymeshlab.PercentageValue(100 * offset / diag))
-        if ms.current_mesh().face_number() > target_faces:
+        if target_faces is not None and ms.current_mesh().face_number() > target_faces:
             ms.meshing_decimation_quadric_edge_collapse(targetfacenum=target_faces, preservetopology=True,
                                                         planarquadric=True, preservenormal=True,
                                                         qualitythr=0.3, autoclean=True)
@@ -55,7 +55,8 @@ def alpha_wrap(m: PolyMesh, alpha: float, offset: float = OFFSET, target_faces: 
     T = np.asarray(cm.face_matrix(), dtype=np.int64)
     if len(T) < 4:
         return None
-    return merge_coplanar(triangles_to_mesh(V, T))
+    from lod2energy.repair.cleanup import fix_nonplanar
+    return fix_nonplanar(merge_coplanar(triangles_to_mesh(V, T), angle_tol=1e-5, dist_tol=1e-3), DEFAULT)
 
 
 def alpha_complex(m: PolyMesh, alpha: float) -> PolyMesh | None:
@@ -131,15 +132,15 @@ def alpha_repair(m: PolyMesh, tol: Tolerances = DEFAULT, deadline: float | None 
     hv = _hull_volume(m)
     pts = m.vertices[np.unique(tris)]
     best, best_score = None, None
-    cands = []
+    cands = [("complex", 2 * a) for a in alphas]
     for a in alphas:
-        cands.append(("complex", a))
-    for a in alphas:
-        cands.append(("wrap", a))
-    for kind, a in cands:
+        cands += [("wrap", a, 400), ("wrap", a, 1500), ("wrap", a, None)]
+    for kind, a, *target in cands:
         if deadline is not None and time.monotonic() > deadline:
             break
-        r = alpha_complex(m, a) if kind == "complex" else alpha_wrap(m, a)
+        if best is not None and kind == "wrap" and target[0] != 400:
+            continue  # a coarser valid wrap is already in hand
+        r = alpha_complex(m, a) if kind == "complex" else alpha_wrap(m, a, target_faces=target[0])
         if r is None or shell_defects(r, tol, first_only=True):
             continue
         if accept is not None and not accept(r):

@@ -155,8 +155,23 @@ def surface_samples(V: np.ndarray, tris: np.ndarray) -> np.ndarray:
                       (T[:, 2] + T[:, 0]) / 2, T.mean(axis=1)])
 
 
-def fidelity(inp: PolyMesh, out: PolyMesh, input_closed: bool) -> dict:
+def fidelity(inp: PolyMesh, out: PolyMesh, input_closed: bool, envelope: PolyMesh | None = None,
+             envelope_name: str = "holefill") -> dict:
     """Fidelity of ``out`` to ``inp``.
+
+    Parameters
+    ----------
+    inp : PolyMesh
+        The input shell (distances are measured to and from it).
+    out : PolyMesh
+        The repaired shell.
+    input_closed : bool
+        ``inp`` bounds a volume by itself (exact IoU on it).
+    envelope : PolyMesh or None
+        The input's envelope for the IoU: a closed input re-oriented outward, or an open
+        input closed without moving anything (its boundary loops filled,
+        ``closure = envelope_name``). Without one (or when it is not a 2-manifold) an open
+        input is closed by the winding number.
 
     Returns
     -------
@@ -173,17 +188,24 @@ def fidelity(inp: PolyMesh, out: PolyMesh, input_closed: bool) -> dict:
                 "hausdorff": float("nan"), "closure": "none"}
     origin = Va[np.unique(Ta)].mean(axis=0)
     iou, closure = None, "closed"
-    if input_closed:
+    if input_closed and envelope is None:
         iou = iou_exact(Va, Ta, Vb, Tb, origin)
+    elif envelope is not None:
+        Ve, Te = closed_mesh(envelope)
+        if len(Te):
+            iou = iou_exact(Ve, Te, Vb, Tb, origin)
+            closure = "closed" if input_closed else envelope_name
     if iou is None:
         closure = "winding-number"
         iou = iou_sampled(Va - origin, Ta, Vb - origin, Tb)
     pa = Va[np.unique(Ta)]
     pb = Vb[np.unique(Tb)]
     d_ab = point_triangle_distance(pa, Vb, Tb)
-    d_ba = point_triangle_distance(pb, Va, Ta)
-    h1 = point_triangle_distance(surface_samples(Va, Ta), Vb, Tb).max()
-    h2 = point_triangle_distance(surface_samples(Vb, Tb), Va, Ta).max()
+    # back to the input's envelope: a filled hole has no input surface to be near to
+    Vr, Tr = (closed_mesh(envelope) if envelope is not None and closure != "winding-number" else (Va, Ta))
+    d_ba = point_triangle_distance(pb, Vr, Tr)
+    h1 = point_triangle_distance(surface_samples(Vr, Tr), Vb, Tb).max()
+    h2 = point_triangle_distance(surface_samples(Vb, Tb), Vr, Tr).max()
     return {"iou": float(iou), "mean_displacement": float(d_ab.mean()),
             "mean_displacement_back": float(d_ba.mean()),
             "hausdorff": float(max(h1, h2, d_ab.max(), d_ba.max())), "closure": closure}

@@ -112,8 +112,8 @@ def _input_defects(V: np.ndarray, g: Geometry, coid: str, gi: int, m: PolyMesh, 
         codes |= {c if c < 1000 else 1003 for _, c, _ in sd}
     else:
         codes |= set(energy_codes(sd))
-    if len(g.solids) > 1:
-        codes.add(1001) if not g.is_volumetric else None
+    if not sd and topology(m).boundary:
+        codes.add(1001)  # closed only once vertices are snapped: exporters need shared vertices
     return sorted(codes)
 
 
@@ -251,9 +251,8 @@ def repair_building(b: Building, tol: Tolerances = DEFAULT, timeout: float = DEF
                          closure=None)
         else:
             res = compact(res)
-            input_closed = not shell_defects(snap_vertices(m, tol.snap_tol), tol, first_only=True,
-                                             self_intersection=False) or _closed_after_cleanup(m, tol)
-            entry.update(stage=stage, n_faces_after=res.n_faces, **fidelity(m, res, input_closed))
+            input_closed, env = _envelope(m, res, stage, tol)
+            entry.update(stage=stage, n_faces_after=res.n_faces, **fidelity(m, res, input_closed, env))
             ng = geometry_of_mesh(res, g, lookup, extra, len(b.vertices))
             geoms = list(objs[oi].geometries)
             geoms[gi] = ng
@@ -273,9 +272,19 @@ def repair_building(b: Building, tol: Tolerances = DEFAULT, timeout: float = DEF
     return nb.with_provenance(repair=_summary(nb, per_geom, sorted(defects_before), tol, time.monotonic() - t0))
 
 
-def _closed_after_cleanup(m: PolyMesh, tol: Tolerances) -> bool:
-    c = orient(cleanup(m, tol))
-    return not shell_defects(c, tol, first_only=True, self_intersection=False)
+def _envelope(m: PolyMesh, res: PolyMesh, stage: str, tol: Tolerances) -> tuple[bool, PolyMesh | None]:
+    """Is the input closed by itself, and else its envelope closed by boundary-loop filling."""
+    s = snap_vertices(m, tol.snap_tol)
+    t = topology(s)
+    if not t.boundary and not t.nonmanifold:
+        return True, orient(s)
+    if stage in ("cleanup", "orientation", "holefill"):
+        return False, res  # the result is the input with its holes filled
+    env = close(orient(cleanup(m, tol)), tol)
+    t = topology(env)
+    if t.boundary or t.nonmanifold or t.nm_vertices:
+        return False, None
+    return False, env
 
 
 def _summary(b: Building, per_geom: list, before: list[int], tol: Tolerances, seconds: float) -> dict:
