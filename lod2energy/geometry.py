@@ -196,15 +196,6 @@ def _earcut_rings(p2: np.ndarray, ring_ends: np.ndarray) -> np.ndarray:
     return np.asarray(t, dtype=np.intp).reshape(-1, 3)
 
 
-def _cdt(p2: np.ndarray, ends: np.ndarray) -> np.ndarray:
-    """Constrained Delaunay triangles (as val3dity's CGAL CDT: no needless slivers)."""
-    try:
-        from lod2energy.validate.triangulate import constrained_delaunay
-    except ImportError:  # pragma: no cover
-        return _earcut_rings(p2, ends)
-    return np.asarray(constrained_delaunay(p2, ends), dtype=np.intp).reshape(-1, 3)
-
-
 def triangulate_surface(vertices: np.ndarray, surface, normal: np.ndarray | None = None) -> np.ndarray:
     """Triangulate one polygon (holes included) in its own plane.
 
@@ -238,14 +229,6 @@ def triangulate_surface(vertices: np.ndarray, surface, normal: np.ndarray | None
     p2 = p2 - p2.mean(axis=0)
     ends = np.cumsum([len(r) for r in rings])
     local = _earcut_rings(p2, ends)
-    if len(local):
-        a, b, c = p2[local[:, 0]], p2[local[:, 1]], p2[local[:, 2]]
-        area2 = np.abs((b[:, 0] - a[:, 0]) * (c[:, 1] - a[:, 1]) - (b[:, 1] - a[:, 1]) * (c[:, 0] - a[:, 0]))
-        scale2 = float(np.ptp(p2, axis=0).max()) ** 2
-        if (area2 <= 1e-10 * scale2).any():
-            # collinear vertices: a constrained Delaunay triangulation (val3dity's) has no
-            # zero-area triangles where ear clipping may leave some
-            local = _cdt(p2, ends)
     if len(local) == 0:
         return np.zeros((0, 3), dtype=np.intp)
     return _fix_orientation(ids[local], p2, local)
@@ -331,6 +314,36 @@ def triangulate_surfaces(vertices: np.ndarray, ringsets: Sequence[Sequence[np.nd
     return tris[order], fot[order]
 
 
+def _fan_convex(vertices: np.ndarray, polys: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Fan triangulation of convex polygons (m, k), from a corner whose neighbours are corners too.
+
+    Returns ``(tris (m, k-2, 3), ok (m,))``; ``ok`` is False for polygons that are not
+    convex (or have no such corner), which need a general triangulation.
+    """
+    m, k = polys.shape
+    P = vertices[polys]
+    P = P - P.mean(axis=1, keepdims=True)
+    n = _cross(P, np.roll(P, -1, axis=1)).sum(axis=1)
+    ax = np.argmax(np.abs(n), axis=1)
+    ij = np.array([(1, 2), (2, 0), (0, 1)])[ax]
+    flip = n[np.arange(m), ax] < 0
+    ij[flip] = ij[flip][:, ::-1]
+    rows = np.arange(m)[:, None]
+    p2 = np.stack([P[rows, np.arange(k)[None, :], ij[:, :1]], P[rows, np.arange(k)[None, :], ij[:, 1:]]], -1)
+    e_in = p2 - np.roll(p2, 1, axis=1)
+    e_out = np.roll(p2, -1, axis=1) - p2
+    turn = e_in[..., 0] * e_out[..., 1] - e_in[..., 1] * e_out[..., 0]
+    scale = np.linalg.norm(e_in, axis=2) * np.linalg.norm(e_out, axis=2)
+    strict = turn > 1e-9 * scale
+    convex = (turn >= -1e-12 * scale).all(axis=1)
+    apex_ok = strict & np.roll(strict, 1, axis=1) & np.roll(strict, -1, axis=1)
+    ok = convex & apex_ok.any(axis=1) & np.any(n != 0, axis=1)
+    a = np.argmax(apex_ok, axis=1)
+    i = np.arange(1, k - 1)
+    loc = np.stack([np.broadcast_to(a[:, None], (m, k - 2)), (a[:, None] + i) % k, (a[:, None] + i + 1) % k], -1)
+    return np.take_along_axis(polys[:, None, :], loc.reshape(m, 1, -1), axis=2).reshape(m, k - 2, 3), ok
+
+
 def triangulate_flat(vertices: np.ndarray, ids: np.ndarray, ring_len: np.ndarray,
                      rings_per_poly: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """:func:`triangulate_surfaces` on a flat encoding of the polygons (no Python per polygon
@@ -384,6 +397,14 @@ def triangulate_flat(vertices: np.ndarray, ids: np.ndarray, ring_len: np.ndarray
     done = np.zeros(nf, dtype=bool)
     done[tri_f] = True
     done[quad_f] = True
+    big = np.flatnonzero(simple & (nout >= 5))
+    for k in np.unique(nout[big]).tolist():
+        fk = big[nout[big] == k]
+        t, ok = _fan_convex(vertices, ids[ostart[fk, None] + np.arange(k)])
+        if ok.any():
+            out_t.append(t[ok].reshape(-1, 3))
+            out_f.append(np.repeat(fk[ok], k - 2))
+            done[fk[ok]] = True
     for f in np.flatnonzero(~done).tolist():
         r0 = first_ring[f]
         rings = [ids[ring_start[r]:ring_start[r] + ring_len[r]] for r in range(r0, r0 + rpp[f])]
@@ -644,66 +665,73 @@ def triangle_pairs_intersect(vertices: np.ndarray, tris: np.ndarray, pairs: np.n
     res = np.zeros(len(pairs), dtype=bool)
     if len(pairs) == 0:
         return res
+    used = np.unique(pairs)
+    P = vertices[tris[used]]
+    un_all = np.zeros((len(tris), 3))
+    un_all[used], _ = _unit(_cross(P[:, 1] - P[:, 0], P[:, 2] - P[:, 0]))
     ta, tb = tris[pairs[:, 0]], tris[pairs[:, 1]]
     eq = ta[:, :, None] == tb[:, None, :]                        # (p, 3, 3)
     in_b = eq.any(axis=2)                                        # vertex k of a is in b
     in_a = eq.any(axis=1)
     nshared = in_b.sum(axis=1)
-    A, B = vertices[ta], vertices[tb]
-    na = _cross(A[:, 1] - A[:, 0], A[:, 2] - A[:, 0])
-    nb = _cross(B[:, 1] - B[:, 0], B[:, 2] - B[:, 0])
-    ua, _ = _unit(na)
-    ub, _ = _unit(nb)
-    sd_b = np.einsum("ijk,ik->ij", B - A[:, :1], ua)            # (p, 3) signed distances of B to plane A
-    sd_a = np.einsum("ijk,ik->ij", A - B[:, :1], ub)
-    dist_b = np.abs(sd_b)
-    coplanar = np.all(dist_b <= eps, axis=1)
-    # a triangle whose own (non-shared) vertices are all strictly on one side of the other's
-    # plane meets that plane at most in the shared vertex: no intersection
-    sep = (np.where(in_a, np.inf, sd_b).min(axis=1) > eps) | \
-        (np.where(in_a, -np.inf, sd_b).max(axis=1) < -eps) | \
-        (np.where(in_b, np.inf, sd_a).min(axis=1) > eps) | \
-        (np.where(in_b, -np.inf, sd_a).max(axis=1) < -eps)
-    sep &= nshared < 2
-
     res[nshared == 3] = True
+
     # shared edge: only a fold (coplanar, third vertices on the same side) intersects
     s2 = np.flatnonzero(nshared == 2)
     if len(s2):
-        kb = np.argmin(in_a[s2], axis=1)
-        d = B[s2, kb]
-        dn = np.abs(np.einsum("ij,ij->i", d - A[s2, 0], ua[s2]))
-        folded = np.einsum("ij,ij->i", na[s2], nb[s2]) < 0
-        res[s2] = folded & (dn <= eps)
+        ua, ub = un_all[pairs[s2, 0]], un_all[pairs[s2, 1]]
+        folded = np.einsum("ij,ij->i", ua, ub) < 0
+        s2 = s2[folded]
+        if len(s2):
+            kb = np.argmin(in_a[s2], axis=1)
+            d = vertices[tb[s2, kb]]
+            a0 = vertices[ta[s2, 0]]
+            dn = np.abs(np.einsum("ij,ij->i", d - a0, un_all[pairs[s2, 0]]))
+            res[s2] = dn <= eps
+
+    rest = np.flatnonzero(nshared < 2)
+    if len(rest) == 0:
+        return res
+    ia, ib = in_a[rest], in_b[rest]
+    A, B = vertices[ta[rest]], vertices[tb[rest]]
+    ua, ub = un_all[pairs[rest, 0]], un_all[pairs[rest, 1]]
+    sd_b = np.einsum("ijk,ik->ij", B - A[:, :1], ua)            # (r, 3) signed distances of B to plane A
+    sd_a = np.einsum("ijk,ik->ij", A - B[:, :1], ub)
+    # a triangle whose own (non-shared) vertices are all strictly on one side of the other's
+    # plane meets that plane at most in the shared vertex: no intersection
+    sep = (np.where(ia, np.inf, sd_b).min(axis=1) > eps) | \
+        (np.where(ia, -np.inf, sd_b).max(axis=1) < -eps) | \
+        (np.where(ib, np.inf, sd_a).min(axis=1) > eps) | \
+        (np.where(ib, -np.inf, sd_a).max(axis=1) < -eps)
+    keep = np.flatnonzero(~sep)
+    if len(keep) == 0:
+        return res
+    rest, ia, ib, A, B, ua = rest[keep], ia[keep], ib[keep], A[keep], B[keep], ua[keep]
+    coplanar = np.all(np.abs(sd_b[keep]) <= eps, axis=1)
+    ns = nshared[rest]
+    hit = np.zeros(len(rest), dtype=bool)
     # shared vertex: the opposite edges must not pierce the other triangle
-    s1 = np.flatnonzero((nshared == 1) & ~sep)
+    s1 = np.flatnonzero((ns == 1) & ~coplanar)
     if len(s1):
-        ka = np.argmax(in_b[s1], axis=1)
-        kb = np.argmax(in_a[s1], axis=1)
-        a1, a2 = A[s1, (ka + 1) % 3], A[s1, (ka + 2) % 3]
-        b1, b2 = B[s1, (kb + 1) % 3], B[s1, (kb + 2) % 3]
-        hit = (segment_triangle_intersect(a1, a2, B[s1, 0], B[s1, 1], B[s1, 2], eps)
-               | segment_triangle_intersect(b1, b2, A[s1, 0], A[s1, 1], A[s1, 2], eps))
-        cop = coplanar[s1]
-        out = np.where(cop, False, hit)
-        if cop.any():
-            ci = s1[cop]
-            out[cop] = _coplanar_overlap(A[ci], B[ci], na[ci], eps)
-        res[s1] = out
+        ka = np.argmax(ib[s1], axis=1)
+        kb = np.argmax(ia[s1], axis=1)
+        r = np.arange(len(s1))
+        A1, B1 = A[s1], B[s1]
+        hit[s1] = (segment_triangle_intersect(A1[r, (ka + 1) % 3], A1[r, (ka + 2) % 3], B1[:, 0], B1[:, 1], B1[:, 2], eps)
+                   | segment_triangle_intersect(B1[r, (kb + 1) % 3], B1[r, (kb + 2) % 3], A1[:, 0], A1[:, 1], A1[:, 2], eps))
     # disjoint vertex sets
-    s0 = np.flatnonzero((nshared == 0) & ~sep)
+    s0 = np.flatnonzero((ns == 0) & ~coplanar)
     if len(s0):
-        hit = np.zeros(len(s0), dtype=bool)
         a, b = A[s0], B[s0]
+        h = np.zeros(len(s0), dtype=bool)
         for i in range(3):
-            hit |= segment_triangle_intersect(a[:, i], a[:, (i + 1) % 3], b[:, 0], b[:, 1], b[:, 2], eps)
-            hit |= segment_triangle_intersect(b[:, i], b[:, (i + 1) % 3], a[:, 0], a[:, 1], a[:, 2], eps)
-        cop = coplanar[s0]
-        out = np.where(cop, False, hit)
-        if cop.any():
-            ci = s0[cop]
-            out[cop] = _coplanar_overlap(A[ci], B[ci], na[ci], eps)
-        res[s0] = out
+            h |= segment_triangle_intersect(a[:, i], a[:, (i + 1) % 3], b[:, 0], b[:, 1], b[:, 2], eps)
+            h |= segment_triangle_intersect(b[:, i], b[:, (i + 1) % 3], a[:, 0], a[:, 1], a[:, 2], eps)
+        hit[s0] = h
+    cop = np.flatnonzero(coplanar)
+    if len(cop):
+        hit[cop] = _coplanar_overlap(A[cop], B[cop], ua[cop], eps)
+    res[rest] = hit
     return res
 
 

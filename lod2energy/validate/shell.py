@@ -210,13 +210,11 @@ def replay_construction(tris: np.ndarray, face_of_tri: np.ndarray) -> list[tuple
     list of (int, int)
     """
     used: set[tuple[int, int]] = set()
-    nbrs: dict[int, set[int]] = {}
+    border: dict[int, int] = {}          # vertex -> incident edges used in one direction only
+    degree: dict[int, int] = {}          # vertex -> incident edges
 
     def closed(v: int) -> bool:
-        nb = nbrs.get(v)
-        if not nb:
-            return False
-        return all((v, w) in used and (w, v) in used for w in nb)
+        return degree.get(v, 0) > 0 and border.get(v, 0) == 0
 
     def ok(a: int, b: int, c: int) -> bool:
         if a == b or b == c or a == c:
@@ -231,8 +229,14 @@ def replay_construction(tris: np.ndarray, face_of_tri: np.ndarray) -> list[tuple
         if ok(a, b, c):
             for x, y in ((a, b), (b, c), (c, a)):
                 used.add((x, y))
-                nbrs.setdefault(x, set()).add(y)
-                nbrs.setdefault(y, set()).add(x)
+                if (y, x) in used:           # the edge gets its second face
+                    border[x] -= 1
+                    border[y] -= 1
+                else:                        # a new border edge
+                    border[x] = border.get(x, 0) + 1
+                    border[y] = border.get(y, 0) + 1
+                    degree[x] = degree.get(x, 0) + 1
+                    degree[y] = degree.get(y, 0) + 1
             continue
         code = 307 if ok(a, c, b) else 303
         if (f, code) not in seen:
@@ -426,6 +430,12 @@ def check_meshes(vertices: np.ndarray, meshes: Sequence[ShellMesh], vol: np.ndar
     todo = good & ~done
     if todo.any():
         sel_t = np.flatnonzero(todo[tsh])
+        # zero-area triangles (ear clipping along collinear vertices) bound nothing
+        Q = vertices[tris[sel_t]]
+        cr = np.cross(Q[:, 1] - Q[:, 0], Q[:, 2] - Q[:, 0])
+        e2 = np.maximum(np.einsum("ij,ij->i", Q[:, 1] - Q[:, 0], Q[:, 1] - Q[:, 0]),
+                        np.einsum("ij,ij->i", Q[:, 2] - Q[:, 0], Q[:, 2] - Q[:, 0]))
+        sel_t = sel_t[np.einsum("ij,ij->i", cr, cr) > 1e-18 * e2 * e2]
         P = vertices[tris[sel_t]]
         origin = P.reshape(-1, 3).min(axis=0)
         local = vertices - origin
