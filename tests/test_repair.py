@@ -313,3 +313,33 @@ def test_real_tile_repaired(rel):
     t = dataset_table(out)
     if t["miou"] is not None:
         assert t["miou"] >= 0.9
+
+
+def two_overlapping_parts():
+    """A Building made of two BuildingParts (boxes) overlapping by 2 m (601)."""
+    from lod2energy.model import CityObject as CO
+    V = np.array(BOX_V + [(p[0] + 8, p[1], p[2]) for p in BOX_V], dtype=float)
+    geoms = []
+    for k in range(2):
+        surfs = tuple(Surface.from_lists([[i + 8 * k for i in r]], SEM_OF[j]) for j, r in enumerate(BOX_F))
+        geoms.append(Geometry("Solid", "2", (Solid((Shell(surfs),)),), SEM))
+    objs = (CO("p", "Building", (), {}, (), ("p-0", "p-1")),
+            CO("p-0", "BuildingPart", (geoms[0],), {}, ("p",)),
+            CO("p-1", "BuildingPart", (geoms[1],), {}, ("p",)))
+    return Building("p", "Building", V, objs)
+
+
+def test_overlapping_parts_stay_separate_unless_merged():
+    from lod2energy.repair.parts import overlapping_parts
+    b = two_overlapping_parts()
+    assert [(a, c) for a, c, _ in overlapping_parts(b)] == [("p-0", "p-1")]
+    assert repair_building(b) is b  # both parts are valid solids: untouched
+    m = repair_building(b, merge_parts=True)
+    assert m is not b
+    g = [g for g in m.root.geometries if g.lod == "2"]
+    assert len(g) == 1 and g[0].type == "Solid"
+    assert all(not o.geometries for o in m.objects[1:])
+    assert_energy_ready(m)
+    faces = g[0].solids[0].shells[0].surfaces
+    assert len(faces) <= 10  # a box whose roof, ground and long walls keep one face per part
+    assert all(s.semantic is not None for s in faces)

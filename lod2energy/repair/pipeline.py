@@ -260,16 +260,23 @@ def repair_building(b: Building, tol: Tolerances = DEFAULT, timeout: float = DEF
             changed = True
         entry["seconds"] = round(time.monotonic() - t1, 4)
         per_geom.append(entry)
+    from lod2energy.repair.parts import merge_overlapping_parts, overlapping_parts
     if not changed and all(e["stage"] == "valid" for e in per_geom):
-        if "repair" in b.provenance:
+        if not merge_parts:
+            return b  # untouched: the same object
+        nb = merge_overlapping_parts(b, tol, lod)
+        if nb is b:
             return b
-        return b if not per_geom else b  # untouched: same object
+        return nb.with_provenance(repair=_summary(nb, per_geom, sorted(defects_before), tol,
+                                                  time.monotonic() - t0))
     V = np.vstack([b.vertices, np.asarray(extra).reshape(-1, 3)]) if extra else b.vertices
     nb = replace(b, objects=tuple(objs), vertices=V)
-    if merge_parts:
-        from lod2energy.repair.parts import merge_overlapping_parts
-        nb = merge_overlapping_parts(nb, tol)
-    return nb.with_provenance(repair=_summary(nb, per_geom, sorted(defects_before), tol, time.monotonic() - t0))
+    overlaps = overlapping_parts(nb, lod)
+    if merge_parts and overlaps:
+        nb = merge_overlapping_parts(nb, tol, lod)
+    summary = _summary(nb, per_geom, sorted(defects_before), tol, time.monotonic() - t0)
+    summary["overlapping_parts"] = [list(p) for p in overlaps]
+    return nb.with_provenance(repair=summary)
 
 
 def _envelope(m: PolyMesh, res: PolyMesh, stage: str, tol: Tolerances) -> tuple[bool, PolyMesh | None]:
