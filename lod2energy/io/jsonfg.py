@@ -99,7 +99,8 @@ def read_document(doc: Mapping[str, Any], path: str) -> "tuple[CityModel | None,
     else:
         feats = doc.get("features")
         if not isinstance(feats, list):
-            return None, iter([FeatureError(None, 901, f"{path}: FeatureCollection without a 'features' array")])
+            return None, iter([FeatureError(None, 904, f"{path}: 'type' is 'FeatureCollection', not 'CityJSON', "
+                                                       "and it has no 'features' array")])
     model = CityModel(version="JSON-FG", source=path, format="JSON-FG")
 
     def gen():
