@@ -229,6 +229,14 @@ def triangulate_surface(vertices: np.ndarray, surface, normal: np.ndarray | None
     p2 = p2 - p2.mean(axis=0)
     ends = np.cumsum([len(r) for r in rings])
     local = _earcut_rings(p2, ends)
+    if len(local) > 1 and _sliver_mask(np.concatenate([p2, np.zeros((len(p2), 1))], 1)[local]).any():
+        # ear clipping leaves slivers along near-collinear vertices, which can cross a
+        # neighbouring face; val3dity's constrained Delaunay triangulation avoids them
+        try:
+            from lod2energy.validate.triangulate import constrained_delaunay
+            local = np.asarray(constrained_delaunay(p2, ends), dtype=np.intp).reshape(-1, 3)
+        except Exception:  # pragma: no cover - keep the ear-clipping result
+            pass
     if len(local) == 0:
         return np.zeros((0, 3), dtype=np.intp)
     return _fix_orientation(ids[local], p2, local)
@@ -312,6 +320,23 @@ def triangulate_surfaces(vertices: np.ndarray, ringsets: Sequence[Sequence[np.nd
     fot = np.concatenate(out_f).astype(np.intp)
     order = np.argsort(fot, kind="stable")
     return tris[order], fot[order]
+
+
+SLIVER_RATIO = 0.01
+"""Triangles whose height is under this share of their longest edge are slivers."""
+
+
+def _sliver_mask(P: np.ndarray) -> np.ndarray:
+    """(..., 3, 3) triangle corners -> (...) bool: sliver (2 area / longest edge^2 < SLIVER_RATIO)."""
+    e = np.stack([P[..., 1, :] - P[..., 0, :], P[..., 2, :] - P[..., 1, :], P[..., 0, :] - P[..., 2, :]], -2)
+    longest = (e * e).sum(-1).max(-1)
+    cr = _cross(e[..., 0, :], -e[..., 2, :])
+    return np.sqrt((cr * cr).sum(-1)) < SLIVER_RATIO * longest
+
+
+def _has_sliver(vertices: np.ndarray, tris: np.ndarray) -> np.ndarray:
+    """(m, t, 3) triangles of m polygons -> (m,) bool: the polygon's triangulation has a sliver."""
+    return _sliver_mask(vertices[tris]).any(axis=-1)
 
 
 def _fan_convex(vertices: np.ndarray, polys: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -401,6 +426,7 @@ def triangulate_flat(vertices: np.ndarray, ids: np.ndarray, ring_len: np.ndarray
     for k in np.unique(nout[big]).tolist():
         fk = big[nout[big] == k]
         t, ok = _fan_convex(vertices, ids[ostart[fk, None] + np.arange(k)])
+        ok &= ~_has_sliver(vertices, t)
         if ok.any():
             out_t.append(t[ok].reshape(-1, 3))
             out_f.append(np.repeat(fk[ok], k - 2))
