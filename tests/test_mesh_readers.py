@@ -200,3 +200,12 @@ def test_val3dity_poly_holes_parse(val3dity_suite):
     (face,) = b.objects[0].geometries[0].solids[0].shells[0].surfaces
     assert [r.tolist() for r in face.rings] == [[0, 3, 2, 1], [4, 5, 6, 7]]
     assert np.allclose(b.vertices[4], [0.2, 0.2, 0.0])
+
+
+def test_json_sniffing_skips_non_document_types(tmp_path):
+    import json
+    doc = {"links": [{"type": "application/geo+json", "href": "x"}], "type": "Feature",
+           "geometry": {"type": "Point", "coordinates": [0, 0]}}
+    p = _write(tmp_path, "f.json", json.dumps(doc))
+    model, feats = _one(p)
+    assert model.format == "JSON-FG" and [f.code for f in feats] == [904]

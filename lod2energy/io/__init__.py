@@ -41,18 +41,25 @@ def read(path: str, **options) -> "tuple[CityModel | None, Iterator[Building | F
 _TYPE_RE = re.compile(rb'"type"\s*:\s*"([^"]{1,40})"')
 
 
+_DOC_TYPES = (b"CityJSON", b"CityJSONFeature", b"tu3djson", b"Feature", b"FeatureCollection")
+
+
 def _json_document_type(path: str, head: int = 65536) -> str | None:
-    """The first ``"type"`` value in the head of a JSON file (cheap sniffing, no parsing).
+    """The first document-level ``"type"`` value in the head of a JSON file (no parsing).
 
     Tells tu3djson and JSON-FG (``"tu3djson"``, ``"Feature"``, ``"FeatureCollection"``)
-    from CityJSON, whose first ``"type"`` is "CityJSON" or a CityObject type.
+    from CityJSON; other ``"type"`` values (CityObject types, media types of links) are
+    skipped.
     """
     try:
         with open(path, "rb") as f:
-            m = _TYPE_RE.search(f.read(head))
+            text = f.read(head)
     except OSError:
         return None
-    return m.group(1).decode("utf-8", "replace") if m else None
+    for m in _TYPE_RE.finditer(text):
+        if m.group(1) in _DOC_TYPES:
+            return m.group(1).decode("ascii")
+    return None
 
 
 def _register_builtin() -> None:

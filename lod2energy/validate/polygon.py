@@ -13,9 +13,11 @@ What val3dity does for one shell (``Surface::validate_2d_primitives``), reproduc
 3. only when every face of the shell passed: 204 (the normals of the face's constrained
    Delaunay triangles deviate from the first one's by more than ``planarity_n_tol``).
 
-The work is vectorised per shell: plane fits are batched by polygon size, ring tests go
-through shapely's array functions, and the 204 triangulation is skipped for polygons
-where no triangle of their vertices could tilt enough (all-triples bound).
+The work is vectorised over many shells at once (:func:`check_polygons_multi`, also
+across buildings; :func:`prefetch_shells` keeps the results for :func:`check_polygons`):
+plane fits by segment sums and one batched eigen-decomposition, ring tests through
+shapely's array functions, and the 204 triangulation only for polygons where some
+triangle of their vertices could tilt enough (all-triples bound).
 """
 from __future__ import annotations
 
@@ -23,7 +25,7 @@ import itertools
 import math
 import weakref
 from fractions import Fraction
-from typing import Iterable, Sequence
+from typing import Sequence
 
 import numpy as np
 import shapely
@@ -598,10 +600,3 @@ def parse_template(templates, index: int):
     if not geom.is_polygonal:
         return None
     return tv, geom
-
-
-def iter_shell_defects(vertices, shells: Iterable[Shell], tol: Tolerances = DEFAULT):
-    """``check_polygons`` over several shells: yields ``(shell_index, face, code, info)``."""
-    for hi, sh in enumerate(shells):
-        for f, code, info in check_polygons(vertices, sh, tol):
-            yield hi, f, code, info
