@@ -10,7 +10,7 @@ import pytest
 from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
-from factories import box, building_from_polygons, gabled_house, square
+from factories import box, building_from_polygons, gabled_house
 from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.model import Shell, Surface
 from lod2energy.validate import polygon
@@ -20,7 +20,7 @@ from lod2energy.validate.snap import snap_points, snapped_ids
 
 def _codes(b, tol=DEFAULT) -> set[int]:
     out = set()
-    for _, _, _, sh in ((None, None, None, s) for _, _, s in b.objects[0].geometries[0].iter_shells()):
+    for _, _, sh in b.objects[0].geometries[0].iter_shells():
         out.update(code for _, code, _ in check_polygons(b.vertices, sh, tol))
     return out
 

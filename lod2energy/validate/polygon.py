@@ -22,7 +22,6 @@ triangle of their vertices could tilt enough (all-triples bound).
 from __future__ import annotations
 
 import itertools
-import math
 import weakref
 from fractions import Fraction
 from typing import Sequence
