@@ -48,7 +48,7 @@ def run_tile(path: Path, repair: bool, export: str | None = None, versions=("1.0
         return {"tile": f"{path.parent.name}/{path.name}", "unreadable_file": [f.message for f in feats]}
     labelled = []
     agree = total = 0.0
-    final_agree = final_total = 0.0
+    final_agree = final_total = final_without = 0.0
     conf: dict = {}
     n = n_err = n_rep = 0
     for f in feats:
@@ -64,7 +64,7 @@ def run_tile(path: Path, repair: bool, export: str | None = None, versions=("1.0
         if repair:
             from lod2energy.repair.pipeline import repair_building
             try:
-                rb = repair_building(f)
+                rb = repair_building(f, lod=f.default_lod())
                 if isinstance(rb, tuple):
                     rb = rb[0]
             except Exception as e:  # benchmark: report and continue
@@ -73,9 +73,10 @@ def run_tile(path: Path, repair: bool, export: str | None = None, versions=("1.0
             n_rep += 1
             lb = semantics.label_building(rb, source=f)
             labelled.append(lb)
-            fa, ft = final_label_agreement(f, lb)
+            fa, ft, fw = final_label_agreement(f, lb)
             final_agree += fa
             final_total += ft
+            final_without += fw
     top = sorted(((v, k) for k, v in conf.items() if k[0] != k[1]), reverse=True)[:3]
     exports = {}
     if export:
@@ -85,7 +86,9 @@ def run_tile(path: Path, repair: bool, export: str | None = None, versions=("1.0
             "rule_agreement_pct": round(100 * agree / total, 2) if total else None,
             "top_confusions": [f"{k[0]}->{k[1]}: {v:.1f} m2" for v, k in top],
             **({"repaired": n_rep,
-                "final_agreement_pct": round(100 * final_agree / final_total, 2) if final_total else None}
+                "final_agreement_pct": round(100 * final_agree / final_total, 2) if final_total else None,
+                "final_area_without_input_face_pct": round(100 * final_without / (final_total + final_without), 2)
+                if final_total + final_without else None}
                if repair else {}), **({"exports": exports} if export else {})}
 
 
@@ -127,29 +130,39 @@ def export_tile(path: Path, model, labelled, outdir: str, versions) -> dict:
     return out
 
 
-def final_label_agreement(source, labelled) -> tuple[float, float]:
-    """Area of labelled output faces whose label equals the nearest input face's label.
+def final_label_agreement(source, labelled) -> tuple[float, float, float]:
+    """Agreement of the final labels with the input's own labels, area-weighted.
 
-    Each output face is compared with the input face of compatible normal nearest to its
-    centroid (the same look-up label transfer uses); faces with no such input face count
-    as disagreeing.
+    Each output face is compared with the input face of compatible normal nearest to it
+    (the look-up label transfer uses: normals within 30 degrees, at most 2 m away).
+
+    Returns
+    -------
+    agree : float, m2
+        Area of output faces labelled like their input face.
+    comparable : float, m2
+        Area of output faces that have such an input face (labelled).
+    without_input : float, m2
+        Area of output faces with no input face to compare with (new faces far from any
+        labelled input face of similar orientation; the rules label them).
     """
     from lod2energy import semantics as S
-    import numpy as np
 
     src = S._SourceFaces(source, None)
-    agree = total = 0.0
+    agree = comparable = without = 0.0
     for o, gi, g in S.envelope_objects(labelled):
         t = S.face_table(labelled.vertices, g)
         for i, s in enumerate(t.surfaces):
-            ty = g.semantic_type(s)
             if t.area[i] <= 0:
                 continue
-            total += t.area[i]
             hit = src.nearest(t.normal[i], t.centroid[i], S.DEFAULT_RULES)
-            if hit is not None and hit[0] == ty:
+            if hit is None:
+                without += t.area[i]
+                continue
+            comparable += t.area[i]
+            if hit[0] == g.semantic_type(s):
                 agree += t.area[i]
-    return agree, total
+    return agree, comparable, without
 
 
 def main(argv=None) -> int:

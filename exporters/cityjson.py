@@ -31,17 +31,16 @@ from __future__ import annotations
 
 import json
 import os
-import shutil
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, replace
 from functools import lru_cache
 from importlib import resources
 from typing import Any, Iterable, Mapping
 
 import numpy as np
 
-from lod2energy.errors import ExportError, Lod2EnergyError
+from lod2energy.errors import Lod2EnergyError
 from lod2energy.io import cityjson as cjio
-from lod2energy.model import Building, CityModel, Geometry, frozen_mapping
+from lod2energy.model import Building, CityModel, frozen_mapping
 from lod2energy.semantics import ENVELOPE_TYPES, envelope_objects
 
 EXTENSION_NAME = "Energy"

@@ -10,7 +10,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from factories import box, box_polygons, building_from_polygons, gabled_house, open_box
+from factories import box, gabled_house, open_box
 from lod2energy import semantics as S
 from lod2energy import thermal as T
 from lod2energy.exporters import cityjson as X

@@ -2,13 +2,10 @@
 quantities and the UA arithmetic on a box with known U-values."""
 from __future__ import annotations
 
-import csv
-import io
 import math
 import re
 from dataclasses import replace
 from importlib import resources
-from pathlib import Path
 
 import pytest
 
