@@ -757,8 +757,24 @@ def triangle_pairs_intersect(vertices: np.ndarray, tris: np.ndarray, pairs: np.n
     cop = np.flatnonzero(coplanar)
     if len(cop):
         hit[cop] = _coplanar_overlap(A[cop], B[cop], ua[cop], eps)
+    # a vertex of one lying on the other (not one of its vertices): they touch there
+    hit |= _vertex_on_triangle(B, ~ia, A, ua, eps) | _vertex_on_triangle(A, ~ib, B, un_all[pairs[rest, 1]], eps)
     res[rest] = hit
     return res
+
+
+def _vertex_on_triangle(P: np.ndarray, own: np.ndarray, T: np.ndarray, un: np.ndarray, eps: float) -> np.ndarray:
+    """(m, 3, 3) points P (mask ``own`` (m, 3): not shared) lying on triangles T (m, 3, 3)
+    of unit normals ``un`` (m, 3), within ``eps`` of its plane and inside or on its edges."""
+    d = np.einsum("ijk,ik->ij", P - T[:, :1], un)               # (m, 3)
+    on = own & (np.abs(d) <= eps) & (np.linalg.norm(un, axis=1) > 0)[:, None]
+    if not on.any():
+        return on.any(axis=1)
+    inside = on.copy()
+    for a, b in ((0, 1), (1, 2), (2, 0)):
+        inward, _ = _unit(_cross(un, T[:, b] - T[:, a]))
+        inside &= np.einsum("ijk,ik->ij", P - T[:, a][:, None, :], inward) >= -eps
+    return inside.any(axis=1)
 
 
 # ----------------------------------------------------------------------------- inside / outside

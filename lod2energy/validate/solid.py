@@ -16,7 +16,7 @@ from typing import Sequence
 import numpy as np
 
 from lod2energy.config import DEFAULT, Tolerances
-from lod2energy.geometry import _cross, bbox_pairs, signed_volume
+from lod2energy.geometry import _cross, bbox_pairs, signed_volume, winding_number
 from lod2energy.model import Building, Geometry, Solid
 from lod2energy.validate.shell import shell_meshes
 
@@ -161,6 +161,19 @@ def check_solid(vertices: np.ndarray, solid: Solid, tol: Tolerances = DEFAULT
         return out
     a_outer = outer.surface_area()
     for k, m in enumerate(inner, start=1):
+        # vertices first: exact enough where shared volumes are below round-off
+        w = winding_number(vertices[np.unique(tris[k])], vertices, tris[0])
+        w_out = winding_number(vertices[np.unique(tris[0])], vertices, tris[k][:, ::-1])
+        v_in, v_out = w > 0.75, np.abs(w) < 0.25
+        if v_in.any() and v_out.any():
+            out.append((k, 401, f"0--{k}"))
+            continue
+        if v_out.all():
+            if (w_out > 0.75).any() or (m ^ outer).volume() > VOLUME_EPS:
+                out.append((k, 401, f"0--{k}"))
+            else:
+                out.append((k, 403, f"Inner shell (#{k}) is completely outside the outer shell (#0)"))
+            continue
         outside = (m - outer).volume()
         if outside > VOLUME_EPS:
             if (m ^ outer).volume() <= VOLUME_EPS:
