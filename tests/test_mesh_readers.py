@@ -209,3 +209,35 @@ def test_json_sniffing_skips_non_document_types(tmp_path):
     p = _write(tmp_path, "f.json", json.dumps(doc))
     model, feats = _one(p)
     assert model.format == "JSON-FG" and [f.code for f in feats] == [904]
+
+
+def test_off_colours_at_line_ends_are_ignored(tmp_path):
+    text = cube_off().replace("0 0 0\n", "0 0 0 255 0 0\n", 1).replace("4 0 3 2 1", "4 0 3 2 1 255 255 0")
+    _, (b,) = _one(_write(tmp_path, "col.off", text))
+    assert [s.outer.tolist() for s in b.objects[0].geometries[0].solids[0].shells[0].surfaces] == CUBE_F
+
+
+# ----------------------------------------------------------------------------- round trips
+
+from hypothesis import given, settings  # noqa: E402
+from hypothesis import strategies as st  # noqa: E402
+
+coords = st.floats(-1e6, 1e6, allow_nan=False, allow_infinity=False)
+
+
+@settings(max_examples=30, deadline=None)
+@given(st.lists(st.tuples(coords, coords, coords), min_size=3, max_size=12), st.data())
+def test_write_read_round_trip_all_formats(tmp_path_factory, verts, data):
+    n = len(verts)
+    faces = data.draw(st.lists(st.lists(st.integers(0, n - 1), min_size=3, max_size=6), min_size=1, max_size=5))
+    d = tmp_path_factory.mktemp("rt")
+    vtxt = [" ".join(repr(c) for c in v) for v in verts]
+    obj = "\n".join([f"v {t}" for t in vtxt] + ["f " + " ".join(str(i + 1) for i in f) for f in faces])
+    off = "\n".join(["OFF", f"{n} {len(faces)} 0"] + vtxt + [f"{len(f)} " + " ".join(map(str, f)) for f in faces])
+    poly = "\n".join([f"{n} 3 0 0"] + [f"{i} {t}" for i, t in enumerate(vtxt)] + [f"{len(faces)} 0"]
+                     + sum((["1 0", f"{len(f)} " + " ".join(map(str, f))] for f in faces), []) + ["0", "0"])
+    for name, text in (("m.obj", obj), ("m.off", off), ("m.poly", poly)):
+        _, (b,) = _one(_write(d, name, text + "\n"), primitive="MultiSurface")
+        assert np.array_equal(b.vertices, np.asarray(verts, float))
+        got = [s.outer.tolist() for s in b.objects[0].geometries[0].solids[0].shells[0].surfaces]
+        assert got == faces

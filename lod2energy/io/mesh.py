@@ -238,6 +238,63 @@ def read_poly(path: str, primitive: str = "Solid", inner_shells=()) -> "tuple[Ci
 
 # ----------------------------------------------------------------------------- OFF
 
+def parse_off(path: str) -> tuple[np.ndarray, list[list[int]]]:
+    """Vertices and faces of an OFF file.
+
+    Line-based after the header, so that per-vertex or per-face colours (extra numbers at
+    the end of a line) are ignored; ``#`` starts a comment. The header is ``OFF`` (also
+    ``COFF``, ``NOFF``...), with the counts on the same or the next line.
+
+    Raises
+    ------
+    InputError
+        No ``OFF`` header, no vertex (val3dity: "not a valid OFF file"), a face without
+        vertices, an index out of range, a truncated file.
+    """
+    lines = [ln.split("#", 1)[0].split() for ln in _read_text(path).splitlines()]
+    lines = [ln for ln in lines if ln]
+    if not lines or not lines[0][0].upper().endswith("OFF"):
+        raise InputError(f"{path}: not a valid OFF file (no 'OFF' header)")
+    head, li = lines[0][1:], 1
+    if not head:
+        if len(lines) < 2:
+            raise InputError(f"{path}: not a valid OFF file (no counts line)")
+        head, li = lines[1], 2
+    try:
+        n, nf = int(head[0]), int(head[1])
+    except (ValueError, IndexError):
+        raise InputError(f"{path}: not a valid OFF file (bad counts line)") from None
+    if n <= 0:
+        raise InputError(f"{path}: not a valid OFF file (no vertex)")
+    if len(lines) < li + n:
+        raise InputError(f"{path}: the file ends before its {n} vertices")
+    try:
+        verts = np.asarray([ln[:3] for ln in lines[li:li + n]], dtype=np.float64)
+    except ValueError:
+        raise InputError(f"{path}: bad vertex coordinates") from None
+    if verts.shape != (n, 3):
+        raise InputError(f"{path}: a vertex line has fewer than 3 coordinates")
+    li += n
+    if len(lines) < li + nf:
+        raise InputError(f"{path}: the file ends before its {nf} faces")
+    faces = []
+    for fi, ln in enumerate(lines[li:li + nf]):
+        try:
+            k = int(ln[0])
+            ring = [int(t) for t in ln[1:1 + k]]
+        except ValueError:
+            raise InputError(f"{path}: bad face {fi}") from None
+        if k <= 0:
+            raise InputError(f"{path}: some surfaces are not defined correctly or are empty (face {fi})")
+        if len(ring) != k:
+            raise InputError(f"{path}: face {fi} announces {k} vertices and has {len(ring)}")
+        for i in ring:
+            if i < 0 or i >= n:
+                raise InputError(f"{path}: face {fi} uses vertex {i}, the file has {n} vertices")
+        faces.append(ring)
+    return _finite(verts, path), faces
+
+
 def read_off(path: str, primitive: str = "Solid", inner_shells=()) -> "tuple[CityModel | None, Iterator[Building | FeatureError]]":
     """Read an OFF file as one building (one shell).
 
@@ -246,46 +303,8 @@ def read_off(path: str, primitive: str = "Solid", inner_shells=()) -> "tuple[Cit
     """
     def make():
         _check_primitive(primitive)
-        text = _read_text(path)
-        toks = [t for ln in text.splitlines() for t in ln.split("#", 1)[0].split()]
-        if not toks or not toks[0].upper().endswith("OFF"):
-            raise InputError(f"{path}: not a valid OFF file (no 'OFF' header)")
-        try:
-            head = toks[1:4]
-            n, nf = int(head[0]), int(head[1])
-        except (ValueError, IndexError):
-            raise InputError(f"{path}: not a valid OFF file (bad counts line)") from None
-        if n <= 0:
-            raise InputError(f"{path}: not a valid OFF file (no vertex)")
-        pos = 4
-        try:
-            verts = np.asarray(toks[pos:pos + 3 * n], dtype=np.float64)
-        except ValueError:
-            raise InputError(f"{path}: bad vertex coordinates") from None
-        if verts.size != 3 * n:
-            raise InputError(f"{path}: the file ends before its {n} vertices")
-        verts = verts.reshape(n, 3)
-        pos += 3 * n
-        faces = []
-        try:
-            for fi in range(nf):
-                k = int(toks[pos])
-                pos += 1
-                if k <= 0:
-                    raise InputError(f"{path}: some surfaces are not defined correctly or are empty (face {fi})")
-                ring = [int(t) for t in toks[pos:pos + k]]
-                if len(ring) != k:
-                    raise InputError(f"{path}: the file ends inside face {fi}")
-                pos += k
-                # optional colour: skip up to the next face line is not possible token-wise;
-                # OFF colours are rare in validation inputs
-                for i in ring:
-                    if i < 0 or i >= n:
-                        raise InputError(f"{path}: face {fi} uses vertex {i}, the file has {n} vertices")
-                faces.append([ring])
-        except (ValueError, IndexError):
-            raise InputError(f"{path}: bad face list") from None
-        return _building(path, _finite(verts, path), [_geometry(primitive, [faces])], "OFF")
+        verts, faces = parse_off(path)
+        return _building(path, verts, [_geometry(primitive, [[[f] for f in faces]])], "OFF")
     return _result(path, "OFF", make)
 
 
