@@ -300,3 +300,15 @@ def test_geometry_instance_is_validated_on_its_template(tmp_path):
     back = json.loads(out.read_text())
     assert back["geometry-templates"] == doc["geometry-templates"]
     assert back["CityObjects"]["tree"]["geometry"][0]["template"] == 0
+
+
+@pytest.mark.parametrize("factory,codes", [("box", set()), ("gabled_house", set()), ("open_box", {302}),
+                                           ("flipped_wall", {307}), ("inward_box", {405})])
+def test_factories_carry_the_defect_they_are_named_after(factory, codes):
+    import factories
+    from lod2energy.validate.checks import validate_building
+
+    b = getattr(factories, factory)()
+    assert {d.code for d in validate_building(b)} == codes
+    v = b.vertices
+    assert v.shape[1] == 3 and not v.flags.writeable
