@@ -229,7 +229,7 @@ def triangulate_surface(vertices: np.ndarray, surface, normal: np.ndarray | None
     p2 = p2 - p2.mean(axis=0)
     ends = np.cumsum([len(r) for r in rings])
     local = _earcut_rings(p2, ends)
-    if len(local) > 1 and _sliver_mask(np.concatenate([p2, np.zeros((len(p2), 1))], 1)[local]).any():
+    if len(local) > 1 and _sliver_mask_2d(p2[local]).any():
         # ear clipping leaves slivers along near-collinear vertices, which can cross a
         # neighbouring face; val3dity's constrained Delaunay triangulation avoids them
         try:
@@ -332,6 +332,13 @@ def _sliver_mask(P: np.ndarray) -> np.ndarray:
     longest = (e * e).sum(-1).max(-1)
     cr = _cross(e[..., 0, :], -e[..., 2, :])
     return np.sqrt((cr * cr).sum(-1)) < SLIVER_RATIO * longest
+
+
+def _sliver_mask_2d(P: np.ndarray) -> np.ndarray:
+    """(t, 3, 2) triangles -> (t,) bool: sliver (see :func:`_sliver_mask`)."""
+    e0, e1, e2 = P[:, 1] - P[:, 0], P[:, 2] - P[:, 1], P[:, 0] - P[:, 2]
+    longest = np.maximum(np.maximum((e0 * e0).sum(1), (e1 * e1).sum(1)), (e2 * e2).sum(1))
+    return np.abs(e0[:, 0] * e1[:, 1] - e0[:, 1] * e1[:, 0]) < SLIVER_RATIO * longest
 
 
 def _has_sliver(vertices: np.ndarray, tris: np.ndarray) -> np.ndarray:
@@ -506,8 +513,8 @@ def triangle_areas(vertices: np.ndarray, tris: np.ndarray) -> np.ndarray:
 def signed_volume(vertices: np.ndarray, tris: np.ndarray) -> float:
     """Signed volume enclosed by triangles (divergence theorem), m3.
 
-    Positive when a closed surface's normals point outwards. Computed about the
-    vertices' centroid, so large real-world coordinates do not cost precision.
+    Positive when a closed surface's normals point outwards. Computed about one of
+    its vertices, so large real-world coordinates do not cost precision.
 
     Parameters
     ----------
@@ -521,9 +528,8 @@ def signed_volume(vertices: np.ndarray, tris: np.ndarray) -> float:
     tris = np.asarray(tris, dtype=np.intp)
     if len(tris) == 0:
         return 0.0
-    used = vertices[np.unique(tris)]
-    o = used.mean(axis=0)
-    v = vertices[tris] - o
+    v = vertices[tris]
+    v = v - v[0, 0]
     return float(np.einsum("ij,ij->i", v[:, 0], _cross(v[:, 1], v[:, 2])).sum() / 6.0)
 
 

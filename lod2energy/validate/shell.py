@@ -251,8 +251,10 @@ def _group_count(keys: np.ndarray, groups: np.ndarray, n_groups: int) -> np.ndar
     """Number of distinct ``keys`` per group."""
     if len(keys) == 0:
         return np.zeros(n_groups, dtype=np.intp)
-    pair = np.unique(np.stack([groups, keys], axis=1), axis=0)
-    return np.bincount(pair[:, 0], minlength=n_groups)
+    k = np.asarray(keys, dtype=np.int64)
+    span = int(k.max()) + 1
+    u = np.unique(np.asarray(groups, dtype=np.int64) * span + k)
+    return np.bincount(u // span, minlength=n_groups)
 
 
 def check_shells(vertices: np.ndarray, shells: Sequence[Shell], tol: Tolerances = DEFAULT,
