@@ -25,6 +25,8 @@ from lod2energy.model import Building
 WELD_TOL = 0.01
 #: Largest distance of a vertex to its face plane (m) for the face to be written as one piece.
 PLANAR_TOL = 0.01
+#: Vertices closer than this (m) to the line through their ring neighbours are dropped.
+COLLINEAR_TOL = 0.01
 #: Pieces at or under this area (m2) are dropped (they are sliver triangles of collapsed faces).
 MIN_PIECE_AREA = 1e-4
 
@@ -285,7 +287,7 @@ def merge_convex(tris: np.ndarray, xy: np.ndarray) -> list[list[int]]:
             merged = p_rot + q_rot[1:-1]   # b ... a ... (before b)
             if len(set(merged)) != len(merged):
                 continue
-            if _is_convex_2d(xy[merged], eps=1e-3):
+            if _is_convex_2d(xy[merged]):
                 polys[pi] = merged
                 polys[qi] = None
                 changed = True
@@ -404,6 +406,31 @@ def _clean_ring(ring: Sequence[int]) -> list[int]:
     return out
 
 
+def drop_collinear(ring: list[int], v: np.ndarray, tol: float = COLLINEAR_TOL) -> list[int]:
+    """Remove ring vertices lying within ``tol`` (m) of the segment joining their neighbours.
+
+    EnergyPlus deletes such vertices itself (with a warning) and then sees slivers and
+    T-junctions within its own ~1.3 cm point tolerance; doing it here keeps what is written
+    and what EnergyPlus uses the same.
+    """
+    ring = list(ring)
+    changed = True
+    while changed and len(ring) > 3:
+        changed = False
+        for k in range(len(ring)):
+            a, b, c = v[ring[k - 1]], v[ring[k]], v[ring[(k + 1) % len(ring)]]
+            ac = c - a
+            L2 = float(ac @ ac)
+            if L2 == 0:
+                continue
+            t = float((b - a) @ ac) / L2
+            if 0 < t < 1 and np.linalg.norm(a + t * ac - b) < tol:
+                del ring[k]
+                changed = True
+                break
+    return ring
+
+
 def classify(semantic_type: str | None, normal: np.ndarray) -> str:
     """Exporter class of a surface: its semantic type, else its orientation."""
     k = SEMANTIC_CLASS.get(semantic_type or "")
@@ -466,7 +493,7 @@ def zone_shells(b: Building, origin: np.ndarray, lod: str | None = None,
             for fi, s in enumerate(shell.surfaces):
                 rings = []
                 for ri, r in enumerate(s.rings):
-                    cr = _clean_ring([remap[int(i)] for i in r])
+                    cr = drop_collinear(_clean_ring([remap[int(i)] for i in r]), welded)
                     if len(set(cr)) >= 3:
                         rings.append(tuple(cr))
                     elif ri == 0:
@@ -548,10 +575,12 @@ def _split_t_junctions(v: np.ndarray, polys: list[list[int]], tol: float) -> lis
     return out
 
 
-def check_closed_outward(polygons: Sequence[np.ndarray], tol: float = 2e-4) -> list[str]:
+def check_closed_outward(polygons: Sequence[np.ndarray], tol: float = 1e-3,
+                         t_tol: float = 0.0127) -> list[str]:
     """Is a set of 3D polygons (one zone's written surfaces) a closed, outward shell?
 
-    Vertices are welded at ``tol``, T-junctions are split, then every undirected edge must
+    Vertices are welded at ``tol``, T-junctions within ``t_tol`` (EnergyPlus's point
+    tolerance, 1.27 cm) are split, then every undirected edge must
     be used exactly twice, once in each direction (closed, 2-manifold, consistent winding),
     and the enclosed signed volume must be positive (outward).
 
@@ -575,7 +604,7 @@ def check_closed_outward(polygons: Sequence[np.ndarray], tol: float = 2e-4) -> l
         k += len(p)
         if len(set(ring)) >= 3:
             polys.append(ring)
-    polys = _split_t_junctions(v, polys, tol)
+    polys = _split_t_junctions(v, polys, t_tol)
     directed: dict[tuple[int, int], int] = {}
     for poly in polys:
         for i in range(len(poly)):

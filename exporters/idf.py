@@ -29,17 +29,21 @@ import numpy as np
 
 from .common import (
     MIN_PIECE_AREA, PLANAR_TOL, WELD_TOL, ExportResult, ZoneFace, ZoneShell, _is_convex_2d,
+    _split_t_junctions, weld,
     _short_hash, check_closed_outward, local_origin, merge_convex, newell_normal, output_path,
     plane_basis, polygon_area3d, safe_stem, triangulate, unit, zone_shells,
 )
 from lod2energy.errors import ExportError, ParameterError
-from lod2energy.model import Building
+from lod2energy.model import BUILDING_TYPES, Building
 
 #: EnergyPlus inside film resistances (m2 K/W) by surface class, and the outside film for
 #: outdoor surfaces (DataHeatBalance::ComputeNominalUwithConvCoeffs).
 R_SI = {"Wall": 0.1197548, "Floor": 0.1620212, "Roof": 0.1074271}
 R_SE = {"Outdoors": 0.0299387, "Ground": 0.0, "Adiabatic": 0.0299387}
 R_MIN = 0.001
+#: Party-wall / outdoor parts of a split face thinner than 2 x THIN (m) join the other part:
+#: EnergyPlus merges vertices closer than about 1.3 cm and would lose such slivers.
+THIN = 0.015
 #: Default site (Heino, NL; the project's weather file) when no weather file is given.
 DEFAULT_SITE = {"name": "Heino_NL", "latitude": 52.43, "longitude": 6.27, "time_zone": 1.0, "elevation": 4.0}
 
@@ -77,6 +81,10 @@ class IdfOptions:
         Split faces shared with other zones/buildings into Adiabatic pieces.
     min_window_wall_area : float, m2
         Wall pieces smaller than this get no window.
+    solar_distribution : str, optional
+        EnergyPlus ``Building`` solar distribution; default "FullExterior" with
+        ``shading`` (neighbours must cast shadows), else "MinimalShadowing" (several times
+        faster on buildings with hundreds of surfaces).
     thermal_mass : bool
         Put a 10 cm brick/concrete-like layer inside every opaque construction (the
         insulation layer is reduced so that U is unchanged).
@@ -100,6 +108,7 @@ class IdfOptions:
     party_walls: bool = True
     min_window_wall_area: float = 4.0
     thermal_mass: bool = True
+    solar_distribution: str | None = None
     timesteps_per_hour: int = 4
     jobs: int = 1
     run_timeout: float = 900.0
@@ -294,13 +303,13 @@ def _split_face(zone: ZoneShell, face: ZoneFace, overlaps: list, min_area: float
     outer = _outer_boundary(face.kind)
     u, v = plane_basis(n)
     whole = _shapely_poly(pts, ends, c, u, v)
-    shared = shapely.union_all([g for _, g in overlaps])
-    rest = shapely.difference(whole, shared)
+    shared = _opening(shapely.intersection(whole, shapely.union_all([g for _, g in overlaps])))
+    rest = _opening(shapely.difference(whole, shared))
+    shared = shapely.difference(whole, rest)
     if rest.area < min_area:
         return [(p, "Adiabatic") for p in _pieces_from_points(pts, ends, n, c)]
     if shared.area < min_area or not _planar(pts, n, c):
         return [(p, outer) for p in _pieces_from_points(pts, ends, n, c)]
-    shared = shapely.intersection(whole, shared)
     out = []
     from scipy.spatial import cKDTree
     tree = cKDTree(zone.vertices)
@@ -321,7 +330,17 @@ def _split_face(zone: ZoneShell, face: ZoneFace, overlaps: list, min_area: float
     return out
 
 
-def _snap(p3: np.ndarray, vertices: np.ndarray, tree, edges, tol: float = WELD_TOL) -> np.ndarray:
+def _opening(geom, width: float = 2 * THIN):
+    """Remove the parts of a polygon narrower than ``width`` (m), keeping square corners."""
+    import shapely
+
+    if geom.is_empty:
+        return geom
+    opened = shapely.buffer(shapely.buffer(geom, -width / 2, join_style="mitre"), width / 2, join_style="mitre")
+    return shapely.intersection(geom, opened)
+
+
+def _snap(p3: np.ndarray, vertices: np.ndarray, tree, edges, tol: float = 2 * WELD_TOL) -> np.ndarray:
     """Move points onto a zone vertex, else onto a face edge, when within ``tol`` (m)."""
     p3 = p3.copy()
     d, i = tree.query(p3)
@@ -358,7 +377,32 @@ def zone_pieces(zone: ZoneShell, zi: int, party: dict) -> list[Piece]:
         for p, boundary in parts:
             if polygon_area3d(p) > MIN_PIECE_AREA:
                 pieces.append(Piece(p, f.kind, boundary, f.u_value, f.index))
+    if any(party.get((zi, fi)) for fi in range(len(zone.faces))):
+        pieces = conform(pieces)
     return pieces
+
+
+def conform(pieces: list[Piece], tol: float = 1e-3) -> list[Piece]:
+    """Insert into every piece the zone vertices that lie on its edges (no T-junctions).
+
+    Splitting a face adds vertices on its boundary; the neighbouring faces get them too, so
+    that every edge is shared by exactly two surfaces (EnergyPlus's enclosure test).
+    """
+    if not pieces:
+        return pieces
+    allp = np.concatenate([p.points for p in pieces])
+    v, idx = weld(allp, tol / 2)
+    polys, k = [], 0
+    for p in pieces:
+        polys.append(idx[k:k + len(p.points)].tolist())
+        k += len(p.points)
+    polys = _split_t_junctions(v, polys, tol)
+    out = []
+    for p, poly in zip(pieces, polys):
+        poly = [i for j, i in enumerate(poly) if i != poly[j - 1]]
+        if len(poly) >= 3:
+            out.append(replace(p, points=v[poly]))
+    return out
 
 
 def upper_left_first(points: np.ndarray) -> np.ndarray:
@@ -593,7 +637,8 @@ def render_idf(zones: Sequence[ZoneShell], pieces: Sequence[list[Piece]], delta:
         "version": _IDF_NAME_BAD.sub("", str(options.version)) or "25.2",
         "building_name": b_name,
         "terrain": "City",
-        "solar_distribution": "FullExterior",
+        "solar_distribution": options.solar_distribution or (
+            "FullExterior" if options.shading else "MinimalShadowing"),
         "timesteps_per_hour": int(options.timesteps_per_hour),
         "site": {k: (v if k == "name" else _fmt(float(v), 4)) for k, v in (site or DEFAULT_SITE).items()},
         "ground_temperatures": [_fmt(float(t), 2) for t in (ground or [10.0] * 12)],
@@ -659,7 +704,7 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
     out = Path(outdir)
     out.mkdir(parents=True, exist_ok=True)
 
-    blist = [b for b in buildings if b.energy_objects(options.lod)]
+    blist = [b for b in buildings if b.type in BUILDING_TYPES and b.energy_objects(options.lod)]
     if not blist:
         return []
     origin = local_origin(blist)

@@ -1,0 +1,334 @@
+"""CFD STL export: closed, outward triangle surfaces with one patch per semantic class.
+
+One file per building (default) or per dataset, in a local metric frame whose offset is
+stored in a sidecar ``<name>.json`` (map coordinate = STL coordinate + offset). The
+BuildingParts of a building (and, in dataset mode, touching buildings) are merged with a
+boolean union (manifold3d) so that the surface has no internal walls and stays 2-manifold:
+what a CFD mesher (snappyHexMesh) needs. Triangles keep their semantic class through the
+union and are written as one ``solid roof`` / ``solid wall`` / ``solid ground`` (...) each,
+so OpenFOAM sees them as patches. Binary STL has no solid names: the class index goes in
+each triangle's attribute word (OpenFOAM reads it as the region number) and the sidecar
+lists the names.
+"""
+from __future__ import annotations
+
+import json
+import struct
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Iterable
+
+import numpy as np
+
+from lod2energy.errors import ParameterError
+from lod2energy.model import BUILDING_TYPES, Building
+
+from .common import ExportResult, ZoneShell, local_origin, weld, output_path, safe_stem, signed_volume, zone_shells
+
+#: Edge-collapse tolerance (m) after the union: removes sliver triangles.
+SIMPLIFY_TOL = 1e-3
+#: Vertices of different parts closer than this (m) are made identical before the union.
+CROSS_WELD_TOL = 1e-3
+#: Distance (m) by which vertices of bodies that only touch are moved apart.
+SEPARATION = 2e-3
+#: Patch order (binary attribute = index).
+PATCHES = ("roof", "wall", "ground", "floor")
+
+
+@dataclass(frozen=True)
+class StlOptions:
+    """Options of :func:`write`.
+
+    Parameters
+    ----------
+    mode : {"building", "dataset"}
+    ascii : bool
+        ASCII STL with named solids (default binary with class attributes).
+    union : bool
+        Merge parts / touching buildings into one closed surface (manifold3d).
+    lod : str, optional
+    """
+
+    mode: str = "building"
+    ascii: bool = False
+    union: bool = True
+    lod: str | None = None
+
+
+def _zone_mesh(z: ZoneShell) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    tris, kinds = z.triangles()
+    codes = np.array([PATCHES.index(k) for k in kinds], dtype=np.intp)
+    return z.vertices, tris, codes
+
+
+def merge_meshes(meshes: list[tuple[np.ndarray, np.ndarray, np.ndarray]], union: bool = True
+                 ) -> tuple[np.ndarray, np.ndarray, np.ndarray, list[str]]:
+    """Union (or plain concatenation) of closed meshes, keeping each triangle's class.
+
+    Parameters
+    ----------
+    meshes : list of (vertices (n, 3) float, triangles (t, 3) int, class codes (t,) int)
+
+    Returns
+    -------
+    vertices (n, 3) float, triangles (t, 3) int, codes (t,) int, warnings
+    """
+    warnings: list[str] = []
+    if union and len(meshes) > 1:
+        import manifold3d as m3
+
+        code_of: list[int] = []
+        parts = []
+        ok = True
+        # weld nearly-coincident vertices of different parts first: the union would keep
+        # them as micro-edges and sliver triangles
+        allv = np.concatenate([m[0] for m in meshes])
+        welded, idx = weld(allv, CROSS_WELD_TOL)
+        k = 0
+        snapped = []
+        for v, t, c in meshes:
+            snapped.append((welded[idx[k:k + len(v)]], t, c))
+            k += len(v)
+        for v, t, c in snapped:
+            ids = np.arange(len(code_of), len(code_of) + len(t), dtype=np.uint64)
+            code_of.extend(c.tolist())
+            mf = m3.Manifold(m3.Mesh64(vert_properties=np.ascontiguousarray(v, dtype=np.float64),
+                                       tri_verts=np.ascontiguousarray(t, dtype=np.uint64), face_id=ids))
+            if mf.status() != m3.Error.NoError:
+                ok = False
+                warnings.append(f"a part is not a closed 2-manifold ({mf.status().name}); parts not merged")
+                break
+            parts.append(mf)
+        if ok:
+            # simplify removes the slivers left where coplanar faces of touching parts met
+            u = m3.Manifold.batch_boolean(parts, m3.OpType.Add).simplify(SIMPLIFY_TOL)
+            out = u.to_mesh64()
+            v = np.asarray(out.vert_properties)[:, :3].astype(np.float64)
+            t = np.asarray(out.tri_verts).astype(np.intp)
+            c = np.asarray(code_of, dtype=np.intp)[np.asarray(out.face_id).astype(np.intp)]
+            v, t, c = collapse_short_edges(v, t, c, CROSS_WELD_TOL)
+            v, moved = separate_touching(v, t)
+            if moved:
+                warnings.append(f"{moved} vertices where merged parts only touch were moved "
+                                f"{SEPARATION * 1000:g} mm apart")
+            return v, t, c, warnings
+    vs, ts, cs, k = [], [], [], 0
+    for v, t, c in meshes:
+        vs.append(v)
+        ts.append(t + k)
+        cs.append(c)
+        k += len(v)
+    if not vs:
+        return np.zeros((0, 3)), np.zeros((0, 3), dtype=np.intp), np.zeros(0, dtype=np.intp), warnings
+    return np.concatenate(vs), np.concatenate(ts), np.concatenate(cs), warnings
+
+
+def collapse_short_edges(v: np.ndarray, t: np.ndarray, c: np.ndarray, tol: float
+                         ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Merge vertices joined by an edge shorter than ``tol`` (m) and drop collapsed triangles.
+
+    Unions leave micro-edges where a vertex of one part lies a few micrometres off a face of
+    another; the triangles around them are slivers that STL readers see as degenerate.
+    """
+    from scipy.cluster.hierarchy import DisjointSet
+
+    e = np.concatenate([t[:, [0, 1]], t[:, [1, 2]], t[:, [2, 0]]])
+    short = e[np.linalg.norm(v[e[:, 0]] - v[e[:, 1]], axis=1) < tol]
+    if len(short) == 0:
+        return v, t, c
+    ds = DisjointSet(range(len(v)))
+    for a, b in short:
+        ds.merge(int(a), int(b))
+    root = np.array([ds[i] for i in range(len(v))])
+    t2 = root[t]
+    keep = (t2[:, 0] != t2[:, 1]) & (t2[:, 1] != t2[:, 2]) & (t2[:, 0] != t2[:, 2])
+    # a collapse can fold two triangles onto the same three vertices (a fin): drop both
+    key = np.sort(t2, axis=1)
+    _, first, counts = np.unique(key[keep], axis=0, return_inverse=True, return_counts=True)
+    kept = np.nonzero(keep)[0]
+    keep[kept[counts[first.ravel()] > 1]] = False
+    used, inv = np.unique(t2[keep], return_inverse=True)
+    return v[used], inv.reshape(-1, 3), c[keep]
+
+
+def separate_touching(v: np.ndarray, t: np.ndarray, dist: float | None = None) -> tuple[np.ndarray, int]:
+    """Move apart distinct vertices that share a position (bodies touching at an edge or point).
+
+    A union keeps such vertices distinct, so the mesh is 2-manifold by its indices, but an
+    STL stores positions only and readers would merge them into non-manifold edges. Each
+    copy is moved ``dist`` (m) into its own sheet, towards the centroid of its triangles.
+
+    Returns
+    -------
+    vertices (n, 3) float, number of vertices moved
+    """
+    from scipy.spatial import cKDTree
+
+    dist = SEPARATION if dist is None else dist
+    pairs = cKDTree(v).query_pairs(1e-6, output_type="ndarray")
+    if len(pairs) == 0:
+        return v, 0
+    v = v.copy()
+    idx = np.unique(pairs.ravel())
+    cent = v[t].mean(axis=1)
+    for i in idx:
+        tri = np.nonzero(np.any(t == i, axis=1))[0]
+        if len(tri) == 0:
+            continue
+        d = cent[tri].mean(axis=0) - v[i]
+        L = np.linalg.norm(d)
+        if L > 0:
+            v[i] = v[i] + d / L * dist
+    return v, len(idx)
+
+
+def _facet_normals(v: np.ndarray, t: np.ndarray) -> np.ndarray:
+    n = np.cross(v[t[:, 1]] - v[t[:, 0]], v[t[:, 2]] - v[t[:, 0]])
+    L = np.linalg.norm(n, axis=1)
+    L[L == 0] = 1.0
+    return n / L[:, None]
+
+
+def write_ascii(path: Path, v: np.ndarray, t: np.ndarray, codes: np.ndarray) -> None:
+    """ASCII STL with one ``solid <class>`` per patch."""
+    n = _facet_normals(v, t)
+    with open(path, "w", encoding="ascii") as f:
+        for ci, name in enumerate(PATCHES):
+            sel = np.nonzero(codes == ci)[0]
+            if len(sel) == 0:
+                continue
+            f.write(f"solid {name}\n")
+            for k in sel:
+                a, b, c = v[t[k]]
+                f.write(f"  facet normal {n[k, 0]:.6e} {n[k, 1]:.6e} {n[k, 2]:.6e}\n    outer loop\n"
+                        f"      vertex {a[0]:.6f} {a[1]:.6f} {a[2]:.6f}\n"
+                        f"      vertex {b[0]:.6f} {b[1]:.6f} {b[2]:.6f}\n"
+                        f"      vertex {c[0]:.6f} {c[1]:.6f} {c[2]:.6f}\n    endloop\n  endfacet\n")
+            f.write(f"endsolid {name}\n")
+
+
+def write_binary(path: Path, v: np.ndarray, t: np.ndarray, codes: np.ndarray) -> None:
+    """Binary STL; the attribute word of each triangle is its patch index."""
+    order = np.argsort(codes, kind="stable")
+    t, codes = t[order], codes[order]
+    rec = np.zeros(len(t), dtype=[("n", "<f4", 3), ("v", "<f4", (3, 3)), ("a", "<u2")])
+    rec["n"] = _facet_normals(v, t)
+    rec["v"] = v[t]
+    rec["a"] = codes
+    header = b"lod2energy STL; patches: " + ",".join(PATCHES).encode()
+    with open(path, "wb") as f:
+        f.write(header.ljust(80, b" ")[:80])
+        f.write(struct.pack("<I", len(t)))
+        f.write(rec.tobytes())
+
+
+def write(buildings: Iterable[Building], outdir: str | Path, options: StlOptions | None = None,
+          crs: str | None = None) -> list[ExportResult]:
+    """Write STL files (and their sidecar JSON) and self-check them.
+
+    Returns
+    -------
+    list of ExportResult
+        One per STL file.
+    """
+    options = options or StlOptions()
+    if options.mode not in ("building", "dataset"):
+        raise ParameterError(f"--stl-mode must be 'building' or 'dataset', not {options.mode!r}")
+    out = Path(outdir)
+    out.mkdir(parents=True, exist_ok=True)
+    blist = [b for b in buildings if b.type in BUILDING_TYPES and b.energy_objects(options.lod)]
+    groups = [[b] for b in blist] if options.mode == "building" else ([blist] if blist else [])
+    used: set[str] = set()
+    results = []
+    for g in groups:
+        offset = local_origin(g)
+        meshes, warnings = [], []
+        for b in g:
+            for z in zone_shells(b, offset, options.lod):
+                warnings.extend(w for w in z.warnings if "uValue" not in w)
+                meshes.append(_zone_mesh(z))
+        v, t, c, w = merge_meshes(meshes, options.union)
+        warnings.extend(w)
+        stem = safe_stem(g[0].id if len(g) == 1 else "dataset", used)
+        path = output_path(out, stem, ".stl")
+        (write_ascii if options.ascii else write_binary)(path, v, t, c)
+        sidecar = {
+            "building_ids": [b.id for b in g],
+            "offset": [float(x) for x in offset],
+            "crs": crs,
+            "units": "m",
+            "format": "ascii" if options.ascii else "binary",
+            "patches": {p: int((c == i).sum()) for i, p in enumerate(PATCHES) if (c == i).any()},
+            "patch_index": {p: i for i, p in enumerate(PATCHES)},
+            "merged": bool(options.union and not w),
+        }
+        output_path(out, stem, ".json").write_text(json.dumps(sidecar, indent=1), encoding="utf-8")
+        problems = self_check(path)
+        stats = {"triangles": int(len(t)), "parts": len(meshes),
+                 "volume_m3": round(signed_volume(v, t), 3) if len(t) else 0.0}
+        results.append(ExportResult(tuple(b.id for b in g), str(path), not problems, tuple(problems),
+                                    tuple(float(x) for x in offset), tuple(warnings), stats))
+    return results
+
+
+def read_stl(path: str | Path) -> tuple[np.ndarray, np.ndarray, list[str]]:
+    """Triangles ``(t, 3, 3)``, their patch index ``(t,)`` and the patch names of an STL file."""
+    data = Path(path).read_bytes()
+    if len(data) >= 84:
+        n = struct.unpack("<I", data[80:84])[0]
+        if 84 + 50 * n == len(data):
+            rec = np.frombuffer(data[84:], dtype=[("n", "<f4", 3), ("v", "<f4", (3, 3)), ("a", "<u2")], count=n)
+            return rec["v"].astype(np.float64), rec["a"].astype(np.intp), list(PATCHES)
+    tris, codes, names = [], [], []
+    cur: list[list[float]] = []
+    for line in data.decode("ascii", errors="replace").splitlines():
+        w = line.split()
+        if not w:
+            continue
+        if w[0] == "solid":
+            names.append(w[1] if len(w) > 1 else f"patch{len(names)}")
+        elif w[0] == "vertex":
+            cur.append([float(x) for x in w[1:4]])
+            if len(cur) == 3:
+                tris.append(cur)
+                codes.append(len(names) - 1)
+                cur = []
+    return np.asarray(tris, dtype=np.float64).reshape(-1, 3, 3), np.asarray(codes, dtype=np.intp), names
+
+
+def self_check(path: str | Path) -> list[str]:
+    """Re-read an STL and check it is a closed, consistently wound, outward surface.
+
+    Uses trimesh after merging coincident vertices: watertight (every edge in exactly two
+    triangles), winding consistent, positive volume, no degenerate triangle; patches named.
+
+    Returns
+    -------
+    list of str
+        Problems (empty when fine).
+    """
+    import trimesh
+
+    try:
+        tris, codes, names = read_stl(path)
+    except (OSError, ValueError) as e:
+        return [f"cannot read {Path(path).name}: {e}"]
+    if len(tris) == 0:
+        return ["no triangles"]
+    problems = []
+    mesh = trimesh.Trimesh(vertices=tris.reshape(-1, 3), faces=np.arange(len(tris) * 3).reshape(-1, 3),
+                           process=False)
+    mesh.merge_vertices(digits_vertex=5)
+    area = mesh.area_faces
+    if np.any(area <= 1e-10):
+        problems.append(f"{int(np.sum(area <= 1e-10))} degenerate triangle(s)")
+    if not mesh.is_watertight:
+        problems.append("not watertight")
+    if not mesh.is_winding_consistent:
+        problems.append("inconsistent winding")
+    vol = float(mesh.volume)
+    if not vol > 0:
+        problems.append(f"not outward: volume {vol:.3f} m3")
+    if len(set(codes.tolist())) and not names:
+        problems.append("no patch names")
+    return problems
