@@ -226,16 +226,18 @@ def test_denhaag_polygon_defects_match_val3dity_report(denhaag_path):
         pytest.skip("reference report not available")
     theirs = {(e["id"], e["code"], e["info"]) for f in json.loads(ref.read_text())["features"]
               for e in f.get("errors", []) if e["code"] < 300}
-    mine = set()
     _, feats = read(str(denhaag_path))
+    where, items = [], []
     for b in feats:
         for o in b.objects:
             for gi, g in enumerate(o.geometries):
-                if not g.is_polygonal:
-                    continue
-                for si, hi, sh in g.iter_shells():
-                    for f, code, info in check_polygons(b.vertices, sh):
-                        mine.add((f"coid={o.id}|" + g.location(gi, si, hi, f), code, info))
+                if g.is_polygonal:
+                    for si, hi, sh in g.iter_shells():
+                        where.append((o.id, gi, si, hi, g))
+                        items.append((b.vertices, sh))
+    mine = set()
+    for (oid, gi, si, hi, g), found in zip(where, polygon.check_polygons_multi(items)):
+        mine.update((f"coid={oid}|" + g.location(gi, si, hi, f), code, info) for f, code, info in found)
     assert len(theirs) > 100
     assert mine == theirs
 
