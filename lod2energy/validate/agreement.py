@@ -90,6 +90,39 @@ def compare(ours: Mapping[str, Iterable[int]], report: Mapping,
     return Agreement(n, same_v / n if n else 1.0, same_c / n if n else 1.0, dis, missing)
 
 
+OWN_FEATURE_TYPES = ("Building", "BuildingPart")
+"""Descendants of these types belong to their parent's feature; val3dity reports other
+descendants (BuildingInstallation, ...) as features of their own."""
+
+
+def split_by_feature(building, defects) -> dict[str, set[int]]:
+    """Distinct val3dity codes per feature as val3dity reports them.
+
+    A Building and its BuildingParts form one feature; any other descendant (e.g. a
+    BuildingInstallation) is a feature of its own, with the defects located on it.
+
+    Parameters
+    ----------
+    building : Building
+    defects : iterable of Defect
+
+    Returns
+    -------
+    dict id -> set of int (every feature present, empty set = valid)
+    """
+    owner = {o.id: (building.id if (o.type in OWN_FEATURE_TYPES or o.id == building.id) else o.id)
+             for o in building.objects}
+    out: dict[str, set[int]] = {fid: set() for fid in owner.values()}
+    out.setdefault(building.id, set())
+    for d in defects:
+        if d.code >= 1000:
+            continue
+        coid = d.location.split("|", 1)[0]
+        coid = coid[5:] if coid.startswith("coid=") else ""
+        out[owner.get(coid, building.id)].add(d.code)
+    return out
+
+
 def validate_codes(path: str, tol: Tolerances = DEFAULT, chunk_size: int = 256) -> dict[str, set[int]]:
     """Read a file and validate every feature: ``{first-level id: set of codes}``.
 
@@ -105,7 +138,8 @@ def validate_codes(path: str, tol: Tolerances = DEFAULT, chunk_size: int = 256) 
 
     def flush():
         for b, defects in zip(chunk, validate_buildings(chunk, tol)):
-            out[b.id] = {d.code for d in defects if d.code < 1000}
+            for fid, codes in split_by_feature(b, defects).items():
+                out[fid] = codes
         chunk.clear()
     for b in feats:
         if hasattr(b, "objects"):
@@ -116,6 +150,15 @@ def validate_codes(path: str, tol: Tolerances = DEFAULT, chunk_size: int = 256) 
             out.setdefault(b.id, set()).add(int(b.code))
     flush()
     return out
+
+
+def report_tolerances(report: Mapping) -> Tolerances:
+    """The tolerances a val3dity report was made with (its ``parameters``)."""
+    p = report.get("parameters", {}) or {}
+    return Tolerances(snap_tol=p.get("snap_tol", DEFAULT.snap_tol),
+                      planarity_d2p_tol=p.get("planarity_d2p_tol", DEFAULT.planarity_d2p_tol),
+                      planarity_n_tol=p.get("planarity_n_tol", DEFAULT.planarity_n_tol),
+                      overlap_tol=p.get("overlap_tol", DEFAULT.overlap_tol))
 
 
 def agreement_with_report(report_path: str, shared_root: str | None = None, tol: Tolerances | None = None,
@@ -140,11 +183,7 @@ def agreement_with_report(report_path: str, shared_root: str | None = None, tol:
         report = json.load(f)
     root = shared_root or os.path.dirname(os.path.dirname(os.path.abspath(report_path)))
     if tol is None:
-        p = report.get("parameters", {})
-        tol = Tolerances(snap_tol=p.get("snap_tol", DEFAULT.snap_tol),
-                         planarity_d2p_tol=p.get("planarity_d2p_tol", DEFAULT.planarity_d2p_tol),
-                         planarity_n_tol=p.get("planarity_n_tol", DEFAULT.planarity_n_tol),
-                         overlap_tol=p.get("overlap_tol", DEFAULT.overlap_tol))
+        tol = report_tolerances(report)
     t0 = time.perf_counter()
     ours = validate_codes(os.path.join(root, report["input_file"]), tol)
     dt = time.perf_counter() - t0
