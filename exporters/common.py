@@ -546,17 +546,25 @@ def signed_volume(vertices: np.ndarray, tris: np.ndarray) -> float:
     return float(np.einsum("ij,ij->i", a, np.cross(b, cc)).sum() / 6.0)
 
 
-def _split_t_junctions(v: np.ndarray, polys: list[list[int]], tol: float) -> list[list[int]]:
-    """Insert into each polygon edge the vertices lying on it (T-junctions), in order."""
+def _split_t_junctions(v: np.ndarray, polys: list[list[int]], tol: float,
+                       only_unmatched: bool = False) -> list[list[int]]:
+    """Insert into polygon edges the vertices lying on them (T-junctions), in order.
+
+    With ``only_unmatched`` only edges without a reversed twin are split (as EnergyPlus
+    does when a zone is not enclosed), so that shared edges and diagonals stay untouched.
+    """
     from scipy.spatial import cKDTree
 
     tree = cKDTree(v)
+    directed = {(poly[k], poly[(k + 1) % len(poly)]) for poly in polys for k in range(len(poly))}
     out = []
     for poly in polys:
         new = []
         for k in range(len(poly)):
             a, b = poly[k], poly[(k + 1) % len(poly)]
             new.append(a)
+            if only_unmatched and (b, a) in directed:
+                continue
             pa, pb = v[a], v[b]
             d = pb - pa
             L = float(np.linalg.norm(d))
@@ -604,7 +612,7 @@ def check_closed_outward(polygons: Sequence[np.ndarray], tol: float = 1e-3,
         k += len(p)
         if len(set(ring)) >= 3:
             polys.append(ring)
-    polys = _split_t_junctions(v, polys, t_tol)
+    polys = _split_t_junctions(v, polys, t_tol, only_unmatched=True)
     directed: dict[tuple[int, int], int] = {}
     for poly in polys:
         for i in range(len(poly)):

