@@ -83,6 +83,13 @@ def _overlaps(a, b, overlap_tol: float) -> bool:
     return True
 
 
+def _overlap_by_vertices(vertices: np.ndarray, t1: np.ndarray, t2: np.ndarray) -> bool:
+    """Fallback when manifold3d rejects a mesh: a vertex of one solid strictly inside the other."""
+    w12 = winding_number(vertices[np.unique(t1)], vertices, t2)
+    w21 = winding_number(vertices[np.unique(t2)], vertices, t1)
+    return bool((np.abs(w12) > 0.75).any() or (np.abs(w21) > 0.75).any())
+
+
 def _positive_parts(man) -> int:
     """Number of connected solid pieces (cavity boundaries are not pieces)."""
     return sum(1 for p in man.decompose() if p.volume() > VOLUME_EPS)
@@ -313,8 +320,10 @@ def check_parts_overlap(building: Building, tol: Tolerances = DEFAULT) -> list[t
                 if k not in mans:
                     mans[k] = to_manifold(v, tris[k], origin)
             if mans[i] is None or mans[j] is None:
-                continue
-            if _overlaps(mans[i], mans[j], tol.overlap_tol):
+                overlap = _overlap_by_vertices(v, tris[i], tris[j])
+            else:
+                overlap = _overlaps(mans[i], mans[j], tol.overlap_tol)
+            if overlap:
                 (a, ga, _), (b, gb, _) = items[i], items[j]
                 out.append((f"coid={a}|geom={ga}&&coid={b}|geom={gb}", 601, f"geometries are lod={lod}"))
     return out
