@@ -314,3 +314,18 @@ def test_bbox_pairs_and_triangle_intersections():
     # sharing an edge without folding: no intersection
     v2 = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [1, 1, 0.5]], float)
     assert triangle_pairs_intersect(v2, np.array([[0, 1, 2], [1, 3, 2]]), np.array([[0, 1]])).tolist() == [False]
+
+
+def test_601_between_a_composite_solid_part_and_a_solid_part():
+    comp = _merge([box(2, 2, 2), box(2, 2, 2, origin=(2, 0, 0))], "CompositeSolid", id="c")
+    solo = box(2, 2, 2, origin=(3, 1, 0))                       # overlaps the second member
+    off = len(comp.vertices)
+    sh = solo.root.geometries[0].solids[0].shells[0]
+    moved = Shell(tuple(Surface.from_lists([r + off for r in s.rings]) for s in sh.surfaces))
+    objs = (CityObject("b", "Building", (), children=("p1", "p2")),
+            CityObject("p1", "BuildingPart", comp.root.geometries, parents=("b",)),
+            CityObject("p2", "BuildingPart", (Geometry("Solid", "2", (Solid((moved,)),)),), parents=("b",)))
+    b = Building("b", "Building", np.vstack([comp.vertices, solo.vertices]), objs)
+    assert [d.location for d in validate_building(b)] == ["coid=p1|geom=0&&coid=p2|geom=0"]
+    far = Building("b", "Building", np.vstack([comp.vertices, solo.vertices + [0, 5, 0]]), objs)
+    assert codes(far) == set()

@@ -83,6 +83,20 @@ def _overlaps(a, b, overlap_tol: float) -> bool:
     return True
 
 
+def _geometry_manifold(vertices: np.ndarray, g: Geometry, tol: Tolerances, origin: np.ndarray):
+    """Manifold of a Solid, or the union of a CompositeSolid's members (None if rejected)."""
+    mans = []
+    for so in g.solids:
+        ts = solid_triangles(vertices, so, tol)
+        m = to_manifold(vertices, np.concatenate(ts) if len(ts) > 1 else ts[0], origin)
+        if m is None:
+            return None
+        mans.append(m)
+    if not mans:
+        return None
+    return mans[0] if len(mans) == 1 else _m3d.Manifold.batch_boolean(mans, _m3d.OpType.Add)
+
+
 def _overlap_by_vertices(vertices: np.ndarray, t1: np.ndarray, t2: np.ndarray) -> bool:
     """Fallback when manifold3d rejects a mesh: a vertex of one solid strictly inside the other."""
     w12 = winding_number(vertices[np.unique(t1)], vertices, t2)
@@ -318,7 +332,7 @@ def check_parts_overlap(building: Building, tol: Tolerances = DEFAULT) -> list[t
                 continue
             for k in (i, j):
                 if k not in mans:
-                    mans[k] = to_manifold(v, tris[k], origin)
+                    mans[k] = _geometry_manifold(v, items[k][2], tol, origin)
             if mans[i] is None or mans[j] is None:
                 overlap = _overlap_by_vertices(v, tris[i], tris[j])
             else:
