@@ -7,10 +7,17 @@ Contracts of the level modules (each returns plain tuples; this module adds loca
 
 - ``polygon.check_polygons(vertices, shell, tol) -> list[(face_index, code, info)]``
 - ``shell.check_shell(vertices, shell, tol, volumetric) -> list[(face_index|None, code, info)]``
+  (``volumetric`` False: CompositeSurface rules; batched: ``shell.check_shells_multi``)
 - ``solid.check_solid(vertices, solid, tol) -> list[(shell_index|None, code, info)]``
   (interior shells: 401-405; 405 also for an exterior shell oriented inwards)
 - ``solid.check_multisolid(vertices, geometry, tol) -> list[(solid_index|None, code, info)]``
 - ``solid.check_parts_overlap(building, tol) -> list[(location, code, info)]``
+
+As in val3dity 2.6, every geometry of every LoD is validated; MultiSurfaces get the polygon
+checks only; 601 runs only when all the building's geometries are valid (reference
+reports never show 601 next to another code in one feature). :func:`validate_buildings`
+gives the same results as :func:`validate_building` per building, with polygon and shell
+checks vectorised across buildings (feed chunks of a few hundred for speed).
 """
 from __future__ import annotations
 
