@@ -92,3 +92,24 @@ def test_installations_are_features_of_their_own():
     got = split_by_feature(b, [Defect(203, "coid=B_1|geom=0|shell=0|face=1"),
                                Defect(405, "coid=I|geom=0|shell=0|face="), Defect(1003, "coid=B|geom=0")])
     assert got == {"B": {203}, "I": {405}}
+
+
+def test_303_307_faces_match_val3dity(results):
+    """Where val3dity names faces refused while building a shell, we name the same faces."""
+    from lod2energy.io import read
+    from lod2energy.validate.checks import validate_buildings
+
+    checked = 0
+    for report, _, _ in results.values():
+        want = {(e["code"], e["id"]) for f in report["features"] for e in f["errors"] if e["code"] in (303, 307)
+                and e["id"].rsplit("face=", 1)[-1] != ""}
+        if not want:
+            continue
+        _, feats = read(str(SHARED / report["input_file"]))
+        bs = [b for b in feats if hasattr(b, "objects")]
+        got = {(d.code, d.location) for ds in validate_buildings(bs, report_tolerances(report)) for d in ds
+               if d.code in (303, 307)}
+        assert want <= got, sorted(want - got)
+        checked += len(want)
+    if not checked:
+        pytest.skip("no face-located 303/307 in the reference reports")

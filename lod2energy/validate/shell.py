@@ -210,33 +210,73 @@ def replay_construction(tris: np.ndarray, face_of_tri: np.ndarray) -> list[tuple
     list of (int, int)
     """
     used: set[tuple[int, int]] = set()
-    border: dict[int, int] = {}          # vertex -> incident edges used in one direction only
-    degree: dict[int, int] = {}          # vertex -> incident edges
+    # per vertex: its fans (triangles around it linked through shared edges), as CGAL's
+    # halfedge structure holds them; CGAL walks the fan of the last face added at a vertex
+    edge_fan: dict[int, dict[int, int]] = {}      # v -> {neighbour: fan id}
+    fan_count: dict[int, dict[int, int]] = {}     # fan id -> {neighbour: faces at that edge}
+    last_fan: dict[int, int] = {}
+    next_id = [0]
 
     def closed(v: int) -> bool:
-        return degree.get(v, 0) > 0 and border.get(v, 0) == 0
+        f = last_fan.get(v)
+        if f is None:
+            return False
+        return all(c >= 2 for c in fan_count[f].values())
+
+    def closes_one_of_many(v: int, x: int, y: int) -> bool:
+        """Would the wedge (x, v, y) close a fan of v while v keeps another fan?"""
+        ef = edge_fan.get(v)
+        if not ef:
+            return False
+        fx, fy = ef.get(x), ef.get(y)
+        if fx is None or fy is None:
+            return False                          # a new border edge at v: stays open
+        fans = set(ef.values())
+        counts = dict(fan_count[fx])
+        if fy != fx:
+            for n, k in fan_count[fy].items():
+                counts[n] = counts.get(n, 0) + k
+            fans.discard(fy)
+        counts[x] += 1
+        counts[y] += 1
+        return len(fans) > 1 and all(k >= 2 for k in counts.values())
 
     def ok(a: int, b: int, c: int) -> bool:
         if a == b or b == c or a == c:
             return False
         if (a, b) in used or (b, c) in used or (c, a) in used:
             return False
-        return not (closed(a) or closed(b) or closed(c))
+        if closed(a) or closed(b) or closed(c):
+            return False
+        return not (closes_one_of_many(a, b, c) or closes_one_of_many(b, c, a) or closes_one_of_many(c, a, b))
+
+    def add_wedge(v: int, x: int, y: int) -> None:
+        ef = edge_fan.setdefault(v, {})
+        fx, fy = ef.get(x), ef.get(y)
+        if fx is None and fy is None:
+            f = next_id[0]
+            next_id[0] += 1
+            fan_count[f] = {}
+        elif fx is None or fy is None or fx == fy:
+            f = fx if fx is not None else fy
+        else:                                     # the face joins two fans
+            f = fx
+            for n, k in fan_count.pop(fy).items():
+                fan_count[f][n] = fan_count[f].get(n, 0) + k
+                ef[n] = f
+        for n in (x, y):
+            ef[n] = f
+            fan_count[f][n] = fan_count[f].get(n, 0) + 1
+        last_fan[v] = f
 
     out: list[tuple[int, int]] = []
     seen: set[tuple[int, int]] = set()
     for (a, b, c), f in zip(tris.tolist(), face_of_tri.tolist()):
         if ok(a, b, c):
-            for x, y in ((a, b), (b, c), (c, a)):
-                used.add((x, y))
-                if (y, x) in used:           # the edge gets its second face
-                    border[x] -= 1
-                    border[y] -= 1
-                else:                        # a new border edge
-                    border[x] = border.get(x, 0) + 1
-                    border[y] = border.get(y, 0) + 1
-                    degree[x] = degree.get(x, 0) + 1
-                    degree[y] = degree.get(y, 0) + 1
+            used.update(((a, b), (b, c), (c, a)))
+            add_wedge(a, b, c)
+            add_wedge(b, c, a)
+            add_wedge(c, a, b)
             continue
         code = 307 if ok(a, c, b) else 303
         if (f, code) not in seen:
