@@ -1,0 +1,10 @@
+"""Repair ladder: turn defective building geometry into closed, outward, clean Solids.
+
+One module per stage (cleanup, orientation, holefill, refill, alphashape, footprint, hull),
+the ladder in :mod:`~lod2energy.repair.pipeline`, fidelity in :mod:`~lod2energy.repair.metrics`.
+"""
+from lod2energy.repair.pipeline import (  # noqa: F401
+    DEFAULT_TIMEOUT, STAGES, dataset_table, repair_building, repair_features, repair_info,
+)
+
+__all__ = ["DEFAULT_TIMEOUT", "STAGES", "dataset_table", "repair_building", "repair_features", "repair_info"]

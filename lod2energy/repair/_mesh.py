@@ -104,13 +104,19 @@ def face_normal(V: np.ndarray, f: Face) -> np.ndarray:
     return n / ln if ln > 0 else np.zeros(3)
 
 
+def _cross3(a, b) -> np.ndarray:
+    return np.array([a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]])
+
+
 def plane_basis(n: np.ndarray) -> np.ndarray:
     """(2, 3) orthonormal basis of the plane with normal ``n`` (right-handed with n)."""
-    n = n / (np.linalg.norm(n) or 1.0)
-    a = np.array([1.0, 0, 0]) if abs(n[0]) < 0.9 else np.array([0, 1.0, 0])
-    u = np.cross(n, a)
-    u /= np.linalg.norm(u)
-    v = np.cross(n, u)
+    n = np.asarray(n, dtype=np.float64)
+    ln = float(np.sqrt(n @ n)) or 1.0
+    n = n / ln
+    a = (1.0, 0.0, 0.0) if abs(n[0]) < 0.9 else (0.0, 1.0, 0.0)
+    u = _cross3(n, a)
+    u /= np.sqrt(u @ u)
+    v = _cross3(n, u)
     return np.vstack([u, v])
 
 
@@ -146,6 +152,9 @@ def planarity(V: np.ndarray, f: Face) -> tuple[float, float]:
     return d, dev
 
 
+_TRI_CACHE: dict = {}
+
+
 def triangulate_face(V: np.ndarray, f: Face) -> np.ndarray:
     """Triangles of a polygon (with holes) by ear clipping in its own plane.
 
@@ -154,6 +163,21 @@ def triangulate_face(V: np.ndarray, f: Face) -> np.ndarray:
     (t, 3) int
         Indices into ``V``, oriented like the face.
     """
+    if len(f.rings) == 1 and len(f.rings[0]) == 3:
+        return np.array([f.rings[0]], dtype=np.int64)
+    key = (f.rings, V[[i for r in f.rings for i in r]].tobytes())
+    hit = _TRI_CACHE.get(key)
+    if hit is not None:
+        return hit
+    t = _triangulate_face(V, f)
+    t.setflags(write=False)
+    if len(_TRI_CACHE) > 100000:
+        _TRI_CACHE.clear()
+    _TRI_CACHE[key] = t
+    return t
+
+
+def _triangulate_face(V: np.ndarray, f: Face) -> np.ndarray:
     rings = [list(r) for r in f.rings if len(r) >= 3]
     if not rings:
         return np.zeros((0, 3), dtype=np.int64)

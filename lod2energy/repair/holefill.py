@@ -174,31 +174,51 @@ def _planar_polygon(V: np.ndarray, loop: list[int], tol: Tolerances) -> bool:
 def best_chord(V: np.ndarray, loop: list[int], tol: Tolerances) -> tuple[int, int] | None:
     """Chord ``(i, j)`` splitting a non-planar loop into the most planar pair of loops.
 
-    Both halves planar beats one, which beats none; ties go to the smallest summed
-    distance to plane. None when no chord makes a half planar.
+    Both halves planar beats one, which beats none; then fewer vertices left in non-planar
+    halves; ties go to the smallest summed distance to plane. None when no chord makes a
+    half planar. Every chord is scored at once (prefix sums of the points' moments).
     """
     n = len(loop)
-    P = V[loop]
-    best, best_key = None, None
+    P = V[loop] - V[loop].mean(axis=0)
+    ii, jj = np.triu_indices(n, 2)
+    keep = ~((ii == 0) & (jj == n - 1))
+    ii, jj = ii[keep], jj[keep]
+    la = np.asarray(loop)
+    keep = la[ii] != la[jj]
+    ii, jj = ii[keep], jj[keep]
+    if len(ii) == 0:
+        return None
+    S1 = np.vstack([np.zeros(3), np.cumsum(P, axis=0)])
+    O = P[:, :, None] * P[:, None, :]
+    S2 = np.concatenate([np.zeros((1, 3, 3)), np.cumsum(O, axis=0)])
+    k = np.arange(n)
+    ma = (k[None, :] >= ii[:, None]) & (k[None, :] <= jj[:, None])   # chord x point: in half a
+    mb = ~ma
+    mb[np.arange(len(ii)), ii] = True
+    mb[np.arange(len(ii)), jj] = True
+    out = []
+    for mask, s1, s2, cnt in (
+            (ma, S1[jj + 1] - S1[ii], S2[jj + 1] - S2[ii], (jj - ii + 1).astype(float)),
+            (mb, S1[n] - (S1[jj + 1] - S1[ii]) + P[ii] + P[jj],
+             S2[n] - (S2[jj + 1] - S2[ii]) + O[ii] + O[jj], (n - (jj - ii + 1) + 2).astype(float))):
+        mean = s1 / cnt[:, None]
+        C = s2 / cnt[:, None, None] - mean[:, :, None] * mean[:, None, :]
+        _, vec = np.linalg.eigh(C)
+        nrm = vec[:, :, 0]
+        d = np.abs(P @ nrm.T - (mean * nrm).sum(axis=1)[None, :]).T  # chord x point
+        d = np.where(mask, d, 0.0).max(axis=1)
+        d = np.where(cnt <= 3, 0.0, d)
+        out.append((d, cnt))
+    (da, na), (db, nb) = out
     lim = tol.planarity_d2p_tol * 0.5
-    for i in range(n):
-        for j in range(i + 2, n):
-            if i == 0 and j == n - 1:
-                continue
-            if loop[i] == loop[j]:
-                continue
-            a = P[i:j + 1]
-            b = np.vstack([P[j:], P[:i + 1]])
-            da, db = _d2p(a), _d2p(b)
-            n_ok = (da <= lim) + (db <= lim)
-            if n_ok == 0:
-                continue
-            # prefer big planar pieces: fewer left-over vertices in the non-planar half
-            left = (0 if da <= lim else len(a)) + (0 if db <= lim else len(b))
-            key = (-n_ok, left, da + db)
-            if best_key is None or key < best_key:
-                best, best_key = (i, j), key
-    return best
+    oka, okb = da <= lim, db <= lim
+    n_ok = oka.astype(int) + okb.astype(int)
+    if not n_ok.any():
+        return None
+    left = np.where(oka, 0, na) + np.where(okb, 0, nb)
+    order = np.lexsort((da + db, left, -n_ok))
+    b = order[0]
+    return int(ii[b]), int(jj[b])
 
 
 def fill_loop(V: np.ndarray, loop: list[int], tol: Tolerances, depth: int = 0) -> tuple[list[Face], np.ndarray]:

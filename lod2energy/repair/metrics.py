@@ -78,7 +78,7 @@ def _grid(lo, hi, n: int) -> np.ndarray:
     return np.column_stack([x.ravel() for x in g])
 
 
-def iou_sampled(Va, Ta, Vb, Tb, n: int = 6000) -> float:
+def iou_sampled(Va, Ta, Vb, Tb, n: int = 3000) -> float:
     """IoU of two envelopes by winding numbers on a grid of about ``n`` points."""
     P = np.vstack([Va[np.unique(Ta)], Vb[np.unique(Tb)]])
     lo, hi = P.min(axis=0), P.max(axis=0)
