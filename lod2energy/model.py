@@ -249,9 +249,17 @@ class Building:
         return MappingProxyType({o.id: o for o in self.objects})
 
     @functools.cached_property
+    def envelope_objects(self) -> tuple[CityObject, ...]:
+        """Objects whose geometry forms the envelope: for a Building, itself and its
+        BuildingParts (not installations or other descendants); otherwise every object."""
+        if self.type in BUILDING_TYPES:
+            return tuple(o for o in self.objects if o.type in BUILDING_TYPES)
+        return self.objects
+
+    @functools.cached_property
     def lods(self) -> tuple[str, ...]:
-        """All LoDs present on polygonal geometries, lowest first."""
-        s = {g.lod for o in self.objects for g in o.geometries if g.is_polygonal and g.lod is not None}
+        """LoDs present on the envelope objects' polygonal geometries, lowest first."""
+        s = {g.lod for o in self.envelope_objects for g in o.geometries if g.is_polygonal and g.lod is not None}
         return tuple(sorted(s, key=lod_key))
 
     def default_lod(self) -> str | None:
@@ -263,13 +271,12 @@ class Building:
     def energy_objects(self, lod: str | None = None) -> list[tuple[CityObject, int, Geometry]]:
         """The geometries that describe the building's envelope at ``lod``.
 
-        Returns one ``(object, geom_index, geometry)`` per object (parts included) that has
-        a polygonal geometry at ``lod``. When BuildingParts carry geometry at that LoD the
-        root's own geometry at that LoD is skipped only if it has none.
+        Returns one ``(object, geom_index, geometry)`` per envelope object (the Building and
+        its BuildingParts) that has a polygonal geometry at ``lod`` (the first one if several).
         """
         lod = lod if lod is not None else self.default_lod()
         out = []
-        for o in self.objects:
+        for o in self.envelope_objects:
             for gi, g in enumerate(o.geometries):
                 if g.is_polygonal and g.lod == lod:
                     out.append((o, gi, g))

@@ -31,10 +31,41 @@ def error_json(code: int, location: str, info: str) -> dict:
     return {"code": int(code), "description": name(code), "id": location, "info": info}
 
 
+def _owner_of(b: Building) -> dict[str, str]:
+    """Feature id per object id: a Building and its BuildingParts form one feature; other
+    descendants (BuildingInstallation, ...) are features of their own, as val3dity reports."""
+    env = {o.id for o in b.envelope_objects}
+    return {o.id: (b.id if o.id in env or o.id == b.id else o.id) for o in b.objects}
+
+
+def _coid(location: str) -> str:
+    head = location.split("|", 1)[0]
+    return head[5:] if head.startswith("coid=") else ""
+
+
+def feature_reports(b: Building, tol: Tolerances = DEFAULT, lod: str | None = None,
+                    defects: list[Defect] | None = None, assess_labels: bool = False,
+                    assess_u_values: bool = False) -> list[dict]:
+    """Feature entries of one building: its own (with energy and graph) first, then one per
+    descendant that is not a BuildingPart (installations), as val3dity reports them."""
+    defects = validate_building(b, tol) if defects is None else defects
+    owner = _owner_of(b)
+    own = [d for d in defects if owner.get(_coid(d.location), b.id) == b.id]
+    out = [feature_report(b, tol, lod, own, assess_labels, assess_u_values)]
+    for o in b.objects:
+        if owner[o.id] != o.id or o.id == b.id:
+            continue
+        mine = [d for d in defects if _coid(d.location) == o.id]
+        out.append({"id": o.id, "type": o.type, "validity": not mine, "errors": [d.to_json() for d in mine],
+                    "_primitives": [p for p in _primitives(b, mine) if p[2] == o.id]})
+    out[0]["_primitives"] = [p for p in out[0]["_primitives"] if owner.get(p[2], b.id) == b.id]
+    return out
+
+
 def feature_report(b: Building, tol: Tolerances = DEFAULT, lod: str | None = None,
                    defects: list[Defect] | None = None, assess_labels: bool = False,
                    assess_u_values: bool = False) -> dict:
-    """Validate one building and return its feature entry (val3dity shape + energy + graph)."""
+    """The feature entry of a building (val3dity shape + energy + graph) for ``defects``."""
     defects = validate_building(b, tol) if defects is None else defects
     entry = {"id": b.id, "type": b.type, "validity": not defects,
              "errors": [d.to_json() for d in defects]}
@@ -47,7 +78,8 @@ def feature_report(b: Building, tol: Tolerances = DEFAULT, lod: str | None = Non
     return entry
 
 
-def _primitives(b: Building, defects: list[Defect]) -> list[tuple[str, bool]]:
+def _primitives(b: Building, defects: list[Defect]) -> list[tuple[str, bool, str]]:
+    """``(geometry type, valid, object id)`` per polygonal geometry (primitives_overview)."""
     bad = set()
     for d in defects:
         for loc in d.location.split("&&"):
@@ -56,7 +88,7 @@ def _primitives(b: Building, defects: list[Defect]) -> list[tuple[str, bool]]:
     for o in b.objects:
         for gi, g in enumerate(o.geometries):
             if g.is_polygonal or g.type == "GeometryInstance":
-                out.append((g.type, f"coid={o.id}|geom={gi}" not in bad and not any(d.code in (901,) and d.location == "" for d in defects)))
+                out.append((g.type, f"coid={o.id}|geom={gi}" not in bad, o.id))
     return out
 
 
@@ -84,7 +116,7 @@ def finish_report(rep: dict) -> dict:
         c = fo.setdefault(f["type"], Counter())
         c["total"] += 1
         c["valid"] += bool(f["validity"])
-        for t, ok in f.pop("_primitives", []):
+        for t, ok, *_ in f.pop("_primitives", []):
             p = po.setdefault(t, Counter())
             p["total"] += 1
             p["valid"] += ok
@@ -122,7 +154,8 @@ def validate_features(model, features: Iterable, input_file: str, tol: Tolerance
         except Exception:  # isolate the failing building instead of losing the chunk
             all_defects = [None] * len(pending)
         for b, defects in zip(pending, all_defects):
-            _emit(rep, _safe_feature_report(b, tol, lod, defects), progress)
+            for entry in _safe_feature_reports(b, tol, lod, defects):
+                _emit(rep, entry, progress)
         pending.clear()
 
     for item in features:
@@ -147,10 +180,10 @@ def _emit(rep: dict, entry: dict, progress) -> None:
         progress(entry)
 
 
-def _safe_feature_report(b: Building, tol: Tolerances, lod, defects) -> dict:
+def _safe_feature_reports(b: Building, tol: Tolerances, lod, defects) -> list[dict]:
     try:
-        return feature_report(b, tol, lod, defects)
+        return feature_reports(b, tol, lod, defects)
     except Exception as e:  # a bug must not lose the rest of the batch: report it for this building
-        return {"id": b.id, "type": b.type, "validity": False,
-                "errors": [error_json(999, f"coid={b.id}", f"internal error: {type(e).__name__}: {e}")],
-                "_primitives": []}
+        return [{"id": b.id, "type": b.type, "validity": False,
+                 "errors": [error_json(999, f"coid={b.id}", f"internal error: {type(e).__name__}: {e}")],
+                 "_primitives": []}]
