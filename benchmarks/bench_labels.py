@@ -26,7 +26,7 @@ from pathlib import Path
 REPO = Path(__file__).resolve().parents[1]
 SHARED = REPO.parent / "shared"
 TILE_DIRS = ("3dbag", "rotterdam", "denhaag", "delft-3dfier-lod1", "france-roofer", "japan-plateau",
-             "montreal", "swiss-building")
+             "montreal", "swiss-building", "val3dity-tests/rotterdam")
 
 
 def tiles(root: Path) -> list[Path]:

@@ -440,19 +440,19 @@ def _envelope_problems(b: Building, energy=None) -> list[str]:
     energy = energy if energy is not None else envelope_objects(b)
     from lod2energy.semantics import face_metrics
 
+    # identical coordinates = same vertex, whatever the index
+    _, inv = np.unique(b.vertices, axis=0, return_inverse=True)
+    inv = inv.reshape(-1)
+    origin = b.vertices.mean(axis=0) if len(b.vertices) else np.zeros(3)
     for o, gi, g in energy:
         where = f"coid={o.id}|geom={gi}"
         if not g.is_volumetric:
             out.append(f"{where}: {g.type} is not a solid")
             continue
-        # identical coordinates = same vertex, whatever the index
-        _, inv = np.unique(b.vertices, axis=0, return_inverse=True)
-        inv = inv.reshape(-1)
         for si, so in enumerate(g.solids):
             for hi, sh in enumerate(so.shells):
                 edges: dict[tuple[int, int], int] = {}
                 vol = 0.0
-                origin = b.vertices.mean(axis=0)
                 for s in sh.surfaces:
                     for r in s.rings:
                         ids = inv[r]
