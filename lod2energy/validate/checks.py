@@ -143,7 +143,7 @@ def validate_buildings(buildings, tol: Tolerances = DEFAULT) -> list[list[Defect
                     entries.append((b.vertices, o.id, gi, g))
                     owner.append(bi)
     batch = iter(_validate_entries(entries, tol))
-    outs = []
+    outs, ok_parts = [], []
     for b in buildings:
         out = [Defect(int(c), loc, msg) for c, loc, msg in b.provenance.get("input_errors", ())]
         geom_ok = True
@@ -158,7 +158,11 @@ def validate_buildings(buildings, tol: Tolerances = DEFAULT) -> list[list[Defect
                 if found:
                     geom_ok = False
                     out.extend(found)
-        if geom_ok:
-            out.extend(Defect(code, loc, info) for loc, code, info in solid_checks.check_parts_overlap(b, tol))
         outs.append(out)
+        ok_parts.append(geom_ok)
+    overlaps = solid_checks.check_parts_overlap_multi([b for b, ok in zip(buildings, ok_parts) if ok], tol)
+    found = iter(overlaps)
+    for out, ok in zip(outs, ok_parts):
+        if ok:
+            out.extend(Defect(code, loc, info) for loc, code, info in next(found))
     return outs

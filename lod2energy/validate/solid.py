@@ -18,7 +18,7 @@ import numpy as np
 from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.geometry import _cross, bbox_pairs, signed_volume, winding_number
 from lod2energy.model import Building, Geometry, Solid
-from lod2energy.validate.shell import shell_meshes
+from lod2energy.validate.shell import shell_meshes, shell_meshes_multi
 
 try:
     import manifold3d as _m3d
@@ -284,7 +284,8 @@ def check_parts_overlap(building: Building, tol: Tolerances = DEFAULT) -> list[t
     """601 BUILDINGPARTS_OVERLAP: interiors of the Building's and its BuildingParts' solids overlap.
 
     Per LoD, every Solid / CompositeSolid geometry of the Building and its parts is
-    tested against the others (bounding boxes first, then the shared volume).
+    tested against the others: bounding boxes first, then a separating face plane (parts
+    sharing a wall), then the shared volume.
 
     Parameters
     ----------
@@ -298,46 +299,121 @@ def check_parts_overlap(building: Building, tol: Tolerances = DEFAULT) -> list[t
     list of ``(location, 601, info)`` with location ``"coid=A|geom=0&&coid=B|geom=0"``
     and info ``"geometries are lod=2"``.
     """
-    if not building.is_building:
-        return []
-    prims: dict[str | None, list[tuple[str, int, Geometry]]] = {}
-    for o in building.objects:
-        if o.type not in PARTS_TYPES:
+    return check_parts_overlap_multi([building], tol)[0]
+
+
+def _ragged_pairs(na: np.ndarray, nb: np.ndarray):
+    """For k groups of sizes na[k] x nb[k]: group id, index in a, index in b of every combination."""
+    cnt = na * nb
+    tot = int(cnt.sum())
+    gid = np.repeat(np.arange(len(cnt)), cnt)
+    loc = np.arange(tot) - np.repeat(np.cumsum(cnt) - cnt, cnt)
+    return gid, loc // nb[gid], loc % nb[gid], cnt
+
+
+def _separated_pairs(pts, pstart, npts, nrm, off, fstart, nf, pairs, eps: float = 1e-6) -> np.ndarray:
+    """Vectorised :func:`_separated` for many pairs of items (ragged points / planes)."""
+    # planes with the whole item behind them
+    g, fi, qi, cnt = _ragged_pairs(nf, npts)
+    f_idx = fstart[g] + fi
+    val = np.einsum("ij,ij->i", nrm[f_idx], pts[pstart[g] + qi]) - off[f_idx]
+    seg = np.flatnonzero(np.r_[True, f_idx[1:] != f_idx[:-1]]) if len(f_idx) else np.zeros(0, dtype=np.intp)
+    behind = np.zeros(len(nrm), dtype=bool)
+    if len(seg):
+        behind[f_idx[seg]] = np.maximum.reduceat(val, seg) <= eps
+    sep = np.zeros(len(pairs), dtype=bool)
+    for a_col, b_col in ((0, 1), (1, 0)):
+        ia, ib = pairs[:, a_col], pairs[:, b_col]
+        g, fi, qi, cnt = _ragged_pairs(nf[ia], npts[ib])
+        if len(g) == 0:
             continue
-        for gi, g in enumerate(o.geometries):
-            if g.type in ("Solid", "CompositeSolid") and g.solids:
-                prims.setdefault(g.lod, []).append((o.id, gi, g))
-    out: list[tuple[str, int, str]] = []
-    v = building.vertices
-    for lod, items in prims.items():
-        if len(items) < 2:
+        f_idx = fstart[ia][g] + fi
+        val = np.einsum("ij,ij->i", nrm[f_idx], pts[pstart[ib][g] + qi]) - off[f_idx]
+        starts = np.flatnonzero(np.r_[True, (g[1:] != g[:-1]) | (fi[1:] != fi[:-1])])
+        front = np.minimum.reduceat(val, starts) >= -eps
+        ok = front & behind[f_idx[starts]]
+        sep |= np.bincount(g[starts], weights=ok, minlength=len(pairs)) > 0
+    return sep
+
+
+def check_parts_overlap_multi(buildings: Sequence[Building], tol: Tolerances = DEFAULT
+                              ) -> list[list[tuple[str, int, str]]]:
+    """:func:`check_parts_overlap` for many buildings in one vectorised pass.
+
+    Parameters
+    ----------
+    buildings : sequence of Building
+    tol : Tolerances
+
+    Returns
+    -------
+    list (one per building) of lists of ``(location, 601, info)``
+    """
+    outs: list[list[tuple[str, int, str]]] = [[] for _ in buildings]
+    items = []                                    # (building, group, lod, object id, geom index, Geometry)
+    group = 0
+    for bi, b in enumerate(buildings):
+        if not b.is_building:
             continue
-        tris = []
-        for _, _, g in items:
-            ts = [t for so in g.solids for t in solid_triangles(v, so, tol)]
-            tris.append(np.concatenate(ts) if ts else np.zeros((0, 3), dtype=np.intp))
-        lo = np.array([v[t].reshape(-1, 3).min(0) if len(t) else np.full(3, np.inf) for t in tris])
-        hi = np.array([v[t].reshape(-1, 3).max(0) if len(t) else np.full(3, -np.inf) for t in tris])
-        pairs = bbox_pairs(lo, hi, pad=-1e-7)          # boxes that only touch cannot overlap
-        if len(pairs) == 0:
-            continue
-        origin = lo[np.isfinite(lo).all(1)].min(axis=0)
-        planes: dict[int, tuple] = {}
-        mans: dict[int, object] = {}
-        for i, j in pairs.tolist():
-            for k in (i, j):
-                if k not in planes:
-                    planes[k] = _face_planes(v, tris[k], origin)
-            if _separated(planes[i], planes[j]):
+        prims: dict[str | None, list] = {}
+        for o in b.objects:
+            if o.type not in PARTS_TYPES:
                 continue
-            for k in (i, j):
-                if k not in mans:
-                    mans[k] = _geometry_manifold(v, items[k][2], tol, origin)
-            if mans[i] is None or mans[j] is None:
-                overlap = _overlap_by_vertices(v, tris[i], tris[j])
-            else:
-                overlap = _overlaps(mans[i], mans[j], tol.overlap_tol)
-            if overlap:
-                (a, ga, _), (b, gb, _) = items[i], items[j]
-                out.append((f"coid={a}|geom={ga}&&coid={b}|geom={gb}", 601, f"geometries are lod={lod}"))
-    return out
+            for gi, g in enumerate(o.geometries):
+                if g.type in ("Solid", "CompositeSolid") and g.solids:
+                    prims.setdefault(g.lod, []).append((o.id, gi, g))
+        for lod, its in prims.items():
+            if len(its) > 1:
+                items.extend((bi, group, lod, oid, gi, g) for oid, gi, g in its)
+                group += 1
+    if not items:
+        return outs
+    shells = [(buildings[it[0]].vertices, sh) for it in items for so in it[5].solids for sh in so.shells]
+    meshes = iter(shell_meshes_multi(shells, tol))
+    tris, pts_l, lo, hi = [], [], [], []
+    for it in items:
+        t = np.concatenate([next(meshes).tris for so in it[5].solids for _ in so.shells])
+        v = buildings[it[0]].vertices
+        p = v[np.unique(t)]
+        tris.append(t)
+        pts_l.append(p)
+        lo.append(p.min(axis=0))
+        hi.append(p.max(axis=0))
+    lo, hi = np.array(lo), np.array(hi)
+    grp = np.array([it[1] for it in items])
+    span = float((hi[:, 0] - lo[:, 0]).max() + (hi[:, 0].max() - lo[:, 0].min())) + 1.0
+    glo, ghi = lo - lo[:, :1] * 0, hi.copy()
+    shift = grp * span - lo[:, 0].min()
+    glo[:, 0] = lo[:, 0] + shift
+    ghi[:, 0] = hi[:, 0] + shift
+    pairs = bbox_pairs(glo, ghi, pad=-1e-7)      # boxes that only touch cannot overlap
+    if len(pairs):
+        pairs = pairs[grp[pairs[:, 0]] == grp[pairs[:, 1]]]
+    if len(pairs) == 0:
+        return outs
+    # separating face planes, about each item's building origin
+    origin = np.array([buildings[it[0]].vertices.min(axis=0) if len(buildings[it[0]].vertices) else np.zeros(3)
+                       for it in items])
+    planes = [_face_planes(buildings[it[0]].vertices, t, o) for it, t, o in zip(items, tris, origin)]
+    npts = np.array([len(p[0]) for p in planes])
+    nf = np.array([len(p[1]) for p in planes])
+    pstart = np.concatenate(([0], np.cumsum(npts)[:-1]))
+    fstart = np.concatenate(([0], np.cumsum(nf)[:-1]))
+    sep = _separated_pairs(np.concatenate([p[0] for p in planes]), pstart, npts,
+                           np.concatenate([p[1] for p in planes]), np.concatenate([p[2] for p in planes]),
+                           fstart, nf, pairs)
+    mans: dict[int, object] = {}
+    for i, j in pairs[~sep].tolist():
+        bi = items[i][0]
+        v = buildings[bi].vertices
+        for k in (i, j):
+            if k not in mans:
+                mans[k] = _geometry_manifold(v, items[k][5], tol, origin[k])
+        if mans[i] is None or mans[j] is None:
+            overlap = _overlap_by_vertices(v, tris[i], tris[j])
+        else:
+            overlap = _overlaps(mans[i], mans[j], tol.overlap_tol)
+        if overlap:
+            (_, _, lod, a, ga, _), (_, _, _, b, gb, _) = items[i], items[j]
+            outs[bi].append((f"coid={a}|geom={ga}&&coid={b}|geom={gb}", 601, f"geometries are lod={lod}"))
+    return outs
