@@ -376,6 +376,83 @@ def _fan_convex(vertices: np.ndarray, polys: np.ndarray) -> tuple[np.ndarray, np
     return np.take_along_axis(polys[:, None, :], loc.reshape(m, 1, -1), axis=2).reshape(m, k - 2, 3), ok
 
 
+def _triangulate_general(vertices, ids, ring_start, ring_len, first_ring, rpp, polys):
+    """Ear clipping (constrained Delaunay where it leaves slivers) of polygons ``polys``,
+    with normals, projections, orientation fixes and sliver tests vectorised."""
+    # vertex slots of the chosen polygons (all their rings)
+    r0 = first_ring[polys]
+    nr = rpp[polys]
+    rings = np.repeat(r0, nr) + (np.arange(nr.sum()) - np.repeat(np.cumsum(nr) - nr, nr))
+    rl = ring_len[rings]
+    slot = np.repeat(ring_start[rings], rl) + (np.arange(rl.sum()) - np.repeat(np.cumsum(rl) - rl, rl))
+    ring_of = np.repeat(np.arange(len(rings)), rl)
+    poly_of_ring = np.repeat(np.arange(len(polys)), nr)
+    poly_of = poly_of_ring[ring_of]
+    P = vertices[ids[slot]]
+    # Newell normals of the outer rings
+    rstart = np.concatenate(([0], np.cumsum(rl)[:-1]))
+    nxt = np.arange(len(slot)) + 1
+    nxt[rstart + rl - 1] = rstart
+    o = P[np.concatenate(([0], np.cumsum(np.bincount(poly_of, minlength=len(polys)))[:-1]))][poly_of]
+    Q = P - o
+    cr = _cross(Q, Q[nxt])
+    is_outer = np.zeros(len(rings), dtype=bool)
+    is_outer[np.concatenate(([0], np.cumsum(nr)[:-1]))] = True
+    cr[~is_outer[ring_of]] = 0.0
+    n = np.zeros((len(polys), 3))
+    np.add.at(n, poly_of, cr)
+    ax = np.argmax(np.abs(n), axis=1)
+    ij = np.array([(1, 2), (2, 0), (0, 1)])[ax]
+    flip = n[np.arange(len(polys)), ax] < 0
+    ij[flip] = ij[flip][:, ::-1]
+    ijv = ij[poly_of]
+    p2 = np.ascontiguousarray(np.stack([Q[np.arange(len(Q)), ijv[:, 0]], Q[np.arange(len(Q)), ijv[:, 1]]], -1))
+    pstart = np.concatenate(([0], np.cumsum(np.bincount(poly_of, minlength=len(polys)))))
+    rend_local = (rstart + rl) - pstart[poly_of_ring]
+    good = np.any(n != 0, axis=1)
+    tl, towner = [], []
+    rcut = np.concatenate(([0], np.cumsum(nr)))
+    for k in np.flatnonzero(good).tolist():
+        a, b = pstart[k], pstart[k + 1]
+        loc = _earcut_rings(p2[a:b], rend_local[rcut[k]:rcut[k + 1]])
+        if len(loc):
+            tl.append(loc + a)
+            towner.append(np.full(len(loc), k, dtype=np.intp))
+    if not tl:
+        return np.zeros((0, 3), dtype=np.intp), np.zeros(0, dtype=np.intp)
+    T = np.concatenate(tl)
+    own = np.concatenate(towner)
+    A2 = p2[T]
+    area = ((A2[:, 1, 0] - A2[:, 0, 0]) * (A2[:, 2, 1] - A2[:, 0, 1])
+            - (A2[:, 1, 1] - A2[:, 0, 1]) * (A2[:, 2, 0] - A2[:, 0, 0]))
+    neg = area < 0
+    T[neg] = T[neg][:, [0, 2, 1]]
+    sl = _sliver_mask_2d(A2)
+    redo = np.unique(own[sl & (np.bincount(own, minlength=len(polys))[own] > 1)])
+    if len(redo):
+        keep = ~np.isin(own, redo)
+        T, own = T[keep], own[keep]
+        extra_t, extra_o = [T], [own]
+        try:
+            from lod2energy.validate.triangulate import constrained_delaunay
+        except ImportError:  # pragma: no cover
+            constrained_delaunay = None
+        for k in redo.tolist():
+            a, b = pstart[k], pstart[k + 1]
+            ends = rend_local[rcut[k]:rcut[k + 1]]
+            try:
+                loc = np.asarray(constrained_delaunay(p2[a:b], ends), dtype=np.intp).reshape(-1, 3)
+            except Exception:  # keep ear clipping when the CDT fails
+                loc = _earcut_rings(p2[a:b], ends)
+                ar = _cross2(p2[a:b][loc[:, 0]], p2[a:b][loc[:, 1]], p2[a:b][loc[:, 2]]) if len(loc) else loc
+                if len(loc):
+                    loc[ar < 0] = loc[ar < 0][:, [0, 2, 1]]
+            extra_t.append(loc + a)
+            extra_o.append(np.full(len(loc), k, dtype=np.intp))
+        T, own = np.concatenate(extra_t), np.concatenate(extra_o)
+    return ids[slot[T]], polys[own]
+
+
 def triangulate_flat(vertices: np.ndarray, ids: np.ndarray, ring_len: np.ndarray,
                      rings_per_poly: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """:func:`triangulate_surfaces` on a flat encoding of the polygons (no Python per polygon
@@ -438,13 +515,12 @@ def triangulate_flat(vertices: np.ndarray, ids: np.ndarray, ring_len: np.ndarray
             out_t.append(t[ok].reshape(-1, 3))
             out_f.append(np.repeat(fk[ok], k - 2))
             done[fk[ok]] = True
-    for f in np.flatnonzero(~done).tolist():
-        r0 = first_ring[f]
-        rings = [ids[ring_start[r]:ring_start[r] + ring_len[r]] for r in range(r0, r0 + rpp[f])]
-        t = triangulate_surface(vertices, rings)
+    rest = np.flatnonzero(~done & (nout >= 3))
+    if len(rest):
+        t, owner = _triangulate_general(vertices, ids, ring_start, ring_len, first_ring, rpp, rest)
         if len(t):
             out_t.append(t)
-            out_f.append(np.full(len(t), f, dtype=np.intp))
+            out_f.append(owner)
     if not out_t:
         return np.zeros((0, 3), dtype=np.intp), np.zeros(0, dtype=np.intp)
     tris = np.concatenate(out_t).astype(np.intp)
