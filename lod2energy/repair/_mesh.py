@@ -190,11 +190,23 @@ def _triangulate_face(V: np.ndarray, f: Face) -> np.ndarray:
     idx = np.array([i for r in rings for i in r], dtype=np.int64)
     P2 = (V[idx] - V[idx].mean(axis=0)) @ B.T
     ends = np.cumsum([len(r) for r in rings]).astype(np.uint32)
+    t = None
     if _earcut is not None:
         t = np.asarray(_earcut.triangulate_float64(P2, ends), dtype=np.int64).reshape(-1, 3)
-    else:  # pragma: no cover
-        r = rings[0]
-        t = np.array([[0, i, i + 1] for i in range(1, len(r) - 1)], dtype=np.int64)
+        if len(t):
+            p, q, r = P2[t[:, 0]], P2[t[:, 1]], P2[t[:, 2]]
+            ar = (q[:, 0] - p[:, 0]) * (r[:, 1] - p[:, 1]) - (q[:, 1] - p[:, 1]) * (r[:, 0] - p[:, 0])
+            if (ar < 0).all():
+                t = t[:, ::-1]  # earcut answers clockwise: the face walks counter-clockwise here
+                ar = -ar
+            if (ar < 1e-9).any() or len(t) != len(idx) - 2 + 2 * (len(rings) - 1):
+                t = None  # needles or gaps: ask for the constrained Delaunay triangulation
+    if t is None:
+        try:
+            from lod2energy.validate.triangulate import constrained_delaunay
+            t = np.asarray(constrained_delaunay(P2, ends.astype(np.intp)), dtype=np.int64).reshape(-1, 3)
+        except Exception:  # noqa: BLE001
+            t = np.zeros((0, 3), dtype=np.int64)
     if len(t) == 0 and len(rings[0]) >= 3:
         r = rings[0]  # earcut gave up (degenerate projection): a fan keeps the faces counted
         t = np.array([[0, i, i + 1] for i in range(1, len(r) - 1)], dtype=np.int64)

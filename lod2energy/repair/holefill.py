@@ -129,6 +129,17 @@ def triangulate_loop(V: np.ndarray, loop: list[int]) -> list[tuple[int, ...]] | 
         area = 0.5 * np.sum(P2[:, 0] * np.roll(P2[:, 1], -1) - np.roll(P2[:, 0], -1) * P2[:, 1])
         if abs(area) < 1e-14:
             continue
+        t = None
+        try:
+            from lod2energy.validate.triangulate import constrained_delaunay
+            t = np.asarray(constrained_delaunay(P2, np.array([len(loop)])), dtype=np.int64).reshape(-1, 3)
+            if len(t) == len(loop) - 2:
+                tl = [list(map(int, x)) for x in t]
+                if area < 0:
+                    tl = [[a, c, b] for a, b, c in tl]
+                return [tuple(loop[i] for i in tri) for tri in tl]
+        except Exception:  # noqa: BLE001 - fall back on ear clipping + flips
+            pass
         t = np.asarray(_earcut.triangulate_float64(P2, np.array([len(loop)], dtype=np.uint32)),
                        dtype=np.int64).reshape(-1, 3)
         if len(t) != len(loop) - 2:
@@ -251,9 +262,63 @@ def fill_loop(V: np.ndarray, loop: list[int], tol: Tolerances, depth: int = 0) -
     return faces, V[loop].mean(axis=0)[None, :]
 
 
-def fill_holes(m: PolyMesh, tol: Tolerances = DEFAULT) -> PolyMesh:
-    """Stage 2: close every boundary loop with new faces (source -1, semantic None)."""
+def zip_slits(m: PolyMesh, tol: Tolerances, width: float = 0.01) -> tuple[PolyMesh, list[list[int]]]:
+    """Close thin loops (slits) by inserting their vertices into the face across them.
+
+    A loop whose vertices all lie within ``width`` (m) of its longest edge is a slit left by
+    a T-junction: the face owning that edge gets the loop's other vertices inserted, which
+    pairs every open edge of the slit. Returns the mesh and the loops that were not slits.
+    """
     loops = boundary_loops(m)
+    if not loops:
+        return m, []
+    V = m.vertices
+    faces = list(m.faces)
+    inc = edge_faces(faces)
+    rest = []
+    for loop in loops:
+        P = V[loop]
+        k = len(loop)
+        L = np.linalg.norm(P - np.roll(P, -1, axis=0), axis=1)
+        e = int(np.argmax(L))  # fill edge loop[e] -> loop[e+1]; a face walks it backwards
+        loop_r = loop[e + 1:] + loop[:e + 1]  # starts at loop[e+1], ends at loop[e]
+        a, c = loop_r[0], loop_r[-1]  # the face across the slit walks a -> c
+        pa, pc = V[a], V[c]
+        d = pc - pa
+        ln = float(np.linalg.norm(d))
+        if ln == 0:
+            rest.append(loop)
+            continue
+        mid = V[loop_r[1:-1]]
+        t = (mid - pa) @ d / ln ** 2
+        dist = np.linalg.norm(pa + t[:, None] * d - mid, axis=1)
+        lst = inc.get((min(a, c), max(a, c)), [])
+        if k < 3 or len(lst) != 1 or (dist > width).any() or (t <= 0).any() or (t >= 1).any() \
+                or (np.diff(t) <= 0).any():
+            rest.append(loop)
+            continue
+        fi = lst[0][0]
+        f = faces[fi]
+        new_rings, done = [], False
+        for r in f.rings:
+            r = list(r)
+            for i in range(len(r)):
+                if not done and r[i] == a and r[(i + 1) % len(r)] == c:
+                    r = r[:i + 1] + loop_r[1:-1] + r[i + 1:]
+                    done = True
+                    break
+            new_rings.append(tuple(r))
+        if not done:
+            rest.append(loop)
+            continue
+        faces[fi] = Face(tuple(new_rings), f.source, f.semantic)
+        inc = edge_faces(faces)
+    return m.with_faces(faces), rest
+
+
+def fill_holes(m: PolyMesh, tol: Tolerances = DEFAULT) -> PolyMesh:
+    """Stage 2: zip slits, then close every other boundary loop with new faces."""
+    m, loops = zip_slits(m, tol)
     if not loops:
         return m
     V = m.vertices

@@ -97,7 +97,8 @@ def is_repaired(m: PolyMesh | None, lod, tol: Tolerances) -> bool:
     """The ladder's stopping criterion."""
     if m is None or not m.faces:
         return False
-    if shell_defects(m, tol, first_only=True):
+    # crossings are the project validator's call (val3dity semantics: touching counts)
+    if shell_defects(m, tol, first_only=True, self_intersection=False):
         return False
     return not val3dity_codes(m, lod, tol)
 

@@ -73,8 +73,10 @@ def drop_small_components(m: PolyMesh, share: float = 0.05) -> PolyMesh:
 def close(m: PolyMesh, tol: Tolerances) -> PolyMesh:
     """Orient, fill, merge new slivers, re-orient (the stage-2 closing)."""
     m = orient(m)
-    m = fill_holes(m, tol)
-    m = drop_degenerate(m)
+    for _ in range(3):  # fills can leave slits of their own (collinear vertices): zip them next round
+        m = drop_degenerate(fill_holes(m, tol))
+        if not topology(m).boundary:
+            break
     m = merge_slivers(m, tol, only_new=True)
     m = fix_nonplanar(m, tol)
     return orient(m)
