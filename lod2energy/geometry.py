@@ -612,7 +612,7 @@ def signed_volume(vertices: np.ndarray, tris: np.ndarray) -> float:
 # ----------------------------------------------------------------------------- pairs & intersections
 
 def bbox_pairs(lo: np.ndarray, hi: np.ndarray, pad: float = 0.0,
-               lo2: np.ndarray | None = None, hi2: np.ndarray | None = None) -> np.ndarray:
+               lo2: np.ndarray | None = None, hi2: np.ndarray | None = None, block: int = 2_000_000) -> np.ndarray:
     """Pairs of overlapping axis-aligned boxes (sort and sweep on x).
 
     Parameters
@@ -624,6 +624,8 @@ def bbox_pairs(lo: np.ndarray, hi: np.ndarray, pad: float = 0.0,
     lo2, hi2 : (k, 3) float, optional
         A second set: pairs ``(i, j)`` with ``i`` in the first, ``j`` in the second.
         Without it, pairs ``i < j`` within the first set.
+    block : int
+        Candidate pairs examined at once (bounds memory on long strips of boxes).
 
     Returns
     -------
@@ -640,16 +642,24 @@ def bbox_pairs(lo: np.ndarray, hi: np.ndarray, pad: float = 0.0,
         end = np.searchsorted(slo, hi[order, 0], side="right")
         start = np.arange(m) + 1
         cnt = np.maximum(end - start, 0)
-        tot = int(cnt.sum())
-        if tot == 0:
+        if int(cnt.sum()) == 0:
             return np.zeros((0, 2), dtype=np.intp)
-        ii = np.repeat(np.arange(m), cnt)
-        off = np.arange(tot) - np.repeat(np.cumsum(cnt) - cnt, cnt)
-        jj = start[ii] + off
-        a, b = order[ii], order[jj]
-        ok = np.all((lo[a, 1:] <= hi[b, 1:]) & (lo[b, 1:] <= hi[a, 1:]), axis=1)
-        a, b = a[ok], b[ok]
-        return np.stack([np.minimum(a, b), np.maximum(a, b)], axis=1)
+        # expand the x-overlaps in blocks of about `block` candidates (bounded memory)
+        csum = np.cumsum(cnt)
+        cuts = np.searchsorted(csum, np.arange(block, int(csum[-1]), block), side="left")
+        out = []
+        for r0, r1 in zip(np.r_[0, cuts], np.r_[cuts, m]):
+            c = cnt[r0:r1]
+            tot = int(c.sum())
+            if tot == 0:
+                continue
+            ii = np.repeat(np.arange(r0, r1), c)
+            jj = start[ii] + (np.arange(tot) - np.repeat(np.cumsum(c) - c, c))
+            a, b = order[ii], order[jj]
+            ok = np.all((lo[a, 1:] <= hi[b, 1:]) & (lo[b, 1:] <= hi[a, 1:]), axis=1)
+            a, b = a[ok], b[ok]
+            out.append(np.stack([np.minimum(a, b), np.maximum(a, b)], axis=1))
+        return np.concatenate(out) if out else np.zeros((0, 2), dtype=np.intp)
     lo2 = np.asarray(lo2, dtype=np.float64) - pad
     hi2 = np.asarray(hi2, dtype=np.float64) + pad
     ok = np.all((lo[:, None, :] <= hi2[None, :, :]) & (lo2[None, :, :] <= hi[:, None, :]), axis=2)

@@ -329,3 +329,13 @@ def test_601_between_a_composite_solid_part_and_a_solid_part():
     assert [d.location for d in validate_building(b)] == ["coid=p1|geom=0&&coid=p2|geom=0"]
     far = Building("b", "Building", np.vstack([comp.vertices, solo.vertices + [0, 5, 0]]), objs)
     assert codes(far) == set()
+
+
+def test_bbox_pairs_in_blocks_equal_brute_force():
+    rng = np.random.default_rng(0)
+    lo = rng.random((400, 3)) * 10
+    hi = lo + rng.random((400, 3))
+    brute = np.argwhere(np.triu(np.all((lo[:, None] <= hi[None]) & (lo[None] <= hi[:, None]), axis=2), 1))
+    for block in (50, 2_000_000):
+        got = bbox_pairs(lo, hi, block=block)
+        assert sorted(map(tuple, got.tolist())) == sorted(map(tuple, brute.tolist()))

@@ -367,9 +367,18 @@ def check_meshes(vertices: np.ndarray, meshes: Sequence[ShellMesh], vol: np.ndar
     idx = np.flatnonzero(active)
     if len(idx) == 0:
         return out
+    ntri = np.array([len(meshes[s].tris) for s in idx], dtype=np.int64)
+    # edge keys (shell, u, v) must fit in int64: split huge batches
+    if len(idx) > 1 and float(len(idx)) * float(len(vertices)) ** 2 >= 2.0 ** 62:
+        half = len(idx) // 2
+        for part in (idx[:half], idx[half:]):
+            sub = check_meshes(vertices, [meshes[s] for s in part], vol[part])
+            for s, r in zip(part, sub):
+                out[s].extend(r)
+        return out
     tris = np.concatenate([meshes[s].tris for s in idx])
     fot = np.concatenate([meshes[s].face_of_tri for s in idx])
-    tsh = np.repeat(idx, [len(meshes[s].tris) for s in idx])
+    tsh = np.repeat(idx, ntri)
     T = len(tris)
     N = np.int64(len(vertices))
 
