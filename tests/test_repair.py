@@ -343,3 +343,26 @@ def test_overlapping_parts_stay_separate_unless_merged():
     faces = g[0].solids[0].shells[0].surfaces
     assert len(faces) <= 10  # a box whose roof, ground and long walls keep one face per part
     assert all(s.semantic is not None for s in faces)
+
+
+def test_composite_solid_becomes_one_solid_without_internal_wall():
+    """Two boxes of a CompositeSolid share the wall x=10 (once per solid, opposite ways)."""
+    V = np.array(BOX_V + [(p[0] + 10, p[1], p[2]) for p in BOX_V], dtype=float)
+    solids = []
+    for k in range(2):
+        surfs = tuple(Surface.from_lists([[i + 8 * k for i in r]], SEM_OF[j]) for j, r in enumerate(BOX_F))
+        solids.append(Solid((Shell(surfs),)))
+    # the second box's x=10 wall uses the first box's vertices (1, 2, 5, 6) so they are shared
+    lut = {8: 1, 11: 2, 12: 5, 15: 6}
+    s1 = Shell(tuple(Surface.from_lists([[lut.get(int(i), int(i)) for i in s.outer]], s.semantic)
+                     for s in solids[1].exterior.surfaces))
+    g = Geometry("CompositeSolid", "2", (solids[0], Solid((s1,))), SEM)
+    b = Building("c", "Building", V, (CityObject("c", "Building", (g,)),))
+    r = repair_building(b)
+    info = r.provenance["repair"]
+    assert info["stage"] in ("cleanup", "holefill")
+    assert_energy_ready(r)
+    m = mesh_of_geometry(r.vertices, r.root.geometries[0])
+    from lod2energy.repair._mesh import signed_volume
+    assert signed_volume(m) == pytest.approx(20 * 8 * 6)
+    assert info["iou"] == pytest.approx(1.0, abs=1e-6)

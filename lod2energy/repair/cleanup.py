@@ -161,17 +161,40 @@ def split_t_junctions(m: PolyMesh, tol: float, min_gap: float = 0.001) -> PolyMe
     return m.with_faces(faces) if changed else m
 
 
+def _same_cycle(r1, r2) -> bool:
+    if len(r1) != len(r2) or r2[0] not in r1:
+        return False
+    k = r1.index(r2[0])
+    return tuple(r1[k:] + r1[:k]) == tuple(r2)
+
+
 def drop_duplicate_faces(m: PolyMesh) -> PolyMesh:
-    """Keep the first of faces with the same vertex set (either orientation)."""
-    seen = set()
-    faces = []
-    for f in m.faces:
-        key = tuple(sorted(i for r in f.rings for i in r))
-        if key in seen:
+    """Keep one of faces with the same vertex set and orientation; drop both faces of a pair
+    walked in opposite directions (an internal wall between two solids, e.g. in a
+    CompositeSolid, which must not stay inside the merged envelope)."""
+    groups: dict[tuple, list[int]] = defaultdict(list)
+    for i, f in enumerate(m.faces):
+        groups[tuple(sorted(i for r in f.rings for i in r))].append(i)
+    drop = set()
+    for idx in groups.values():
+        if len(idx) < 2:
             continue
-        seen.add(key)
-        faces.append(f)
-    return m.with_faces(faces) if len(faces) != len(m.faces) else m
+        kept: list[int] = []
+        for i in idx:
+            r = list(m.faces[i].outer)
+            twin = next((k for k in kept if _same_cycle(list(m.faces[k].outer), r)), None)
+            if twin is not None:
+                drop.add(i)
+                continue
+            anti = next((k for k in kept if _same_cycle(list(m.faces[k].outer), r[::-1])), None)
+            if anti is not None:
+                drop.update((i, anti))
+                kept.remove(anti)
+                continue
+            kept.append(i)
+    if not drop:
+        return m
+    return m.with_faces([f for i, f in enumerate(m.faces) if i not in drop])
 
 
 def drop_degenerate(m: PolyMesh, area_eps: float = 1e-10) -> PolyMesh:

@@ -154,9 +154,11 @@ def ladder(m: PolyMesh, lod, tol: Tolerances, deadline: float) -> tuple[str, Pol
     if ok("holefill", m2):
         return "holefill", m2, log
     if not late():
-        m3 = refill(m2, tol)
+        def accept(r):
+            return is_repaired(r, lod, tol)
+        m3 = refill(m2, tol, accept=accept)
         if m3 is None:
-            m3 = refill(m1, tol)
+            m3 = refill(m1, tol, accept=accept)
         if ok("refill", m3):
             return "refill", m3, log
     if not late():

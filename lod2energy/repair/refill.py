@@ -71,19 +71,32 @@ def drop_small_components(m: PolyMesh, share: float = 0.05) -> PolyMesh:
 
 
 def close(m: PolyMesh, tol: Tolerances) -> PolyMesh:
-    """Orient, fill, merge new slivers, re-orient (the stage-2 closing)."""
+    """Orient, fill, merge new slivers, split bad new polygons, re-orient (stage-2 closing).
+
+    Runs up to three rounds: a round can leave zero-area triangles (collinear vertices of a
+    fill) whose removal opens slits that the next round zips.
+    """
     m = orient(m)
-    for _ in range(3):  # fills can leave slits of their own (collinear vertices): zip them next round
+    for _ in range(3):
         m = drop_degenerate(fill_holes(m, tol))
+        m = merge_slivers(m, tol, only_new=True)
+        m = drop_degenerate(fix_nonplanar(m, tol))
         if not topology(m).boundary:
             break
-    m = merge_slivers(m, tol, only_new=True)
-    m = fix_nonplanar(m, tol)
     return orient(m)
 
 
-def refill(m: PolyMesh, tol: Tolerances = DEFAULT, rings=(0, 1, 2)) -> PolyMesh | None:
-    """Stage 3: first k-ring cut-and-refill that yields a clean shell, else None."""
+def refill(m: PolyMesh, tol: Tolerances = DEFAULT, rings=(0, 1, 2), accept=None) -> PolyMesh | None:
+    """Stage 3: first k-ring cut-and-refill that yields a clean shell, else None.
+
+    Parameters
+    ----------
+    accept : callable or None
+        The acceptance test (default: :func:`shell_defects` finds nothing).
+    """
+    if accept is None:
+        def accept(r):
+            return not shell_defects(r, tol, first_only=True)
     bad = corrupted_faces(m)
     best = None
     for k in rings:
@@ -93,7 +106,7 @@ def refill(m: PolyMesh, tol: Tolerances = DEFAULT, rings=(0, 1, 2)) -> PolyMesh 
         r = m.with_faces([f for i, f in enumerate(m.faces) if i not in cut])
         r = drop_small_components(r)
         r = close(r, tol)
-        if not shell_defects(r, tol, first_only=True):
+        if accept(r):
             return r
         best = r
         if not bad:
