@@ -70,9 +70,9 @@ def repair_one(b: Building, tol: Tolerances, timeout: float = 30.0, merge_parts:
     return repair_building(b, tol=tol, timeout=timeout, merge_parts=merge_parts, lod=lod)
 
 
-def _thermal_options(a):
+def _thermal_options(a, model: CityModel | None = None):
     from lod2energy.thermal import ThermalOptions
-    kw = {}
+    kw = {"crs": model.crs if model is not None else None, "lod": getattr(a, "lod", None)}
     for name in ("country", "u_table", "u_wall", "u_roof", "u_ground", "u_window", "wwr"):
         v = getattr(a, name, None)
         if v is not None:
@@ -90,9 +90,10 @@ def prepare(b: Building, tol: Tolerances, a, source_model: CityModel | None = No
     rec.input_errors = _codes(before)
     lod = getattr(a, "lod", None)
     rb = repair_one(b, tol, getattr(a, "timeout", 30.0), getattr(a, "merge_parts", False), lod)
-    rec.repair = dict(rb.provenance.get("repair", {}) or {})
+    rec.repair = dict(rb.provenance.get("repair", {}) or {}) or {
+        "stage": "valid", "iou": 1.0, "mean_displacement": 0.0, "hausdorff": 0.0}
     lb = label_building(rb, lod=lod, source=b)
-    tb = assign_u_values(lb, _thermal_options(a))
+    tb = assign_u_values(lb, _thermal_options(a, source_model))
     after = validate_building(tb, tol)
     rec.output_errors = _codes(after)
     rec.energy = energy_compliance(tb, after, lod=lod, tol=tol, assess_labels=True, assess_u_values=True)
