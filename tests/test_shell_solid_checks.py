@@ -339,3 +339,14 @@ def test_bbox_pairs_in_blocks_equal_brute_force():
     for block in (50, 2_000_000):
         got = bbox_pairs(lo, hi, block=block)
         assert sorted(map(tuple, got.tolist())) == sorted(map(tuple, brute.tolist()))
+
+
+def test_601_at_real_world_coordinates_and_in_batches():
+    rd = np.array([85000.0, 447000.0, 0.0])
+    touching = _with_parts([box(6, 5, 7, origin=rd), box(4, 5, 3, origin=rd + [6, 0, 0])], id="t")
+    overlapping = _with_parts([box(6, 5, 7, origin=rd + [50, 0, 0]), box(4, 5, 3, origin=rd + [55.5, 1, 0])],
+                              id="o")
+    single = [{d.code for d in validate_building(b)} for b in (touching, overlapping)]
+    assert single == [set(), {601}]
+    batched = [{d.code for d in ds} for ds in validate_buildings([touching, overlapping])]
+    assert batched == single

@@ -370,16 +370,27 @@ def check_parts_overlap_multi(buildings: Sequence[Building], tol: Tolerances = D
         return outs
     shells = [(buildings[it[0]].vertices, sh) for it in items for so in it[5].solids for sh in so.shells]
     meshes = iter(shell_meshes_multi(shells, tol))
-    tris, pts_l, lo, hi = [], [], [], []
+    # all items' triangles over one vertex array (buildings stacked), item by item
+    boff: dict[int, int] = {}
+    blocks, n = [], 0
     for it in items:
-        t = np.concatenate([next(meshes).tris for so in it[5].solids for _ in so.shells])
-        v = buildings[it[0]].vertices
-        p = v[np.unique(t)]
-        tris.append(t)
-        pts_l.append(p)
-        lo.append(p.min(axis=0))
-        hi.append(p.max(axis=0))
-    lo, hi = np.array(lo), np.array(hi)
+        if it[0] not in boff:
+            boff[it[0]] = n
+            blocks.append(buildings[it[0]].vertices)
+            n += len(buildings[it[0]].vertices)
+    V = np.concatenate(blocks)
+    tris = [np.concatenate([next(meshes).tris for so in it[5].solids for _ in so.shells]) for it in items]
+    ntri = np.array([len(t) for t in tris])
+    item_of_tri = np.repeat(np.arange(len(items)), ntri)
+    gtris = np.concatenate(tris) + np.repeat([boff[it[0]] for it in items], ntri)[:, None]
+    # each item's points (distinct vertices), in item order
+    keys = np.unique(item_of_tri.repeat(3).astype(np.int64) * n + gtris.ravel())
+    pt_item, pt_vid = keys // n, keys % n
+    npts = np.bincount(pt_item, minlength=len(items))
+    pstart = np.concatenate(([0], np.cumsum(npts)[:-1]))
+    P = V[pt_vid]
+    lo = np.minimum.reduceat(P, pstart, axis=0)
+    hi = np.maximum.reduceat(P, pstart, axis=0)
     grp = np.array([it[1] for it in items])
     span = float((hi[:, 0] - lo[:, 0]).max() + (hi[:, 0].max() - lo[:, 0].min())) + 1.0
     glo, ghi = lo - lo[:, :1] * 0, hi.copy()
@@ -391,24 +402,28 @@ def check_parts_overlap_multi(buildings: Sequence[Building], tol: Tolerances = D
         pairs = pairs[grp[pairs[:, 0]] == grp[pairs[:, 1]]]
     if len(pairs) == 0:
         return outs
-    # separating face planes, about each item's building origin
-    origin = np.array([buildings[it[0]].vertices.min(axis=0) if len(buildings[it[0]].vertices) else np.zeros(3)
-                       for it in items])
-    planes = [_face_planes(buildings[it[0]].vertices, t, o) for it, t, o in zip(items, tris, origin)]
-    npts = np.array([len(p[0]) for p in planes])
-    nf = np.array([len(p[1]) for p in planes])
-    pstart = np.concatenate(([0], np.cumsum(npts)[:-1]))
+    # separating face planes, in one local frame per building
+    borigin: dict[int, np.ndarray] = {}
+    for k, it in enumerate(items):
+        borigin[it[0]] = np.minimum(borigin.get(it[0], lo[k]), lo[k])
+    origin = np.array([borigin[it[0]] for it in items])
+    Q = P - np.repeat(origin, npts, axis=0)
+    T3 = V[gtris] - origin[item_of_tri][:, None, :]
+    nrm = _cross(T3[:, 1] - T3[:, 0], T3[:, 2] - T3[:, 0])
+    ln = np.sqrt(np.einsum("ij,ij->i", nrm, nrm))
+    keep = ln > 0
+    nrm = nrm[keep] / ln[keep, None]
+    off = np.einsum("ij,ij->i", nrm, T3[keep, 0])
+    nf = np.bincount(item_of_tri[keep], minlength=len(items))
     fstart = np.concatenate(([0], np.cumsum(nf)[:-1]))
-    sep = _separated_pairs(np.concatenate([p[0] for p in planes]), pstart, npts,
-                           np.concatenate([p[1] for p in planes]), np.concatenate([p[2] for p in planes]),
-                           fstart, nf, pairs)
+    sep = _separated_pairs(Q, pstart, npts, nrm, off, fstart, nf, pairs)
     mans: dict[int, object] = {}
     for i, j in pairs[~sep].tolist():
         bi = items[i][0]
         v = buildings[bi].vertices
         for k in (i, j):
             if k not in mans:
-                mans[k] = _geometry_manifold(v, items[k][5], tol, origin[k])
+                mans[k] = _geometry_manifold(v, items[k][5], tol, borigin[items[k][0]])
         if mans[i] is None or mans[j] is None:
             overlap = _overlap_by_vertices(v, tris[i], tris[j])
         else:
