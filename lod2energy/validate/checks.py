@@ -93,15 +93,19 @@ def _validate_entries(entries, tol: Tolerances) -> list[list[Defect]]:
             results[k].extend(Defect(code, f"coid={coid}|" + g.location(gi, si, hi, f), info)
                               for f, code, info in found)
             ok[(k, si, hi)] = not found
+    todo = [(k, si) for k, (_, _, _, g) in enumerate(entries) if usable[k] and g.is_volumetric
+            for si, so in enumerate(g.solids) if all(ok[(k, si, hi)] for hi in range(len(so.shells)))]
+    solid_found = dict(zip(todo, solid_checks.check_solids_multi(
+        [(entries[k][0], entries[k][3].solids[si]) for k, si in todo], tol)))
     for k, (vertices, coid, gi, g) in enumerate(entries):
         if not usable[k] or not g.is_volumetric:
             continue
         solids_ok = []
         for si, so in enumerate(g.solids):
-            good = all(ok[(k, si, hi)] for hi in range(len(so.shells)))
+            good = (k, si) in solid_found
             if good:
                 found = [Defect(code, f"coid={coid}|" + g.location(gi, si, h, None), info)
-                         for h, code, info in solid_checks.check_solid(vertices, so, tol)]
+                         for h, code, info in solid_found[(k, si)]]
                 results[k].extend(found)
                 good = not found
             solids_ok.append(good)

@@ -224,6 +224,31 @@ def check_solid(vertices: np.ndarray, solid: Solid, tol: Tolerances = DEFAULT
     return out
 
 
+def check_solids_multi(items: Sequence[tuple[np.ndarray, Solid]], tol: Tolerances = DEFAULT
+                       ) -> list[list[tuple[int | None, int, str]]]:
+    """:func:`check_solid` for many solids (of one or more buildings) at once.
+
+    Parameters
+    ----------
+    items : sequence of (vertices (n, 3) float, Solid)
+    tol : Tolerances
+
+    Returns
+    -------
+    list (one per item) of lists of ``(shell_index | None, code, info)``
+    """
+    out: list[list[tuple[int | None, int, str]]] = [[] for _ in items]
+    single = [k for k, (_, so) in enumerate(items) if len(so.shells) == 1]
+    meshes = shell_meshes_multi([(items[k][0], items[k][1].shells[0]) for k in single], tol)
+    for k, m in zip(single, meshes):
+        if signed_volume(items[k][0], m.tris) <= 0:
+            out[k].append((0, 405, "exterior shell oriented inwards"))
+    for k, (v, so) in enumerate(items):
+        if len(so.shells) > 1:
+            out[k] = check_solid(v, so, tol)
+    return out
+
+
 # ----------------------------------------------------------------------------- 501-503
 
 def _solid_manifold(vertices: np.ndarray, solid: Solid, tol: Tolerances, origin: np.ndarray):
