@@ -366,3 +366,14 @@ def test_composite_solid_becomes_one_solid_without_internal_wall():
     from lod2energy.repair._mesh import signed_volume
     assert signed_volume(m) == pytest.approx(20 * 8 * 6)
     assert info["iou"] == pytest.approx(1.0, abs=1e-6)
+
+
+def test_provenance_records_face_sources_and_attributes():
+    from lod2energy.repair.pipeline import repair_attributes
+    r = repair_building(open_box())
+    g = r.provenance["repair"]["geometries"][0]
+    assert sorted(g["source_faces"]) == [-1, 0, 1, 2, 3, 4]
+    a = repair_attributes(r)
+    assert a["repair_stage"] == "holefill" and a["repair_defects_before"] == [302]
+    assert a["repair_defects_after"] == []
+    assert repair_attributes(box())["repair_stage"] == "valid"

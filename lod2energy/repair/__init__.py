@@ -4,7 +4,8 @@ One module per stage (cleanup, orientation, holefill, refill, alphashape, footpr
 the ladder in :mod:`~lod2energy.repair.pipeline`, fidelity in :mod:`~lod2energy.repair.metrics`.
 """
 from lod2energy.repair.pipeline import (  # noqa: F401
-    DEFAULT_TIMEOUT, STAGES, dataset_table, repair_building, repair_features, repair_info,
+    DEFAULT_TIMEOUT, STAGES, dataset_table, repair_attributes, repair_building, repair_features, repair_info,
 )
 
-__all__ = ["DEFAULT_TIMEOUT", "STAGES", "dataset_table", "repair_building", "repair_features", "repair_info"]
+__all__ = ["DEFAULT_TIMEOUT", "STAGES", "dataset_table", "repair_building", "repair_features", "repair_info",
+           "repair_attributes"]

@@ -256,6 +256,8 @@ def repair_building(b: Building, tol: Tolerances = DEFAULT, timeout: float = DEF
             res = compact(res)
             input_closed, env = _envelope(m, res, stage, tol)
             entry.update(stage=stage, n_faces_after=res.n_faces, **fidelity(m, res, input_closed, env))
+            # per output face: the input surface it derives from (-1: made by the repair)
+            entry["source_faces"] = [int(f.source) for f in res.faces]
             ng = geometry_of_mesh(res, g, lookup, extra, len(b.vertices))
             geoms = list(objs[oi].geometries)
             geoms[gi] = ng
@@ -353,6 +355,26 @@ def repair_info(b: Building) -> Mapping:
             "defects_before": [], "defects_after": []}
 
 
+def repair_attributes(b: Building) -> dict:
+    """Flat CityJSON attributes recording the repair of ``b`` (for the root CityObject).
+
+    Returns
+    -------
+    dict
+        ``repair_stage``, ``repair_iou``, ``repair_mean_displacement`` (m),
+        ``repair_hausdorff`` (m), ``repair_defects_before``, ``repair_defects_after``.
+    """
+    r = repair_info(b)
+
+    def num(x):
+        return None if x is None else round(float(x), 6)
+    return {"repair_stage": r["stage"], "repair_iou": num(r.get("iou")),
+            "repair_mean_displacement": num(r.get("mean_displacement")),
+            "repair_hausdorff": num(r.get("hausdorff")),
+            "repair_defects_before": list(r.get("defects_before", [])),
+            "repair_defects_after": list(r.get("defects_after", []))}
+
+
 def dataset_table(buildings: Iterable[Building]) -> dict:
     """Per-dataset summary like the method's Tables 5/6.
 
@@ -400,5 +422,5 @@ def dataset_table(buildings: Iterable[Building]) -> dict:
 
 
 __all__ = ["STAGES", "DEFAULT_TIMEOUT", "repair_building", "repair_features", "dataset_table",
-           "repair_info", "ladder", "mesh_of_geometry", "is_repaired", "merge_slivers", "fill_holes",
+           "repair_info", "repair_attributes", "ladder", "mesh_of_geometry", "is_repaired", "merge_slivers", "fill_holes",
            "frozen_mapping"]
