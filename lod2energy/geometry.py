@@ -18,7 +18,7 @@ except ImportError:  # pragma: no cover
     _earcut = None
 
 __all__ = [
-    "newell_normal", "polygon_normal", "best_fit_plane", "project_2d", "snap_map",
+    "cross_rows", "newell_normal", "polygon_normal", "best_fit_plane", "project_2d", "snap_map",
     "triangulate_surface", "triangulate_surfaces", "triangulate_flat", "triangulate_shell", "triangle_normals", "triangle_areas",
     "signed_volume", "bbox_pairs", "segment_triangle_intersect", "triangle_pairs_intersect",
     "winding_number", "points_in_solid",
@@ -666,11 +666,23 @@ def bbox_pairs(lo: np.ndarray, hi: np.ndarray, pad: float = 0.0,
     return np.argwhere(ok)
 
 
-def _cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
-    """Row-wise cross product of (..., 3) arrays (cheaper than np.cross on small batches)."""
+def cross_rows(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """Row-wise cross product of (..., 3) arrays (cheaper than np.cross on small batches).
+
+    Parameters
+    ----------
+    a, b : (..., 3) float
+
+    Returns
+    -------
+    (..., 3) float
+    """
     a0, a1, a2 = a[..., 0], a[..., 1], a[..., 2]
     b0, b1, b2 = b[..., 0], b[..., 1], b[..., 2]
     return np.stack([a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0], axis=-1)
+
+
+_cross = cross_rows
 
 
 def _unit(v: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

@@ -3,7 +3,10 @@
 These run only on primitives whose shells passed the shell checks, so every shell is a
 closed 2-manifold here. val3dity decides them with exact Nef polyhedra; here volumes of
 boolean results come from manifold3d (robust, double precision, about a local origin),
-with bounding boxes as a prefilter. "Interiors overlap" means a shared volume above
+after two cheap filters: bounding boxes, then a separating face plane (one solid behind
+one of its faces, the other in front: parts sharing a wall). Inner shells are first
+placed by the winding numbers of their vertices, which is exact where a shared volume
+would be below round-off (a cavity poking 10 um out of its solid). "Interiors overlap" means a shared volume above
 ``VOLUME_EPS`` (val3dity's exact test reports any positive volume; the floor only
 absorbs round-off of coplanar shared walls). With ``overlap_tol > 0`` two solids
 overlap when the shared part is thicker than ``overlap_tol`` (its volume / area ratio,
@@ -16,7 +19,7 @@ from typing import Sequence
 import numpy as np
 
 from lod2energy.config import DEFAULT, Tolerances
-from lod2energy.geometry import _cross, bbox_pairs, signed_volume, winding_number
+from lod2energy.geometry import bbox_pairs, cross_rows as _cross, signed_volume, winding_number
 from lod2energy.model import Building, Geometry, Solid
 from lod2energy.validate.shell import shell_meshes, shell_meshes_multi
 
@@ -116,35 +119,6 @@ def _same_shell(vertices: np.ndarray, t1: np.ndarray, t2: np.ndarray, snap_tol: 
     if p1.shape != p2.shape or not np.array_equal(p1, p2):
         return False
     return abs(abs(signed_volume(vertices, t1)) - abs(signed_volume(vertices, t2))) <= VOLUME_EPS
-
-
-def _face_planes(vertices: np.ndarray, tris: np.ndarray, origin: np.ndarray):
-    """(points (k, 3), unit normals (p, 3), offsets (p,)) of a closed triangle set, about origin."""
-    pts = vertices[np.unique(tris)] - origin
-    P = vertices[tris] - origin
-    n = _cross(P[:, 1] - P[:, 0], P[:, 2] - P[:, 0])
-    ln = np.sqrt(np.einsum("ij,ij->i", n, n))
-    keep = ln > 0
-    n = n[keep] / ln[keep, None]
-    return pts, n, np.einsum("ij,ij->i", n, P[keep, 0])
-
-
-def _separated(a, b, eps: float = 1e-6) -> bool:
-    """Whether a face plane of one solid has the whole solid behind it and the other in front.
-
-    Such a plane proves that the interiors do not overlap (parts sharing a wall), without
-    a boolean operation.
-    """
-    for (pa, n, d), pb in ((a, b[0]), (b, a[0])):
-        if len(n) == 0:
-            continue
-        behind = (pa @ n.T - d).max(axis=0) <= eps
-        if not behind.any():
-            continue
-        front = (pb @ n[behind].T - d[behind]).min(axis=0) >= -eps
-        if front.any():
-            return True
-    return False
 
 
 # ----------------------------------------------------------------------------- 401-405
@@ -337,7 +311,13 @@ def _ragged_pairs(na: np.ndarray, nb: np.ndarray):
 
 
 def _separated_pairs(pts, pstart, npts, nrm, off, fstart, nf, pairs, eps: float = 1e-6) -> np.ndarray:
-    """Vectorised :func:`_separated` for many pairs of items (ragged points / planes)."""
+    """Which pairs of items a face plane separates (item i behind one of its own face planes
+    and item j in front of it, or the reverse), within ``eps`` m.
+
+    Such a plane proves that the interiors do not overlap (parts sharing a wall) without a
+    boolean operation. Items hold ragged runs of points (``pstart``, ``npts``) and of
+    unit-normal planes ``n . x = off`` (``fstart``, ``nf``); ``pairs`` is (p, 2) int.
+    """
     # planes with the whole item behind them
     g, fi, qi, cnt = _ragged_pairs(nf, npts)
     f_idx = fstart[g] + fi
