@@ -266,11 +266,7 @@ def _triangulate_quads(vertices: np.ndarray, quads: np.ndarray, normals: np.ndar
 
 def triangulate_surfaces(vertices: np.ndarray, ringsets: Sequence[Sequence[np.ndarray]]
                          ) -> tuple[np.ndarray, np.ndarray]:
-    """Triangulate many polygons at once.
-
-    Triangles and simple quadrilaterals are handled in bulk; other polygons (and any
-    polygon with holes) are triangulated one by one (constrained Delaunay) in their
-    own plane.
+    """Triangulate many polygons at once (see :func:`triangulate_flat`).
 
     Parameters
     ----------
@@ -287,39 +283,11 @@ def triangulate_surfaces(vertices: np.ndarray, ringsets: Sequence[Sequence[np.nd
     poly_of_tri : (T,) int
         Index (into ``ringsets``) of the polygon of each triangle.
     """
-    nf = len(ringsets)
-    if nf == 0:
+    rings = [np.asarray(r, dtype=np.intp) for rs in ringsets for r in rs]
+    if not rings:
         return np.zeros((0, 3), dtype=np.intp), np.zeros(0, dtype=np.intp)
-    simple = np.fromiter((len(r) == 1 for r in ringsets), dtype=bool, count=nf)
-    nout = np.fromiter((len(r[0]) for r in ringsets), dtype=np.intp, count=nf)
-    out_t, out_f = [], []
-    tri_f = np.flatnonzero(simple & (nout == 3))
-    if len(tri_f):
-        out_t.append(np.array([ringsets[f][0] for f in tri_f.tolist()], dtype=np.intp).reshape(-1, 3))
-        out_f.append(tri_f)
-    rest = np.flatnonzero(~(simple & (nout == 3)))
-    normals = np.zeros((nf, 3))
-    if len(rest):
-        normals[rest] = newell_normals(vertices, [ringsets[f][0] for f in rest.tolist()])
-    quad_f = np.flatnonzero(simple & (nout == 4) & np.any(normals != 0, axis=1))
-    if len(quad_f):
-        quads = np.array([ringsets[f][0] for f in quad_f.tolist()], dtype=np.intp).reshape(-1, 4)
-        out_t.append(_triangulate_quads(vertices, quads, normals[quad_f]))
-        out_f.append(np.repeat(quad_f, 2))
-    done = np.zeros(nf, dtype=bool)
-    done[tri_f] = True
-    done[quad_f] = True
-    for f in np.flatnonzero(~done).tolist():
-        t = triangulate_surface(vertices, ringsets[f], normals[f])
-        if len(t):
-            out_t.append(t)
-            out_f.append(np.full(len(t), f, dtype=np.intp))
-    if not out_t:
-        return np.zeros((0, 3), dtype=np.intp), np.zeros(0, dtype=np.intp)
-    tris = np.concatenate(out_t).astype(np.intp)
-    fot = np.concatenate(out_f).astype(np.intp)
-    order = np.argsort(fot, kind="stable")
-    return tris[order], fot[order]
+    return triangulate_flat(vertices, np.concatenate(rings), np.array([len(r) for r in rings]),
+                            np.array([len(rs) for rs in ringsets]))
 
 
 SLIVER_RATIO = 0.01
@@ -455,8 +423,12 @@ def _triangulate_general(vertices, ids, ring_start, ring_len, first_ring, rpp, p
 
 def triangulate_flat(vertices: np.ndarray, ids: np.ndarray, ring_len: np.ndarray,
                      rings_per_poly: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """:func:`triangulate_surfaces` on a flat encoding of the polygons (no Python per polygon
-    for triangles and quadrilaterals).
+    """Triangulate many polygons given in a flat encoding, in their own planes.
+
+    Triangles, quadrilaterals (split through their sharpest corner) and convex
+    polygons (fans from a strict corner) are handled in bulk; other polygons get ear
+    clipping, replaced by a constrained Delaunay triangulation (as val3dity's) where it
+    leaves slivers. No triangle has zero area unless its polygon has.
 
     Parameters
     ----------

@@ -9,9 +9,12 @@ and finally self-intersections (306, "Location close to: (centroid)"). A
 CompositeSurface needs no closedness but gets 303 for vertices where several open fans
 meet ("Non-manifold vertex at (x, y, z)").
 
-Everything is vectorised over all the shells of a building (:func:`check_shells`); only
-shells that are *not* clean 2-manifolds go through a short sequential replay of
-val3dity's incremental construction, to attribute 303/307 to faces as it does.
+Everything is vectorised over many shells, of one building (:func:`check_shells`) or of
+many (:func:`check_shells_multi`); only shells that are *not* clean 2-manifolds go
+through a short sequential replay of val3dity's incremental construction (CGAL's rules:
+no reused directed edge, no face at a closed vertex, no face closing one fan of a vertex
+that has another), to name the refused faces as it does. Snapped triangulations are
+cached per shell (:func:`shell_meshes_multi`) for the solid-level checks.
 """
 from __future__ import annotations
 

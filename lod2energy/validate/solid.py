@@ -225,11 +225,6 @@ def check_solids_multi(items: Sequence[tuple[np.ndarray, Solid]], tol: Tolerance
 
 # ----------------------------------------------------------------------------- 501-503
 
-def _solid_manifold(vertices: np.ndarray, solid: Solid, tol: Tolerances, origin: np.ndarray):
-    tris = solid_triangles(vertices, solid, tol)
-    return to_manifold(vertices, np.concatenate(tris) if len(tris) > 1 else tris[0], origin)
-
-
 def check_multisolid(vertices: np.ndarray, geometry: Geometry, tol: Tolerances = DEFAULT
                      ) -> list[tuple[int | None, int, str]]:
     """MultiSolid / CompositeSolid checks: 502 duplicated, 501 intersecting, 503 disconnected.
