@@ -350,3 +350,18 @@ def test_601_at_real_world_coordinates_and_in_batches():
     assert single == [set(), {601}]
     batched = [{d.code for d in ds} for ds in validate_buildings([touching, overlapping])]
     assert batched == single
+
+
+@pytest.mark.parametrize("code,polys", [
+    (307, lambda: box_polygons(1, 1, 1)[:2] + [[box_polygons(1, 1, 1)[2][0][::-1]]]),
+    (305, lambda: box_polygons(1, 1, 1)[:1] + box_polygons(1, 1, 1, origin=(5, 0, 0))[:1]),
+    (306, lambda: [[p[0]] for p in building_polys_of(dented_box())]),
+])
+def test_composite_surface_rules(code, polys):
+    b = building_from_polygons(polys(), "CompositeSurface", id="cs")
+    assert codes(b) == {code}
+
+
+def building_polys_of(b: Building):
+    sh = b.root.geometries[0].solids[0].shells[0]
+    return [[b.vertices[s.outer]] for s in sh.surfaces]
