@@ -21,6 +21,7 @@ import argparse
 import json
 import sys
 import time
+from dataclasses import replace
 from pathlib import Path
 
 REPO = Path(__file__).resolve().parents[1]
@@ -48,7 +49,7 @@ def run_tile(path: Path, repair: bool, export: str | None = None, versions=("1.0
         return {"tile": f"{path.parent.name}/{path.name}", "unreadable_file": [f.message for f in feats]}
     labelled = []
     agree = total = 0.0
-    final_agree = final_total = final_without = 0.0
+    final_agree = final_total = final_without = final_far = 0.0
     conf: dict = {}
     n = n_err = n_rep = 0
     for f in feats:
@@ -73,7 +74,8 @@ def run_tile(path: Path, repair: bool, export: str | None = None, versions=("1.0
             n_rep += 1
             lb = semantics.label_building(rb, source=f)
             labelled.append(lb)
-            fa, ft, fw = final_label_agreement(f, lb)
+            fa, ft, fw, ff = final_label_agreement(f, lb)
+            final_far += ff
             final_agree += fa
             final_total += ft
             final_without += fw
@@ -88,6 +90,8 @@ def run_tile(path: Path, repair: bool, export: str | None = None, versions=("1.0
             **({"repaired": n_rep,
                 "final_agreement_pct": round(100 * final_agree / final_total, 2) if final_total else None,
                 "final_area_without_input_face_pct": round(100 * final_without / (final_total + final_without), 2)
+                if final_total + final_without else None,
+                "final_area_far_from_input_pct": round(100 * final_far / (final_total + final_without), 2)
                 if final_total + final_without else None}
                if repair else {}), **({"exports": exports} if export else {})}
 
@@ -130,11 +134,14 @@ def export_tile(path: Path, model, labelled, outdir: str, versions) -> dict:
     return out
 
 
-def final_label_agreement(source, labelled) -> tuple[float, float, float]:
+FAR = 2.0  # m
+
+
+def final_label_agreement(source, labelled) -> tuple[float, float, float, float]:
     """Agreement of the final labels with the input's own labels, area-weighted.
 
-    Each output face is compared with the input face of compatible normal nearest to it
-    (the look-up label transfer uses: normals within 30 degrees, at most 2 m away).
+    Each output face is compared with the input face of compatible normal (within 30
+    degrees) nearest to it, the look-up label transfer uses.
 
     Returns
     -------
@@ -143,13 +150,17 @@ def final_label_agreement(source, labelled) -> tuple[float, float, float]:
     comparable : float, m2
         Area of output faces that have such an input face (labelled).
     without_input : float, m2
-        Area of output faces with no input face to compare with (new faces far from any
-        labelled input face of similar orientation; the rules label them).
+        Area of output faces with no input face to compare with (no labelled input face of
+        similar orientation; the rules label them).
+    far : float, m2
+        Area of output faces whose nearest compatible input face is more than
+        ``FAR`` m away (a measure of how much the repair moved the envelope).
     """
     from lod2energy import semantics as S
 
     src = S._SourceFaces(source, None)
-    agree = comparable = without = 0.0
+    near = replace(S.DEFAULT_RULES, transfer_max_dist=FAR)
+    agree = comparable = without = far = 0.0
     for o, gi, g in S.envelope_objects(labelled):
         t = S.face_table(labelled.vertices, g)
         for i, s in enumerate(t.surfaces):
@@ -159,10 +170,12 @@ def final_label_agreement(source, labelled) -> tuple[float, float, float]:
             if hit is None:
                 without += t.area[i]
                 continue
+            if src.nearest(t.normal[i], t.centroid[i], near) is None:
+                far += t.area[i]
             comparable += t.area[i]
             if hit[0] == g.semantic_type(s):
                 agree += t.area[i]
-    return agree, comparable, without
+    return agree, comparable, without, far
 
 
 def main(argv=None) -> int:
@@ -172,7 +185,8 @@ def main(argv=None) -> int:
     ap.add_argument("--json")
     ap.add_argument("--export")
     ap.add_argument("--versions", default="1.0,1.1,2.0")
-    ap.add_argument("--only", help="substring of tile paths to run")
+    ap.add_argument("--only", help="comma-separated substrings of the tile paths to run")
+    ap.add_argument("--skip", help="comma-separated substrings of tile paths to leave out")
     a = ap.parse_args(argv)
     if a.export:
         a.repair = True
@@ -180,7 +194,9 @@ def main(argv=None) -> int:
     tot_a = tot_t = 0.0
     t0 = time.time()
     for p in tiles(Path(a.data)):
-        if a.only and a.only not in str(p):
+        if a.only and not any(x in str(p) for x in a.only.split(",")):
+            continue
+        if a.skip and any(x in str(p) for x in a.skip.split(",")):
             continue
         r = run_tile(p, a.repair, a.export, tuple(a.versions.split(",")))
         rows.append(r)

@@ -58,7 +58,8 @@ class LabelRules:
         After repair, a new face takes the label of an input face only if the cosine of
         the angle between their normals is at least this (0.866 = 30 degrees).
     transfer_max_dist : float, m
-        ... and only if the input face is at most this far away.
+        ... and only if the input face is at most this far away (default: no limit, as the
+        method states it; a finite value sends far-away new faces to the rules).
     closure_between_parts : bool
         Label unlabelled faces lying on another part's face (opposite normals) as
         ClosureSurface.
@@ -82,7 +83,7 @@ class LabelRules:
     roof_nz_high: float = 0.30
     roof_hrel: float = 0.65
     transfer_normal_cos: float = 0.866
-    transfer_max_dist: float = 2.0
+    transfer_max_dist: float = math.inf
     closure_between_parts: bool = True
     closure_plane_tol: float = 0.01
     closure_overlap: float = 0.5
@@ -302,6 +303,10 @@ class _SourceFaces:
                     continue
                 self.items.append((st, g.semantic_surfaces[s.semantic], t.normal[i], t.centroid[i], s))
         self.normals = np.array([it[2] for it in self.items]).reshape(-1, 3)
+        self.centroids = np.array([it[3] for it in self.items]).reshape(-1, 3)
+        # radius of each face around its centroid: |p - c| - radius bounds the distance below
+        self.radii = np.array([float(np.linalg.norm(self.vertices[it[4].outer] - it[3], axis=1).max())
+                               if len(it[4].outer) else 0.0 for it in self.items])
         self._poly: dict[int, Any] = {}
 
     def _distance(self, j: int, point: np.ndarray) -> float:
@@ -322,11 +327,18 @@ class _SourceFaces:
         if not self.items:
             return None
         ok = np.nonzero(self.normals @ normal >= rules.transfer_normal_cos)[0]
+        if not len(ok):
+            return None
+        lower = np.maximum(np.linalg.norm(self.centroids[ok] - point, axis=1) - self.radii[ok], 0.0)
+        order = np.argsort(lower, kind="stable")
         best, best_d = None, rules.transfer_max_dist
-        for j in ok:
-            d = self._distance(int(j), point)
+        for k in order:
+            if lower[k] > best_d:
+                break
+            j = int(ok[k])
+            d = self._distance(j, point)
             if d <= best_d:
-                best, best_d = int(j), d
+                best, best_d = j, d
         return None if best is None else self.items[best]
 
 

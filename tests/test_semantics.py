@@ -290,3 +290,20 @@ def test_real_tile_every_surface_labelled_and_input_labels_kept():
                 n += 1
         assert not [d for d in S.check_labels(lab) if d.code in (1101, 1104)]
     assert n > 0
+
+
+def test_transfer_picks_the_nearest_of_several_compatible_faces():
+    def wall(y, x0=0.0):
+        return [np.array([[x0, y, 0], [x0 + 4, y, 0], [x0 + 4, y, 3], [x0, y, 3]], float)]
+
+    # three south-facing input walls (normal -y): a big one far away, two small ones
+    src = building_from_polygons([wall(0.0), wall(-5.0, 20.0), wall(-9.0)], "MultiSurface",
+                                 ["WallSurface", "OuterCeilingSurface", "ClosureSurface"])
+    new = building_from_polygons([wall(-8.5, 1.0)], "MultiSurface").with_provenance(repair={"stage": "test"})
+    lab = S.label_building(new, source=src)
+    assert types_of(lab) == ["ClosureSurface"] and entries_of(lab)[0]["labelSource"] == "transfer"
+    # with a distance limit, a face far from every input face goes to the rules
+    far = building_from_polygons([wall(-30.0)], "MultiSurface").with_provenance(repair={"stage": "test"})
+    assert types_of(S.label_building(far, source=src)) == ["ClosureSurface"]
+    limited = S.label_building(far, source=src, rules=S.LabelRules(transfer_max_dist=2.0))
+    assert types_of(limited) == ["WallSurface"] and entries_of(limited)[0]["labelSource"] == "rule"
