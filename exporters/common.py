@@ -431,6 +431,43 @@ def drop_collinear(ring: list[int], v: np.ndarray, tol: float = COLLINEAR_TOL) -
     return ring
 
 
+def _drop_shared_collinear(faces: list, v: np.ndarray, tol: float) -> list:
+    """Drop vertices that are within ``tol`` of collinear in EVERY ring using them.
+
+    A vertex collinear in one face but a corner of another is kept everywhere: dropping it
+    from one face only would leave a T-junction.
+    """
+    from dataclasses import replace as _replace
+
+    def collinear_in(ring, k):
+        a, b, c = v[ring[k - 1]], v[ring[k]], v[ring[(k + 1) % len(ring)]]
+        ac = c - a
+        L2 = float(ac @ ac)
+        if L2 == 0:
+            return False
+        t = float((b - a) @ ac) / L2
+        return 0 < t < 1 and float(np.linalg.norm(a + t * ac - b)) < tol
+
+    status: dict[int, bool] = {}
+    for f in faces:
+        for r in f.rings:
+            for k, i in enumerate(r):
+                status[i] = status.get(i, True) and collinear_in(r, k)
+    drop = {i for i, ok in status.items() if ok}
+    if not drop:
+        return faces
+    out = []
+    for f in faces:
+        rings = []
+        for ri, r in enumerate(f.rings):
+            nr = tuple(i for i in r if i not in drop)
+            if len(nr) < 3:
+                nr = r
+            rings.append(nr)
+        out.append(_replace(f, rings=tuple(rings)))
+    return out
+
+
 def classify(semantic_type: str | None, normal: np.ndarray) -> str:
     """Exporter class of a surface: its semantic type, else its orientation."""
     k = SEMANTIC_CLASS.get(semantic_type or "")
@@ -458,7 +495,8 @@ def _number(x) -> float | None:
 
 
 def zone_shells(b: Building, origin: np.ndarray, lod: str | None = None,
-                weld_tol: float = WELD_TOL, wwr: float | None = None) -> list[ZoneShell]:
+                weld_tol: float = WELD_TOL, wwr: float | None = None,
+                collinear_tol: float = 0.0) -> list[ZoneShell]:
     """One :class:`ZoneShell` per Building/BuildingPart solid at ``lod`` (default: highest).
 
     Vertices are shifted by ``-origin`` and welded at ``weld_tol``; consecutive duplicates
@@ -471,6 +509,9 @@ def zone_shells(b: Building, origin: np.ndarray, lod: str | None = None,
     origin : (3,) float, m
     wwr : float, optional
         Overrides ``provenance["thermal"]["wwr"]``.
+    collinear_tol : float, m
+        Drop ring vertices this close to their neighbours' segment (:func:`drop_collinear`);
+        0 keeps them (needed for triangle meshes, where dropping makes T-junctions).
     """
     thermal = _thermal(b)
     u_table = thermal.get("u_values") if isinstance(thermal.get("u_values"), Mapping) else {}
@@ -493,7 +534,7 @@ def zone_shells(b: Building, origin: np.ndarray, lod: str | None = None,
             for fi, s in enumerate(shell.surfaces):
                 rings = []
                 for ri, r in enumerate(s.rings):
-                    cr = drop_collinear(_clean_ring([remap[int(i)] for i in r]), welded)
+                    cr = _clean_ring([remap[int(i)] for i in r])
                     if len(set(cr)) >= 3:
                         rings.append(tuple(cr))
                     elif ri == 0:
@@ -515,6 +556,8 @@ def zone_shells(b: Building, origin: np.ndarray, lod: str | None = None,
                     u = FALLBACK_U[kind]
                     missing_u.add(kind)
                 faces.append(ZoneFace(tuple(rings), kind, stype, u, fi))
+            if collinear_tol > 0:
+                faces = _drop_shared_collinear(faces, welded, collinear_tol)
             if missing_u:
                 warnings.append(f"{obj.id}: no uValue for {', '.join(sorted(missing_u))}; "
                                 f"fallback U-values used")

@@ -28,7 +28,7 @@ from typing import Iterable, Sequence
 import numpy as np
 
 from .common import (
-    MIN_PIECE_AREA, PLANAR_TOL, WELD_TOL, ExportResult, ZoneFace, ZoneShell, _is_convex_2d,
+    COLLINEAR_TOL, MIN_PIECE_AREA, PLANAR_TOL, WELD_TOL, ExportResult, ZoneFace, ZoneShell, _is_convex_2d,
     _split_t_junctions, weld,
     _short_hash, check_closed_outward, local_origin, merge_convex, newell_normal, output_path,
     plane_basis, polygon_area3d, safe_stem, triangulate, unit, zone_shells,
@@ -371,6 +371,9 @@ def zone_pieces(zone: ZoneShell, zi: int, party: dict) -> list[Piece]:
         ov = party.get((zi, fi))
         if ov:
             parts = _split_face(zone, f, ov)
+            if len({b for _, b in parts}) > 1 and not all(clean_piece(p) for p, _ in parts):
+                # a split that leaves slivers EnergyPlus would mangle: classify the whole face
+                parts = _whole_face(zone, f, ov)
         else:
             pts, ends, n, c = _face_frame(zone, f)
             parts = [(p, _outer_boundary(f.kind)) for p in _pieces_from_points(pts, ends, n, c)]
@@ -382,7 +385,41 @@ def zone_pieces(zone: ZoneShell, zi: int, party: dict) -> list[Piece]:
     return pieces
 
 
-def conform(pieces: list[Piece], tol: float = 1e-3) -> list[Piece]:
+def _whole_face(zone: ZoneShell, face: ZoneFace, overlaps: list) -> list[tuple[np.ndarray, str]]:
+    """Unsplit pieces of a face, Adiabatic when at least half of it is shared."""
+    import shapely
+
+    pts, ends, n, c = _face_frame(zone, face)
+    u, v = plane_basis(n)
+    whole = _shapely_poly(pts, ends, c, u, v)
+    shared = shapely.intersection(whole, shapely.union_all([g for _, g in overlaps])).area
+    boundary = "Adiabatic" if shared >= 0.5 * whole.area else _outer_boundary(face.kind)
+    return [(p, boundary) for p in _pieces_from_points(pts, ends, n, c)]
+
+
+def clean_piece(p: np.ndarray, min_area: float = 0.05, min_edge: float = 0.025,
+                point_tol: float = 0.0127) -> bool:
+    """No sliver: area, edge lengths and off-line vertices clear of EnergyPlus's tolerance.
+
+    A vertex either lies on the line through its neighbours (EnergyPlus drops it) or at
+    least ``point_tol`` (m) away from it.
+    """
+    if polygon_area3d(p) < min_area:
+        return False
+    k = len(p)
+    for i in range(k):
+        a, b, c = p[i - 1], p[i], p[(i + 1) % k]
+        if np.linalg.norm(b - a) < min_edge:
+            return False
+        ac = c - a
+        t = float((b - a) @ ac) / float(ac @ ac)
+        d = float(np.linalg.norm(a + t * ac - b))
+        if 1e-4 < d < point_tol:
+            return False
+    return True
+
+
+def conform(pieces: list[Piece], tol: float = 1e-5) -> list[Piece]:
     """Insert into every piece the zone vertices that lie on its edges (no T-junctions).
 
     Splitting a face adds vertices on its boundary; the neighbouring faces get them too, so
@@ -396,7 +433,7 @@ def conform(pieces: list[Piece], tol: float = 1e-3) -> list[Piece]:
     for p in pieces:
         polys.append(idx[k:k + len(p.points)].tolist())
         k += len(p.points)
-    polys = _split_t_junctions(v, polys, tol)
+    polys = _split_t_junctions(v, polys, tol, only_unmatched=True)
     out = []
     for p, poly in zip(pieces, polys):
         poly = [i for j, i in enumerate(poly) if i != poly[j - 1]]
@@ -588,7 +625,10 @@ def render_idf(zones: Sequence[ZoneShell], pieces: Sequence[list[Piece]], delta:
     b_name = reg.name(building_ids[0] if len(building_ids) == 1 else "Dataset", 80)
     for z, zp in zip(zones, pieces):
         zname = reg.name(z.object_id, 60)
-        zone_ctx.append({"name": zname, "comment": comment_text(z.object_id)})
+        zone_ctx.append({"name": zname, "comment": comment_text(z.object_id),
+                         "volume": _fmt(max(_pieces_volume(zp), 0.0), 3),
+                         "floor_area": _fmt(sum(polygon_area3d(p.points) for p in zp
+                                                if p.kind in ("ground", "floor")), 3)})
         warnings.extend(z.warnings)
         counters: dict[str, int] = {}
         # windows go on walls of at least min_window_wall_area; their ratio is raised so the
@@ -664,6 +704,16 @@ def render_idf(zones: Sequence[ZoneShell], pieces: Sequence[list[Piece]], delta:
     return text, stats, warnings
 
 
+def _pieces_volume(pieces: Sequence[Piece]) -> float:
+    """Enclosed volume (m3) of a zone's convex pieces (fan triangulation, divergence theorem)."""
+    vol = 0.0
+    for p in pieces:
+        q = p.points
+        for k in range(1, len(q) - 1):
+            vol += float(np.dot(q[0], np.cross(q[k], q[k + 1]))) / 6.0
+    return vol
+
+
 def _bbox(b: Building) -> np.ndarray:
     if len(b.vertices) == 0:
         return np.array([np.inf] * 3 + [-np.inf] * 3)
@@ -711,7 +761,7 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
     zones: list[ZoneShell] = []
     zones_of: dict[int, list[int]] = {}
     for bi, b in enumerate(blist):
-        zs = zone_shells(b, origin, options.lod, wwr=options.wwr)
+        zs = zone_shells(b, origin, options.lod, wwr=options.wwr, collinear_tol=COLLINEAR_TOL)
         zones_of[bi] = list(range(len(zones), len(zones) + len(zs)))
         zones.extend(zs)
     party = find_party_faces(zones) if options.party_walls else {}

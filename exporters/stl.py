@@ -106,7 +106,9 @@ def merge_meshes(meshes: list[tuple[np.ndarray, np.ndarray, np.ndarray]], union:
             v = np.asarray(out.vert_properties)[:, :3].astype(np.float64)
             t = np.asarray(out.tri_verts).astype(np.intp)
             c = np.asarray(code_of, dtype=np.intp)[np.asarray(out.face_id).astype(np.intp)]
-            v, t, c = collapse_short_edges(v, t, c, CROSS_WELD_TOL)
+            v2, t2, c2 = collapse_short_edges(v, t, c, CROSS_WELD_TOL)
+            if _closed_by_position(*separate_touching(v2, t2)[:1], t2):
+                v, t, c = v2, t2, c2
             v, moved = separate_touching(v, t)
             if moved:
                 warnings.append(f"{moved} vertices where merged parts only touch were moved "
@@ -180,6 +182,17 @@ def separate_touching(v: np.ndarray, t: np.ndarray, dist: float | None = None) -
         if L > 0:
             v[i] = v[i] + d / L * dist
     return v, len(idx)
+
+
+def _closed_by_position(v: np.ndarray, t: np.ndarray) -> bool:
+    """Closed and consistently wound once vertices are merged by position (as STL readers do)."""
+    _, inv = np.unique(np.round(v, 5), axis=0, return_inverse=True)
+    tt = inv.ravel()[t]
+    e = np.concatenate([tt[:, [0, 1]], tt[:, [1, 2]], tt[:, [2, 0]]])
+    if np.any(e[:, 0] == e[:, 1]):
+        return False
+    fwd = {tuple(x) for x in e.tolist()}
+    return len(fwd) == len(e) and all((b, a) in fwd for a, b in fwd)
 
 
 def _facet_normals(v: np.ndarray, t: np.ndarray) -> np.ndarray:

@@ -5,8 +5,8 @@ utilities in ``/usr/bin`` and its configuration in ``/usr/share/openfoam``;
 ``surfaceCheck`` only needs ``WM_PROJECT_DIR`` pointing there and no case folder (it is
 run in a temporary folder anyway, because it writes helper files when it finds problems).
 
-A surface passes when surfaceCheck says "Surface is closed", finds no illegal triangle and
-prints no ``***`` failure line.
+A surface passes when surfaceCheck says "Surface is closed", finds no illegal triangle,
+prints no ``***`` failure line, and counts one normal-orientation zone per connected part.
 """
 from __future__ import annotations
 
@@ -84,8 +84,12 @@ def parse_surface_check(text: str, returncode: int = 0) -> SurfaceCheck:
             if len(w) == 2 and w[1].isdigit():
                 regions[w[0]] = int(w[1])
     failures = [ln.strip() for ln in text.splitlines() if ln.strip().startswith("***")]
-    for pat in ("Surface is not closed", "More than one normal orientation", "FOAM FATAL"):
+    for pat in ("Surface is not closed", "FOAM FATAL"):
         failures.extend(ln.strip() for ln in text.splitlines() if pat in ln and ln.strip() not in failures)
+    # surfaceCheck prints "More than one normal orientation" whenever zones > 1; that is only a
+    # failure when a connected part holds more than one orientation zone
+    if zones is not None and parts is not None and zones > parts:
+        failures.append(f"{zones} normal-orientation zones for {parts} connected part(s)")
     return SurfaceCheck(closed, illegal, zones, parts, regions, tuple(failures), returncode, text)
 
 

@@ -1,0 +1,140 @@
+"""STL export: closed outward surfaces, per-class patches, local frame, union of parts."""
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import numpy as np
+import pytest
+import trimesh
+
+from export_helpers import DATA, energy_ready, l_shaped, parts_building, real_buildings, shifted, two_part_building
+from factories import box, box_polygons, gabled_house
+
+from lod2energy.errors import ParameterError
+from lod2energy.exporters import stl
+
+
+@pytest.mark.parametrize("ascii_", [True, False], ids=["ascii", "binary"])
+@pytest.mark.parametrize("make", [box, gabled_house, l_shaped], ids=lambda f: f.__name__)
+def test_canonical_buildings_closed_outward(tmp_path, make, ascii_):
+    b = energy_ready(make())
+    res = stl.write([b], tmp_path, stl.StlOptions(ascii=ascii_))
+    assert len(res) == 1 and res[0].ok, res[0].problems
+    tris, codes, names = stl.read_stl(res[0].path)
+    mesh = trimesh.Trimesh(tris.reshape(-1, 3), np.arange(len(tris) * 3).reshape(-1, 3))
+    assert mesh.is_watertight and mesh.is_winding_consistent
+    ref = trimesh.Trimesh(*_zone_mesh_of(b))
+    assert mesh.volume == pytest.approx(abs(ref.volume), rel=1e-6) and mesh.volume > 0
+
+
+def _zone_mesh_of(b):
+    from lod2energy.exporters.common import local_origin, zone_shells
+    z = zone_shells(b, local_origin([b]))[0]
+    t, _ = z.triangles()
+    return z.vertices, t
+
+
+def test_ascii_has_one_named_solid_per_class(tmp_path):
+    res = stl.write([energy_ready(gabled_house())], tmp_path, stl.StlOptions(ascii=True))
+    text = Path(res[0].path).read_text()
+    solids = [ln.split()[1] for ln in text.splitlines() if ln.startswith("solid ")]
+    assert solids == ["roof", "wall", "ground"]
+    _, codes, names = stl.read_stl(res[0].path)
+    counts = {names[c]: int((codes == c).sum()) for c in set(codes.tolist())}
+    assert counts == {"roof": 4, "wall": 10, "ground": 2}  # quads: 2 triangles, pentagons: 3
+
+
+def test_binary_patch_attribute_and_sidecar(tmp_path):
+    b = energy_ready(shifted(box(10, 8, 6), (85123.4, 446789.6, 2.5)))
+    res = stl.write([b], tmp_path)
+    side = json.loads(Path(res[0].path).with_suffix(".json").read_text())
+    assert side["patches"] == {"roof": 2, "wall": 8, "ground": 2}
+    assert side["offset"] == list(res[0].offset)
+    tris, codes, names = stl.read_stl(res[0].path)
+    assert np.abs(tris).max() < 100
+    assert np.allclose(tris.reshape(-1, 3).min(axis=0) + np.asarray(side["offset"]), b.vertices.min(axis=0),
+                       atol=1e-3)
+    roof = tris[codes == stl.PATCHES.index("roof")]
+    assert np.allclose(roof[:, :, 2] + side["offset"][2], b.vertices[:, 2].max(), atol=1e-3)
+
+
+def test_parts_are_merged_without_internal_walls(tmp_path):
+    b = energy_ready(two_part_building())
+    res = stl.write([b], tmp_path)
+    assert res[0].ok, res[0].problems
+    tris, codes, _ = stl.read_stl(res[0].path)
+    mesh = trimesh.Trimesh(tris.reshape(-1, 3), np.arange(len(tris) * 3).reshape(-1, 3))
+    assert mesh.is_watertight and mesh.volume == pytest.approx(10 * 8 * 6 + 6 * 8 * 9, rel=1e-4)
+    # no triangle lies inside the shared 36 m2 rectangle at x = 10, 2 < y < 8, 0 < z < 6
+    c = tris.mean(axis=1)
+    inside = (np.abs(c[:, 0] - 10) < 1e-6) & (c[:, 1] > 2) & (c[:, 1] < 8) & (c[:, 2] < 6)
+    assert not inside.any()
+
+
+def test_unmerged_parts_keep_two_bodies(tmp_path):
+    b = energy_ready(two_part_building())
+    res = stl.write([b], tmp_path, stl.StlOptions(union=False))
+    tris, _, _ = stl.read_stl(res[0].path)
+    assert len(tris) == 24  # two boxes of 12 triangles
+
+
+def test_parts_touching_along_an_edge_stay_manifold(tmp_path):
+    # two boxes meeting only along the vertical edge x = 10, y = 8
+    b = energy_ready(parts_building([box_polygons(10, 8, 6), box_polygons(5, 5, 6, (10, 8, 0))], "edge"))
+    res = stl.write([b], tmp_path)
+    assert res[0].ok, res[0].problems
+
+
+def test_dataset_mode_merges_touching_buildings(tmp_path):
+    bs = [energy_ready(box(10, 8, 6, id="l")), energy_ready(box(10, 8, 6, origin=(10, 0, 0), id="r")),
+          energy_ready(box(4, 4, 4, origin=(40, 0, 0), id="far"))]
+    res = stl.write(bs, tmp_path, stl.StlOptions(mode="dataset"))
+    assert len(res) == 1 and res[0].ok, res[0].problems
+    tris, _, _ = stl.read_stl(res[0].path)
+    mesh = trimesh.Trimesh(tris.reshape(-1, 3), np.arange(len(tris) * 3).reshape(-1, 3))
+    assert len(mesh.split(only_watertight=True)) == 2
+    assert mesh.volume == pytest.approx(2 * 480 + 64, rel=1e-6)
+
+
+@pytest.mark.parametrize("evil", ["../../x", "a/b\\c", "con", "..", "x" * 300])
+def test_file_names_stay_in_outdir(tmp_path, evil):
+    out = tmp_path / "out"
+    res = stl.write([energy_ready(box(id=evil))], out)
+    p = Path(res[0].path)
+    assert p.parent == out.resolve() and p.with_suffix(".json").parent == out.resolve()
+    assert sorted(x.name for x in tmp_path.iterdir()) == ["out"]
+    assert json.loads(p.with_suffix(".json").read_text())["building_ids"] == [evil]
+
+
+def test_self_check_catches_open_and_inverted(tmp_path):
+    res = stl.write([energy_ready(box())], tmp_path, stl.StlOptions(ascii=True))
+    text = Path(res[0].path).read_text()
+    first = text.index("  facet")
+    second = text.index("  facet", first + 1)
+    opened = tmp_path / "open.stl"
+    opened.write_text(text[:first] + text[second:])
+    assert "not watertight" in stl.self_check(opened)
+    tris, codes, _ = stl.read_stl(res[0].path)
+    flipped = tmp_path / "flipped.stl"
+    stl.write_binary(flipped, tris[:, ::-1].reshape(-1, 3), np.arange(len(tris) * 3).reshape(-1, 3), codes)
+    assert any("not outward" in p for p in stl.self_check(flipped))
+
+
+def test_bad_mode(tmp_path):
+    with pytest.raises(ParameterError):
+        stl.write([energy_ready(box())], tmp_path, stl.StlOptions(mode="tile"))
+
+
+REAL = [("3dbag/3dbag_b2.city.json", False, 2), ("denhaag/DenHaag_01.city.json", True, 12),
+        ("rotterdam/Example_CityGML_Converted_Rotterdam.json", False, 10), ("3dbag/tile901_trimmed.city.jsonl", False, 10)]
+
+
+@pytest.mark.parametrize("rel,multipart,n", REAL, ids=[r[0].split("/")[0] + str(i) for i, r in enumerate(REAL)])
+def test_real_buildings_closed(tmp_path, rel, multipart, n):
+    if not (DATA / rel).exists():
+        pytest.skip(f"shared data not available: {rel}")
+    bs = real_buildings(rel, n=n, multipart=multipart)
+    res = stl.write(bs, tmp_path)
+    assert len(res) == len(bs)
+    assert [(r.building_ids, r.problems) for r in res if not r.ok] == []
