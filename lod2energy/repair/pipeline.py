@@ -232,7 +232,7 @@ def repair_building(b: Building, tol: Tolerances = DEFAULT, timeout: float = DEF
         defects_before |= set(codes)
         entry = {"object": o.id, "geometry": gi, "lod": g.lod, "type": g.type,
                  "n_faces_before": m.n_faces, "defects_before": codes}
-        if not codes and g.type == "Solid" and len(g.solids) == 1 and len(g.solids[0].shells) == 1:
+        if not codes and g.type == "Solid":
             entry.update(stage="valid", n_faces_after=m.n_faces, iou=1.0, mean_displacement=0.0,
                          mean_displacement_back=0.0, hausdorff=0.0, closure="closed", seconds=0.0)
             per_geom.append(entry)
