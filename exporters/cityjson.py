@@ -185,7 +185,20 @@ def _schema_errors(schemas: _SchemaSet, doc: Any, what: str, feature: bool = Fal
         cands = [v for v in schemas.branches if v.is_valid(light)]
         if len(cands) == 1:
             collect(cands[0], co, ("CityObjects", oid))
-        else:  # no or several alternatives: the full oneOf says why
+        elif not cands:
+            # no alternative accepts it even without geometry: report the errors of the
+            # alternative of its own type (the one not complaining about "type"), else the oneOf
+            own = None
+            for v in schemas.branches:
+                errs = list(v.iter_errors(light))
+                if not any(list(e.absolute_path)[:1] == ["type"] for e in errs):
+                    own = v
+                    break
+            if own is not None:
+                collect(own, light, ("CityObjects", oid))
+            else:
+                collect(validator, {**skeleton, "CityObjects": {oid: light}}, ())
+        else:  # several alternatives accept it: the full oneOf decides
             collect(validator, {**skeleton, "CityObjects": {oid: co}}, ())
         if len(out) > _MAX_PROBLEMS:
             break
@@ -339,9 +352,26 @@ def _model_for(model: CityModel, version: str) -> tuple[CityModel, list[str]]:
                    extra=frozen_mapping(extra), appearance=None, version=version), notes
 
 
+def _fix_address(co: dict, version: str) -> None:
+    """Addresses: an object in CityJSON 1.0, an array of objects later. Their ``location``
+    (a MultiPoint with vertex indices) is dropped: the energy export does not carry it."""
+    addr = co.get("address")
+    if addr is None:
+        return
+    items = addr if isinstance(addr, list) else [addr]
+    items = [{k: v for k, v in a.items() if k != "location"} for a in items if isinstance(a, dict)]
+    if not items:
+        co.pop("address")
+    elif version == "1.0":
+        co["address"] = items[0]
+    else:
+        co["address"] = items
+
+
 def _fix_document(doc: dict, version: str) -> dict:
     """Version-specific details the shared writer leaves generic."""
     for co in doc.get("CityObjects", {}).values():
+        _fix_address(co, version)
         for g in co.get("geometry", []) or []:
             if version == "1.0" and isinstance(g.get("lod"), str):
                 lod = float(g["lod"])

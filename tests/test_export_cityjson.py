@@ -112,6 +112,17 @@ def test_cityjsonseq_needs_1_1(tmp_path):
     assert not res.ok and "1.1" in res.problems[0]
 
 
+@pytest.mark.parametrize("version", VERSIONS)
+def test_addresses_follow_the_target_version(tmp_path, version):
+    b = energy_ready(box())
+    addr = {"CountryName": "Nederland", "location": {"type": "MultiPoint", "lod": "0", "boundaries": [0]}}
+    b = replace(b, objects=(replace(b.root, extra=frozen_mapping({"address": addr})),))
+    res = X.write(str(tmp_path / "a.city.json"), model("1.0"), [b], version)
+    assert res.ok, res.problems
+    out = json.loads(Path(res.path).read_text())["CityObjects"]["box"]["address"]
+    assert out == ({"CountryName": "Nederland"} if version == "1.0" else [{"CountryName": "Nederland"}])
+
+
 def test_other_lods_and_installations_are_left_out(tmp_path):
     b = box()
     g = b.objects[0].geometries[0]
@@ -215,6 +226,10 @@ def _bad_vertex_index(doc):
     _box_geom(doc)["boundaries"][0][0][0][0] = len(doc["vertices"]) + 5
 
 
+def _address_as_object(doc):
+    doc["CityObjects"]["box"]["address"] = {"CountryName": "Nederland"}    # 1.0 style in a 2.0 file
+
+
 def _whole_box_inverted(doc):
     g = _box_geom(doc)
     g["boundaries"][0] = [[r[::-1] for r in s] for s in g["boundaries"][0]]
@@ -231,6 +246,7 @@ def _whole_box_inverted(doc):
     (_bad_extension_value, "+energyUA"),
     (_undeclared_extension_attribute, "not defined by the Energy extension"),
     (_bad_vertex_index, "out of range"),
+    (_address_as_object, "CityObjects/box/address"),
 ])
 def test_self_check_catches(good_file, mutation, fragment):
     bad = _mutate(good_file, mutation)
