@@ -217,14 +217,13 @@ def replay_construction(tris: np.ndarray, face_of_tri: np.ndarray) -> list[tuple
     # halfedge structure holds them; CGAL walks the fan of the last face added at a vertex
     edge_fan: dict[int, dict[int, int]] = {}      # v -> {neighbour: fan id}
     fan_count: dict[int, dict[int, int]] = {}     # fan id -> {neighbour: faces at that edge}
+    fan_open: dict[int, int] = {}                 # fan id -> edges with one face only
     last_fan: dict[int, int] = {}
     next_id = [0]
 
     def closed(v: int) -> bool:
         f = last_fan.get(v)
-        if f is None:
-            return False
-        return all(c >= 2 for c in fan_count[f].values())
+        return f is not None and fan_open[f] == 0
 
     def closes_one_of_many(v: int, x: int, y: int) -> bool:
         """Would the wedge (x, v, y) close a fan of v while v keeps another fan?"""
@@ -234,15 +233,13 @@ def replay_construction(tris: np.ndarray, face_of_tri: np.ndarray) -> list[tuple
         fx, fy = ef.get(x), ef.get(y)
         if fx is None or fy is None:
             return False                          # a new border edge at v: stays open
-        fans = set(ef.values())
-        counts = dict(fan_count[fx])
-        if fy != fx:
-            for n, k in fan_count[fy].items():
-                counts[n] = counts.get(n, 0) + k
-            fans.discard(fy)
-        counts[x] += 1
-        counts[y] += 1
-        return len(fans) > 1 and all(k >= 2 for k in counts.values())
+        n_fans = len(set(ef.values())) - (fx != fy)
+        if n_fans < 2:
+            return False
+        opened = fan_open[fx] + (fan_open[fy] if fy != fx else 0)
+        opened -= (fan_count[fx].get(x, 0) + (fan_count[fy].get(x, 0) if fy != fx else 0)) == 1
+        opened -= (fan_count[fx].get(y, 0) + (fan_count[fy].get(y, 0) if fy != fx else 0)) == 1
+        return opened == 0
 
     def ok(a: int, b: int, c: int) -> bool:
         if a == b or b == c or a == c:
@@ -260,16 +257,21 @@ def replay_construction(tris: np.ndarray, face_of_tri: np.ndarray) -> list[tuple
             f = next_id[0]
             next_id[0] += 1
             fan_count[f] = {}
+            fan_open[f] = 0
         elif fx is None or fy is None or fx == fy:
             f = fx if fx is not None else fy
         else:                                     # the face joins two fans
             f = fx
+            fan_open[f] += fan_open.pop(fy)
             for n, k in fan_count.pop(fy).items():
-                fan_count[f][n] = fan_count[f].get(n, 0) + k
+                fan_count[f][n] = k
                 ef[n] = f
+        cnt = fan_count[f]
         for n in (x, y):
             ef[n] = f
-            fan_count[f][n] = fan_count[f].get(n, 0) + 1
+            k = cnt.get(n, 0) + 1
+            cnt[n] = k
+            fan_open[f] += 1 if k == 1 else (-1 if k == 2 else 0)
         last_fan[v] = f
 
     out: list[tuple[int, int]] = []
