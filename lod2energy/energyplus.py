@@ -114,17 +114,17 @@ def parse_err(text: str) -> ErrSummary:
             severe.append(s)
         elif s.startswith("** Warning **"):
             warnings += 1
-    names = [m.group(1).strip() for m in _ZONE_NOT_ENCLOSED.finditer(text)]
+    names = tuple(dict.fromkeys(m.group(1).strip() for m in _ZONE_NOT_ENCLOSED.finditer(text)))
     if not names:
         counts = [int(m.group(1)) for m in _COUNT_NOT_ENCLOSED.finditer(text)]
-        names = ["?"] * max(counts, default=0)
+        names = ("?",) * max(counts, default=0)
     fatal = "**  Fatal  **" in text or "Terminated--Fatal" in text
     return ErrSummary(
         severe=tuple(severe),
         fatal=fatal,
         completed="EnergyPlus Completed Successfully" in text,
         warnings=warnings,
-        not_enclosed=tuple(dict.fromkeys(names)),
+        not_enclosed=names,
     )
 
 
