@@ -26,13 +26,15 @@ FEATURE_NAMES = ("area", "n_x", "n_y", "n_z", "h", "degenerate", "planarity",
 EDGE_FEATURE_NAMES = ("cos_dihedral", "boundary", "nonmanifold")
 
 
-def snap_ids(vertices: np.ndarray, snap_tol: float) -> np.ndarray:
+def snap_ids(vertices: np.ndarray, snap_tol: float, groups: np.ndarray | None = None) -> np.ndarray:
     """Canonical vertex id per vertex: vertices closer than ``snap_tol`` share one id.
 
     Parameters
     ----------
     vertices : (n, 3) float
     snap_tol : float, m
+    groups : (n,) int, optional
+        Vertices of different groups (buildings) never merge.
 
     Returns
     -------
@@ -44,6 +46,8 @@ def snap_ids(vertices: np.ndarray, snap_tol: float) -> np.ndarray:
     if n < 2 or snap_tol <= 0:
         return ids
     pairs = cKDTree(vertices).query_pairs(snap_tol, output_type="ndarray")
+    if groups is not None and len(pairs):
+        pairs = pairs[groups[pairs[:, 0]] == groups[pairs[:, 1]]]
     if len(pairs) == 0:
         return ids
     # union-find by repeated min-label propagation (few rounds for tiny clusters)
@@ -116,6 +120,7 @@ class FaceGraph:
     face_ids: tuple
     centroids: np.ndarray = None
     shell_of_face: np.ndarray = None
+    mesh_edge_shell: np.ndarray = None
 
     def shell_volumes(self) -> np.ndarray:
         """Signed volume per shell, m3 (divergence theorem over the planar faces).
@@ -181,7 +186,8 @@ def _empty_graph(face_ids=()) -> FaceGraph:
 
 def face_graph(vertices: np.ndarray, surfaces: Sequence[Surface], tol: Tolerances = DEFAULT,
                z_range: tuple[float, float] | None = None, face_ids: Sequence | None = None,
-               shell_of_face: np.ndarray | None = None) -> FaceGraph:
+               shell_of_face: np.ndarray | None = None,
+               vertex_groups: np.ndarray | None = None) -> FaceGraph:
     """Build the face-adjacency graph of a set of polygons.
 
     Parameters
@@ -193,18 +199,21 @@ def face_graph(vertices: np.ndarray, surfaces: Sequence[Surface], tol: Tolerance
     tol : Tolerances
         ``snap_tol`` merges vertices; ``sliver_area`` sets the degenerate flag.
     z_range : (z_min, z_max), optional
-        Extent used to normalise centroid heights (default: the faces' own extent).
+        Extent used to normalise centroid heights (default: the faces' own extent); each
+        may also be an (N,) array, one value per face.
     face_ids : sequence, optional
         Identifier per face (default ``range(len(surfaces))``).
     shell_of_face : (N,) int, optional
         Faces of different shells never share mesh edges (BuildingParts stay apart).
+    vertex_groups : (n,) int, optional
+        Vertices of different groups never snap together (see :func:`snap_ids`).
     """
     nf = len(surfaces)
     face_ids = tuple(face_ids) if face_ids is not None else tuple(range(nf))
     if nf == 0:
         return _empty_graph(face_ids)
     V = np.asarray(vertices, dtype=np.float64)
-    canon = snap_ids(V, tol.snap_tol) if len(V) else np.zeros(0, np.intp)
+    canon = snap_ids(V, tol.snap_tol, vertex_groups) if len(V) else np.zeros(0, np.intp)
     shell_of_face = np.zeros(nf, np.intp) if shell_of_face is None else np.asarray(shell_of_face)
 
     # flatten every ring: element arrays (vertex id, ring id), ring arrays (face, is_outer)
@@ -266,8 +275,9 @@ def face_graph(vertices: np.ndarray, surfaces: Sequence[Surface], tol: Tolerance
     src, dst, ef = flat, flat[nxt] if len(flat) else flat, ring_face[rid]
     if z_range is None:
         z_range = (float(centroid_z.min()), float(centroid_z.max()))
-    zmin, zmax = z_range
-    h = (centroid_z - zmin) / (zmax - zmin) if zmax > zmin else np.zeros(nf)
+    zmin, zmax = (np.broadcast_to(np.asarray(z, dtype=np.float64), (nf,)) for z in z_range)
+    span = zmax - zmin
+    h = np.divide(centroid_z - zmin, span, out=np.zeros(nf), where=span > 0)
 
     if len(src) == 0:
         g = _empty_graph(face_ids)
@@ -283,6 +293,7 @@ def face_graph(vertices: np.ndarray, surfaces: Sequence[Surface], tol: Tolerance
     ukey, inv, counts = np.unique(key, return_inverse=True, return_counts=True)
     inv = inv.reshape(-1)
     mesh_edges = np.stack([(ukey // nv) % nv, ukey % nv], axis=1)
+    mesh_edge_shell = ukey // (nv * nv)
     forward = src < dst
 
     # node edge counts
@@ -329,7 +340,7 @@ def face_graph(vertices: np.ndarray, surfaces: Sequence[Surface], tol: Tolerance
         degree = np.zeros(nf, np.intp)
     x = np.column_stack([areas, normals, h, degenerate, planarity, n_bnd, n_nm, degree]).astype(np.float64)
     return FaceGraph(x, edge_index, edge_attr, consistent, mesh_edges, counts, face_ids,
-                     centroids, shell_of_face)
+                     centroids, shell_of_face, mesh_edge_shell)
 
 
 def building_graph(b: Building, lod: str | None = None, tol: Tolerances = DEFAULT) -> FaceGraph:
@@ -338,15 +349,79 @@ def building_graph(b: Building, lod: str | None = None, tol: Tolerances = DEFAUL
     Every exterior shell of the Building and its BuildingParts contributes its faces; shells
     never share mesh edges with each other (parts are separate shells).
     """
-    refs = b.shells(lod)
-    surfaces, ids, shell_of = [], [], []
-    for k, r in enumerate(refs):
-        for fi, s in enumerate(r.shell.surfaces):
-            surfaces.append(s)
-            ids.append((r.object_id, r.geom_index, r.solid_index, r.shell_index, fi))
-            shell_of.append(k)
+    return building_graphs([b], lod, tol)[0]
+
+
+def building_graphs(buildings: Sequence[Building], lod: str | None = None,
+                    tol: Tolerances = DEFAULT) -> list[FaceGraph]:
+    """:func:`building_graph` of many buildings, computed in one vectorised pass.
+
+    Parameters
+    ----------
+    buildings : sequence of Building
+    lod : str, optional
+        LoD for every building (default: each building's own default).
+
+    Returns
+    -------
+    list of FaceGraph, one per building (same values as :func:`building_graph`)
+    """
+    surfaces, ids, shell_of, zlo, zhi, groups = [], [], [], [], [], []
+    v_off, f_bounds, s_bounds, v_bounds = [], [], [], []
+    nv = ns = 0
+    for bi, b in enumerate(buildings):
+        refs = b.shells(lod)
+        f0, s0 = len(surfaces), ns
+        bs = []
+        for k, r in enumerate(refs):
+            for fi, sf in enumerate(r.shell.surfaces):
+                bs.append(sf)
+                ids.append((r.object_id, r.geom_index, r.solid_index, r.shell_index, fi))
+                shell_of.append(ns + k)
+        ns += len(refs)
+        rings = [ring for sf in bs for ring in sf.rings if len(ring)]
+        if rings:
+            used = np.concatenate(rings)
+            z = b.vertices[used, 2]
+            z0, z1 = float(z.min()), float(z.max())
+        else:
+            z0 = z1 = 0.0
+        surfaces.extend(Surface(tuple(r + nv for r in sf.rings), sf.semantic) for sf in bs)
+        zlo.extend([z0] * len(bs))
+        zhi.extend([z1] * len(bs))
+        groups.append(np.full(len(b.vertices), bi, np.intp))
+        v_off.append(nv)
+        v_bounds.append((nv, nv + len(b.vertices)))
+        nv += len(b.vertices)
+        f_bounds.append((f0, len(surfaces)))
+        s_bounds.append((s0, ns))
     if not surfaces:
-        return _empty_graph()
-    used = np.unique(np.concatenate([ring for s in surfaces for ring in s.rings if len(ring)] or [np.zeros(0, np.intp)]))
-    z = b.vertices[used, 2] if len(used) else np.zeros(1)
-    return face_graph(b.vertices, surfaces, tol, (float(z.min()), float(z.max())), ids, np.asarray(shell_of))
+        return [_empty_graph() for _ in buildings]
+    V = np.vstack([b.vertices for b in buildings]) if buildings else np.zeros((0, 3))
+    g = face_graph(V, surfaces, tol, (np.asarray(zlo), np.asarray(zhi)), ids, np.asarray(shell_of, np.intp),
+                   np.concatenate(groups))
+    if len(buildings) == 1:
+        return [g]
+    # split: faces are contiguous per building; mesh edges are sorted by shell (hence building)
+    node_b = np.repeat(np.arange(len(buildings)), [f1 - f0 for f0, f1 in f_bounds])
+    e_b = node_b[g.edge_index[0]] if g.edge_index.shape[1] else np.zeros(0, np.intp)
+    e_order = np.argsort(e_b, kind="stable")
+    e_cuts = np.searchsorted(e_b[e_order], np.arange(len(buildings) + 1))
+    me_shell = _mesh_edge_shells(g, len(V))
+    me_cuts = np.searchsorted(me_shell, [s0 for s0, _ in s_bounds] + [ns])
+    out = []
+    for bi, ((f0, f1), (s0, _), vo) in enumerate(zip(f_bounds, s_bounds, v_off)):
+        if f1 == f0:
+            out.append(_empty_graph())
+            continue
+        sel = e_order[e_cuts[bi]:e_cuts[bi + 1]]
+        m0, m1 = me_cuts[bi], me_cuts[bi + 1]
+        out.append(FaceGraph(g.x[f0:f1], g.edge_index[:, sel] - f0, g.edge_attr[sel], g.consistent[sel],
+                             g.mesh_edges[m0:m1] - vo, g.incidence[m0:m1], g.face_ids[f0:f1],
+                             g.centroids[f0:f1], g.shell_of_face[f0:f1] - s0))
+    return out
+
+
+def _mesh_edge_shells(g: FaceGraph, n_vertices: int) -> np.ndarray:
+    """Shell index of each mesh edge of ``g`` (mesh edges are sorted by shell)."""
+    return g.mesh_edge_shell if g.mesh_edge_shell is not None else np.zeros(len(g.incidence), np.intp)

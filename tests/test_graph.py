@@ -108,3 +108,18 @@ def test_rigid_motion_keeps_areas_status_and_volume(a, b, t):
     np.testing.assert_allclose(g1.x[:, 0], g2.x[:, 0], rtol=1e-6)
     np.testing.assert_allclose(g1.x[:, 1:4] @ R.T, g2.x[:, 1:4], atol=1e-6)
     assert g2.status == "watertight" and g2.shell_volumes()[0] == pytest.approx(480.0, rel=1e-6)
+
+
+def test_batched_graphs_equal_one_by_one():
+    from pathlib import Path
+    from lod2energy.graph import building_graphs
+    from lod2energy.io import read
+    path = Path(__file__).resolve().parents[1] / "examples" / "delft_subset.city.jsonl"
+    _, it = read(str(path))
+    bs = [b for b in it if hasattr(b, "vertices")]
+    assert len(bs) == 10
+    for a, b in zip([building_graph(x) for x in bs], building_graphs(bs)):
+        np.testing.assert_allclose(a.x, b.x)
+        assert np.array_equal(a.edge_index, b.edge_index) and np.array_equal(a.mesh_edges, b.mesh_edges)
+        assert np.array_equal(a.incidence, b.incidence) and a.face_ids == b.face_ids
+        np.testing.assert_allclose(a.shell_volumes(), b.shell_volumes())

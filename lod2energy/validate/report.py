@@ -13,7 +13,7 @@ from typing import Callable, Iterable
 
 import lod2energy
 from lod2energy.config import DEFAULT, Tolerances
-from lod2energy.graph import building_graph
+from lod2energy.graph import building_graph, building_graphs
 from lod2energy.model import Building, FeatureError
 from lod2energy.validate.checks import validate_building, validate_buildings
 from lod2energy.validate.codes import name
@@ -45,13 +45,13 @@ def _coid(location: str) -> str:
 
 def feature_reports(b: Building, tol: Tolerances = DEFAULT, lod: str | None = None,
                     defects: list[Defect] | None = None, assess_labels: bool = False,
-                    assess_u_values: bool = False) -> list[dict]:
+                    assess_u_values: bool = False, graph=None) -> list[dict]:
     """Feature entries of one building: its own (with energy and graph) first, then one per
     descendant that is not a BuildingPart (installations), as val3dity reports them."""
     defects = validate_building(b, tol) if defects is None else defects
     owner = _owner_of(b)
     own = [d for d in defects if owner.get(_coid(d.location), b.id) == b.id]
-    out = [feature_report(b, tol, lod, own, assess_labels, assess_u_values)]
+    out = [feature_report(b, tol, lod, own, assess_labels, assess_u_values, graph)]
     for o in b.objects:
         if owner[o.id] != o.id or o.id == b.id:
             continue
@@ -64,14 +64,14 @@ def feature_reports(b: Building, tol: Tolerances = DEFAULT, lod: str | None = No
 
 def feature_report(b: Building, tol: Tolerances = DEFAULT, lod: str | None = None,
                    defects: list[Defect] | None = None, assess_labels: bool = False,
-                   assess_u_values: bool = False) -> dict:
+                   assess_u_values: bool = False, graph=None) -> dict:
     """The feature entry of a building (val3dity shape + energy + graph) for ``defects``."""
     defects = validate_building(b, tol) if defects is None else defects
     entry = {"id": b.id, "type": b.type, "validity": not defects,
              "errors": [d.to_json() for d in defects]}
     if b.is_building:
         lod = lod if lod is not None else b.default_lod()
-        g = building_graph(b, lod, tol)
+        g = graph if graph is not None else building_graph(b, lod, tol)
         entry["energy"] = energy_compliance(b, defects, g, lod, tol, assess_labels, assess_u_values)
         entry["graph"] = g.summary()
     entry["_primitives"] = _primitives(b, defects)
@@ -153,8 +153,12 @@ def validate_features(model, features: Iterable, input_file: str, tol: Tolerance
             all_defects = validate_buildings(pending, tol)
         except Exception:  # isolate the failing building instead of losing the chunk
             all_defects = [None] * len(pending)
-        for b, defects in zip(pending, all_defects):
-            for entry in _safe_feature_reports(b, tol, lod, defects):
+        try:
+            graphs = building_graphs(pending, lod, tol)
+        except Exception:
+            graphs = [None] * len(pending)
+        for b, defects, g in zip(pending, all_defects, graphs):
+            for entry in _safe_feature_reports(b, tol, lod, defects, g):
                 _emit(rep, entry, progress)
         pending.clear()
 
@@ -180,9 +184,9 @@ def _emit(rep: dict, entry: dict, progress) -> None:
         progress(entry)
 
 
-def _safe_feature_reports(b: Building, tol: Tolerances, lod, defects) -> list[dict]:
+def _safe_feature_reports(b: Building, tol: Tolerances, lod, defects, graph=None) -> list[dict]:
     try:
-        return feature_reports(b, tol, lod, defects)
+        return feature_reports(b, tol, lod, defects, graph=graph if b.is_building else None)
     except Exception as e:  # a bug must not lose the rest of the batch: report it for this building
         return [{"id": b.id, "type": b.type, "validity": False,
                  "errors": [error_json(999, f"coid={b.id}", f"internal error: {type(e).__name__}: {e}")],
