@@ -73,9 +73,27 @@ def test_local_origin_offset_in_result_and_header(tmp_path):
     assert f"offset_x = {off[0]:.0f}" in text
 
 
-def test_party_wall_between_parts_is_split(tmp_path):
+def _boundary_areas(path) -> dict[str, dict[str, float]]:
+    _, surfs, _ = _surfaces(path)
+    by_zone: dict[str, dict[str, float]] = {}
+    for s in surfs:
+        d = by_zone.setdefault(s.Zone_Name, {})
+        d[s.Outside_Boundary_Condition] = d.get(s.Outside_Boundary_Condition, 0.0) + _area(s.coords)
+    return by_zone
+
+
+def test_party_wall_between_parts_whole_face_by_default(tmp_path):
     b = energy_ready(two_part_building())
     res = idf.write([b], tmp_path, idf.IdfOptions(wwr=0.0))
+    assert res[0].ok, res[0].problems
+    by_zone = _boundary_areas(res[0].path)
+    # part 0's east wall (48 m2) is 75 % shared, part 1's west wall (72 m2) 50 %: both Adiabatic
+    assert sorted(round(a["Adiabatic"], 3) for a in by_zone.values()) == [48.0, 72.0]
+
+
+def test_party_wall_between_parts_is_split(tmp_path):
+    b = energy_ready(two_part_building())
+    res = idf.write([b], tmp_path, idf.IdfOptions(wwr=0.0, party_split=True))
     assert res[0].ok, res[0].problems
     _, surfs, _ = _surfaces(res[0].path)
     by_zone: dict[str, dict[str, float]] = {}
