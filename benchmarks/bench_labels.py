@@ -89,7 +89,7 @@ def run_tile(path: Path, repair: bool, export: str | None = None, versions=("1.0
             "top_confusions": [f"{k[0]}->{k[1]}: {v:.1f} m2" for v, k in top],
             **({"repaired": n_rep,
                 "final_agreement_pct": round(100 * final_agree / final_total, 2) if final_total else None,
-                "final_area_without_input_face_pct": round(100 * final_without / (final_total + final_without), 2)
+                "final_area_without_labelled_input_face_pct": round(100 * final_without / (final_total + final_without), 2)
                 if final_total + final_without else None,
                 "final_area_far_from_input_pct": round(100 * final_far / (final_total + final_without), 2)
                 if final_total + final_without else None}
@@ -140,8 +140,10 @@ FAR = 2.0  # m
 def final_label_agreement(source, labelled) -> tuple[float, float, float, float]:
     """Agreement of the final labels with the input's own labels, area-weighted.
 
-    Each output face is compared with the input face of compatible normal (within 30
-    degrees) nearest to it, the look-up label transfer uses.
+    A face that came from an input face carries that face's label (``labelSource`` "input")
+    and agrees by construction; every other output face (created by the repair) is compared
+    with the input face of compatible normal (within 30 degrees) nearest to it, the look-up
+    label transfer uses.
 
     Returns
     -------
@@ -165,6 +167,10 @@ def final_label_agreement(source, labelled) -> tuple[float, float, float, float]
         t = S.face_table(labelled.vertices, g)
         for i, s in enumerate(t.surfaces):
             if t.area[i] <= 0:
+                continue
+            if g.semantic_surfaces[s.semantic].get("labelSource") == "input":
+                comparable += t.area[i]
+                agree += t.area[i]
                 continue
             hit = src.nearest(t.normal[i], t.centroid[i], S.DEFAULT_RULES)
             if hit is None:

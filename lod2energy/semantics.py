@@ -96,12 +96,23 @@ DEFAULT_RULES = LabelRules()
 
 
 def envelope_objects(b: Building, lod: str | None = None) -> list:
-    """``b.energy_objects(lod)`` restricted to Building / BuildingPart objects.
+    """The geometries that make the thermal envelope: ``(object, geom_index, geometry)``.
 
-    Installations (balconies, chimneys, ...) and other descendants are not part of the
-    thermal envelope: they are neither labelled nor given U-values.
+    Like ``b.energy_objects(lod)`` but restricted to Building / BuildingPart objects
+    (installations such as balconies or chimneys are neither labelled nor given U-values),
+    and when an object has several polygonal geometries at ``lod`` the volumetric one with
+    the most surfaces is taken (a Solid beside a MultiSurface, as in some city models).
     """
-    return [(o, gi, g) for o, gi, g in b.energy_objects(lod) if o.type in BUILDING_TYPES]
+    lod = lod if lod is not None else b.default_lod()
+    out = []
+    for o in b.objects:
+        if o.type not in BUILDING_TYPES:
+            continue
+        cands = [(gi, g) for gi, g in enumerate(o.geometries) if g.is_polygonal and g.lod == lod]
+        if cands:
+            gi, g = max(cands, key=lambda c: (c[1].is_volumetric, c[1].n_surfaces, -c[0]))
+            out.append((o, gi, g))
+    return out
 
 
 # ----------------------------------------------------------------------------- face geometry
@@ -297,6 +308,13 @@ class _SourceFaces:
         self.items = []  # (type, entry, normal, centroid, polygon-data)
         for o, gi, g in envelope_objects(source, lod):
             t = face_table(source.vertices, g)
+            # a solid oriented inwards (a defect the repair fixes) has its normals flipped:
+            # compare orientations with the repaired faces as if it were outward (surface sets
+            # have no inside: their orientation is taken as given)
+            origin = t.centroid.mean(axis=0) if len(t.area) else np.zeros(3)
+            signed_volume = float(np.einsum("ij,ij->", t.centroid - origin, t.normal * t.area[:, None])) / 3
+            if g.is_volumetric and signed_volume < 0:
+                t = replace(t, normal=-t.normal)
             for i, s in enumerate(t.surfaces):
                 st = _known_type(g, s)
                 if st is None or t.area[i] <= 0:

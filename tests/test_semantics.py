@@ -307,3 +307,26 @@ def test_transfer_picks_the_nearest_of_several_compatible_faces():
     assert types_of(S.label_building(far, source=src)) == ["ClosureSurface"]
     limited = S.label_building(far, source=src, rules=S.LabelRules(transfer_max_dist=2.0))
     assert types_of(limited) == ["WallSurface"] and entries_of(limited)[0]["labelSource"] == "rule"
+
+
+def test_transfer_from_an_input_oriented_inwards():
+    from factories import inward_box
+
+    src = with_semantics(inward_box(), range(6), [{"type": t} for t in
+                                                  ["GroundSurface", "RoofSurface", "ClosureSurface",
+                                                   "WallSurface", "WallSurface", "WallSurface"]])
+    rep = split_face(with_semantics(box(), range(6), [dict(e) for e in
+                                                      src.objects[0].geometries[0].semantic_surfaces]), 2, None)
+    lab = S.label_building(rep, source=src)
+    assert types_of(lab)[2:4] == ["ClosureSurface", "ClosureSurface"]
+
+
+def test_envelope_prefers_the_solid_beside_a_multisurface():
+    b = box()
+    g = b.objects[0].geometries[0]
+    ms = Geometry("MultiSurface", g.lod, (Solid((Shell(g.solids[0].shells[0].surfaces[:1]),)),), g.semantic_surfaces)
+    b2 = replace(b, objects=(replace(b.root, geometries=(ms, g)),))
+    (o, gi, eg), = S.envelope_objects(b2)
+    assert gi == 1 and eg.type == "Solid"
+    lab = S.label_building(b2)
+    assert lab.objects[0].geometries[0] is ms and len(lab.objects[0].geometries[1].semantic_surfaces) == 6
