@@ -235,7 +235,40 @@ def triangulate(points: np.ndarray, ring_ends: Sequence[int], normal: np.ndarray
     cross = (b[:, 0] - a[:, 0]) * (cc[:, 1] - a[:, 1]) - (b[:, 1] - a[:, 1]) * (cc[:, 0] - a[:, 0])
     flip = cross < 0
     tri[flip] = tri[flip][:, ::-1]
+    missing = np.setdiff1d(np.arange(len(p)), tri.ravel())
+    if len(missing):
+        tri = _insert_dropped(tri, xy, missing)
     return tri
+
+
+def _insert_dropped(tri: np.ndarray, xy: np.ndarray, missing: np.ndarray) -> np.ndarray:
+    """Put back ring vertices earcut skipped (collinear ones) by splitting the triangle edge
+    they lie on, so that neighbouring faces still share every vertex (no T-junction)."""
+    tris = [list(t) for t in tri]
+    for m in missing:
+        q = xy[m]
+        best, bd = None, np.inf
+        for ti, t in enumerate(tris):
+            for k in range(3):
+                a, b = t[k], t[(k + 1) % 3]
+                ab = xy[b] - xy[a]
+                L2 = float(ab @ ab)
+                if L2 == 0:
+                    continue
+                u = float((q - xy[a]) @ ab) / L2
+                if not 0 < u < 1:
+                    continue
+                d = float(np.linalg.norm(xy[a] + u * ab - q))
+                if d < bd:
+                    best, bd = (ti, k), d
+        if best is None:
+            continue
+        ti, k = best
+        t = tris[ti]
+        a, b, c = t[k], t[(k + 1) % 3], t[(k + 2) % 3]
+        tris[ti] = [a, int(m), c]
+        tris.append([int(m), b, c])
+    return np.asarray(tris, dtype=np.intp).reshape(-1, 3)
 
 
 def _is_convex_2d(xy: np.ndarray, eps: float = 1e-9) -> bool:
