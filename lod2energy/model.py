@@ -272,15 +272,16 @@ class Building:
         """The geometries that describe the building's envelope at ``lod``.
 
         Returns one ``(object, geom_index, geometry)`` per envelope object (the Building and
-        its BuildingParts) that has a polygonal geometry at ``lod`` (the first one if several).
+        its BuildingParts) that has a polygonal geometry at ``lod`` (a Solid-type one first, else
+        the first one).
         """
         lod = lod if lod is not None else self.default_lod()
         out = []
         for o in self.envelope_objects:
-            for gi, g in enumerate(o.geometries):
-                if g.is_polygonal and g.lod == lod:
-                    out.append((o, gi, g))
-                    break
+            cands = [(gi, g) for gi, g in enumerate(o.geometries) if g.is_polygonal and g.lod == lod]
+            if cands:  # a volumetric geometry describes the envelope better than a surface set
+                gi, g = min(cands, key=lambda c: (not c[1].is_volumetric, c[0]))
+                out.append((o, gi, g))
         return out
 
     def shells(self, lod: str | None = None, exterior_only: bool = True) -> list[ShellRef]:
