@@ -302,6 +302,42 @@ def merge_slivers(m: PolyMesh, tol: Tolerances, only_new: bool = False) -> PolyM
     return m.with_faces([f for k, f in enumerate(faces) if alive[k]])
 
 
+def collapse_slivers(m: PolyMesh, tol: Tolerances, edge: float = 0.02, height: float = 0.01) -> PolyMesh:
+    """Remove the slivers :func:`merge_slivers` could not absorb.
+
+    A sliver with an edge shorter than ``edge`` (m) has that edge collapsed (its second
+    vertex snapped onto the first everywhere); a needle whose height over its longest edge
+    is under ``height`` (m) is dropped, leaving a slit that hole filling zips into the face
+    across it. Other slivers are kept.
+    """
+    V = m.vertices
+    faces = list(m.faces)
+    lut: dict[int, int] = {}
+    drop = set()
+    for i, f in enumerate(faces):
+        if len(f.rings) > 1 or face_area(V, f) > tol.sliver_area:
+            continue
+        r = [lut.get(v, v) for v in f.outer]
+        P = V[r]
+        L = np.linalg.norm(P - np.roll(P, -1, axis=0), axis=1)
+        k = int(np.argmin(L))
+        a, b = r[k], r[(k + 1) % len(r)]
+        if L[k] <= edge and a != b and a not in lut and b not in lut:
+            lut[max(a, b)] = min(a, b)
+            continue
+        long_ = float(L.max())
+        if long_ > 0 and 2 * face_area(V, f) / long_ <= height:
+            drop.add(i)
+    if not lut and not drop:
+        return m
+    out = []
+    for i, f in enumerate(faces):
+        if i in drop:
+            continue
+        out.append(Face(tuple(tuple(lut.get(v, v) for v in r) for r in f.rings), f.source, f.semantic))
+    return clean_rings(m.with_faces(out))
+
+
 TJUNCTION_TOL = 0.005  # m: a vertex this close to another polygon's edge is on it
 
 
@@ -325,4 +361,7 @@ def cleanup(m: PolyMesh, tol: Tolerances = DEFAULT, tjunction_tol: float | None 
     m = fix_nonplanar(m, tol)
     m = drop_degenerate(m)
     m = merge_slivers(m, tol)
+    m = collapse_slivers(m, tol)
+    m = drop_degenerate(drop_duplicate_faces(m))
+    m = fix_nonplanar(m, tol)
     return m

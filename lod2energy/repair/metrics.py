@@ -57,6 +57,7 @@ def winding_number(Q: np.ndarray, V: np.ndarray, tris: np.ndarray, chunk: int = 
     """
     A, B, C = V[tris[:, 0]], V[tris[:, 1]], V[tris[:, 2]]
     out = np.zeros(len(Q))
+    chunk = max(1, min(chunk, 200000 // max(len(tris), 1)))  # bounded memory (~5 MB a temporary)
     for s in range(0, len(Q), chunk):
         q = Q[s:s + chunk, None, :]
         a, b, c = A[None] - q, B[None] - q, C[None] - q
@@ -104,6 +105,7 @@ def point_triangle_distance(P: np.ndarray, V: np.ndarray, tris: np.ndarray, chun
     """
     A, B, C = V[tris[:, 0]], V[tris[:, 1]], V[tris[:, 2]]
     out = np.empty(len(P))
+    chunk = max(1, min(chunk, 200000 // max(len(tris), 1)))
     for s in range(0, len(P), chunk):
         p = P[s:s + chunk, None, :]
         out[s:s + chunk] = np.sqrt(_sqdist(p, A[None], B[None], C[None]).min(axis=1))
