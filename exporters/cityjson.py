@@ -279,6 +279,17 @@ def prepare_building(b: Building, lod: str | None = None, keep_other_lods: bool 
     return replace(b, objects=objs)
 
 
+def on_grid(b: Building, transform: Mapping) -> Building:
+    """``b`` with its vertices rounded to the grid of ``transform`` (scale, translate), as a
+    CityJSON file stores them."""
+    scale = np.asarray(transform["scale"], dtype=np.float64)
+    translate = np.asarray(transform["translate"], dtype=np.float64)
+    v = np.rint((b.vertices - translate) / scale) * scale + translate
+    if np.array_equal(v, b.vertices):
+        return b
+    return replace(b, vertices=v)
+
+
 def _crs_for_version(crs: str, version: str) -> str:
     import re
     m = re.search(r"EPSG(?:/0/|::?)(\d+)", crs or "")
@@ -418,15 +429,22 @@ def write(path: str, model: CityModel, buildings: Iterable[Building], version: s
     if cjio.is_cityjsonseq(path) and version == "1.0":
         return ExportResult(path, False, ("CityJSONSeq needs CityJSON 1.1 or 2.0",), version)
     out, skipped = [], []
+    buildings = list(buildings)
+    m, notes = _model_for(model, version)
+    transform = cjio._transform_for(m, buildings)
+    if not m.transform:
+        m = replace(m, transform=frozen_mapping(transform))
     for b in buildings:
         blod = lod if lod is not None else (b.provenance.get("thermal") or {}).get("lod")
+        # checked as it will be read back: coordinates on the file's grid (a repaired vertex
+        # off the grid moves by up to scale/2, which can tip a face over a tolerance)
+        b = on_grid(b, transform)
         why = _ready_problem(b, blod, keep_other_lods) if exclude_unready else None
         if why is not None:
             skipped.append((b.id, why))
             continue
         out.append(prepare_building(b, blod, keep_other_lods))
     ids = tuple(b.id for b in out)
-    m, notes = _model_for(model, version)
     folder = os.path.dirname(os.path.abspath(path))
     os.makedirs(folder, exist_ok=True)
     base = os.path.basename(path)

@@ -159,6 +159,19 @@ def test_a_failing_file_is_not_written_under_its_name(tmp_path):
     assert again.ok and path.exists() and not Path(str(path) + ".invalid").exists()
 
 
+def test_buildings_are_checked_on_the_files_grid(tmp_path):
+    """A building that only breaks once its coordinates are rounded to the file's grid is
+    left out, instead of failing the whole file."""
+    coarse = replace(model(), transform=frozen_mapping({"scale": [1.0, 1.0, 1.0], "translate": [0, 0, 0]}))
+    flat = energy_ready(box(10, 8, 0.4, id="flat"))        # 0.4 m high: rounds to nothing
+    tall = energy_ready(box(10, 8, 6, id="tall"))
+    res = X.write(str(tmp_path / "g.city.json"), coarse, [flat, tall])
+    assert res.ok, res.problems
+    assert res.building_ids == ("tall",) and [i for i, _ in res.skipped] == ["flat"]
+    off = replace(tall, vertices=tall.vertices + 0.3)
+    assert np.array_equal(X.on_grid(off, coarse.transform).vertices, np.rint(off.vertices))
+
+
 def test_bad_version_is_reported(tmp_path):
     res = X.write(str(tmp_path / "o.city.json"), model(), two_buildings(), "3.0")
     assert not res.ok and "not supported" in res.problems[0]
