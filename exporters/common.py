@@ -271,16 +271,27 @@ def _insert_dropped(tri: np.ndarray, xy: np.ndarray, missing: np.ndarray) -> np.
     return np.asarray(tris, dtype=np.intp).reshape(-1, 3)
 
 
-def _is_convex_2d(xy: np.ndarray, eps: float = 1e-9) -> bool:
-    """Counter-clockwise polygon ``(k, 2)`` convex (collinear corners allowed)?"""
+#: Smallest sine of the turn at a vertex of a written convex piece: EnergyPlus removes
+#: (near-)collinear vertices, which would leave T-junctions with the neighbouring surfaces.
+STRICT_SIN = 2e-3
+
+
+def _is_convex_2d(xy: np.ndarray, eps: float = 1e-9, strict: bool = False) -> bool:
+    """Counter-clockwise polygon ``(k, 2)`` convex?
+
+    Collinear corners are allowed unless ``strict`` (then every turn must have a sine of
+    at least :data:`STRICT_SIN`).
+    """
     d1 = np.roll(xy, -1, axis=0) - xy
     d2 = np.roll(d1, -1, axis=0)
     cross = d1[:, 0] * d2[:, 1] - d1[:, 1] * d2[:, 0]
-    scale = np.linalg.norm(d1, axis=1) * np.linalg.norm(d2, axis=1)
-    return bool(np.all(cross >= -eps * np.maximum(scale, 1e-12)))
+    scale = np.maximum(np.linalg.norm(d1, axis=1) * np.linalg.norm(d2, axis=1), 1e-12)
+    if strict:
+        return bool(np.all(cross >= STRICT_SIN * scale))
+    return bool(np.all(cross >= -eps * scale))
 
 
-def merge_convex(tris: np.ndarray, xy: np.ndarray) -> list[list[int]]:
+def merge_convex(tris: np.ndarray, xy: np.ndarray, strict: bool = False) -> list[list[int]]:
     """Hertel-Mehlhorn: merge counter-clockwise triangles into convex polygons.
 
     Parameters
@@ -320,7 +331,7 @@ def merge_convex(tris: np.ndarray, xy: np.ndarray) -> list[list[int]]:
             merged = p_rot + q_rot[1:-1]   # b ... a ... (before b)
             if len(set(merged)) != len(merged):
                 continue
-            if _is_convex_2d(xy[merged]):
+            if _is_convex_2d(xy[merged], strict=strict):
                 polys[pi] = merged
                 polys[qi] = None
                 changed = True
