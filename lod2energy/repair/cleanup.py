@@ -360,8 +360,11 @@ def cleanup(m: PolyMesh, tol: Tolerances = DEFAULT, tjunction_tol: float | None 
     m = drop_degenerate(m)
     m = fix_nonplanar(m, tol)
     m = drop_degenerate(m)
-    m = merge_slivers(m, tol)
-    m = collapse_slivers(m, tol)
-    m = drop_degenerate(drop_duplicate_faces(m))
-    m = fix_nonplanar(m, tol)
+    for _ in range(3):  # triangulating a polygon bent by a collapse can leave a new sliver
+        m = merge_slivers(m, tol)
+        m = collapse_slivers(m, tol)
+        m = drop_degenerate(drop_duplicate_faces(m))
+        m = fix_nonplanar(m, tol)
+        if all(face_area(m.vertices, f) > tol.sliver_area for f in m.faces):
+            break
     return m

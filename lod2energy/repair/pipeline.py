@@ -23,7 +23,7 @@ from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.model import (
     BUILDING_TYPES, Building, FeatureError, Geometry, Shell, Solid, Surface, frozen_mapping, lod_key,
 )
-from lod2energy.repair._mesh import Face, PolyMesh, compact, topology
+from lod2energy.repair._mesh import Face, PolyMesh, compact, face_area, topology
 from lod2energy.repair.alphashape import alpha_repair
 from lod2energy.repair.cleanup import cleanup, merge_slivers, snap_vertices
 from lod2energy.repair.footprint import extrude_footprint
@@ -161,6 +161,14 @@ def ladder(m: PolyMesh, lod, tol: Tolerances, deadline: float) -> tuple[str, Pol
             m3 = refill(m1, tol, accept=accept)
         if ok("refill", m3):
             return "refill", m3, log
+    # a sliver is an energy-compliance defect, not a val3dity one: rather than trading a
+    # 1 cm2 face for a global reconstruction, keep the least invasive closed, valid result
+    # and report the sliver (1003)
+    soft = replace(tol, sliver_area=0.0)
+    for name, cand in (("cleanup", m0), ("orientation", m1), ("holefill", m2)):
+        if is_repaired(cand, lod, soft):
+            log.append(f"{name}: ok except slivers (1003 kept)")
+            return name, cand, log
     if not late():
         m4 = alpha_repair(m0, tol, deadline=deadline,
                           accept=lambda r: not val3dity_codes(r, lod, tol))
@@ -256,6 +264,8 @@ def repair_building(b: Building, tol: Tolerances = DEFAULT, timeout: float = DEF
             res = compact(res)
             input_closed, env = _envelope(m, res, stage, tol)
             entry.update(stage=stage, n_faces_after=res.n_faces, **fidelity(m, res, input_closed, env))
+            if any(face_area(res.vertices, f) <= tol.sliver_area for f in res.faces):
+                entry["defects_after"] = [1003]
             # per output face: the input surface it derives from (-1: made by the repair)
             entry["source_faces"] = [int(f.source) for f in res.faces]
             ng = geometry_of_mesh(res, g, lookup, extra, len(b.vertices))
@@ -307,6 +317,7 @@ def _summary(b: Building, per_geom: list, before: list[int], tol: Tolerances, se
     for e in per_geom:
         if e["stage"] == "irreparable":
             after |= set(e["defects_before"])
+        after |= set(e.get("defects_after", ()))
     rank = {s: i for i, s in enumerate(STAGES)}
     stage = max((e["stage"] for e in per_geom), key=lambda s: rank[s]) if per_geom else "valid"
     main_lod = b.default_lod()
