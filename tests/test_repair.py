@@ -377,3 +377,23 @@ def test_provenance_records_face_sources_and_attributes():
     assert a["repair_stage"] == "holefill" and a["repair_defects_before"] == [302]
     assert a["repair_defects_after"] == []
     assert repair_attributes(box())["repair_stage"] == "valid"
+
+
+@pytest.mark.parametrize("suffix", [".city.json", ".city.jsonl"])
+def test_repaired_building_round_trips_through_cityjson(tmp_path, suffix):
+    from lod2energy.io.cityjson import read, write
+    from lod2energy.model import CityModel
+    from dataclasses import replace as dc_replace
+    out = []
+    for k, f in enumerate((open_box, t_junction, missing_party_wall)):
+        b = f()
+        root = dc_replace(b.root, id=f"b{k}")
+        out.append(repair_building(dc_replace(b, id=f"b{k}", objects=(root,))))
+    p = tmp_path / ("out" + suffix)
+    write(str(p), CityModel(), out)
+    _, it = read(str(p))
+    back = [b for b in it if isinstance(b, Building)]
+    assert [b.id for b in back] == [b.id for b in out]
+    for b in back:
+        assert_energy_ready(b)
+        assert repair_building(b) is b
