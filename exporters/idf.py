@@ -17,6 +17,7 @@ without case) and at most 100 characters; ids in comments are JSON-escaped on on
 """
 from __future__ import annotations
 
+import functools
 import json
 import math
 import re
@@ -567,6 +568,7 @@ def _vertex_lines(points: np.ndarray) -> list[str]:
     return [f"{_fmt(p[0])}, {_fmt(p[1])}, {_fmt(p[2])}" for p in points]
 
 
+@functools.lru_cache(maxsize=1)
 def _template():
     import jinja2
 
