@@ -383,6 +383,10 @@ def _fix_document(doc: dict, version: str) -> dict:
     """Version-specific details the shared writer leaves generic."""
     for co in doc.get("CityObjects", {}).values():
         _fix_address(co, version)
+        if version == "1.0" and isinstance(co.get("attributes"), dict):
+            # CityJSON 1.0 types its standard attributes (class, function, ...) as strings
+            # without a null: an attribute without a value is left out
+            co["attributes"] = {k: v for k, v in co["attributes"].items() if v is not None}
         for g in co.get("geometry", []) or []:
             if version == "1.0" and isinstance(g.get("lod"), str):
                 lod = float(g["lod"])

@@ -123,6 +123,16 @@ def test_addresses_follow_the_target_version(tmp_path, version):
     assert out == ({"CountryName": "Nederland"} if version == "1.0" else [{"CountryName": "Nederland"}])
 
 
+@pytest.mark.parametrize("version", VERSIONS)
+def test_null_standard_attributes(tmp_path, version):
+    b = energy_ready(box(), **{"class": None, "function": "residential", "note": None})
+    res = X.write(str(tmp_path / "a.city.json"), model("2.0"), [b], version)
+    assert res.ok, res.problems
+    attrs = json.loads(Path(res.path).read_text())["CityObjects"]["box"]["attributes"]
+    assert attrs["function"] == "residential"
+    assert ("class" in attrs) == (version != "1.0")
+
+
 def test_other_lods_and_installations_are_left_out(tmp_path):
     b = box()
     g = b.objects[0].geometries[0]
