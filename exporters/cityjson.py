@@ -51,6 +51,12 @@ _VDIR = {"1.0": "10", "1.1": "11", "2.0": "20"}
 _MAX_PROBLEMS = 50
 
 
+
+#: Overlapping BuildingParts (601) are reported by the validator but do not stop an export:
+#: each part is still a closed, outward shell (the repair ladder's own criterion); use
+#: ``--merge-parts`` to union them.
+TOLERATED_CODES = frozenset({601})
+
 @dataclass(frozen=True)
 class ExportResult:
     """Outcome of :func:`write`.
@@ -261,7 +267,8 @@ def _ready_problem(b: Building, lod: str | None, keep_other_lods: bool = False, 
     probs = _envelope_problems(b, energy)
     if probs:
         return probs[0]
-    defects = validate_building(_strip_to_energy(b, lod, keep_other_lods), tol or DEFAULT)
+    defects = [d for d in validate_building(_strip_to_energy(b, lod, keep_other_lods), tol or DEFAULT)
+               if d.code not in TOLERATED_CODES]
     if defects:
         codes = sorted({d.code for d in defects})
         return f"invalid geometry (val3dity codes {codes}), e.g. {defects[0].location}"
@@ -650,6 +657,8 @@ def self_check(path: str, extension: Mapping | None = None, tol=None) -> list[st
             continue
         n_energy += 1
         for d in validate_building(f, tol):
+            if d.code in TOLERATED_CODES:
+                continue
             problems.append(f"{d.location}: {d.code} {name(d.code)} {d.info}".rstrip())
         problems += _envelope_problems(f)
         if len(problems) > _MAX_PROBLEMS:

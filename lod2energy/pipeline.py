@@ -264,9 +264,16 @@ def export_file(a, tol: Tolerances) -> int:
         res = cj_export.write(path, model, [_repair_attributes(b) for b in prepared] + others,
                               version=a.cityjson_version)
         ok = bool(getattr(res, "ok", False))
+        skipped = dict(getattr(res, "skipped", ()) or ())
         for r in records:
             if r.energy:
-                r.exports["cityjson"] = {"ok": ok, "path": path}
+                r.exports["cityjson"] = ({"ok": False, "path": path, "problems": [f"left out: {skipped[r.id]}"]}
+                                         if r.id in skipped else {"ok": ok, "path": str(res.path)})
+        for note in getattr(res, "notes", ()) or ():
+            if not a.quiet:
+                print(f"lod2energy: note: {note}", file=sys.stderr)
+        if skipped:
+            worst = max(worst, EXIT_INVALID)
         if not ok:
             worst = max(worst, EXIT_INVALID)
             _err(f"CityJSON export failed its self-check: {'; '.join(getattr(res, 'problems', [])[:3])}")
