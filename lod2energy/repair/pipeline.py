@@ -200,6 +200,41 @@ def _targets(b: Building, lod: str | None) -> list[tuple[int, int, Geometry]]:
     return out
 
 
+def _clean_surfaces(b: Building, lod: str | None, tol: Tolerances, lookup: dict, extra: list,
+                    objs: list) -> list[dict]:
+    """Polygon-level clean-up (snap, repeated points, degenerate faces) of LoD0 surfaces.
+
+    LoD0 footprints and roof outlines are not volumes: they keep their type and only lose
+    what val3dity rejects at polygon level (101/102). Returns one log entry per change.
+    """
+    from lod2energy.repair.cleanup import clean_rings, drop_degenerate
+    from lod2energy.validate.checks import validate_geometry
+    out = []
+    if lod is not None:
+        return out
+    for oi, o in enumerate(objs):
+        if o.type not in BUILDING_TYPES:
+            continue
+        for gi, g in enumerate(o.geometries):
+            if not g.is_polygonal or not g.solids or lod_key(g.lod) >= 1 or g.is_volumetric:
+                continue
+            codes = sorted({d.code for d in validate_geometry(b.vertices, o.id, gi, g, tol)})
+            if not codes:
+                continue
+            m = mesh_of_geometry(b.vertices, g)
+            c = drop_degenerate(clean_rings(snap_vertices(m, tol.snap_tol)))
+            if not c.faces:
+                continue
+            ng = geometry_of_mesh(c, g, lookup, extra, len(b.vertices))
+            ng = Geometry(g.type, g.lod, ng.solids, g.semantic_surfaces)
+            geoms = list(objs[oi].geometries)
+            geoms[gi] = ng
+            objs[oi] = replace(objs[oi], geometries=tuple(geoms))
+            out.append({"object": o.id, "geometry": gi, "lod": g.lod, "defects_before": codes,
+                        "stage": "cleanup", "n_faces_before": m.n_faces, "n_faces_after": c.n_faces})
+    return out
+
+
 def repair_building(b: Building, tol: Tolerances = DEFAULT, timeout: float = DEFAULT_TIMEOUT,
                     merge_parts: bool = False, lod: str | None = None) -> Building:
     """Repair every defective Building/BuildingPart geometry of ``b`` (see the module docstring).
@@ -275,6 +310,8 @@ def repair_building(b: Building, tol: Tolerances = DEFAULT, timeout: float = DEF
             changed = True
         entry["seconds"] = round(time.monotonic() - t1, 4)
         per_geom.append(entry)
+    surfaces_log = _clean_surfaces(b, lod, tol, lookup, extra, objs)
+    changed = changed or bool(surfaces_log)
     from lod2energy.repair.parts import merge_overlapping_parts, overlapping_parts
     if not changed and all(e["stage"] == "valid" for e in per_geom):
         if not merge_parts:
@@ -291,6 +328,7 @@ def repair_building(b: Building, tol: Tolerances = DEFAULT, timeout: float = DEF
         nb = merge_overlapping_parts(nb, tol, lod)
     summary = _summary(nb, per_geom, sorted(defects_before), tol, time.monotonic() - t0)
     summary["overlapping_parts"] = [list(p) for p in overlaps]
+    summary["surfaces_cleaned"] = surfaces_log
     return nb.with_provenance(repair=summary)
 
 
