@@ -221,6 +221,7 @@ def export_file(a, tol: Tolerances) -> int:
         for fe in feats:
             _err(fe.message)
         return EXIT_UNUSABLE
+    idf_opts = _idf_options(a, model) if a.idf else None  # option errors before any work
     os.makedirs(a.output, exist_ok=True)
     prepared: list[Building] = []
     others: list[Building] = []
@@ -278,9 +279,9 @@ def export_file(a, tol: Tolerances) -> int:
             worst = max(worst, EXIT_INVALID)
             _err(f"CityJSON export failed its self-check: {'; '.join(getattr(res, 'problems', [])[:3])}")
     if a.idf:
-        worst = max(worst, _export_with("idf", ready, a, by_id))
+        worst = max(worst, _export_with("idf", ready, a, by_id, model, idf_opts))
     if a.stl:
-        worst = max(worst, _export_with("stl", ready, a, by_id))
+        worst = max(worst, _export_with("stl", ready, a, by_id, model))
     rows = [r.row() for r in records]
     _write_json(os.path.join(a.output, "report.json"),
                 {"input_file": a.input, "output_dir": a.output, "seconds": round(time.perf_counter() - t0, 2),
@@ -295,22 +296,48 @@ def export_file(a, tol: Tolerances) -> int:
     return worst
 
 
-def _export_with(fmt: str, buildings: list[Building], a, by_id: dict) -> int:
+def default_weather(country: str | None) -> str | None:
+    """The bundled EPW for ``country`` (only NL ships one), else None."""
+    if (country or "").upper() != "NL":
+        return None
+    from importlib.resources import files
+    p = files("lod2energy") / "data" / "weather" / "NLD_OV_Heino.062780_TMYx.2007-2021.epw"
+    return str(p) if p.is_file() else None
+
+
+def _idf_options(a, model: CityModel):
+    from lod2energy.errors import ParameterError
+    from lod2energy.exporters.idf import IdfOptions
+    from lod2energy.thermal import country_from_crs
+    weather = a.weather
+    if a.run and weather is None:
+        weather = default_weather(a.country or country_from_crs(model.crs))
+        if weather is None:
+            raise ParameterError("--run needs --weather EPW (a weather file ships only for the Netherlands)")
+    if weather is not None and not os.path.isfile(weather):
+        raise ParameterError(f"--weather {weather}: no such file")
+    kw = dict(mode=a.idf_mode, version=a.energyplus_version, shading=a.shading, run=a.run, weather=weather,
+              lod=a.lod)
+    if a.wwr is not None:
+        kw["wwr"] = a.wwr
+    return IdfOptions(**kw)
+
+
+def _export_with(fmt: str, buildings: list[Building], a, by_id: dict, model: CityModel, opts=None) -> int:
     worst = EXIT_OK
     if fmt == "idf":
         from lod2energy.exporters import idf as mod
-        opts = mod.IdfOptions.from_args(a) if hasattr(mod.IdfOptions, "from_args") else mod.IdfOptions()
     else:
         from lod2energy.exporters import stl as mod
-        opts = mod.StlOptions.from_args(a) if hasattr(mod.StlOptions, "from_args") else mod.StlOptions()
-    results = mod.write(buildings, a.output, opts)
+        opts = mod.StlOptions(mode=a.stl_mode, ascii=a.stl_ascii, lod=a.lod)
+    results = mod.write(buildings, a.output, opts, crs=model.crs)
     for res in results:
-        ids = getattr(res, "building_ids", None) or [getattr(res, "building_id", None)]
+        ids = list(getattr(res, "building_ids", None) or [])
         d = {"ok": bool(res.ok), "path": str(res.path), "problems": list(getattr(res, "problems", []) or [])}
-        for k in ("heating_kwh", "cooling_kwh", "severe_errors", "not_enclosed"):
+        for k in ("offset", "heating_kwh", "cooling_kwh", "severe_errors", "not_enclosed", "warnings"):
             v = getattr(res, k, None)
-            if v is not None:
-                d[k] = v
+            if v is not None and v != ():
+                d[k] = list(v) if isinstance(v, tuple) else v
         for bid in ids:
             if bid in by_id:
                 by_id[bid].exports[fmt] = d
