@@ -82,3 +82,19 @@ def test_help_documents_exit_codes():
     out = subprocess.run([sys.executable, "-m", "lod2energy", "validate", "--help"],
                          capture_output=True, text=True, check=True).stdout
     assert "exit codes" in out and "unusable input" in out and "--snap-tol" in out
+
+
+def test_cli_report_agrees_with_val3dity_on_a_real_tile(tmp_path, capsys):
+    from pathlib import Path
+    shared = Path(__file__).resolve().parents[2] / "shared"
+    ref_path = shared / "reference" / "3dbag_tile5908_subset_ext.city.jsonl.report.json"
+    if not ref_path.exists():
+        pytest.skip("../shared not present")
+    ref = json.loads(ref_path.read_text())
+    rep = tmp_path / "r.json"
+    rc, _, _ = run(["validate", "-q", str(shared / ref["input_file"]), "--report", str(rep)], capsys)
+    ours = {f["id"]: sorted({e["code"] for e in f["errors"]}) for f in json.loads(rep.read_text())["features"]}
+    theirs = {f["id"]: sorted({e["code"] for e in f["errors"]}) for f in ref["features"]}
+    assert rc == 1 and set(ours) == set(theirs)
+    same = sum(ours[k] == theirs[k] for k in theirs)
+    assert same / len(theirs) >= 0.95
