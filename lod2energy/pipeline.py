@@ -90,8 +90,8 @@ def prepare(b: Building, tol: Tolerances, a, source_model: CityModel | None = No
     rec.input_errors = _codes(before)
     lod = getattr(a, "lod", None)
     rb = repair_one(b, tol, getattr(a, "timeout", 30.0), getattr(a, "merge_parts", False), lod)
-    rec.repair = dict(rb.provenance.get("repair", {}) or {}) or {
-        "stage": "valid", "iou": 1.0, "mean_displacement": 0.0, "hausdorff": 0.0}
+    from lod2energy.repair import repair_info
+    rec.repair = {k: v for k, v in repair_info(rb).items() if k != "geometries"}
     lb = label_building(rb, lod=lod, source=b)
     tb = assign_u_values(lb, _thermal_options(a, source_model))
     after = validate_building(tb, tol)
@@ -143,14 +143,12 @@ def _json_default(o):
 
 
 def _repair_attributes(b: Building) -> Building:
-    """Copy the repair provenance into the root CityObject's attributes."""
-    rep = b.provenance.get("repair")
-    if not rep:
+    """``b`` with its repair record as flat attributes of the root CityObject."""
+    from lod2energy.repair import repair_attributes
+    if not b.is_building:
         return b
     attrs = dict(b.root.attributes)
-    for k in ("stage", "iou", "mean_displacement", "hausdorff"):
-        if k in rep and rep[k] is not None:
-            attrs[f"lod2energy_repair_{k}"] = rep[k]
+    attrs.update({k: v for k, v in repair_attributes(b).items() if v is not None})
     root = replace(b.root, attributes=frozen_mapping(attrs))
     return replace(b, objects=(root,) + b.objects[1:])
 
@@ -158,7 +156,7 @@ def _repair_attributes(b: Building) -> Building:
 def repair_file(a, tol: Tolerances) -> int:
     """``lod2energy repair IN -o OUT``: every CityObject kept, defective buildings replaced by solids."""
     from lod2energy.io import cityjson
-    from lod2energy.repair.pipeline import dataset_table
+    from lod2energy.repair import dataset_table, repair_features, repair_info
 
     model, feats = _read(a.input)
     if model is None:
@@ -171,41 +169,40 @@ def repair_file(a, tol: Tolerances) -> int:
     tick, close = _progress(a.quiet, os.path.basename(a.input))
     worst = EXIT_OK
     try:
-        for item in feats:
+        for item in repair_features(feats, tol, a.timeout, a.merge_parts, a.lod):
             tick()
             if isinstance(item, FeatureError):
                 _err(f"{a.input}: {item.message}")
                 lost.append({"id": item.id, "type": item.type, "errors": [error_json(item.code, "", item.message)]})
                 worst = max(worst, EXIT_INVALID)
                 continue
-            try:
-                rb = repair_one(item, tol, a.timeout, a.merge_parts, a.lod)
-            except Exception as e:  # keep the original, record why
-                rb = item.with_provenance(repair=frozen_mapping({"stage": "irreparable", "error": f"{type(e).__name__}: {e}"}))
             if item.is_building:
-                rep = dict(rb.provenance.get("repair", {}) or {})
-                rep["id"] = item.id
+                rep = {"id": item.id, **{k: v for k, v in repair_info(item).items() if k != "geometries"}}
                 records.append(rep)
-                after = rep.get("defects_after")
-                if rep.get("stage") == "irreparable" or (after and any(c != 601 for c in after)):
+                after = rep.get("defects_after") or []
+                if rep.get("stage") == "irreparable" or any(c != 601 for c in after):
                     worst = max(worst, EXIT_INVALID)
-            out_b.append(_repair_attributes(rb))
+            out_b.append(_repair_attributes(item))
     finally:
         close()
+    out_dir = os.path.dirname(os.path.abspath(a.output))
+    os.makedirs(out_dir, exist_ok=True)
     cityjson.write(a.output, model, out_b)
+    table = dataset_table(out_b)
     if a.report:
-        table = dataset_table(out_b)
         _write_json(a.report, {"input_file": a.input, "output_file": a.output, "summary": table,
                                "buildings": records, "unreadable": lost})
     if not a.quiet:
-        _print_repair_summary(out_b)
+        _print_repair_summary(table)
     return worst
 
 
-def _print_repair_summary(buildings: list[Building]) -> None:
-    from collections import Counter
-    stages = Counter((b.provenance.get("repair") or {}).get("stage", "-") for b in buildings if b.is_building)
-    print("repair stages: " + ", ".join(f"{k}: {v}" for k, v in sorted(stages.items())))
+def _print_repair_summary(table: dict) -> None:
+    keys = ("total", "valid_before", "valid_after", "compliant_before", "compliant_after", "local_repairs",
+            "global_repairs", "left", "miou", "map_v")
+    print("  ".join(f"{k}={table[k]:.3g}" if isinstance(table.get(k), float) else f"{k}={table.get(k)}"
+                    for k in keys if k in table))
+    print("stages: " + ", ".join(f"{k}: {v}" for k, v in (table.get("stages") or {}).items()))
 
 
 CSV_FIELDS = ["id", "type", "input_errors", "output_errors", "repair_stage", "iou", "mean_displacement_m",

@@ -98,3 +98,25 @@ def test_cli_report_agrees_with_val3dity_on_a_real_tile(tmp_path, capsys):
     assert rc == 1 and set(ours) == set(theirs)
     same = sum(ours[k] == theirs[k] for k in theirs)
     assert same / len(theirs) >= 0.95
+
+
+@pytest.mark.parametrize("suffix", ["out.city.json", "out.city.jsonl"])
+def test_repair_command_closes_an_open_box_and_keeps_other_objects(tmp_path, capsys, suffix):
+    from cityjson_docs import BOX_FACES
+    doc = box_doc(faces=BOX_FACES[:1] + BOX_FACES[2:], gtype="MultiSurface", semantics=False)
+    doc["CityObjects"]["tree"] = {"type": "SolitaryVegetationObject", "attributes": {"h": 3}}
+    out, rep = tmp_path / suffix, tmp_path / "r.json"
+    rc, _, _ = run(["repair", "-q", write(tmp_path, doc), "-o", str(out), "--report", str(rep)], capsys)
+    assert rc == 0
+    r = json.loads(rep.read_text())
+    (b,) = r["buildings"]
+    assert b["id"] == "b1" and b["stage"] not in ("valid", "irreparable") and b["defects_after"] == []
+    assert r["summary"]["valid_after"] == 1
+    rc, _, _ = run(["validate", "-q", str(out)], capsys)
+    assert rc == 0
+    from lod2energy.io import read
+    _, feats = read(str(out))
+    got = {f.id: f for f in feats}
+    assert set(got) == {"b1", "tree"}
+    g = got["b1"].root.geometries[0]
+    assert g.type == "Solid" and got["b1"].root.attributes["repair_stage"] == b["stage"]

@@ -436,7 +436,7 @@ def dataset_table(buildings: Iterable[Building]) -> dict:
         ``local_repairs``, ``global_repairs``, ``left``, ``repaired_share``, ``miou``,
         ``map_v`` (m), ``mean_hausdorff`` (m), ``stages`` (histogram).
     """
-    rows = [repair_info(b) for b in buildings if isinstance(b, Building)]
+    rows = [repair_info(b) for b in buildings if isinstance(b, Building) and b.is_building]
     n = len(rows)
 
     def val3dity_ok(codes):
