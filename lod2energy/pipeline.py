@@ -110,9 +110,15 @@ def _progress(quiet: bool, desc: str):
     return (lambda: bar.update(1)), bar.close
 
 
-def _read(path: str):
+def _open_input(path: str):
+    """Open ``path``; None (after one error line per problem) when the file is unusable."""
     from lod2energy.io import read
-    return read(path)
+    model, feats = read(path)
+    if model is None:
+        for fe in feats:
+            _err(fe.message)
+        return None
+    return model, feats
 
 
 def _err(msg: str) -> None:
@@ -158,11 +164,10 @@ def repair_file(a, tol: Tolerances) -> int:
     from lod2energy.io import cityjson
     from lod2energy.repair import dataset_table, repair_features, repair_info
 
-    model, feats = _read(a.input)
-    if model is None:
-        for fe in feats:
-            _err(fe.message)
+    opened = _open_input(a.input)
+    if opened is None:
         return EXIT_UNUSABLE
+    model, feats = opened
     out_b: list[Building] = []
     records: list[dict] = []
     lost: list[dict] = []
@@ -213,11 +218,10 @@ CSV_FIELDS = ["id", "type", "input_errors", "output_errors", "repair_stage", "io
 
 def export_file(a, tol: Tolerances) -> int:
     """``lod2energy export IN -o OUTDIR [--idf] [--stl] [--cityjson]``."""
-    model, feats = _read(a.input)
-    if model is None:
-        for fe in feats:
-            _err(fe.message)
+    opened = _open_input(a.input)
+    if opened is None:
         return EXIT_UNUSABLE
+    model, feats = opened
     idf_opts = _idf_options(a, model) if a.idf else None  # option errors before any work
     os.makedirs(a.output, exist_ok=True)
     prepared: list[Building] = []
