@@ -120,3 +120,28 @@ def test_repair_command_closes_an_open_box_and_keeps_other_objects(tmp_path, cap
     assert set(got) == {"b1", "tree"}
     g = got["b1"].root.geometries[0]
     assert g.type == "Solid" and got["b1"].root.attributes["repair_stage"] == b["stage"]
+
+
+def test_export_runs_the_whole_pipeline_on_the_bundled_example(tmp_path, capsys):
+    import csv
+    from pathlib import Path
+    example = Path(__file__).resolve().parents[1] / "examples" / "3dbag_b2.city.json"
+    out = tmp_path / "out"
+    rc, stdout, _ = run(["export", str(example), "-o", str(out), "--idf", "--stl", "--cityjson"], capsys)
+    assert rc == 0 and "report:" in stdout
+    rows = list(csv.DictReader((out / "report.csv").open()))
+    assert len(rows) == 2
+    for r in rows:
+        assert r["compliant"] == "True" and r["idf_ok"] == r["stl_ok"] == r["cityjson_ok"] == "True"
+        assert float(r["UA_W_per_K"]) > 0 and float(r["A_env_m2"]) > 0
+        assert (out / f"{r['id']}.idf").exists() and (out / f"{r['id']}.stl").exists()
+    rep = json.loads((out / "report.json").read_text())
+    assert all(b["energy"]["labelled"] is True and b["energy"]["u_values"] is True for b in rep["buildings"])
+    assert (out / "3dbag_b2.energy.city.json").exists()
+
+
+def test_export_run_without_weather_outside_nl_is_a_usage_error(tmp_path, capsys):
+    doc = box_doc()
+    doc["metadata"]["referenceSystem"] = "https://www.opengis.net/def/crs/EPSG/0/2056"
+    rc, _, err = run(["export", write(tmp_path, doc), "-o", str(tmp_path / "o"), "--idf", "--run"], capsys)
+    assert rc == 2 and "--weather" in err
