@@ -395,7 +395,98 @@ def zone_pieces(zone: ZoneShell, zi: int, party: dict, split: bool = True) -> li
                 pieces.append(Piece(p, f.kind, boundary, f.u_value, f.index))
     if split and any(party.get((zi, fi)) for fi in range(len(zone.faces))):
         pieces = conform(pieces)
-    return pieces
+    return eplus_conform(pieces)
+
+
+#: EnergyPlus's point tolerance (m) in its enclosure test (``isAlmostEqual3dPt`` and
+#: ``isPointOnLineBetweenPoints`` in SurfaceGeometry.cc, 0.0127 m = 1/2 inch).
+EPLUS_POINT_TOL = 0.0127
+
+
+def _on_segment(a: np.ndarray, b: np.ndarray, c: np.ndarray, tol: float = EPLUS_POINT_TOL) -> bool:
+    """Would EnergyPlus see point ``c`` on segment ``ab`` (|ac| + |cb| - |ab| < tol)?"""
+    ab = float(np.linalg.norm(b - a))
+    ac = float(np.linalg.norm(c - a))
+    cb = float(np.linalg.norm(b - c))
+    if ac < tol or cb < tol:
+        return False
+    return ac + cb - ab < tol
+
+
+def _planar_dev(q: np.ndarray) -> float:
+    """Largest distance (m) of the points ``(k, 3)`` to their Newell plane."""
+    n = unit(newell_normal(q))
+    return float(np.max(np.abs((q - q.mean(axis=0)) @ n))) if np.any(n) else 0.0
+
+
+def eplus_conform(pieces: list[Piece], tol: float = EPLUS_POINT_TOL) -> list[Piece]:
+    """Drop sliver triangles EnergyPlus's enclosure test cannot match, keeping the zone closed.
+
+    EnergyPlus inserts every zone vertex it finds on a surface edge (the two distances
+    through the vertex exceed the edge length by less than ``tol``) before counting edges.
+    A sliver triangle ``(a, b, c)`` with ``c`` "on" ``ab`` then folds onto itself and its
+    edges no longer match. Such a triangle is dropped and ``c`` is inserted into the edge
+    ``ba`` of the neighbouring piece, so the written shell stays closed (edges ``a-c`` and
+    ``c-b`` are shared with the triangle's other neighbours) and equals what EnergyPlus sees.
+    When ``c`` is off the neighbour's plane, the neighbour is written as a fan of triangles
+    from ``c`` (each planar).
+
+    Parameters
+    ----------
+    pieces : list of Piece
+        Pieces of one closed zone (neighbours share exact vertex coordinates).
+    tol : float, m
+
+    Returns
+    -------
+    list of Piece
+    """
+    def key(x):
+        return tuple(np.round(x, 6).tolist())
+
+    out = list(pieces)
+    for _ in range(len(pieces)):
+        hit = None
+        for pi, p in enumerate(out):
+            q = p.points
+            if len(q) != 3:
+                continue
+            for i in range(3):
+                a, b, c = q[i], q[(i + 1) % 3], q[(i + 2) % 3]
+                if _on_segment(a, b, c, tol):
+                    hit = (pi, a, b, c)
+                    break
+            if hit:
+                break
+        if hit is None:
+            break
+        pi, a, b, c = hit
+        ka, kb = key(a), key(b)
+        nb = None
+        for qi, p in enumerate(out):
+            if qi == pi:
+                continue
+            q = p.points
+            for i in range(len(q)):
+                if key(q[i]) == kb and key(q[(i + 1) % len(q)]) == ka:
+                    nb = (qi, i)
+                    break
+            if nb:
+                break
+        if nb is None:
+            break  # no neighbour across ab: leave the zone as it is
+        qi, i = nb
+        q = np.insert(out[qi].points, i + 1, c, axis=0)
+        if _planar_dev(q) > 1e-3:
+            # c is off the neighbour's plane: a fan of triangles from c keeps every part planar
+            k = len(q)
+            j = i + 1
+            fan = [q[[j, (j + m) % k, (j + m + 1) % k]] for m in range(1, k - 1)]
+            new = [replace(out[qi], points=t) for t in fan if polygon_area3d(t) > MIN_PIECE_AREA]
+        else:
+            new = [replace(out[qi], points=q)]
+        out = [p for ri, p in enumerate(out) if ri not in (pi, qi)] + new
+    return out
 
 
 def _whole_face(zone: ZoneShell, face: ZoneFace, overlaps: list) -> list[tuple[np.ndarray, str]]:
