@@ -419,6 +419,34 @@ def _planar_dev(q: np.ndarray) -> float:
     return float(np.max(np.abs((q - q.mean(axis=0)) @ n))) if np.any(n) else 0.0
 
 
+def _split_on_own_edge(pieces: list[Piece], tol: float = EPLUS_POINT_TOL) -> list[Piece] | None:
+    """Split the first piece with a vertex EnergyPlus sees on another of its edges.
+
+    A thin piece ``(.., a, b, .., c, ..)`` whose vertex ``c`` lies within ``tol`` of its
+    edge ``ab`` (EnergyPlus inserts ``c`` there and then counts ``a-c`` twice) becomes the
+    triangle ``(a, b, c)`` (a sliver that :func:`eplus_conform` folds into the neighbour
+    across ``ab``), the part ``(b, .., c)`` and the part ``(c, .., a)``; parts with fewer
+    than 3 vertices are left out. Internal edges ``b-c`` and ``c-a`` are shared by two
+    parts, so the shell stays closed. Returns None when no piece has such a vertex.
+    """
+    for pi, p in enumerate(pieces):
+        q = p.points
+        k = len(q)
+        if k < 4:
+            continue
+        for i in range(k):
+            ib = (i + 1) % k
+            for j in range(k):
+                if j in (i, ib) or not _on_segment(q[i], q[ib], q[j], tol):
+                    continue
+                tri = q[[i, ib, j]]
+                q1 = q[[(ib + m) % k for m in range((j - ib) % k + 1)]]
+                q2 = q[[(j + m) % k for m in range((i - j) % k + 1)]]
+                new = [replace(p, points=x) for x in (tri, q1, q2) if len(x) >= 3]
+                return pieces[:pi] + new + pieces[pi + 1:]
+    return None
+
+
 def eplus_conform(pieces: list[Piece], tol: float = EPLUS_POINT_TOL) -> list[Piece]:
     """Drop sliver triangles EnergyPlus's enclosure test cannot match, keeping the zone closed.
 
@@ -441,11 +469,30 @@ def eplus_conform(pieces: list[Piece], tol: float = EPLUS_POINT_TOL) -> list[Pie
     -------
     list of Piece
     """
+    out = _eplus_conform(pieces, tol, split=True)
+    if _edge_defects(out) > _edge_defects(pieces):
+        # a split piece's vertex landed in a neighbour that already holds the edge through it
+        out = _eplus_conform(pieces, tol, split=False)
+    return out
+
+
+def _edge_defects(pieces: list[Piece]) -> int:
+    """Directed edges used more than once plus edges without their reverse."""
+    from collections import Counter
+
+    cnt = Counter()
+    for p in pieces:
+        k = [tuple(np.round(x, 6).tolist()) for x in p.points]
+        cnt.update((k[i], k[(i + 1) % len(k)]) for i in range(len(k)))
+    return sum(1 for e, n in cnt.items() if n > 1 or (e[1], e[0]) not in cnt)
+
+
+def _eplus_conform(pieces: list[Piece], tol: float, split: bool) -> list[Piece]:
     def key(x):
         return tuple(np.round(x, 6).tolist())
 
     out = list(pieces)
-    for _ in range(len(pieces)):
+    for _ in range(4 * len(pieces) + 8):
         hit = None
         for pi, p in enumerate(out):
             q = p.points
@@ -459,7 +506,11 @@ def eplus_conform(pieces: list[Piece], tol: float = EPLUS_POINT_TOL) -> list[Pie
             if hit:
                 break
         if hit is None:
-            break
+            parts = _split_on_own_edge(out, tol) if split else None
+            if parts is None:
+                break
+            out = parts
+            continue
         pi, a, b, c = hit
         ka, kb = key(a), key(b)
         nb = None
