@@ -33,6 +33,17 @@ def box_doc(version: str = "2.0", faces=None, vertices=None, semantics=True, lod
     return doc
 
 
+def parts_doc() -> dict:
+    """A Building without geometry whose two BuildingParts are the same box."""
+    part = box_doc()["CityObjects"]["b1"]
+    doc = box_doc()
+    doc["CityObjects"]["b1"]["geometry"] = []
+    doc["CityObjects"]["b1"]["children"] = ["p1", "p2"]
+    doc["CityObjects"]["p1"] = {**part, "type": "BuildingPart", "parents": ["b1"]}
+    doc["CityObjects"]["p2"] = {**part, "type": "BuildingPart", "parents": ["b1"]}
+    return doc
+
+
 def write(tmp_path, doc, name="b.city.json", text=None) -> str:
     p = tmp_path / name
     p.write_text(text if text is not None else json.dumps(doc), encoding="utf-8")

@@ -10,7 +10,7 @@ import pytest
 from lod2energy.io import cityjson, read
 from lod2energy.model import Building, FeatureError
 
-from cityjson_docs import BOX_VERTICES, box_doc, to_seq, write
+from cityjson_docs import BOX_VERTICES, box_doc, parts_doc, to_seq, write
 
 
 def _all(path, **kw):
@@ -125,12 +125,7 @@ def test_huge_coordinates_keep_precision(tmp_path):
 
 
 def test_parts_are_grouped_with_their_parent(tmp_path):
-    part = box_doc()["CityObjects"]["b1"]
-    doc = box_doc()
-    doc["CityObjects"]["b1"]["geometry"] = []
-    doc["CityObjects"]["b1"]["children"] = ["p1", "p2"]
-    doc["CityObjects"]["p1"] = {**part, "type": "BuildingPart", "parents": ["b1"]}
-    doc["CityObjects"]["p2"] = {**part, "type": "BuildingPart", "parents": ["b1"]}
+    doc = parts_doc()
     _, feats = _all(write(tmp_path, doc))
     (b,) = feats
     assert [o.id for o in b.objects] == ["b1", "p1", "p2"]

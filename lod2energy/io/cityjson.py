@@ -61,6 +61,11 @@ def _read_text(path: str) -> str:
         raise InputError(f"{path} is not UTF-8 text (byte {e.start})") from None
 
 
+def read_json(path: str) -> Any:
+    """Parse a JSON file (UTF-8, BOM allowed); InputError (901) with one line on failure."""
+    return _load_json_text(_read_text(path), path)
+
+
 def _transform_vertices(verts: Any, transform: Mapping | None, what: str) -> np.ndarray:
     if verts is None:
         raise InputError(f"{what} has no 'vertices'")

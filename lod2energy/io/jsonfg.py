@@ -8,11 +8,11 @@ it is reported as 904 (FORMAT_NOT_SUPPORTED), as val3dity does.
 """
 from __future__ import annotations
 
-import json
 from typing import Any, Iterator, Mapping
 
 import numpy as np
 
+from lod2energy.io.cityjson import read_json
 from lod2energy.errors import InputError
 from lod2energy.model import Building, CityModel, CityObject, FeatureError, Geometry, Shell, Solid, Surface
 
@@ -121,12 +121,9 @@ def read_document(doc: Mapping[str, Any], path: str) -> "tuple[CityModel | None,
 def read(path: str, **_) -> "tuple[CityModel | None, Iterator[Building | FeatureError]]":
     """Read a JSON-FG file."""
     try:
-        with open(path, "rb") as fh:
-            doc = json.loads(fh.read().decode("utf-8-sig"))
-    except OSError as e:
-        return None, iter([FeatureError(None, 901, f"cannot read {path}: {e.strerror}")])
-    except (ValueError, UnicodeDecodeError) as e:
-        return None, iter([FeatureError(None, 901, f"{path} is not valid JSON: {e}")])
+        doc = read_json(path)
+    except InputError as e:
+        return None, iter([FeatureError(None, e.code, str(e))])
     if not isinstance(doc, Mapping) or doc.get("type") not in ("Feature", "FeatureCollection"):
         return None, iter([FeatureError(None, 904, f"{path}: not a JSON-FG Feature/FeatureCollection")])
     return read_document(doc, path)

@@ -6,13 +6,13 @@ A tu3djson document is ``{"type": "tu3djson", "features": [{"geometry": {"type",
 """
 from __future__ import annotations
 
-import json
 from dataclasses import replace
 from typing import Any, Iterator, Mapping
 
 import numpy as np
 
 from lod2energy.errors import InputError
+from lod2energy.io.cityjson import read_json
 from lod2energy.model import Building, CityModel, CityObject, FeatureError
 
 
@@ -55,12 +55,9 @@ def _feature(fid: str, f: Any) -> Building:
 def read(path: str, **_) -> "tuple[CityModel | None, Iterator[Building | FeatureError]]":
     """Read a tu3djson file."""
     try:
-        with open(path, "rb") as fh:
-            doc = json.loads(fh.read().decode("utf-8-sig"))
-    except OSError as e:
-        return None, iter([FeatureError(None, 901, f"cannot read {path}: {e.strerror}")])
-    except (ValueError, UnicodeDecodeError) as e:
-        return None, iter([FeatureError(None, 901, f"{path} is not valid JSON: {e}")])
+        doc = read_json(path)
+    except InputError as e:
+        return None, iter([FeatureError(None, e.code, str(e))])
     if not isinstance(doc, Mapping) or doc.get("type") != "tu3djson":
         return None, iter([FeatureError(None, 904, f"{path}: not a tu3djson document")])
     return read_document(doc, path)
