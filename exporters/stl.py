@@ -58,7 +58,49 @@ class StlOptions:
 def _zone_mesh(z: ZoneShell) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     tris, kinds = z.triangles()
     codes = np.array([PATCHES.index(k) for k in kinds], dtype=np.intp)
+    tris, codes = cancel_fins(tris, codes)
     return z.vertices, tris, codes
+
+
+def cancel_fins(t: np.ndarray, c: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Drop pairs of triangles on the same three vertices with opposite orientation.
+
+    Two faces that share a short bent path a-b-c (a near-collinear bump on a shared edge)
+    each cut off the ear (a, b, c) when triangulated: the two ears cancel each other and
+    their diagonal a-c is then used by four triangles. Without both ears the faces meet
+    along a-c and every edge is used twice again.
+
+    Parameters
+    ----------
+    t : (t, 3) int
+        Triangles (vertex indices).
+    c : (t,) int
+        A value per triangle (kept for the triangles that stay).
+
+    Returns
+    -------
+    triangles (t', 3) int, values (t',) int
+    """
+    t = np.asarray(t, dtype=np.intp).reshape(-1, 3)
+    c = np.asarray(c)
+    while len(t):
+        key = np.sort(t, axis=1)
+        _, inv, counts = np.unique(key, axis=0, return_inverse=True, return_counts=True)
+        inv = inv.ravel()
+        pair = counts[inv] == 2
+        if not pair.any():
+            break
+        # orientation sign: parity of the permutation that sorts the triangle
+        r = np.argsort(t, axis=1)
+        even = ((r[:, 0] == 0) & (r[:, 1] == 1)) | ((r[:, 0] == 1) & (r[:, 1] == 2)) | ((r[:, 0] == 2) & (r[:, 1] == 0))
+        s = np.where(even, 1, -1)
+        total = np.zeros(len(counts), dtype=np.intp)
+        np.add.at(total, inv, s)
+        drop = pair & (total[inv] == 0)
+        if not drop.any():
+            break
+        t, c = t[~drop], c[~drop]
+    return t, c
 
 
 def merge_meshes(meshes: list[tuple[np.ndarray, np.ndarray, np.ndarray]], union: bool = True
