@@ -295,6 +295,8 @@ def merge_slivers(m: PolyMesh, tol: Tolerances, only_new: bool = False) -> PolyM
                 continue
             if face_area(V, nf) <= tol.sliver_area:
                 continue
+            if invalid_polygons(m.with_faces([nf]), tol):
+                continue  # folded (204) or otherwise rejected: fix_nonplanar would split it again
             faces[g] = nf
             areas[g] = face_area(V, nf)
             alive[s] = False
@@ -302,13 +304,15 @@ def merge_slivers(m: PolyMesh, tol: Tolerances, only_new: bool = False) -> PolyM
     return m.with_faces([f for k, f in enumerate(faces) if alive[k]])
 
 
-def collapse_slivers(m: PolyMesh, tol: Tolerances, edge: float = 0.02, height: float = 0.01) -> PolyMesh:
+def collapse_slivers(m: PolyMesh, tol: Tolerances, edge: float = 0.02, height: float = 0.01,
+                     rank: int = 0, keep_high: bool = False) -> PolyMesh:
     """Remove the slivers :func:`merge_slivers` could not absorb.
 
     A sliver with an edge shorter than ``edge`` (m) has that edge collapsed (its second
     vertex snapped onto the first everywhere); a needle whose height over its longest edge
     is under ``height`` (m) is dropped, leaving a slit that hole filling zips into the face
-    across it. Other slivers are kept.
+    across it. Other slivers are kept. ``rank`` picks the edge (0: the shortest, 1: the next
+    one...) and ``keep_high`` which end survives, for :func:`desliver`'s alternatives.
     """
     V = m.vertices
     faces = list(m.faces)
@@ -320,10 +324,13 @@ def collapse_slivers(m: PolyMesh, tol: Tolerances, edge: float = 0.02, height: f
         r = [lut.get(v, v) for v in f.outer]
         P = V[r]
         L = np.linalg.norm(P - np.roll(P, -1, axis=0), axis=1)
-        k = int(np.argmin(L))
+        k = int(np.argsort(L, kind="stable")[min(rank, len(L) - 1)])
         a, b = r[k], r[(k + 1) % len(r)]
         if L[k] <= edge and a != b and a not in lut and b not in lut:
-            lut[max(a, b)] = min(a, b)
+            if keep_high:
+                lut[min(a, b)] = max(a, b)
+            else:
+                lut[max(a, b)] = min(a, b)
             continue
         long_ = float(L.max())
         if long_ > 0 and 2 * face_area(V, f) / long_ <= height:
@@ -336,6 +343,28 @@ def collapse_slivers(m: PolyMesh, tol: Tolerances, edge: float = 0.02, height: f
             continue
         out.append(Face(tuple(tuple(lut.get(v, v) for v in r) for r in f.rings), f.source, f.semantic))
     return clean_rings(m.with_faces(out))
+
+
+def desliver(m: PolyMesh, tol: Tolerances, accept) -> PolyMesh | None:
+    """A version of ``m`` without slivers that ``accept`` takes, or None.
+
+    Tries each way of collapsing the slivers (which short edge, which end survives; every
+    vertex moves at most 2 cm) followed by the usual tidy-up; the first result ``accept``
+    passes wins. Used when the ladder would otherwise keep a valid shell with a sliver.
+    """
+    if all(face_area(m.vertices, f) > tol.sliver_area for f in m.faces):
+        return None
+    for rank in (0, 1, 2):
+        for keep_high in (False, True):
+            x = m
+            for _ in range(2):
+                x = collapse_slivers(merge_slivers(x, tol), tol, rank=rank, keep_high=keep_high)
+                x = fix_nonplanar(drop_degenerate(drop_duplicate_faces(x)), tol)
+                if all(face_area(x.vertices, f) > tol.sliver_area for f in x.faces):
+                    break
+            if accept(x):
+                return x
+    return None
 
 
 TJUNCTION_TOL = 0.005  # m: a vertex this close to another polygon's edge is on it

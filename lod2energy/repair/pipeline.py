@@ -25,13 +25,14 @@ from lod2energy.model import (
 )
 from lod2energy.repair._mesh import Face, PolyMesh, compact, face_area, topology
 from lod2energy.repair.alphashape import alpha_repair
-from lod2energy.repair.cleanup import cleanup, merge_slivers, snap_vertices
+from lod2energy.repair.cleanup import cleanup, desliver, merge_slivers, snap_vertices
 from lod2energy.repair.footprint import extrude_footprint
 from lod2energy.repair.holefill import fill_holes
 from lod2energy.repair.hull import convex_hull
 from lod2energy.repair.metrics import fidelity
 from lod2energy.repair.orientation import orient
 from lod2energy.repair.refill import close, refill
+from lod2energy.repair.unpinch import unpinch
 from lod2energy.repair.validity import energy_codes, shell_defects
 
 STAGES = ("valid", "cleanup", "orientation", "holefill", "refill", "alphashape", "footprint",
@@ -156,19 +157,49 @@ def ladder(m: PolyMesh, lod, tol: Tolerances, deadline: float) -> tuple[str, Pol
     if not late():
         def accept(r):
             return is_repaired(r, lod, tol)
-        m3 = refill(m2, tol, accept=accept)
+        # sheets touching at a non-manifold edge or vertex: separate them (or join them by
+        # a thin bridge) by a few millimetres before cutting anything out
+        m3 = None
+        for base in (m2, m1):
+            for bridge in (False, True):
+                u = unpinch(base, tol, bridge=bridge)
+                if u is None:
+                    continue
+                for cand in (u, close(cleanup(u, tol), tol)):
+                    if accept(cand):
+                        m3 = cand
+                        break
+                if m3 is None and not late():
+                    m3 = refill(close(u, tol), tol, accept=accept)
+                if m3 is not None:
+                    break
+            if m3 is not None or late():
+                break
+        if m3 is None:
+            m3 = refill(m2, tol, accept=accept)
         if m3 is None:
             m3 = refill(m1, tol, accept=accept)
         if ok("refill", m3):
             return "refill", m3, log
     # a sliver is an energy-compliance defect, not a val3dity one: rather than trading a
     # 1 cm2 face for a global reconstruction, keep the least invasive closed, valid result
-    # and report the sliver (1003)
+    # and report the sliver (1003); the input itself comes first when only slivers fail it
     soft = replace(tol, sliver_area=0.0)
-    for name, cand in (("cleanup", m0), ("orientation", m1), ("holefill", m2)):
-        if is_repaired(cand, lod, soft):
-            log.append(f"{name}: ok except slivers (1003 kept)")
-            return name, cand, log
+    raw = orient(snap_vertices(m, tol.snap_tol))
+    kept = None
+    for name, cand in (("cleanup", m0), ("orientation", raw), ("orientation", m1), ("holefill", m2)):
+        if not is_repaired(cand, lod, soft):
+            continue
+        fixed = desliver(cand, tol, lambda r: is_repaired(r, lod, tol)) if not late() else None
+        if fixed is not None:
+            log.append(f"{name}: ok once its slivers are collapsed")
+            return name, fixed, log
+        n = sum(face_area(cand.vertices, f) <= tol.sliver_area for f in cand.faces)
+        if kept is None or n < kept[0]:
+            kept = (n, name, cand)
+    if kept is not None:
+        log.append(f"{kept[1]}: ok except {kept[0]} sliver(s) (1003 kept)")
+        return kept[1], kept[2], log
     if not late():
         m4 = alpha_repair(m0, tol, deadline=deadline,
                           accept=lambda r: not val3dity_codes(r, lod, tol))
