@@ -169,38 +169,102 @@ def merge_meshes(meshes: list[tuple[np.ndarray, np.ndarray, np.ndarray]], union:
 
 def collapse_short_edges(v: np.ndarray, t: np.ndarray, c: np.ndarray, tol: float
                          ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Merge vertices joined by an edge shorter than ``tol`` (m) and drop collapsed triangles.
+    """Collapse edges shorter than ``tol`` (m) one at a time, keeping the mesh 2-manifold.
 
     Unions leave micro-edges where a vertex of one part lies a few micrometres off a face of
-    another; the triangles around them are slivers that STL readers see as degenerate.
-    """
-    from scipy.cluster.hierarchy import DisjointSet
+    another; the triangles around them are slivers that STL readers see as degenerate (a
+    binary STL stores float32, so endpoints closer than about 1e-6 m become one point).
+    Shortest edges first, an edge a-b is collapsed only when it is used by exactly two
+    triangles and the link condition holds (the vertices adjacent to both a and b are the
+    two opposite vertices of those triangles): collapsing all short edges at once can pinch
+    the surface into an edge used by four triangles. The surviving endpoint keeps its
+    position; the collapse is tried the other way round, and skipped, when it would turn the
+    normal of a remaining triangle by more than 60 degrees or flatten it.
 
+    Parameters
+    ----------
+    v : (n, 3) float
+        Vertices (m).
+    t : (t, 3) int
+        Triangles, closed and consistently wound.
+    c : (t,) int
+        A value per triangle (kept for the triangles that stay).
+    tol : float
+        Edge length (m) below which edges are collapsed.
+
+    Returns
+    -------
+    vertices (n', 3) float, triangles (t', 3) int, values (t',) int
+    """
+    v = np.asarray(v, dtype=np.float64)
+    t = np.array(t, dtype=np.intp).reshape(-1, 3)
+    c = np.asarray(c)
     e = np.concatenate([t[:, [0, 1]], t[:, [1, 2]], t[:, [2, 0]]])
-    short = e[np.linalg.norm(v[e[:, 0]] - v[e[:, 1]], axis=1) < tol]
-    if len(short) == 0:
+    L = np.linalg.norm(v[e[:, 0]] - v[e[:, 1]], axis=1)
+    sel = np.nonzero(L < tol)[0]
+    if len(sel) == 0:
         return v, t, c
-    ds = DisjointSet(range(len(v)))
-    for a, b in short:
-        ds.merge(int(a), int(b))
-    root = np.array([ds[i] for i in range(len(v))])
-    t2 = root[t]
-    keep = (t2[:, 0] != t2[:, 1]) & (t2[:, 1] != t2[:, 2]) & (t2[:, 0] != t2[:, 2])
-    # a collapse can fold two triangles onto the same three vertices (a fin): drop both
-    key = np.sort(t2, axis=1)
-    _, first, counts = np.unique(key[keep], axis=0, return_inverse=True, return_counts=True)
-    kept = np.nonzero(keep)[0]
-    keep[kept[counts[first.ravel()] > 1]] = False
-    used, inv = np.unique(t2[keep], return_inverse=True)
-    return v[used], inv.reshape(-1, 3), c[keep]
+    sel = sel[np.argsort(L[sel], kind="stable")]
+    alive = np.ones(len(t), dtype=bool)
+    vt: list[set[int]] = [set() for _ in range(len(v))]
+    for i, tri in enumerate(t.tolist()):
+        for x in tri:
+            vt[x].add(i)
+
+    def ring(x: int) -> set[int]:
+        return {int(y) for ti in vt[x] for y in t[ti]} - {x}
+
+    def normal(p: np.ndarray) -> np.ndarray:
+        return np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
+
+    def keeps_shape(keep: int, gone: int, shared: set[int]) -> bool:
+        moved = sorted(vt[gone] - shared)
+        if not moved:
+            return True
+        tri = t[moved]
+        before = normal(v[tri])
+        after_idx = np.where(tri == gone, keep, tri)
+        after = normal(v[after_idx])
+        nb, na = np.linalg.norm(before, axis=1), np.linalg.norm(after, axis=1)
+        ok = (na > 1e-12) & (np.einsum("ij,ij->i", before, after) > 0.5 * nb * na)
+        return bool(ok.all())
+
+    for a, b in e[sel].tolist():
+        if not vt[a] or not vt[b] or np.linalg.norm(v[a] - v[b]) >= tol:
+            continue
+        shared = vt[a] & vt[b]
+        if len(shared) != 2:
+            continue
+        opposite = {int(y) for ti in shared for y in t[ti]} - {a, b}
+        if (ring(a) & ring(b)) != opposite:
+            continue
+        if keeps_shape(a, b, shared):
+            keep, gone = a, b
+        elif keeps_shape(b, a, shared):
+            keep, gone = b, a
+        else:
+            continue
+        for ti in shared:
+            alive[ti] = False
+            for x in t[ti]:
+                vt[int(x)].discard(ti)
+        for ti in vt[gone]:
+            t[ti][t[ti] == gone] = keep
+            vt[keep].add(ti)
+        vt[gone] = set()
+    t, c = t[alive], c[alive]
+    used, inv = np.unique(t, return_inverse=True)
+    return v[used], inv.reshape(-1, 3), c
 
 
 def separate_touching(v: np.ndarray, t: np.ndarray, dist: float | None = None) -> tuple[np.ndarray, int]:
     """Move apart distinct vertices that share a position (bodies touching at an edge or point).
 
     A union keeps such vertices distinct, so the mesh is 2-manifold by its indices, but an
-    STL stores positions only and readers would merge them into non-manifold edges. Each
-    copy is moved ``dist`` (m) into its own sheet, towards the centroid of its triangles.
+    STL stores positions only (as float32) and readers would merge them into non-manifold
+    edges. Vertices closer than 1e-6 m or equal once rounded to float32 count as sharing a
+    position. Each copy is moved ``dist`` (m) into its own sheet, towards the centroid of
+    its triangles.
 
     Returns
     -------
@@ -210,10 +274,13 @@ def separate_touching(v: np.ndarray, t: np.ndarray, dist: float | None = None) -
 
     dist = SEPARATION if dist is None else dist
     pairs = cKDTree(v).query_pairs(1e-6, output_type="ndarray")
-    if len(pairs) == 0:
+    # distinct in float64 but one point once written as float32
+    _, inv, cnt = np.unique(np.asarray(v, dtype=np.float32), axis=0, return_inverse=True, return_counts=True)
+    same32 = np.nonzero(cnt[inv.ravel()] > 1)[0]
+    if len(pairs) == 0 and len(same32) == 0:
         return v, 0
     v = v.copy()
-    idx = np.unique(pairs.ravel())
+    idx = np.union1d(np.unique(pairs.ravel()), same32)
     cent = v[t].mean(axis=1)
     for i in idx:
         tri = np.nonzero(np.any(t == i, axis=1))[0]
@@ -227,8 +294,8 @@ def separate_touching(v: np.ndarray, t: np.ndarray, dist: float | None = None) -
 
 
 def _closed_by_position(v: np.ndarray, t: np.ndarray) -> bool:
-    """Closed and consistently wound once vertices are merged by position (as STL readers do)."""
-    _, inv = np.unique(np.round(v, 5), axis=0, return_inverse=True)
+    """Closed and consistently wound once vertices are merged by float32 position (as STL readers do)."""
+    _, inv = np.unique(np.asarray(v, dtype=np.float32), axis=0, return_inverse=True)
     tt = inv.ravel()[t]
     e = np.concatenate([tt[:, [0, 1]], tt[:, [1, 2]], tt[:, [2, 0]]])
     if np.any(e[:, 0] == e[:, 1]):
@@ -352,18 +419,20 @@ def read_stl(path: str | Path) -> tuple[np.ndarray, np.ndarray, list[str]]:
 
 
 def self_check(path: str | Path) -> list[str]:
-    """Re-read an STL and check it is a closed, consistently wound, outward surface.
+    """Re-read an STL and check it the way OpenFOAM's ``surfaceCheck`` reads it.
 
-    Uses trimesh after merging coincident vertices: watertight (every edge in exactly two
-    triangles), winding consistent, positive volume, no degenerate triangle; patches named.
+    The triangle corners are taken as float32 (what a binary STL stores and what OpenFOAM
+    parses an ASCII STL into) and merged only when exactly equal (surfaceCheck merges
+    points closer than 1e-14 m, not to a rounding grid). Then: no triangle with two equal
+    corners or zero area (surfaceCheck's illegal triangles), every edge in exactly two
+    triangles (closed), every directed edge once (consistent winding: one normal zone per
+    connected part), positive volume (outward); patches named.
 
     Returns
     -------
     list of str
         Problems (empty when fine).
     """
-    import trimesh
-
     try:
         tris, codes, names = read_stl(path)
     except (OSError, ValueError) as e:
@@ -371,17 +440,28 @@ def self_check(path: str | Path) -> list[str]:
     if len(tris) == 0:
         return ["no triangles"]
     problems = []
-    mesh = trimesh.Trimesh(vertices=tris.reshape(-1, 3), faces=np.arange(len(tris) * 3).reshape(-1, 3),
-                           process=False)
-    mesh.merge_vertices(digits_vertex=5)
-    area = mesh.area_faces
-    if np.any(area <= 1e-10):
-        problems.append(f"{int(np.sum(area <= 1e-10))} degenerate triangle(s)")
-    if not mesh.is_watertight:
-        problems.append("not watertight")
-    if not mesh.is_winding_consistent:
-        problems.append("inconsistent winding")
-    vol = float(mesh.volume)
+    p32 = tris.astype(np.float32).reshape(-1, 3)
+    pts, inv = np.unique(p32, axis=0, return_inverse=True)
+    pts = pts.astype(np.float64)
+    t = inv.reshape(-1, 3)
+    repeated = (t[:, 0] == t[:, 1]) | (t[:, 1] == t[:, 2]) | (t[:, 0] == t[:, 2])
+    if repeated.any():
+        problems.append(f"{int(repeated.sum())} triangle(s) with coincident corners once read as float32 "
+                        "(illegal for surfaceCheck; the surface is not closed)")
+    area = 0.5 * np.linalg.norm(np.cross(pts[t[:, 1]] - pts[t[:, 0]], pts[t[:, 2]] - pts[t[:, 0]]), axis=1)
+    flat = ~repeated & (area <= 1e-10)
+    if flat.any():
+        problems.append(f"{int(flat.sum())} degenerate triangle(s)")
+    good = t[~repeated]
+    e = np.concatenate([good[:, [0, 1]], good[:, [1, 2]], good[:, [2, 0]]])
+    _, ecount = np.unique(np.sort(e, axis=1), axis=0, return_counts=True)
+    if np.any(ecount != 2):
+        problems.append(f"not closed: {int(np.sum(ecount == 1))} edge(s) in one triangle, "
+                        f"{int(np.sum(ecount > 2))} in more than two")
+    _, dcount = np.unique(e, axis=0, return_counts=True)
+    if np.any(dcount > 1):
+        problems.append(f"inconsistent winding: {int(np.sum(dcount > 1))} edge(s) traversed twice the same way")
+    vol = signed_volume(pts, t)
     if not vol > 0:
         problems.append(f"not outward: volume {vol:.3f} m3")
     if len(set(codes.tolist())) and not names:

@@ -114,7 +114,7 @@ def test_self_check_catches_open_and_inverted(tmp_path):
     second = text.index("  facet", first + 1)
     opened = tmp_path / "open.stl"
     opened.write_text(text[:first] + text[second:])
-    assert "not watertight" in stl.self_check(opened)
+    assert any(p.startswith("not closed") for p in stl.self_check(opened))
     tris, codes, _ = stl.read_stl(res[0].path)
     flipped = tmp_path / "flipped.stl"
     stl.write_binary(flipped, tris[:, ::-1].reshape(-1, 3), np.arange(len(tris) * 3).reshape(-1, 3), codes)
@@ -138,3 +138,111 @@ def test_real_buildings_closed(tmp_path, rel, multipart, n):
     res = stl.write(bs, tmp_path)
     assert len(res) == len(bs)
     assert [(r.building_ids, r.problems) for r in res if not r.ok] == []
+
+
+# --- issue 5: what surfaceCheck sees (float32 corners merged only when equal) ----------------
+
+def bipyramid_over_sliver(gap: float = 1e-4) -> tuple[np.ndarray, np.ndarray]:
+    """Two pyramids on a sliver triangle a-b-c whose edge a-b is ``gap`` (m) long.
+
+    The cycle a-b-c is not a face (the link condition fails on a-b): collapsing a-b merges
+    the edges a-c and b-c into one used by four triangles (a pinch).
+    """
+    v = np.array([[0, 0, 0], [gap, 0, 0], [10, 5, 0], [3, 2, 6], [3, 2, -6]], float)
+    a, b, c, p, q = range(5)
+    t = np.array([[p, a, b], [p, b, c], [p, c, a], [q, b, a], [q, c, b], [q, a, c]])
+    return v, t
+
+
+def _closed_by_index(t: np.ndarray) -> bool:
+    e = np.concatenate([t[:, [0, 1]], t[:, [1, 2]], t[:, [2, 0]]])
+    _, n = np.unique(np.sort(e, axis=1), axis=0, return_counts=True)
+    _, nd = np.unique(e, axis=0, return_counts=True)
+    return len(t) > 0 and bool((n == 2).all() and (nd == 1).all())
+
+
+def test_collapse_short_edges_does_not_pinch():
+    v, t = bipyramid_over_sliver()
+    vol = trimesh.Trimesh(v, t, process=False).volume
+    v2, t2, c2 = stl.collapse_short_edges(v, t, np.arange(len(t)), 1e-3)
+    assert _closed_by_index(t2)
+    assert trimesh.Trimesh(v2, t2, process=False).volume == pytest.approx(vol, rel=1e-9)
+    assert len(c2) == len(t2)
+
+
+def test_collapse_short_edges_removes_a_micro_edge():
+    # a box whose top front edge carries an extra vertex 10 um from a corner
+    m = trimesh.creation.box((10, 8, 6))
+    v, t = m.vertices.copy(), m.faces.copy()
+    corner = int(np.argmax(v @ np.array([1e3, 1e-3, 1.0])))  # (5, -4, 3)-ish corner
+    e = np.concatenate([t[:, [0, 1]], t[:, [1, 2]], t[:, [2, 0]]])
+    a, b = next((int(x), int(y)) for x, y in e if x == corner)
+    p = v[a] + (v[b] - v[a]) / np.linalg.norm(v[b] - v[a]) * 1e-5
+    v = np.vstack([v, p])
+    k = len(v) - 1
+    out = []
+    for tri in t.tolist():  # split both triangles on edge a-b at the new vertex
+        s = set(tri)
+        if {a, b} <= s:
+            i = tri.index(a)
+            j = tri.index(b)
+            t1, t2_ = list(tri), list(tri)
+            t1[j] = k
+            t2_[i] = k
+            out += [t1, t2_]
+        else:
+            out.append(tri)
+    t = np.array(out)
+    assert _closed_by_index(t)
+    v2, t2, _ = stl.collapse_short_edges(v, t, np.zeros(len(t), int), 1e-3)
+    assert len(v2) == 8 and _closed_by_index(t2)
+    assert trimesh.Trimesh(v2, t2, process=False).volume == pytest.approx(480, rel=1e-6)
+
+
+def gap_stl(path: Path, gap: float = 3e-6) -> Path:
+    """Box STL with one triangle corner moved ``gap`` (m): an open surface that 5-digit
+    rounding would close."""
+    tris = trimesh.creation.box((10, 8, 6)).triangles + 5.0  # corners at 0 and 10, 8, 6
+    tris[0, 0, 0] += gap
+    stl.write_binary(path, tris.reshape(-1, 3), np.arange(len(tris) * 3).reshape(-1, 3),
+                     np.zeros(len(tris), dtype=np.intp))
+    return path
+
+
+def float32_pinch_stl(path: Path, d: float = 1e-7) -> Path:
+    """Box STL whose top face has a vertex ``d`` (m) from a corner (distinct in float64, one
+    point in float32): a triangle with two equal corners once read."""
+    m = trimesh.creation.box((10, 8, 6))
+    v = m.vertices + 50.0
+    t = m.faces
+    top = [i for i in range(len(t)) if np.allclose(v[t[i]][:, 2], v[:, 2].max())][0]
+    a, b, c = t[top]
+    p = v[a] + (v[b] - v[a]) * d / np.linalg.norm(v[b] - v[a])
+    assert np.any(p != v[a]) and np.all(p.astype(np.float32) == v[a].astype(np.float32))
+    v = np.vstack([v, p])
+    k = len(v) - 1
+    t = np.vstack([np.delete(t, top, axis=0), [[a, k, c], [k, b, c]]])
+    stl.write_binary(path, v, t, np.zeros(len(t), dtype=np.intp))
+    return path
+
+
+def test_self_check_merges_points_exactly_like_surface_check(tmp_path):
+    probs = stl.self_check(gap_stl(tmp_path / "gap.stl"))
+    assert any(p.startswith("not closed") for p in probs), probs
+    probs = stl.self_check(float32_pinch_stl(tmp_path / "pinch.stl"))
+    assert any("coincident corners" in p for p in probs), probs
+    assert stl.self_check(gap_stl(tmp_path / "nogap.stl", gap=0.0)) == []
+
+
+def test_separate_touching_sees_float32_coincidence():
+    # two tetrahedra touching at a point; the copies are 3 um apart (more than 1e-6 m, but one
+    # float32 value at x = 100 m)
+    tet = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], float)
+    t = np.array([[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]])
+    v = np.vstack([tet + [99.0, 0, 0], -tet + [100.0 + 3e-6, 1, 1]])
+    v[1] = [100.0, 0, 0]
+    v[4] = [100.0 + 3e-6, 0, 0]
+    assert np.all(v[1].astype(np.float32) == v[4].astype(np.float32))
+    v2, moved = stl.separate_touching(v, np.vstack([t, t[:, ::-1] + 4]))
+    assert moved == 2
+    assert np.linalg.norm(v2[1].astype(np.float32) - v2[4].astype(np.float32)) > 1e-3

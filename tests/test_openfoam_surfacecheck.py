@@ -95,3 +95,15 @@ def test_parse_surface_check_verdicts():
     assert not openfoam.parse_surface_check(bad).ok
     flipped = good.replace("unconnected parts : 2", "unconnected parts : 1")
     assert not openfoam.parse_surface_check(flipped).ok
+
+
+@pytest.mark.external
+@needs_foam
+@pytest.mark.parametrize("make", ["gap_stl", "float32_pinch_stl"])
+def test_self_check_agrees_with_surface_check(tmp_path, make):
+    import test_export_stl as helpers
+    bad = getattr(helpers, make)(tmp_path / "bad.stl")
+    assert not openfoam.surface_check(bad).ok
+    assert stl.self_check(bad) != []
+    good = helpers.gap_stl(tmp_path / "good.stl", gap=0.0)
+    assert openfoam.surface_check(good).ok and stl.self_check(good) == []

@@ -17,7 +17,7 @@ import numpy as np
 
 from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.graph import FaceGraph, building_graph
-from lod2energy.model import Building
+from lod2energy.model import Building, lod_key
 from lod2energy.validate.defect import Defect
 
 LABELS = ("RoofSurface", "WallSurface", "GroundSurface", "ClosureSurface",
@@ -79,19 +79,25 @@ def energy_compliance(b: Building, defects: Iterable[Defect], graph: FaceGraph |
     codes |= {d.code for d in defects if d.code in (901, 902)}
     reasons = []
     has_faces = graph.n_faces > 0
+    # LoD0 (footprint, roof outline) is no volume: the repair ladder leaves it alone, so the
+    # geometric failures below only restate that; say it once, plainly
+    flat_lod = has_faces and lod_key(lod) < 1
     closed = has_faces and graph.n_boundary == 0 and graph.n_nonmanifold == 0 and not (codes & _CLOSED_CODES)
     if not has_faces:
         reasons.append("no envelope geometry")
+    elif flat_lod:
+        reasons.append(f"only LoD{lod} geometry (footprint or roof outline, not a volume): no LoD >= 1 "
+                       "envelope to repair into a closed solid")
     elif not closed:
         reasons.append(f"not a closed 2-manifold (N_b={graph.n_boundary}, N_nm={graph.n_nonmanifold})")
     vols = graph.shell_volumes()
     outward = has_faces and graph.n_inconsistent == 0 and bool(len(vols)) and bool((vols > 0).all()) \
         and not (codes & _ORIENT_CODES)
-    if has_faces and not outward:
+    if has_faces and not outward and not flat_lod:
         reasons.append("normals not consistently outward")
     n_degen = int(graph.x[:, 5].sum()) if has_faces else 0
     clean = has_faces and n_degen == 0 and not (codes & _DEGENERATE_CODES)
-    if has_faces and not clean:
+    if has_faces and not clean and not flat_lod:
         reasons.append(f"degenerate, sliver or self-intersecting faces ({n_degen} degenerate/sliver)")
     labelled = labels_complete(b, lod) if assess_labels else None
     if labelled is False:
