@@ -97,6 +97,9 @@ def prepare(b: Building, tol: Tolerances, a, source_model: CityModel | None = No
     after = validate_building(tb, tol)
     rec.output_errors = _codes(after)
     rec.energy = energy_compliance(tb, after, lod=lod, tol=tol, assess_labels=True, assess_u_values=True)
+    if rec.repair.get("error"):  # e.g. implausible coordinates: kept in the output, not simulated
+        rec.energy.update(compliant=False, geometry_ready=False,
+                          reasons=[f"repair: {rec.repair['error']}"] + list(rec.energy.get("reasons", [])))
     rec.thermal = dict(tb.provenance.get("thermal", {}) or {})
     tb = tb.with_provenance(energy=frozen_mapping(rec.energy))
     return tb, rec
@@ -184,6 +187,8 @@ def repair_file(a, tol: Tolerances) -> int:
             if item.is_building:
                 rep = {"id": item.id, **{k: v for k, v in repair_info(item).items() if k != "geometries"}}
                 records.append(rep)
+                if rep.get("error"):
+                    _err(f"{a.input}: {item.type} {item.id}: {rep['error']}")
                 after = rep.get("defects_after") or []
                 if rep.get("stage") == "irreparable" or any(c != 601 for c in after):
                     worst = max(worst, EXIT_INVALID)
@@ -248,6 +253,8 @@ def export_file(a, tol: Tolerances) -> int:
                 records.append(rec)
                 worst = max(worst, EXIT_INVALID)
                 continue
+            if rec.repair.get("error"):
+                _err(f"{a.input}: {item.type} {item.id}: {rec.repair['error']}")
             prepared.append(pb)
             records.append(rec)
     finally:

@@ -9,6 +9,7 @@ convex hull's) the one closest to the input (two-way mean vertex-to-surface dist
 """
 from __future__ import annotations
 
+import os
 import time
 
 import numpy as np
@@ -21,6 +22,19 @@ from lod2energy.repair.validity import shell_defects
 ALPHAS = (8.0, 4.0)  # m: wide enough to bridge missing party walls (smaller ones give hollow skins)
 OFFSET = 0.01  # m
 
+MAX_WRAP_AREA = 1.0e6
+"""Largest surface area handed to the alpha wrap, m2.
+
+CGAL refines the wrap until it lies within :data:`OFFSET` of the input, so its size grows with
+the wrapped area, up to about 3 triangles per m2 where it wraps both sides of thin walls
+(measured: an open 200 x 100 x 20 m box, 5e4 m2, gives 1.4e5 triangles in 18 s). 1e6 m2 covers
+the largest real buildings (a 1 km x 0.5 km hall) while keeping the worst case within a few GB;
+larger inputs skip the wrap (the alpha complex, footprint and hull stages remain).
+"""
+
+WRAP_MEMORY = 4 * 1024 ** 3
+"""Address space one alpha wrap may add to the process, bytes (a wrap over it fails cleanly)."""
+
 
 def _soup(m: PolyMesh) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     tris, _ = triangulate_mesh(m)
@@ -30,20 +44,15 @@ def _soup(m: PolyMesh) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     return P, F, origin
 
 
-def alpha_wrap(m: PolyMesh, alpha: float, offset: float = OFFSET, target_faces: int | None = 400) -> PolyMesh | None:
-    """CGAL alpha wrap of ``m`` (alpha and offset in m), decimated and merged into polygons."""
+def _wrap_arrays(P: np.ndarray, F: np.ndarray, alpha_pct: float, offset_pct: float,
+                 target_faces: int | None) -> tuple[np.ndarray, np.ndarray] | None:
+    """pymeshlab's alpha wrap (+ planar decimation) of a soup; (V, T) or None on failure."""
     import pymeshlab
-    P, F, origin = _soup(m)
-    if len(F) == 0:
-        return None
-    diag = float(np.linalg.norm(P.max(axis=0) - P.min(axis=0)))
-    if diag <= 0:
-        return None
     ms = pymeshlab.MeshSet()
     ms.add_mesh(pymeshlab.Mesh(vertex_matrix=P, face_matrix=F))
     try:
-        ms.generate_alpha_wrap(alpha=pymeshlab.PercentageValue(100 * alpha / diag),
-                               offset=pymeshlab.PercentageValue(100 * offset / diag))
+        ms.generate_alpha_wrap(alpha=pymeshlab.PercentageValue(alpha_pct),
+                               offset=pymeshlab.PercentageValue(offset_pct))
         if target_faces is not None and ms.current_mesh().face_number() > target_faces:
             ms.meshing_decimation_quadric_edge_collapse(targetfacenum=target_faces, preservetopology=True,
                                                         planarquadric=True, preservenormal=True,
@@ -51,8 +60,90 @@ def alpha_wrap(m: PolyMesh, alpha: float, offset: float = OFFSET, target_faces: 
     except Exception:  # noqa: BLE001 - pymeshlab raises its own error types
         return None
     cm = ms.current_mesh()
-    V = np.asarray(cm.vertex_matrix(), dtype=np.float64) + origin
-    T = np.asarray(cm.face_matrix(), dtype=np.int64)
+    return np.asarray(cm.vertex_matrix(), dtype=np.float64), np.asarray(cm.face_matrix(), dtype=np.int64)
+
+
+def _wrap_child(conn, args) -> None:  # pragma: no cover - runs in the forked child
+    try:
+        import resource
+        with open("/proc/self/statm") as f:
+            vm = int(f.read().split()[0]) * resource.getpagesize()
+        resource.setrlimit(resource.RLIMIT_AS, (vm + WRAP_MEMORY, vm + WRAP_MEMORY))
+    except (OSError, ValueError, ImportError):
+        pass
+    try:
+        conn.send(_wrap_arrays(*args))
+    except BaseException:  # noqa: BLE001 - MemoryError included: the parent sees None
+        try:
+            conn.send(None)
+        except BaseException:  # noqa: BLE001
+            pass
+    finally:
+        conn.close()
+        os._exit(0)
+
+
+def _wrap_until(args, deadline: float | None):
+    """:func:`_wrap_arrays` in a forked child killed at ``deadline`` (CGAL cannot be interrupted).
+
+    Without a deadline, or where fork is unavailable (or this is a daemonic worker, which may
+    not have children), the wrap runs in this process.
+    """
+    import multiprocessing as mp
+    if deadline is None or not hasattr(os, "fork") or mp.current_process().daemon:
+        return _wrap_arrays(*args)
+    left = deadline - time.monotonic()
+    if left <= 0:
+        return None
+    ctx = mp.get_context("fork")
+    recv, send = ctx.Pipe(duplex=False)
+    proc = ctx.Process(target=_wrap_child, args=(send, args), daemon=True)
+    proc.start()
+    send.close()
+    try:
+        if recv.poll(max(left, 0.0)):
+            try:
+                return recv.recv()
+            except (EOFError, OSError):
+                return None
+        return None  # over budget
+    finally:
+        recv.close()
+        if proc.is_alive():
+            proc.kill()
+        proc.join()
+
+
+def alpha_wrap(m: PolyMesh, alpha: float, offset: float = OFFSET, target_faces: int | None = 400,
+               deadline: float | None = None) -> PolyMesh | None:
+    """CGAL alpha wrap of ``m`` (alpha and offset in m), decimated and merged into polygons.
+
+    Parameters
+    ----------
+    deadline : float or None
+        ``time.monotonic()`` value after which the wrap is abandoned (None: no limit).
+
+    Returns
+    -------
+    PolyMesh or None
+        None when the wrap fails, runs past ``deadline`` or the input's surface exceeds
+        :data:`MAX_WRAP_AREA`.
+    """
+    P, F, origin = _soup(m)
+    if len(F) == 0:
+        return None
+    diag = float(np.linalg.norm(P.max(axis=0) - P.min(axis=0)))
+    if not np.isfinite(diag) or diag <= 0:
+        return None
+    T3 = P[F]
+    area = 0.5 * float(np.linalg.norm(np.cross(T3[:, 1] - T3[:, 0], T3[:, 2] - T3[:, 0]), axis=1).sum())
+    if area > MAX_WRAP_AREA:
+        return None
+    out = _wrap_until((P, F, 100 * alpha / diag, 100 * offset / diag, target_faces), deadline)
+    if out is None:
+        return None
+    V, T = out
+    V = V + origin
     if len(T) < 4:
         return None
     from lod2energy.repair.cleanup import fix_nonplanar
@@ -140,7 +231,8 @@ def alpha_repair(m: PolyMesh, tol: Tolerances = DEFAULT, deadline: float | None 
             break
         if best is not None and kind == "wrap" and target[0] != 400:
             continue  # a coarser valid wrap is already in hand
-        r = alpha_complex(m, a) if kind == "complex" else alpha_wrap(m, a, target_faces=target[0])
+        r = alpha_complex(m, a) if kind == "complex" else alpha_wrap(m, a, target_faces=target[0],
+                                                                            deadline=deadline)
         if r is None or shell_defects(r, tol, first_only=True):
             continue
         if accept is not None and not accept(r):

@@ -288,6 +288,7 @@ def repair_building(b: Building, tol: Tolerances = DEFAULT, timeout: float = DEF
         ``b`` itself when nothing needed a repair (with provenance when it carried none);
         else a new building with ``provenance["repair"]`` set.
     """
+    from lod2energy.repair.plausible import implausible
     t0 = time.monotonic()
     deadline = t0 + timeout
     targets = _targets(b, lod)
@@ -302,11 +303,16 @@ def repair_building(b: Building, tol: Tolerances = DEFAULT, timeout: float = DEF
     for oi, gi, g in targets:
         o = b.objects[oi]
         m = mesh_of_geometry(b.vertices, g)
-        codes = _input_defects(b.vertices, g, o.id, gi, m, tol)
+        why = implausible(m) if m.faces else None
+        if why is not None and not np.isfinite(m.vertices).all():
+            from lod2energy.validate.checks import validate_geometry  # no mesh work on NaN
+            codes = sorted({d.code for d in validate_geometry(b.vertices, o.id, gi, g, tol)})
+        else:
+            codes = _input_defects(b.vertices, g, o.id, gi, m, tol)
         defects_before |= set(codes)
         entry = {"object": o.id, "geometry": gi, "lod": g.lod, "type": g.type,
                  "n_faces_before": m.n_faces, "defects_before": codes}
-        if not codes and g.type == "Solid":
+        if not codes and g.type == "Solid" and why is None:
             entry.update(stage="valid", n_faces_after=m.n_faces, iou=1.0, mean_displacement=0.0,
                          mean_displacement_back=0.0, hausdorff=0.0, closure="closed", seconds=0.0)
             per_geom.append(entry)
@@ -314,6 +320,10 @@ def repair_building(b: Building, tol: Tolerances = DEFAULT, timeout: float = DEF
         t1 = time.monotonic()
         if not m.faces:
             stage, res, log = "irreparable", None, ["empty geometry"]
+        elif why is not None:
+            # misplaced coordinates: no stage can recover the shape, the global ones would not end
+            stage, res, log = "irreparable", None, [why]
+            entry["error"] = why
         elif time.monotonic() > deadline:
             res = convex_hull(cleanup(m, tol))
             stage = "hull" if is_repaired(res, g.lod, tol) else "irreparable"
@@ -359,6 +369,9 @@ def repair_building(b: Building, tol: Tolerances = DEFAULT, timeout: float = DEF
         nb = merge_overlapping_parts(nb, tol, lod)
     summary = _summary(nb, per_geom, sorted(defects_before), tol, time.monotonic() - t0)
     summary["overlapping_parts"] = [list(p) for p in overlaps]
+    errors = [f"{e['object']}: {e['error']}" for e in per_geom if e.get("error")]
+    if errors:
+        summary["error"] = "; ".join(errors)
     summary["surfaces_cleaned"] = surfaces_log
     return nb.with_provenance(repair=summary)
 
