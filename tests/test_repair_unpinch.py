@@ -118,7 +118,7 @@ def test_unpinch_makes_a_2manifold_and_moves_only_the_pinch(make, bridge):
     pinch = [m.vertices[i] for i in range(len(V)) if moved[i] > 0]
     for p in new:
         assert min(np.linalg.norm(p - q) for q in pinch) == pytest.approx(OFFSET, rel=1e-6)
-    assert signed_volume(u) == pytest.approx(signed_volume(m), rel=1e-3)
+    assert signed_volume(u) == pytest.approx(signed_volume(m), rel=5e-3)  # corners moved 8 mm
 
 
 def test_separated_sheets_do_not_touch():

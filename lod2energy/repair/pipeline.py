@@ -1,8 +1,12 @@
 """The repair ladder: least invasive stage first, re-validating after each, per building.
 
 Stages (:data:`STAGES`): ``valid`` (untouched) -> ``cleanup`` (0) -> ``orientation`` (1) ->
-``holefill`` (2, "Output A") -> ``refill`` (3, "Output A+") -> ``alphashape`` (4) ->
-``footprint`` (5) -> ``hull`` (6) -> ``irreparable`` (7, the original is kept). The first
+``holefill`` (2, "Output A") -> ``refill`` (3, "Output A+", with :func:`unpinch` first) ->
+``roofs`` (the input as a 2.5D model: prisms under every roof face, kept only when the input's
+vertices lie within 10 cm of it on average) -> ``alphashape`` (4) -> ``footprint`` (5) ->
+``hull`` (6) -> ``irreparable`` (7, the original is kept). ``roofs`` is a global
+reconstruction but keeps every roof plane and wall line of a 2.5D building, so it moves the
+geometry far less than an alpha wrap and is tried before it. The first
 result that is a closed, outward 2-manifold without degenerate, sliver or crossing faces and
 without a val3dity-level error (601 aside) is kept.
 
@@ -25,8 +29,8 @@ from lod2energy.model import (
 )
 from lod2energy.repair._mesh import Face, PolyMesh, compact, face_area, topology
 from lod2energy.repair.alphashape import alpha_repair
-from lod2energy.repair.cleanup import cleanup, desliver, merge_slivers, snap_vertices
-from lod2energy.repair.footprint import extrude_footprint
+from lod2energy.repair.cleanup import cleanup, desliver, fix_nonplanar, merge_slivers, snap_vertices
+from lod2energy.repair.footprint import extrude_footprint, extrude_roofs
 from lod2energy.repair.holefill import fill_holes
 from lod2energy.repair.hull import convex_hull
 from lod2energy.repair.metrics import fidelity
@@ -35,10 +39,10 @@ from lod2energy.repair.refill import close, refill
 from lod2energy.repair.unpinch import unpinch
 from lod2energy.repair.validity import energy_codes, shell_defects
 
-STAGES = ("valid", "cleanup", "orientation", "holefill", "refill", "alphashape", "footprint",
+STAGES = ("valid", "cleanup", "orientation", "holefill", "refill", "roofs", "alphashape", "footprint",
           "hull", "irreparable")
 LOCAL = ("cleanup", "orientation", "holefill", "refill")
-GLOBAL = ("alphashape", "footprint", "hull")
+GLOBAL = ("roofs", "alphashape", "footprint", "hull")
 DEFAULT_TIMEOUT = 30.0
 
 
@@ -159,25 +163,23 @@ def ladder(m: PolyMesh, lod, tol: Tolerances, deadline: float) -> tuple[str, Pol
             return is_repaired(r, lod, tol)
         # sheets touching at a non-manifold edge or vertex: separate them (or join them by
         # a thin bridge) by a few millimetres before cutting anything out
-        m3 = None
-        for base in (m2, m1):
-            for bridge in (False, True):
-                u = unpinch(base, tol, bridge=bridge)
-                if u is None:
-                    continue
-                for cand in (u, close(cleanup(u, tol), tol)):
-                    if accept(cand):
-                        m3 = cand
-                        break
-                if m3 is None and not late():
-                    m3 = refill(close(u, tol), tol, accept=accept)
-                if m3 is not None:
+        m3 = first = None
+        for bridge in (False, True):
+            u = unpinch(m2, tol, bridge=bridge)
+            if u is None:
+                continue
+            first = first or u
+            for cand in (u, close(cleanup(u, tol), tol)):
+                if accept(cand):
+                    m3 = cand
                     break
-            if m3 is not None or late():
+            if m3 is not None:
                 break
         if m3 is None:
             m3 = refill(m2, tol, accept=accept)
-        if m3 is None:
+        if m3 is None and first is not None and not late():
+            m3 = refill(close(first, tol), tol, accept=accept)
+        if m3 is None and not late():
             m3 = refill(m1, tol, accept=accept)
         if ok("refill", m3):
             return "refill", m3, log
@@ -201,6 +203,10 @@ def ladder(m: PolyMesh, lod, tol: Tolerances, deadline: float) -> tuple[str, Pol
         log.append(f"{kept[1]}: ok except {kept[0]} sliver(s) (1003 kept)")
         return kept[1], kept[2], log
     if not late():
+        m4r = roof_model(m0, lod, tol)
+        if m4r is not None and ok("roofs", m4r):
+            return "roofs", m4r, log
+    if not late():
         m4 = alpha_repair(m0, tol, deadline=deadline,
                           accept=lambda r: not val3dity_codes(r, lod, tol))
         if ok("alphashape", m4):
@@ -212,6 +218,46 @@ def ladder(m: PolyMesh, lod, tol: Tolerances, deadline: float) -> tuple[str, Pol
     if ok("hull", m6):
         return "hull", m6, log
     return "irreparable", None, log
+
+
+#: A 2.5D roof model is kept only when the input's vertices lie this close to it on average
+#: (m): beyond that the building is not 2.5D (overhangs, parts below ground) and the alpha
+#: shapes decide.
+ROOF_MODEL_MAX_DISPLACEMENT = 0.10
+
+
+def roof_model(m: PolyMesh, lod, tol: Tolerances) -> PolyMesh | None:
+    """The input rebuilt as a 2.5D model (:func:`footprint.extrude_roofs`), made valid.
+
+    The union of roof prisms is cleaned, oriented, separated where prisms only touch along an
+    edge (:func:`unpinch`) and rid of union slivers (:func:`desliver`). Returns None when no
+    valid result is found or the input's vertices are on average more than
+    :data:`ROOF_MODEL_MAX_DISPLACEMENT` from it.
+    """
+    from lod2energy.repair.metrics import point_triangle_distance
+    from lod2energy.repair._mesh import triangulate_mesh
+    r = extrude_roofs(m)
+    if r is None:
+        return None
+    r = orient(cleanup(r, tol))
+
+    def good(x):
+        return x is not None and is_repaired(x, lod, tol)
+    if not good(r):
+        u = unpinch(r, tol)
+        if u is not None:
+            u = close(cleanup(u, tol), tol)
+            r = u if good(u) else r
+    if not good(r):
+        r = desliver(r, tol, good)
+    if r is None:
+        return None
+    tris, _ = triangulate_mesh(m)
+    rt, _ = triangulate_mesh(r)
+    pts = m.vertices[np.unique(tris)]
+    if len(rt) == 0 or point_triangle_distance(pts, r.vertices, rt).mean() > ROOF_MODEL_MAX_DISPLACEMENT:
+        return None
+    return r
 
 
 def _targets(b: Building, lod: str | None) -> list[tuple[int, int, Geometry]]:
@@ -228,7 +274,8 @@ def _targets(b: Building, lod: str | None) -> list[tuple[int, int, Geometry]]:
             if lod is None and lod_key(g.lod) < 1:
                 continue  # LoD0 footprints and roof edges are not volumes
             out.append((oi, gi, g))
-    return out
+    # the highest LoD first: it is the one energy models use, so it gets the time budget first
+    return sorted(out, key=lambda t: -lod_key(t[2].lod))
 
 
 def _clean_surfaces(b: Building, lod: str | None, tol: Tolerances, lookup: dict, extra: list,

@@ -19,9 +19,10 @@ import numpy as np
 from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.repair._mesh import Face, PolyMesh, face_normal, topology
 
-#: Distance (m) each copy of a pinch vertex moves into its own material: five snap
-#: tolerances (val3dity merges points closer than 1 mm), half the planarity tolerance.
-OFFSET = 0.005
+#: Distance (m) each copy of a pinch vertex moves into its own material: more than the
+#: clean-up's T-junction distance (5 mm, which would zip the sheets together again) and
+#: under val3dity's planarity tolerance (10 mm).
+OFFSET = 0.008
 
 
 def _edge_pairs(m: PolyMesh, e: tuple[int, int], lst: list[tuple[int, int]], normals: np.ndarray,
@@ -53,24 +54,27 @@ def _edge_pairs(m: PolyMesh, e: tuple[int, int], lst: list[tuple[int, int]], nor
         # the face lies to the left of its own walking direction (seen from outside)
         inward = np.cross(n, axis * d)
         ang.append(float(np.arctan2(inward @ w2, inward @ w1)))
-    order = np.argsort(ang)
+    order = np.argsort(ang, kind="stable")
     k = len(order)
-    pairs, used = [], set()
-    for s in range(k):
-        i, j = order[s], order[(s + 1) % k]
-        t0, t1 = ang[i], ang[j] + (2 * np.pi if s == k - 1 else 0.0)
-        mid = 0.5 * (t0 + t1)
-        bis = np.cos(mid) * w1 + np.sin(mid) * w2
-        material = bis @ normals[lst[i][0]] < 0 and bis @ normals[lst[j][0]] < 0
-        empty = bis @ normals[lst[i][0]] > 0 and bis @ normals[lst[j][0]] > 0
-        if (empty if bridge else material):
-            if i in used or j in used or lst[i][1] == lst[j][1]:
-                return None
-            used.update((i, j))
+    # the two ways of pairing angular neighbours; each must join opposite edge directions
+    best, best_votes = None, -1
+    for start in (0, 1):
+        pairs, votes = [], 0
+        for s in range(start, start + k, 2):
+            i, j = order[s % k], order[(s + 1) % k]
+            if lst[i][1] == lst[j][1]:
+                pairs = None
+                break
+            t0, t1 = ang[i], ang[j] + (2 * np.pi if (s + 1) % k < s % k else 0.0)
+            mid = 0.5 * (t0 + t1)
+            bis = np.cos(mid) * w1 + np.sin(mid) * w2
+            material = bis @ normals[lst[i][0]] < 0 and bis @ normals[lst[j][0]] < 0
+            empty = bis @ normals[lst[i][0]] > 0 and bis @ normals[lst[j][0]] > 0
+            votes += int(empty if bridge else material)
             pairs.append((lst[i][0], lst[j][0]))
-    if len(used) != k:
-        return None
-    return pairs
+        if pairs is not None and votes > best_votes:
+            best, best_votes = pairs, votes
+    return best
 
 
 def _corner_direction(normals: list[np.ndarray]) -> np.ndarray:
