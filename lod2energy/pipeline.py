@@ -100,7 +100,9 @@ def prepare(b: Building, tol: Tolerances, a, source_model: CityModel | None = No
     if rec.repair.get("error"):  # e.g. implausible coordinates: kept in the output, not simulated
         rec.energy.update(compliant=False, geometry_ready=False,
                           reasons=[f"repair: {rec.repair['error']}"] + list(rec.energy.get("reasons", [])))
-    rec.thermal = dict(tb.provenance.get("thermal", {}) or {})
+    # areas, volume and UA of implausible geometry (e.g. a vertex 2,000 km away) would only
+    # pollute sums over the report's columns
+    rec.thermal = {} if rec.repair.get("error") else dict(tb.provenance.get("thermal", {}) or {})
     tb = tb.with_provenance(energy=frozen_mapping(rec.energy))
     return tb, rec
 
