@@ -111,7 +111,9 @@ def _cross3(a, b) -> np.ndarray:
 def plane_basis(n: np.ndarray) -> np.ndarray:
     """(2, 3) orthonormal basis of the plane with normal ``n`` (right-handed with n)."""
     n = np.asarray(n, dtype=np.float64)
-    ln = float(np.sqrt(n @ n)) or 1.0
+    ln = float(np.sqrt(n @ n))
+    if not ln > 0:  # degenerate face: any basis will do (callers reject the face anyway)
+        return np.array([[1.0, 0.0, 0.0], [0.0, 1.0, 0.0]])
     n = n / ln
     a = (1.0, 0.0, 0.0) if abs(n[0]) < 0.9 else (0.0, 1.0, 0.0)
     u = _cross3(n, a)

@@ -44,6 +44,9 @@ STAGES = ("valid", "cleanup", "orientation", "holefill", "refill", "roofs", "alp
 LOCAL = ("cleanup", "orientation", "holefill", "refill")
 GLOBAL = ("roofs", "alphashape", "footprint", "hull")
 DEFAULT_TIMEOUT = 30.0
+#: Seconds the alpha-shape search gets after the budget is spent (the time limit escalates
+#: to a bounded global reconstruction rather than straight to the convex hull).
+GLOBAL_MIN_SECONDS = 15.0
 
 
 # ----------------------------------------------------------------------------- geometry <-> mesh
@@ -206,11 +209,13 @@ def ladder(m: PolyMesh, lod, tol: Tolerances, deadline: float) -> tuple[str, Pol
         m4r = roof_model(m0, lod, tol)
         if m4r is not None and ok("roofs", m4r):
             return "roofs", m4r, log
-    if not late():
-        m4 = alpha_repair(m0, tol, deadline=deadline,
-                          accept=lambda r: not val3dity_codes(r, lod, tol))
-        if ok("alphashape", m4):
-            return "alphashape", m4, log
+    # escalation: even when the local stages used up the budget, one bounded alpha search
+    # runs before the convex hull (which fills courtyards and L-shapes)
+    alpha_deadline = max(deadline, time.monotonic() + GLOBAL_MIN_SECONDS)
+    m4 = alpha_repair(m0, tol, deadline=alpha_deadline,
+                      accept=lambda r: not val3dity_codes(r, lod, tol))
+    if ok("alphashape", m4):
+        return "alphashape", m4, log
     m5 = extrude_footprint(m0)
     if ok("footprint", m5):
         return "footprint", m5, log
