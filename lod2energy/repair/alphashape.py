@@ -19,7 +19,7 @@ from lod2energy.repair._mesh import PolyMesh, merge_coplanar, triangles_to_mesh,
 from lod2energy.repair.metrics import point_triangle_distance
 from lod2energy.repair.validity import shell_defects
 
-ALPHAS = (8.0, 4.0)  # m: wide enough to bridge missing party walls (smaller ones give hollow skins)
+ALPHAS = (8.0, 4.0, 2.0)  # m: 8 and 4 bridge missing party walls; 2 follows closed but tangled shells closer (hollow skins are rejected below)
 OFFSET = 0.01  # m
 
 MAX_WRAP_AREA = 1.0e6
