@@ -46,7 +46,7 @@ GLOBAL = ("roofs", "alphashape", "footprint", "hull")
 DEFAULT_TIMEOUT = 30.0
 #: Seconds the alpha-shape search gets after the budget is spent (the time limit escalates
 #: to a bounded global reconstruction rather than straight to the convex hull).
-GLOBAL_MIN_SECONDS = 15.0
+GLOBAL_MIN_SECONDS = 25.0
 
 
 # ----------------------------------------------------------------------------- geometry <-> mesh
