@@ -60,7 +60,62 @@ def _zone_mesh(z: ZoneShell) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     tris, kinds = z.triangles()
     codes = np.array([PATCHES.index(k) for k in kinds], dtype=np.intp)
     tris, codes = cancel_fins(tris, codes)
+    tris, codes = flip_caps(z.vertices, tris, codes)
     return z.vertices, tris, codes
+
+
+def flip_caps(v: np.ndarray, t: np.ndarray, c: np.ndarray, rel: float = 1e-9
+              ) -> tuple[np.ndarray, np.ndarray]:
+    """Remove zero-area "cap" triangles by flipping their longest edge.
+
+    A polygon with collinear points can triangulate into a cap ``(a, b, c)`` whose vertex
+    ``c`` lies on ``ab``; STL readers reject it as degenerate. With ``(b, a, d)`` the
+    triangle across ``ab``, both are replaced by ``(b, c, d)`` and ``(c, a, d)``: same
+    surface, every edge still used twice, orientation kept. The new triangles take the
+    neighbour's value.
+
+    Parameters
+    ----------
+    v : (n, 3) float
+    t : (t, 3) int
+        Closed, consistently wound triangles.
+    c : (t,) int
+    rel : float
+        A triangle is a cap when twice its area is under ``rel`` times its longest edge squared.
+
+    Returns
+    -------
+    triangles (t, 3) int, values (t,) int
+    """
+    t = np.array(t, dtype=np.intp).reshape(-1, 3)
+    c = np.array(c)
+    for _ in range(len(t)):
+        P = v[t]
+        e = np.stack([P[:, 1] - P[:, 0], P[:, 2] - P[:, 1], P[:, 0] - P[:, 2]], axis=1)
+        L2 = (e ** 2).sum(axis=2)
+        a2 = np.linalg.norm(np.cross(P[:, 1] - P[:, 0], P[:, 2] - P[:, 0]), axis=1)
+        caps = np.nonzero(a2 < rel * L2.max(axis=1))[0]
+        done = False
+        for k in caps:
+            i = int(np.argmax(L2[k]))
+            a, b, cc = t[k, i], t[k, (i + 1) % 3], t[k, (i + 2) % 3]
+            hit = np.nonzero(((t[:, 0] == b) & (t[:, 1] == a)) | ((t[:, 1] == b) & (t[:, 2] == a))
+                             | ((t[:, 2] == b) & (t[:, 0] == a)))[0]
+            hit = [h for h in hit if h != k]
+            if len(hit) != 1:
+                continue
+            h = hit[0]
+            d = int(next(x for x in t[h] if x not in (a, b)))
+            if d == cc:
+                continue
+            t[k] = (b, cc, d)
+            t[h] = (cc, a, d)
+            c[k] = c[h]
+            done = True
+            break
+        if not done:
+            break
+    return t, c
 
 
 def cancel_fins(t: np.ndarray, c: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

@@ -246,3 +246,18 @@ def test_separate_touching_sees_float32_coincidence():
     v2, moved = stl.separate_touching(v, np.vstack([t, t[:, ::-1] + 4]))
     assert moved == 2
     assert np.linalg.norm(v2[1].astype(np.float32) - v2[4].astype(np.float32)) > 1e-3
+
+
+def test_flip_caps_removes_a_collinear_cap_and_keeps_the_surface_closed():
+    # a tetrahedron whose side face (0, 1, 3) is split at 4, the midpoint of edge 0-1; the
+    # bottom is triangulated as (0, 2, 1) plus the zero-area cap (0, 1, 4)
+    v = np.array([[0, 0, 0], [2, 0, 0], [1, 2, 0], [1, 1, 2], [1, 0, 0]], dtype=float)
+    capped = np.array([[0, 2, 1], [0, 1, 4], [0, 4, 3], [4, 1, 3], [1, 2, 3], [2, 0, 3]])
+    tm = trimesh.Trimesh(v, capped, process=False)
+    assert tm.is_watertight and tm.is_winding_consistent and (tm.area_faces < 1e-12).sum() == 1
+    t2, c2 = stl.flip_caps(v, capped, np.arange(len(capped)))
+    tm2 = trimesh.Trimesh(v, t2, process=False)
+    assert tm2.is_watertight and tm2.is_winding_consistent
+    assert (tm2.area_faces < 1e-12).sum() == 0
+    assert tm2.volume == pytest.approx(tm.volume) and tm2.volume > 0
+    assert 1 not in c2.tolist()  # the cap is gone: both new triangles take the neighbour's value
