@@ -105,7 +105,10 @@ def flip_caps(v: np.ndarray, t: np.ndarray, c: np.ndarray, rel: float = 1e-9
             if len(hit) != 1:
                 continue
             h = hit[0]
-            d = int(next(x for x in t[h] if x not in (a, b)))
+            rest = [int(x) for x in t[h] if x not in (a, b)]
+            if not rest:
+                continue  # the neighbour is degenerate too (a, b, a): nothing to flip into
+            d = rest[0]
             if d == cc:
                 continue
             t[k] = (b, cc, d)
@@ -331,11 +334,17 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: StlOptions
     for g in groups:
         offset = local_origin(g)
         meshes, warnings = [], []
-        for b in g:
-            for z in zone_shells(b, offset, options.lod):
-                warnings.extend(w for w in z.warnings if "uValue" not in w)
-                meshes.append(_zone_mesh(z))
-        v, t, c, w = merge_meshes(meshes, options.union)
+        try:
+            for b in g:
+                for z in zone_shells(b, offset, options.lod):
+                    warnings.extend(w for w in z.warnings if "uValue" not in w)
+                    meshes.append(_zone_mesh(z))
+            v, t, c, w = merge_meshes(meshes, options.union)
+        except Exception as e:  # noqa: BLE001 - one building's geometry never stops the batch
+            results.append(ExportResult(tuple(b.id for b in g), "", False,
+                                        (f"STL not written: {type(e).__name__}: {e}",),
+                                        tuple(float(x) for x in offset), tuple(warnings), {}))
+            continue
         warnings.extend(w)
         stem = safe_stem(g[0].id if len(g) == 1 else "dataset", used)
         path = output_path(out, stem, ".stl")

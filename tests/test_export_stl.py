@@ -261,3 +261,26 @@ def test_flip_caps_removes_a_collinear_cap_and_keeps_the_surface_closed():
     assert (tm2.area_faces < 1e-12).sum() == 0
     assert tm2.volume == pytest.approx(tm.volume) and tm2.volume > 0
     assert 1 not in c2.tolist()  # the cap is gone: both new triangles take the neighbour's value
+
+
+def test_flip_caps_leaves_a_cap_next_to_a_degenerate_neighbour():
+    v = np.array([[0, 0, 0], [2, 0, 0], [1, 0, 0]], dtype=float)
+    t = np.array([[0, 1, 2], [1, 0, 1]])  # the neighbour across 0-1 has no third vertex
+    t2, _ = stl.flip_caps(v, t, np.zeros(2, dtype=int))  # used to raise StopIteration
+    assert t2.shape == t.shape
+
+
+def test_one_failing_building_does_not_stop_the_batch(tmp_path, monkeypatch):
+    good, bad = energy_ready(box()), energy_ready(shifted(box(), (30.0, 0.0, 0.0)))
+    bad = type(bad)(bad.id + "_bad", bad.type, bad.vertices, bad.objects, bad.provenance)
+    real = stl._zone_mesh
+
+    def boom(z):
+        if z.building_id.endswith("_bad"):
+            raise ValueError("synthetic failure")
+        return real(z)
+    monkeypatch.setattr(stl, "_zone_mesh", boom)
+    res = stl.write([bad, good], tmp_path)
+    by = {r.building_ids[0]: r for r in res}
+    assert not by[bad.id].ok and "synthetic failure" in by[bad.id].problems[0]
+    assert by[good.id].ok and Path(by[good.id].path).exists()
