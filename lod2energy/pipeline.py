@@ -340,7 +340,27 @@ def _export_with(fmt: str, buildings: list[Building], a, by_id: dict, model: Cit
     else:
         from lod2energy.exporters import stl as mod
         opts = mod.StlOptions(mode=a.stl_mode, ascii=a.stl_ascii, lod=a.lod)
-    results = mod.write(buildings, a.output, opts, crs=model.crs)
+    try:
+        results = mod.write(buildings, a.output, opts, crs=model.crs)
+    except Exception as err:  # noqa: BLE001 - a geometry the writer cannot take: isolate it
+        results = []
+        one_file = getattr(opts, "mode", "building") != "building"
+        for b in buildings if not one_file else []:
+            try:
+                results.extend(mod.write([b], a.output, opts, crs=model.crs))
+            except Exception as e:  # noqa: BLE001 - reported for this building, the rest goes on
+                if b.id in by_id:
+                    by_id[b.id].exports[fmt] = {"ok": False, "path": "",
+                                                "problems": [f"{fmt.upper()} not written: {type(e).__name__}: {e}"]}
+                worst = EXIT_INVALID
+                _err(f"{fmt.upper()} export of {b.type} {b.id} failed: {type(e).__name__}: {e}")
+        if one_file:
+            for b in buildings:
+                if b.id in by_id:
+                    by_id[b.id].exports[fmt] = {"ok": False, "path": "",
+                                                "problems": [f"{fmt.upper()} not written: {type(err).__name__}: {err}"]}
+            worst = EXIT_INVALID
+            _err(f"{fmt.upper()} export failed: {type(err).__name__}: {err}")
     for res in results:
         ids = list(getattr(res, "building_ids", None) or [])
         d = {"ok": bool(res.ok), "path": str(res.path), "problems": list(getattr(res, "problems", []) or [])}
