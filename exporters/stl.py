@@ -30,6 +30,10 @@ from .common import ExportResult, ZoneShell, local_origin, weld, output_path, sa
 SIMPLIFY_TOL = 1e-3
 #: Vertices of different parts closer than this (m) are made identical before the union.
 CROSS_WELD_TOL = 1e-3
+#: Weld distance (m) tried first for each zone's vertices: the repaired shells are already
+#: snapped at val3dity's 1 mm, and a wider weld would re-join sheets the repair separated by
+#: 8 mm (the usual 10 mm weld is used when the fine one leaves the zone open).
+ZONE_WELD_TOL = 1e-3
 #: Distance (m) by which vertices of bodies that only touch are moved apart.
 SEPARATION = 2e-3
 #: Patch order (binary attribute = index).
@@ -336,9 +340,16 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: StlOptions
         meshes, warnings = [], []
         try:
             for b in g:
-                for z in zone_shells(b, offset, options.lod):
+                # a fine weld first (keeps sheets the repair separated by millimetres apart);
+                # the exporters' usual 10 mm weld when that leaves a zone open
+                zs = zone_shells(b, offset, options.lod, weld_tol=ZONE_WELD_TOL)
+                ms = [_zone_mesh(z) for z in zs]
+                if not all(_closed_by_position(v_, t_) for v_, t_, _ in ms):
+                    zs = zone_shells(b, offset, options.lod)
+                    ms = [_zone_mesh(z) for z in zs]
+                for z, zm in zip(zs, ms):
                     warnings.extend(w for w in z.warnings if "uValue" not in w)
-                    meshes.append(_zone_mesh(z))
+                    meshes.append(zm)
             v, t, c, w = merge_meshes(meshes, options.union)
         except Exception as e:  # noqa: BLE001 - one building's geometry never stops the batch
             results.append(ExportResult(tuple(b.id for b in g), "", False,
