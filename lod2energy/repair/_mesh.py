@@ -314,6 +314,28 @@ def topology(m: PolyMesh) -> Topology:
     return Topology(inc, sorted(boundary), sorted(nonman), sorted(misor), nmv, ncomp, labels)
 
 
+def fan_groups(faces, links) -> list[list[int]]:
+    """Connected groups of ``faces`` (ids) where each item of ``links`` (a sequence of face ids)
+    joins its members; faces outside ``faces`` are ignored. Groups in order of first face."""
+    parent = {f: f for f in faces}
+
+    def find(x):
+        while parent[x] != x:
+            parent[x] = parent[parent[x]]
+            x = parent[x]
+        return x
+    for grp in links:
+        grp = [g for g in grp if g in parent]
+        for g in grp[1:]:
+            ra, rb = find(grp[0]), find(g)
+            if ra != rb:
+                parent[rb] = ra
+    out: dict[int, list[int]] = {}
+    for f in faces:
+        out.setdefault(find(f), []).append(f)
+    return list(out.values())
+
+
 def nonmanifold_vertices(faces, inc) -> list[int]:
     """Vertices where the incident faces form more than one edge-connected fan."""
     vf: dict[int, set] = defaultdict(set)
@@ -333,20 +355,7 @@ def nonmanifold_vertices(faces, inc) -> list[int]:
     for v, fs in vf.items():
         if len(fs) <= 1:
             continue
-        parent = {f: f for f in fs}
-
-        def find(x):
-            while parent[x] != x:
-                parent[x] = parent[parent[x]]
-                x = parent[x]
-            return x
-        for grp in links.get(v, ()):
-            r0 = find(grp[0])
-            for g in grp[1:]:
-                rg = find(g)
-                if rg != r0:
-                    parent[rg] = r0
-        if len({find(f) for f in fs}) > 1:
+        if len(fan_groups(fs, links.get(v, ()))) > 1:
             bad.append(v)
     return sorted(bad)
 

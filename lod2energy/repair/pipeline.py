@@ -29,7 +29,7 @@ from lod2energy.model import (
 )
 from lod2energy.repair._mesh import Face, PolyMesh, compact, face_area, topology
 from lod2energy.repair.alphashape import alpha_repair
-from lod2energy.repair.cleanup import cleanup, desliver, fix_nonplanar, merge_slivers, snap_vertices
+from lod2energy.repair.cleanup import cleanup, desliver, merge_slivers, snap_vertices
 from lod2energy.repair.footprint import extrude_footprint, extrude_roofs
 from lod2energy.repair.holefill import fill_holes
 from lod2energy.repair.hull import convex_hull

@@ -17,7 +17,7 @@ from collections import defaultdict
 import numpy as np
 
 from lod2energy.config import DEFAULT, Tolerances
-from lod2energy.repair._mesh import Face, PolyMesh, face_normal, topology
+from lod2energy.repair._mesh import Face, PolyMesh, face_normal, fan_groups, topology
 
 #: Distance (m) each copy of a pinch vertex moves into its own material: more than the
 #: clean-up's T-junction distance (5 mm, which would zip the sheets together again) and
@@ -137,25 +137,10 @@ def unpinch(m: PolyMesh, tol: Tolerances = DEFAULT, offset: float = OFFSET, brid
     remap: dict[tuple[int, int], int] = {}  # (face, old vertex) -> new vertex
     moved = 0
     for v in sorted(suspects):
-        fs = vf.get(v, [])
-        parent = {f: f for f in fs}
-
-        def find(x):
-            while parent[x] != x:
-                parent[x] = parent[parent[x]]
-                x = parent[x]
-            return x
-        for f, g in links.get(v, ()):
-            if f in parent and g in parent:
-                rf, rg = find(f), find(g)
-                if rf != rg:
-                    parent[rg] = rf
-        fans: dict[int, list[int]] = defaultdict(list)
-        for f in fs:
-            fans[find(f)].append(f)
+        fans = fan_groups(vf.get(v, []), links.get(v, ()))
         if len(fans) < 2:
             continue
-        for k, fan in enumerate(sorted(fans.values())):
+        for k, fan in enumerate(sorted(fans)):
             n = _corner_direction([normals[f] for f in fan])
             ln = np.linalg.norm(n)
             if ln == 0:
