@@ -28,6 +28,8 @@ from typing import Iterable, Sequence
 
 import numpy as np
 
+from .eplus_enclosure import enclosure_defects, snap_polygons
+from .zone_fallback import FALLBACKS
 from .common import (
     COLLINEAR_TOL, MIN_PIECE_AREA, PLANAR_TOL, WELD_TOL, ExportResult, ZoneFace, ZoneShell, _is_convex_2d,
     _split_t_junctions, weld,
@@ -192,21 +194,97 @@ def _planar(pts: np.ndarray, n: np.ndarray, c: np.ndarray, tol: float = PLANAR_T
     return bool(np.all(np.abs((pts - c) @ n) <= tol))
 
 
+#: Ring vertices this close (m) to the segment joining the kept vertices around them are
+#: left out of the convex decomposition and put back on the piece edge they lie on.
+NEAR_COLLINEAR = 0.01
+
+
+def _near_collinear_chains(xy: np.ndarray, ends: Sequence[int], tol: float = NEAR_COLLINEAR
+                           ) -> dict[int, tuple[int, list[int]]]:
+    """Vertices to leave out of a decomposition: ``{a: (b, [m1, m2, ..])}`` where ``a`` and
+    ``b`` are consecutive kept vertices of a ring and ``m1, m2, ..`` the left-out ones
+    between them, all within ``tol`` (m) of the segment ``ab``."""
+    chains: dict[int, tuple[int, list[int]]] = {}
+    start = 0
+    for end in ends:
+        ring = list(range(start, end))
+        start = end
+        after: dict[int, list[int]] = {i: [] for i in ring}
+        changed = True
+        while changed and len(ring) > 3:
+            changed = False
+            for k in range(len(ring)):
+                p, i, q = ring[k - 1], ring[k], ring[(k + 1) % len(ring)]
+                a, b = xy[p], xy[q]
+                ab = b - a
+                L2 = float(ab @ ab)
+                if L2 <= 0:
+                    continue
+                cand = after[p] + [i] + after[i]
+                t = (xy[cand] - a) @ ab / L2
+                d = np.abs((xy[cand, 0] - a[0]) * ab[1] - (xy[cand, 1] - a[1]) * ab[0]) / np.sqrt(L2)
+                if np.all((t > 0) & (t < 1)) and np.all(d < tol):
+                    after[p] = cand
+                    del after[i]
+                    del ring[k]
+                    changed = True
+                    break
+        for k, i in enumerate(ring):
+            if after[i]:
+                chains[i] = (ring[(k + 1) % len(ring)], after[i])
+    return chains
+
+
 def _pieces_from_points(pts: np.ndarray, ends: Sequence[int], n: np.ndarray, c: np.ndarray) -> list[np.ndarray]:
-    """Planar convex pieces (or triangles for non-planar faces) of one polygon with holes."""
+    """Planar convex pieces (or triangles for non-planar faces) of one polygon with holes.
+
+    Vertices within :data:`NEAR_COLLINEAR` of the line through their neighbours are left out
+    of the decomposition and then put back on the edge of the piece they lie on: a
+    decomposition through them would cut slivers narrower than EnergyPlus's 1.27 cm point
+    tolerance, which its enclosure test cannot match.
+    """
     planar = _planar(pts, n, c)
     u, v = plane_basis(n)
     xy = np.column_stack([(pts - c) @ u, (pts - c) @ v])
     if len(ends) == 1 and planar and _is_convex_2d(xy):
         return [pts]
+    chains = _near_collinear_chains(xy, ends)
+    if chains:
+        dropped = {m for _, ms in chains.values() for m in ms}
+        sub = np.array([i for i in range(len(pts)) if i not in dropped])
+        sub_ends = [int(np.searchsorted(sub, e)) for e in ends]
+        polys = _decompose(pts[sub], sub_ends, n, xy[sub], planar)
+        polys = [[int(sub[i]) for i in p] for p in polys]
+        out = _put_back(polys, chains)
+        if out is not None:
+            return [pts[p] for p in out]
+    return [pts[p] for p in _decompose(pts, ends, n, xy, planar)]
+
+
+def _decompose(pts, ends, n, xy, planar) -> list[list[int]]:
+    if len(ends) == 1 and planar and _is_convex_2d(xy):
+        return [list(range(len(pts)))]
     tris = triangulate(pts, ends, n)
     if len(tris) == 0:
         return []
     if planar:
-        polys = merge_convex(tris, xy)
-    else:
-        polys = [list(t) for t in tris]
-    return [pts[p] for p in polys]
+        return merge_convex(tris, xy)
+    return [list(map(int, t)) for t in tris]
+
+
+def _put_back(polys: list[list[int]], chains: dict[int, tuple[int, list[int]]]) -> list[list[int]] | None:
+    """Insert each chain between its kept vertices ``a`` and ``b`` on the piece that has the
+    edge ``a -> b``; None when no piece has it."""
+    out = [list(p) for p in polys]
+    for a, (b, ms) in chains.items():
+        for pi, p in enumerate(out):
+            k = next((k for k in range(len(p)) if p[k] == a and p[(k + 1) % len(p)] == b), None)
+            if k is not None:
+                out[pi] = p[:k + 1] + ms + p[k + 1:]
+                break
+        else:
+            return None
+    return out
 
 
 def _outer_boundary(kind: str) -> str:
@@ -395,7 +473,35 @@ def zone_pieces(zone: ZoneShell, zi: int, party: dict, split: bool = True) -> li
                 pieces.append(Piece(p, f.kind, boundary, f.u_value, f.index))
     if split and any(party.get((zi, fi)) for fi in range(len(zone.faces))):
         pieces = conform(pieces)
-    return eplus_conform(pieces)
+    return eplus_enclose(eplus_conform(pieces))
+
+
+#: Vertex merges tried by :func:`eplus_enclose`: none (slivers dropped only), EnergyPlus's
+#: own, then at 2 and 3 cm.
+ENCLOSE_WELDS = (False, None, 0.02, 0.03)
+
+
+def eplus_enclose(pieces: list[Piece]) -> list[Piece]:
+    """Pieces that EnergyPlus's enclosure test accepts, when the written ones would fail it.
+
+    EnergyPlus merges vertices closer than 1.27 cm per axis and then needs every edge on
+    exactly two surfaces (:func:`eplus_enclosure.enclosure_defects`). A zone with features
+    under that size (a 1.6 cm edge, two corners 8 mm apart) fails although it is a closed
+    2-manifold; so does one with a sliver piece narrower than 5 mm (EnergyPlus drops its
+    vertices as collinear). Such a zone is written without its slivers, then also with its
+    vertices merged as EnergyPlus merges them, then at 2 and 3 cm (:func:`eplus_enclosure.snap_polygons`), the first result that is
+    closed, outward and passes the emulated test; otherwise unchanged.
+    """
+    polys = [p.points for p in pieces]
+    if not pieces or not enclosure_defects(polys):
+        return pieces
+    for tol in ENCLOSE_WELDS:
+        snapped = snap_polygons(polys, tol or None, merge=tol is not False)
+        cand = [replace(pieces[i], points=q) for i, q in snapped]
+        cp = [c.points for c in cand]
+        if cand and not check_closed_outward(cp) and not enclosure_defects(cp):
+            return cand
+    return pieces
 
 
 #: EnergyPlus's point tolerance (m) in its enclosure test (``isAlmostEqual3dPt`` and
@@ -922,6 +1028,11 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
         zones.extend(zs)
     party = find_party_faces(zones) if options.party_walls else {}
     pieces = [zone_pieces(z, zi, party, options.party_split) for zi, z in enumerate(zones)]
+    for zi in range(len(zones)):
+        simpler = enclosable(zones[zi], zi, pieces[zi])
+        if simpler is not None:
+            zones[zi], pieces[zi] = simpler
+            party = {k: v for k, v in party.items() if k[0] != zi}
 
     groups = [[bi] for bi in range(len(blist))] if options.mode == "building" else [list(range(len(blist)))]
     bboxes = np.array([_bbox(b) for b in blist])
@@ -970,6 +1081,26 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
         with ThreadPoolExecutor(options.jobs) as ex:
             return list(ex.map(finish, jobs))
     return [finish(j) for j in jobs]
+
+
+def enclosable(zone: ZoneShell, zi: int, pieces: list[Piece]) -> tuple[ZoneShell, list[Piece]] | None:
+    """A simpler envelope for a zone whose pieces EnergyPlus would call not fully enclosed.
+
+    Returns None when the pieces pass (:func:`eplus_enclosure.enclosure_defects`) or no
+    fallback of :mod:`exporters.zone_fallback` (2.5D model, then LoD1 block) passes either;
+    else the first fallback zone that does, with its pieces (party walls not split).
+    """
+    if not pieces or not enclosure_defects([p.points for p in pieces]):
+        return None
+    for make in FALLBACKS:
+        nz = make(zone)
+        if nz is None:
+            continue
+        np_ = zone_pieces(nz, zi, {}, False)
+        pts = [p.points for p in np_]
+        if np_ and not check_closed_outward(pts) and not enclosure_defects(pts):
+            return nz, np_
+    return None
 
 
 def _shading_for(bi: int, blist, bboxes, zones, zones_of, party, radius: float) -> list[np.ndarray]:
@@ -1030,12 +1161,17 @@ def _eppy_idf(path: str | Path):
     return IDF(str(path))
 
 
+def _fmt_point(p: np.ndarray) -> str:
+    return "(" + ", ".join(f"{x:.3f}" for x in p) + ")"
+
+
 def self_check(path: str | Path, run: bool = False, weather: str | Path | None = None) -> list[str]:
     """Re-read an exported IDF and check it.
 
     The file is parsed with eppy against EnergyPlus's ``Energy+.idd``; each zone's shell is
     rebuilt from its ``BuildingSurface:Detailed`` vertices and must be closed and outward
-    (every edge used once in each direction after T-junction splitting, positive volume);
+    (every edge used once in each direction after T-junction splitting, positive volume) and
+    pass EnergyPlus's own enclosure test (:func:`eplus_enclosure.enclosure_defects`);
     every surface must reference an existing zone and construction, every window an
     existing wall, and names must be unique. With ``run=True`` EnergyPlus runs too (needs
     ``weather``): zero severe errors and no zone "not fully enclosed".
@@ -1085,6 +1221,12 @@ def self_check(path: str | Path, run: bool = False, weather: str | Path | None =
             continue
         for p in check_closed_outward(by_zone[z]):
             problems.append(f"zone {z}: {p}")
+        bad = enclosure_defects(by_zone[z])
+        if bad:
+            e = bad[0]
+            problems.append(f"zone {z}: EnergyPlus would find it not fully enclosed: {len(bad)} edge(s) not "
+                            f"shared by exactly two surfaces, e.g. {_fmt_point(e.start)}-{_fmt_point(e.end)} "
+                            f"used {e.count} time(s)")
     if run:
         if not weather:
             problems.append("run requested without a weather file")

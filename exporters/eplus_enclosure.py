@@ -1,0 +1,317 @@
+"""EnergyPlus's zone enclosure test, emulated.
+
+EnergyPlus (``CalculateZoneVolume`` in SurfaceGeometry.cc) calls a zone "not fully
+enclosed" when an edge of its surfaces is not shared by exactly two surfaces. It compares
+points with a per-axis tolerance of 0.0127 m (``isAlmostEqual3dPt``), so vertices a few
+millimetres apart become one vertex and a short edge can collapse onto a point, and when the
+first count fails it inserts into every surface edge each zone vertex it finds "on" that edge
+(``|ac| + |cb| - |ab| < 0.0127 m``) and counts again. Both passes are reproduced here so the
+exporter can check - and fix - a zone before EnergyPlus sees it, and tests can show it
+without running EnergyPlus.
+
+The steps follow EnergyPlus 9-25:
+
+1. surface vertices as EnergyPlus keeps them: a vertex closer than :data:`COINCIDENT` to the
+   one before it is dropped (``GetVertices``), so is a vertex on the line through its
+   neighbours (``CheckConvexity``, "collinear points that have been removed");
+2. the zone's unique vertices: a vertex is new unless it is almost equal (per axis, under
+   :data:`POINT_TOL`) to one met before; each surface point is the *first* almost-equal
+   unique vertex;
+3. undirected edges between unique vertices counted over all surfaces; enclosed when
+   every count is 2;
+4. otherwise every unique vertex "on" a surface edge is inserted into it (repeatedly), and
+   the edges are counted again; the zone is enclosed when that second count passes.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Sequence
+
+import numpy as np
+
+from .common import polygon_area3d, weld
+
+#: Per-axis tolerance (m) of EnergyPlus's ``isAlmostEqual3dPt`` and the slack of its
+#: ``isPointOnLineBetweenPoints`` (1/2 inch).
+POINT_TOL = 0.0127
+#: Consecutive surface vertices closer than this (m) are merged by EnergyPlus's GetVertices.
+COINCIDENT = 0.01
+#: A vertex this close (m) to the line through its neighbours is removed as collinear.
+COLLINEAR = 1e-4
+
+
+@dataclass(frozen=True)
+class BadEdge:
+    """An edge EnergyPlus would count other than twice.
+
+    Attributes
+    ----------
+    start, end : (3,) float arrays
+        The edge's unique vertices (m, the IDF's frame).
+    count : int
+        Surfaces that use it (1: open, 3+: more than two surfaces meet).
+    surfaces : tuple of int
+        Indices of the surfaces that use it.
+    """
+    start: np.ndarray
+    end: np.ndarray
+    count: int
+    surfaces: tuple[int, ...]
+
+
+def _line_distance(a: np.ndarray, b: np.ndarray, c: np.ndarray) -> float:
+    ac = c - a
+    L = float(ac @ ac)
+    if L <= 0.0:
+        return float(np.linalg.norm(b - a))
+    t = float((b - a) @ ac) / L
+    return float(np.linalg.norm(a + t * ac - b))
+
+
+def eplus_vertices(points: np.ndarray) -> np.ndarray:
+    """A surface's vertices as EnergyPlus keeps them, (k, 3) -> (k', 3).
+
+    Vertices closer than :data:`COINCIDENT` to the previous kept one and vertices within
+    :data:`COLLINEAR` of the line through their neighbours are dropped while more than three
+    remain.
+    """
+    pts = [np.asarray(p, dtype=np.float64) for p in points]
+    keep = [pts[0]] if pts else []
+    for p in pts[1:]:
+        if np.linalg.norm(p - keep[-1]) >= COINCIDENT:
+            keep.append(p)
+    while len(keep) > 3 and np.linalg.norm(keep[0] - keep[-1]) < COINCIDENT:
+        keep.pop()
+    changed = True
+    while changed and len(keep) > 3:
+        changed = False
+        k = len(keep)
+        for i in range(k):
+            if _line_distance(keep[i - 1], keep[i], keep[(i + 1) % k]) < COLLINEAR:
+                del keep[i]
+                changed = True
+                break
+    return np.asarray(keep, dtype=np.float64).reshape(-1, 3)
+
+
+class _Grid:
+    """Points on a hash grid of cell ``tol``: the first stored point almost equal to a query."""
+
+    def __init__(self, tol: float = POINT_TOL):
+        self.tol = tol
+        self.points: list[np.ndarray] = []
+        self._cells: dict[tuple[int, int, int], list[int]] = {}
+
+    def _cell(self, p: np.ndarray) -> tuple[int, int, int]:
+        return tuple(int(x) for x in np.floor(p / self.tol))
+
+    def near(self, p: np.ndarray) -> list[int]:
+        """Indices of the stored points almost equal to ``p`` (per axis under ``tol``), ascending."""
+        cx, cy, cz = self._cell(p)
+        out = []
+        for dx in (-1, 0, 1):
+            for dy in (-1, 0, 1):
+                for dz in (-1, 0, 1):
+                    for i in self._cells.get((cx + dx, cy + dy, cz + dz), ()):
+                        if np.all(np.abs(self.points[i] - p) < self.tol):
+                            out.append(i)
+        return sorted(out)
+
+    def append(self, p: np.ndarray) -> int:
+        self.points.append(p)
+        self._cells.setdefault(self._cell(p), []).append(len(self.points) - 1)
+        return len(self.points) - 1
+
+
+def unique_vertices(surfaces: Sequence[np.ndarray], tol: float = POINT_TOL) -> list[np.ndarray]:
+    """The zone's unique vertices in EnergyPlus's order (a point is new unless almost equal
+    to one met before)."""
+    g = _Grid(tol)
+    for s in surfaces:
+        for p in s:
+            if not g.near(p):
+                g.append(p)
+    return g.points
+
+
+def _edges_not_two(surfaces: Sequence[np.ndarray], tol: float) -> list[tuple[np.ndarray, np.ndarray, list[int]]]:
+    """EnergyPlus's edge count: an edge is the first stored one whose ends are almost equal to
+    its ends (either direction). Returns (start, end, surfaces) of edges not used twice."""
+    starts, ends = _Grid(tol), _Grid(tol)
+    used: list[list[int]] = []
+    for si, s in enumerate(surfaces):
+        k = len(s)
+        for i in range(k):
+            a, b = s[i], s[(i + 1) % k]
+            hit = None
+            sa, eb = set(starts.near(a)), set(ends.near(b))
+            sb, ea = set(starts.near(b)), set(ends.near(a))
+            both = (sa & eb) | (sb & ea)
+            if both:
+                hit = min(both)
+            if hit is None:
+                starts.append(a)
+                ends.append(b)
+                used.append([si])
+            else:
+                used[hit].append(si)
+    return [(starts.points[i], ends.points[i], u) for i, u in enumerate(used) if len(u) != 2]
+
+
+def _on_line(a: np.ndarray, b: np.ndarray, t: np.ndarray, tol: float) -> bool:
+    """EnergyPlus's ``isPointOnLineBetweenPoints``: ``t`` within ``tol`` of the line ``ab``
+    and the path through it no more than ``tol`` longer than ``ab``."""
+    ab = b - a
+    L = float(np.linalg.norm(ab))
+    if L <= 0.0 or float(np.linalg.norm(np.cross(ab, t - a))) / L >= tol:
+        return False
+    return abs(L - (float(np.linalg.norm(t - a)) + float(np.linalg.norm(b - t)))) < tol
+
+
+def _insert_collinear(face: np.ndarray, uniq: np.ndarray, tol: float) -> np.ndarray:
+    """``face`` with every unique vertex EnergyPlus finds on one of its edges inserted."""
+    pts = [p for p in face]
+    for _ in range(len(uniq) + 1):
+        inserted = False
+        k = len(pts)
+        for i in range(k):
+            a, b = pts[i], pts[(i + 1) % k]
+            lo = np.minimum(a, b) - tol
+            hi = np.maximum(a, b) + tol
+            for t in np.nonzero(np.all((uniq >= lo) & (uniq <= hi), axis=1))[0]:
+                pt = uniq[t]
+                if np.all(np.abs(pt - a) < tol) or np.all(np.abs(pt - b) < tol):
+                    continue
+                if _on_line(a, b, pt, tol):
+                    pts.insert(i + 1, pt)
+                    inserted = True
+                    break
+            if inserted:
+                break
+        if not inserted:
+            break
+    return np.asarray(pts)
+
+
+def enclosure_defects(surfaces: Sequence[np.ndarray], tol: float = POINT_TOL) -> list[BadEdge]:
+    """Edges of a zone EnergyPlus would find not shared by exactly two surfaces.
+
+    Parameters
+    ----------
+    surfaces : sequence of (k, 3) float arrays
+        The zone's ``BuildingSurface:Detailed`` vertices (m), in the order of the IDF.
+    tol : float, m
+
+    Returns
+    -------
+    list of BadEdge
+        Empty when EnergyPlus would call the zone fully enclosed; else the edges that fail
+        both counts (what EnergyPlus lists in its warning) or, when none fails both, those
+        that fail the second count.
+    """
+    faces = [eplus_vertices(np.asarray(s, dtype=np.float64)) for s in surfaces]
+    first = _edges_not_two(faces, tol)
+    if not first:
+        return []
+    uniq = np.asarray(unique_vertices(faces, tol))
+    second = _edges_not_two([_insert_collinear(f, uniq, tol) for f in faces], tol)
+    if not second:
+        return []
+
+    def same(x, y):
+        return ((np.all(np.abs(x[0] - y[0]) < tol) and np.all(np.abs(x[1] - y[1]) < tol))
+                or (np.all(np.abs(x[0] - y[1]) < tol) and np.all(np.abs(x[1] - y[0]) < tol)))
+    # EnergyPlus lists the edges that fail both counts (possibly none: the zone still fails)
+    both = [e for e in first if any(same(e, f) for f in second)]
+    return [BadEdge(e[0].copy(), e[1].copy(), len(e[2]), tuple(e[2])) for e in (both or second)]
+
+
+def width(points: np.ndarray) -> float:
+    """Width (m) of a polygon across its main direction: its extent along the second
+    principal axis of its points."""
+    q = np.asarray(points, dtype=np.float64)
+    q = q - q.mean(axis=0)
+    if len(q) < 3:
+        return 0.0
+    _, _, vt = np.linalg.svd(q, full_matrices=False)
+    return float(np.ptp(q @ vt[1]))
+
+
+#: Polygons narrower than this (m) are dropped by :func:`snap_polygons`: EnergyPlus removes
+#: their vertices as collinear and then counts their edges wrongly; the neighbours' edges
+#: meet across the gap in EnergyPlus's second count.
+MIN_WIDTH = 0.005
+
+
+def snap_polygons(polygons: Sequence[np.ndarray], tol: float | None = None, merge: bool = True,
+                  min_width: float = MIN_WIDTH) -> list[tuple[int, np.ndarray]]:
+    """Polygons with their vertices merged as EnergyPlus would merge them, cleaned.
+
+    Parameters
+    ----------
+    polygons : sequence of (k, 3) float arrays, m
+    merge : bool
+        False: vertices are not merged (only slivers dropped).
+    tol : float, optional, m
+        None: each vertex becomes EnergyPlus's unique vertex for it (the first one met that
+        is almost equal, per axis under :data:`POINT_TOL`), so what is written is what
+        EnergyPlus counts. A number: vertices closer than ``tol`` (transitively) become
+        their mean.
+
+    Returns
+    -------
+    list of (index, (k', 3) array)
+        The polygons that keep an area: repeated points and spikes (``a, b, a``) are removed,
+        and pairs of polygons that became the same polygon with opposite orientation (a fold)
+        are dropped together, so are polygons narrower than ``min_width`` (m).
+    """
+
+    allp = np.concatenate([np.asarray(p, dtype=np.float64) for p in polygons])
+    if not merge:
+        V, idx = weld(allp, 1e-9)  # shared corners only
+    elif tol is None:
+        g = _Grid(POINT_TOL)
+        idx = np.empty(len(allp), dtype=np.intp)
+        for i, p in enumerate(allp):
+            near = g.near(p)
+            idx[i] = near[0] if near else g.append(p)
+        V = np.asarray(g.points)
+    else:
+        V, idx = weld(allp, tol)
+    out: list[tuple[int, list[int]]] = []
+    k = 0
+    for pi, p in enumerate(polygons):
+        ring = idx[k:k + len(p)].tolist()
+        k += len(p)
+        changed = True
+        while changed and len(ring) >= 3:
+            changed = False
+            m = len(ring)
+            for i in range(m):
+                if ring[i] == ring[(i + 1) % m]:
+                    del ring[i]
+                    changed = True
+                    break
+                if m > 3 and ring[i - 1] == ring[(i + 1) % m]:  # spike a, b, a
+                    del ring[i]
+                    changed = True
+                    break
+        if len(set(ring)) >= 3 and polygon_area3d(V[ring]) > 1e-8 and width(V[ring]) >= min_width:
+            out.append((pi, ring))
+    # folds: the same cycle in both directions
+    def canon(r):
+        j = r.index(min(r))
+        return tuple(r[j:] + r[:j])
+    keys = {}
+    for n, (_, r) in enumerate(out):
+        keys.setdefault(canon(r), []).append(n)
+    drop = set()
+    for n, (_, r) in enumerate(out):
+        rev = canon(r[::-1])
+        if n in drop or rev not in keys:
+            continue
+        for m in keys[rev]:
+            if m != n and m not in drop:
+                drop.update((n, m))
+                break
+    return [(pi, V[r]) for n, (pi, r) in enumerate(out) if n not in drop]

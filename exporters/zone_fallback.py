@@ -1,0 +1,139 @@
+"""Simpler envelopes for a zone EnergyPlus would not accept as written.
+
+A repaired LoD2 shell is a closed 2-manifold, but EnergyPlus's enclosure test merges points
+within 1.27 cm per axis and inserts points within 1.27 cm of an edge
+(:mod:`exporters.eplus_enclosure`); a shell with many centimetre-scale features (alpha wraps
+of buildings with crossing walls) can fail it however its pieces are cut. Such a zone is
+written as a simpler envelope of the same building, least change first:
+
+1. :func:`roof_zone` - the building as a 2.5D model (every roof plane kept, walls vertical,
+   :func:`lod2energy.repair.pipeline.roof_model`);
+2. :func:`block_zone` - an LoD1 block: the footprint, simplified at 5 cm, extruded from the
+   lowest point to the area-weighted mean roof height; then the same with spikes narrower
+   than 20 cm and 1 m cut off (morphological opening), then the footprint's convex hull.
+
+U-values carry over per surface class (area-weighted mean of the zone's faces of that class).
+"""
+from __future__ import annotations
+
+from functools import partial
+
+import numpy as np
+
+from lod2energy.config import DEFAULT
+from lod2energy.repair._mesh import Face, PolyMesh
+
+from .common import ZoneFace, ZoneShell, classify, newell_normal, polygon_area3d
+
+#: Footprint simplification (m) of :func:`block_zone`: above EnergyPlus's 1.27 cm tolerance.
+BLOCK_SIMPLIFY = 0.05
+_SEMANTIC = {"roof": "RoofSurface", "wall": "WallSurface", "ground": "GroundSurface"}
+
+
+def _mesh(zone: ZoneShell) -> PolyMesh:
+    return PolyMesh(np.asarray(zone.vertices, dtype=np.float64),
+                    tuple(Face(tuple(tuple(int(i) for i in r) for r in f.rings)) for f in zone.faces))
+
+
+def _u_by_kind(zone: ZoneShell) -> dict[str, float]:
+    num: dict[str, float] = {}
+    den: dict[str, float] = {}
+    for f in zone.faces:
+        k = "ground" if f.kind == "floor" else f.kind
+        a = polygon_area3d(zone.vertices[list(f.rings[0])])
+        num[k] = num.get(k, 0.0) + a * f.u_value
+        den[k] = den.get(k, 0.0) + a
+    return {k: num[k] / den[k] for k in num if den[k] > 0}
+
+
+def zone_from_mesh(zone: ZoneShell, m: PolyMesh, note: str) -> ZoneShell | None:
+    """A zone with ``m``'s faces (local coordinates), classified by orientation and given
+    the zone's U-value of their class; ``note`` is added to its warnings."""
+    u = _u_by_kind(zone)
+    fallback_u = float(np.mean(list(u.values()))) if u else 0.5
+    faces = []
+    for fi, f in enumerate(m.faces):
+        pts = m.vertices[list(f.rings[0])]
+        if len(pts) < 3 or polygon_area3d(pts) <= 1e-4:
+            continue
+        kind = classify(None, newell_normal(pts))
+        faces.append(ZoneFace(tuple(tuple(int(i) for i in r) for r in f.rings), kind, _SEMANTIC[kind],
+                              u.get(kind, fallback_u), fi))
+    if len(faces) < 4:
+        return None
+    return ZoneShell(zone.building_id, zone.object_id, np.asarray(m.vertices, dtype=np.float64), tuple(faces),
+                     zone.u_window, zone.wwr, tuple(zone.warnings) + (note,))
+
+
+def roof_zone(zone: ZoneShell) -> ZoneShell | None:
+    """The zone as a 2.5D model (roof planes kept), or None when there is no valid one."""
+    from lod2energy.repair.pipeline import roof_model
+
+    try:
+        m = roof_model(_mesh(zone), "2.2", DEFAULT)
+    except Exception:  # noqa: BLE001 - a failed reconstruction only means no candidate
+        return None
+    if m is None:
+        return None
+    return zone_from_mesh(zone, m, f"{zone.object_id}: written as a 2.5D model (roof planes kept, walls "
+                                  "vertical): the repaired shell fails EnergyPlus's enclosure test")
+
+
+def block_zone(zone: ZoneShell, simplify: float = BLOCK_SIMPLIFY, opening: float = 0.0,
+               hull: bool = False) -> ZoneShell | None:
+    """The zone as an LoD1 block (footprint extruded to the mean roof height), or None.
+
+    Parameters
+    ----------
+    simplify : float, m
+        Douglas-Peucker tolerance of the footprint.
+    opening : float, m
+        Morphological opening of the footprint (parts narrower than twice this go).
+    hull : bool
+        Use the footprint's convex hull.
+    """
+    from shapely.geometry.polygon import orient
+
+    from lod2energy.repair.footprint import footprint_polygon, roof_height
+
+    m = _mesh(zone)
+    fp = footprint_polygon(m, simplify=simplify)
+    if fp is None:
+        return None
+    z0, z1 = roof_height(m)
+    if z1 - z0 <= 0.1:
+        return None
+    if opening > 0:
+        # spikes and slits narrower than 2 x opening go (the footprint of an alpha wrap has some)
+        fp = fp.buffer(-opening, join_style="mitre").buffer(opening, join_style="mitre")
+        if fp.geom_type == "MultiPolygon":
+            fp = max(fp.geoms, key=lambda g: g.area)
+        if fp.geom_type != "Polygon" or fp.is_empty:
+            return None
+        fp = orient(fp.simplify(simplify, preserve_topology=True), 1.0)
+    if hull:
+        fp = orient(fp.convex_hull.simplify(simplify), 1.0)
+    if fp.geom_type != "Polygon" or not fp.is_valid or fp.area <= 1e-2:
+        return None
+    rings = [np.asarray(fp.exterior.coords)[:-1]] + [np.asarray(r.coords)[:-1] for r in fp.interiors]
+    verts: list[tuple[float, float, float]] = []
+    bottom, top, walls = [], [], []
+    for R in rings:
+        n = len(R)
+        base = len(verts)
+        verts.extend((float(x), float(y), z0) for x, y in R)
+        verts.extend((float(x), float(y), z1) for x, y in R)
+        b = [base + i for i in range(n)]
+        t = [base + n + i for i in range(n)]
+        bottom.append(tuple(reversed(b)))
+        top.append(tuple(t))
+        walls.extend(Face(((b[i], b[(i + 1) % n], t[(i + 1) % n], t[i]),)) for i in range(n))
+    mesh = PolyMesh(np.asarray(verts), (Face(tuple(bottom)), Face(tuple(top))) + tuple(walls))
+    what = "convex hull of the footprint" if hull else "footprint"
+    return zone_from_mesh(zone, mesh, f"{zone.object_id}: written as an LoD1 block ({what} extruded to "
+                                      f"{z1 - z0:.2f} m): the repaired shell fails EnergyPlus's enclosure test")
+
+
+#: Tried in this order by the IDF writer: least change first.
+FALLBACKS = (roof_zone, block_zone, partial(block_zone, opening=0.1), partial(block_zone, opening=0.5),
+             partial(block_zone, hull=True))

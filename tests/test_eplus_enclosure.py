@@ -1,0 +1,140 @@
+"""EnergyPlus's zone enclosure test, emulated (exporters.eplus_enclosure), and what the IDF
+writer does with a zone that fails it (slivers, vertex merges, simpler envelopes).
+
+The emulation's verdicts are compared with EnergyPlus itself in test_energyplus_run.py.
+"""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from export_helpers import energy_ready
+from factories import box, box_polygons, building_from_polygons, BOX_SEMANTICS
+
+from lod2energy.exporters import idf
+from lod2energy.exporters.common import check_closed_outward, polygon_area3d
+from lod2energy.exporters.eplus_enclosure import (_edges_not_two, enclosure_defects, snap_polygons,
+                                       unique_vertices)
+from lod2energy.exporters import zone_fallback
+
+
+def _box() -> list[np.ndarray]:
+    return [np.asarray(p[0], dtype=float) for p in box_polygons()]
+
+
+def sliver_ground_box(w: float) -> list[np.ndarray]:
+    """A closed 10 x 8 x 6 m box whose ground is cut into a quad and a 10 m long triangle
+    ``w`` wide at its end; the east wall carries the triangle's corner on its bottom edge."""
+    P = _box()
+    quad = np.array([[0, 0, 0], [0, 8, 0], [10, 8, 0], [10, w, 0]], dtype=float)
+    tri = np.array([[0, 0, 0], [10, w, 0], [10, 0, 0]], dtype=float)
+    east = np.array([[10, 0, 0], [10, w, 0], [10, 8, 0], [10, 8, 6], [10, 0, 6]], dtype=float)
+    return [quad, tri, P[1], P[2], east, P[4], P[5]]
+
+
+def test_closed_box_is_enclosed():
+    assert enclosure_defects(_box()) == []
+    assert len(unique_vertices(_box())) == 8
+
+
+def test_missing_face_is_not_enclosed():
+    bad = enclosure_defects(_box()[:-1])
+    assert len(bad) == 4 and all(e.count == 1 for e in bad)
+
+
+def test_t_junction_is_enclosed_in_the_second_count():
+    # the south wall cut in two at x = 5: ground and roof keep the whole edge
+    P = _box()
+    south = [np.array([[0, 0, 0], [5, 0, 0], [5, 0, 6], [0, 0, 6]], float),
+             np.array([[5, 0, 0], [10, 0, 0], [10, 0, 6], [5, 0, 6]], float)]
+    polys = [P[0], P[1]] + south + P[3:]
+    assert _edges_not_two(polys, 0.0127)          # the first count fails ...
+    assert enclosure_defects(polys) == []         # ... EnergyPlus inserts (5, 0, z) and passes
+
+
+@pytest.mark.parametrize("shift,enclosed", [(0.008, True), (0.012, True), (0.02, False)])
+def test_corners_merge_within_half_an_inch_per_axis(shift, enclosed):
+    # one roof corner moved in x only in the roof polygon: EnergyPlus merges it with the
+    # walls' corner when |dx| < 0.0127 m
+    P = _box()
+    roof = P[1].copy()
+    roof[2, 0] += shift
+    assert (enclosure_defects([P[0], roof] + P[2:]) == []) is enclosed
+
+
+@pytest.mark.parametrize("w,enclosed", [(0.005, False), (0.01, False), (0.02, True)])
+def test_sliver_pieces_narrower_than_the_tolerance_fail(w, enclosed):
+    polys = sliver_ground_box(w)
+    assert check_closed_outward(polys) == []       # a closed, outward 2-manifold ...
+    assert (enclosure_defects(polys) == []) is enclosed   # ... that EnergyPlus may reject
+
+
+def test_snap_drops_slivers_and_folds():
+    polys = sliver_ground_box(0.004)
+    out = snap_polygons(polys, merge=False)
+    assert 1 not in [i for i, _ in out]            # the 4 mm sliver triangle is gone
+    assert enclosure_defects([q for _, q in out]) == []
+    # a polygon and its reverse (a fold) cancel
+    P = _box()
+    fold = np.array([[2, 2, 6], [3, 2, 6], [3, 3, 6]], float)
+    out = snap_polygons(P + [fold, fold[::-1]], merge=False)
+    assert len(out) == 6
+
+
+def test_near_collinear_chain_is_not_cut_into_slivers():
+    # an L-shaped floor whose long side has corners 0.3 mm and 2 mm off its line:
+    # earcut + Hertel-Mehlhorn would cut triangles a few mm wide along it
+    ring = np.array([[0, 0, 0], [0, 6, 0], [4, 6, 0], [4, 3, 0], [12, 3.0003, 0], [16, 3.002, 0],
+                     [20, 3, 0], [20, 0, 0]], dtype=float)[::-1]
+    n = np.array([0, 0, -1.0])
+    pieces = idf._pieces_from_points(ring, [len(ring)], n, ring.mean(axis=0))
+    assert sum(polygon_area3d(p) for p in pieces) == pytest.approx(polygon_area3d(ring), rel=1e-9)
+    used = {tuple(np.round(x, 6)) for p in pieces for x in p}
+    assert used == {tuple(np.round(x, 6)) for x in ring}   # every corner kept (no T-junction)
+    for p in pieces:
+        q, k = p, len(p)
+        # no piece has a vertex EnergyPlus would put on another of its edges
+        assert not any(idf._on_segment(q[i], q[(i + 1) % k], q[j])
+                       for i in range(k) for j in range(k) if j not in (i, (i + 1) % k))
+
+
+def test_writer_fixes_a_sliver_zone(tmp_path):
+    # the 1 cm sliver box as a building: the written IDF passes the emulated test
+    b = energy_ready(building_from_polygons([[p] for p in sliver_ground_box(0.01)], "Solid",
+                                            ["GroundSurface", "GroundSurface"] + BOX_SEMANTICS[1:], id="sliver"))
+    res = idf.write([b], tmp_path, idf.IdfOptions())
+    assert res[0].ok, res[0].problems
+    assert idf.self_check(res[0].path) == []
+
+
+def test_fallback_block_keeps_footprint_height_and_u_values():
+    b = energy_ready(box())
+    z = idf.zone_shells(b, np.zeros(3))[0]
+    nz = zone_fallback.block_zone(z)
+    assert nz is not None and "LoD1 block" in nz.warnings[-1]
+    pieces = idf.zone_pieces(nz, 0, {}, False)
+    pts = [p.points for p in pieces]
+    assert check_closed_outward(pts) == [] and enclosure_defects(pts) == []
+    area = {k: sum(polygon_area3d(p.points) for p in pieces if p.kind == k) for k in ("roof", "wall", "ground")}
+    assert area["roof"] == pytest.approx(80.0) and area["ground"] == pytest.approx(80.0)
+    assert area["wall"] == pytest.approx(2 * (10 + 8) * 6.0)
+    u = {f.kind: f.u_value for f in z.faces}
+    assert {f.kind: f.u_value for f in nz.faces} == u
+
+
+def test_zone_that_fails_gets_a_simpler_envelope(monkeypatch):
+    # a zone whose written pieces the emulation rejects is replaced by the first fallback
+    # envelope that passes, with a warning saying so
+    b = energy_ready(box())
+    z = idf.zone_shells(b, np.zeros(3))[0]
+    pieces = idf.zone_pieces(z, 0, {}, False)
+    original = {id(p.points) for p in pieces}
+    real = idf.enclosure_defects
+
+    def reject_original(polys, *a, **k):
+        return ["x"] if {id(p) for p in polys} == original else real(polys, *a, **k)
+    monkeypatch.setattr(idf, "enclosure_defects", reject_original)
+    nz, np_ = idf.enclosable(z, 0, pieces)
+    assert "fails EnergyPlus's enclosure test" in nz.warnings[-1]
+    assert real([p.points for p in np_]) == []
+    assert idf.enclosable(z, 0, np_) is None        # pieces that pass are kept as they are
