@@ -28,7 +28,7 @@ from typing import Iterable, Sequence
 
 import numpy as np
 
-from .eplus_enclosure import enclosure_defects, snap_polygons
+from .eplus_enclosure import _on_line, enclosure_defects, snap_polygons
 from .zone_fallback import FALLBACKS
 from .common import (
     COLLINEAR_TOL, MIN_PIECE_AREA, PLANAR_TOL, WELD_TOL, ExportResult, ZoneFace, ZoneShell, _is_convex_2d,
@@ -473,7 +473,7 @@ def zone_pieces(zone: ZoneShell, zi: int, party: dict, split: bool = True) -> li
                 pieces.append(Piece(p, f.kind, boundary, f.u_value, f.index))
     if split and any(party.get((zi, fi)) for fi in range(len(zone.faces))):
         pieces = conform(pieces)
-    return eplus_enclose(eplus_conform(pieces))
+    return eplus_enclose(pieces)
 
 
 #: Vertex merges tried by :func:`eplus_enclose`: none (slivers dropped only), EnergyPlus's
@@ -486,21 +486,28 @@ def eplus_enclose(pieces: list[Piece]) -> list[Piece]:
 
     EnergyPlus merges vertices closer than 1.27 cm per axis and then needs every edge on
     exactly two surfaces (:func:`eplus_enclosure.enclosure_defects`). A zone with features
-    under that size (a 1.6 cm edge, two corners 8 mm apart) fails although it is a closed
-    2-manifold; so does one with a sliver piece narrower than 5 mm (EnergyPlus drops its
-    vertices as collinear). Such a zone is written without its slivers, then also with its
-    vertices merged as EnergyPlus merges them, then at 2 and 3 cm (:func:`eplus_enclosure.snap_polygons`), the first result that is
-    closed, outward and passes the emulated test; otherwise unchanged.
+    under that size (a 1.6 cm edge, two corners 8 mm apart, a sliver piece) can fail although
+    it is a closed 2-manifold. Candidates, in order: the pieces with EnergyPlus's sliver
+    triangles folded into their neighbours (:func:`eplus_conform`); then, from those and from
+    the pieces as they are, slivers under 5 mm dropped, vertices merged as EnergyPlus merges
+    them, then at 2 and 3 cm (:func:`eplus_enclosure.snap_polygons`). The first candidate that
+    is closed, outward and passes the emulated test is returned; otherwise the pieces.
     """
-    polys = [p.points for p in pieces]
-    if not pieces or not enclosure_defects(polys):
-        return pieces
-    for tol in ENCLOSE_WELDS:
-        snapped = snap_polygons(polys, tol or None, merge=tol is not False)
-        cand = [replace(pieces[i], points=q) for i, q in snapped]
+    def passes(cand):
         cp = [c.points for c in cand]
-        if cand and not check_closed_outward(cp) and not enclosure_defects(cp):
-            return cand
+        return bool(cand) and not check_closed_outward(cp) and not enclosure_defects(cp)
+
+    if not pieces or not enclosure_defects([p.points for p in pieces]):
+        return pieces
+    conformed = eplus_conform(pieces)
+    if passes(conformed):
+        return conformed
+    for tol in ENCLOSE_WELDS:
+        for base in (conformed, pieces):
+            snapped = snap_polygons([p.points for p in base], tol or None, merge=tol is not False)
+            cand = [replace(base[i], points=q) for i, q in snapped]
+            if passes(cand):
+                return cand
     return pieces
 
 
@@ -510,13 +517,11 @@ EPLUS_POINT_TOL = 0.0127
 
 
 def _on_segment(a: np.ndarray, b: np.ndarray, c: np.ndarray, tol: float = EPLUS_POINT_TOL) -> bool:
-    """Would EnergyPlus see point ``c`` on segment ``ab`` (|ac| + |cb| - |ab| < tol)?"""
-    ab = float(np.linalg.norm(b - a))
-    ac = float(np.linalg.norm(c - a))
-    cb = float(np.linalg.norm(b - c))
-    if ac < tol or cb < tol:
+    """Would EnergyPlus see point ``c`` on segment ``ab``: not almost equal to either end (per
+    axis), within ``tol`` of the line and ``|ac| + |cb| - |ab| < tol``."""
+    if np.all(np.abs(c - a) < tol) or np.all(np.abs(c - b) < tol):
         return False
-    return ac + cb - ab < tol
+    return _on_line(a, b, c, tol)
 
 
 def _planar_dev(q: np.ndarray) -> float:
