@@ -134,6 +134,24 @@ def unique_vertices(surfaces: Sequence[np.ndarray], tol: float = POINT_TOL) -> l
     return g.points
 
 
+def eplus_merge(points: np.ndarray, tol: float = POINT_TOL) -> tuple[np.ndarray, np.ndarray]:
+    """Points merged as EnergyPlus merges them: each becomes the first point met before it
+    that is almost equal to it (per axis under ``tol``).
+
+    Returns
+    -------
+    unique : (m, 3) float
+    index : (n,) int
+        The unique point of each input point.
+    """
+    g = _Grid(tol)
+    idx = np.empty(len(points), dtype=np.intp)
+    for i, p in enumerate(np.asarray(points, dtype=np.float64)):
+        near = g.near(p)
+        idx[i] = near[0] if near else g.append(p)
+    return np.asarray(g.points, dtype=np.float64).reshape(-1, 3), idx
+
+
 def _edges_not_two(surfaces: Sequence[np.ndarray], tol: float) -> list[tuple[np.ndarray, np.ndarray, list[int]]]:
     """EnergyPlus's edge count: an edge is the first stored one whose ends are almost equal to
     its ends (either direction). Returns (start, end, surfaces) of edges not used twice."""
@@ -270,12 +288,7 @@ def snap_polygons(polygons: Sequence[np.ndarray], tol: float | None = None, merg
     if not merge:
         V, idx = weld(allp, 1e-9)  # shared corners only
     elif tol is None:
-        g = _Grid(POINT_TOL)
-        idx = np.empty(len(allp), dtype=np.intp)
-        for i, p in enumerate(allp):
-            near = g.near(p)
-            idx[i] = near[0] if near else g.append(p)
-        V = np.asarray(g.points)
+        V, idx = eplus_merge(allp)
     else:
         V, idx = weld(allp, tol)
     out: list[tuple[int, list[int]]] = []

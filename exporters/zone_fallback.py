@@ -6,6 +6,10 @@ within 1.27 cm per axis and inserts points within 1.27 cm of an edge
 of buildings with crossing walls) can fail it however its pieces are cut. Such a zone is
 written as a simpler envelope of the same building, least change first:
 
+0. :func:`cleared_zone` - the same faces, with points that lie within EnergyPlus's
+   tolerance of an edge or point they do not share moved 1.6 cm clear of it;
+   :func:`separated_zone` - the same faces, with sheets that touch within EnergyPlus's
+   tolerance pulled 4 cm apart (instead of the repair's 8 mm);
 1. :func:`roof_zone` - the building as a 2.5D model (every roof plane kept, walls vertical,
    :func:`lod2energy.repair.pipeline.roof_model`);
 2. :func:`block_zone` - an LoD1 block: the footprint, simplified at 5 cm, extruded from the
@@ -63,6 +67,126 @@ def zone_from_mesh(zone: ZoneShell, m: PolyMesh, note: str) -> ZoneShell | None:
         return None
     return ZoneShell(zone.building_id, zone.object_id, np.asarray(m.vertices, dtype=np.float64), tuple(faces),
                      zone.u_window, zone.wwr, tuple(zone.warnings) + (note,))
+
+
+#: Points closer than this (m) to an edge they are not on, or (per axis) to another point,
+#: are moved by :func:`cleared_zone` to :data:`CLEARANCE` from it.
+NEAR_MISS = 0.0127
+#: Distance (m) :func:`cleared_zone` leaves between a point and the edge or point it was
+#: too close to.
+CLEARANCE = 0.016
+
+
+def _edges(zone: ZoneShell) -> np.ndarray:
+    e = set()
+    for f in zone.faces:
+        for r in f.rings:
+            for i in range(len(r)):
+                a, b = int(r[i]), int(r[(i + 1) % len(r)])
+                if a != b:
+                    e.add((min(a, b), max(a, b)))
+    return np.array(sorted(e), dtype=np.intp).reshape(-1, 2)
+
+
+def cleared_zone(zone: ZoneShell, rounds: int = 3) -> ZoneShell | None:
+    """The zone with its near misses pulled apart, or None when it has none.
+
+    EnergyPlus inserts a point into any edge within 1.27 cm of it and merges points within
+    1.27 cm per axis. A corner 7 mm from a wall's vertical edge it does not belong to (two
+    LoD2 walls drawn a few millimetres apart) is then put on that edge, which ends up on
+    four surfaces. Each such point moves straight away from the edge (or point) it is too
+    close to, to :data:`CLEARANCE`; faces keep their vertices, so the shell stays closed.
+    A point exactly on an edge (a true T-junction, which EnergyPlus handles) stays.
+    """
+    from dataclasses import replace
+
+    V = np.array(zone.vertices, dtype=np.float64)
+    E = _edges(zone)
+    if len(E) == 0:
+        return None
+    adj: dict[int, set[int]] = {}
+    for a, b in E:
+        adj.setdefault(int(a), set()).add(int(b))
+        adj.setdefault(int(b), set()).add(int(a))
+    used = sorted(adj)
+    moved_any = False
+    for _ in range(rounds):
+        moved = False
+        A, B = V[E[:, 0]], V[E[:, 1]]
+        AB = B - A
+        L2 = np.einsum("ij,ij->i", AB, AB)
+        for i in used:
+            p = V[i]
+            t = np.einsum("ij,ij->i", p - A, AB) / np.where(L2 > 0, L2, 1.0)
+            C = A + t[:, None] * AB
+            d = np.linalg.norm(p - C, axis=1)
+            near_a = np.all(np.abs(p - A) < NEAR_MISS, axis=1)
+            near_b = np.all(np.abs(p - B) < NEAR_MISS, axis=1)
+            hit = (L2 > 0) & (t > 0) & (t < 1) & (d < NEAR_MISS) & (d > 1e-6) & ~near_a & ~near_b
+            hit &= (E[:, 0] != i) & (E[:, 1] != i)
+            # points EnergyPlus would merge with this one although no edge joins them
+            others = np.array([j for j in used if j != i and j not in adj[i]], dtype=np.intp)
+            close = others[np.all(np.abs(V[others] - p) < NEAR_MISS, axis=1)] if len(others) else others
+            if np.any(hit):
+                k = int(np.argmin(np.where(hit, d, np.inf)))
+                away, dist = p - C[k], d[k]
+            elif len(close):
+                q = V[close[np.argmin(np.linalg.norm(V[close] - p, axis=1))]]
+                away, dist = p - q, float(np.linalg.norm(p - q))
+                if dist <= 1e-9:
+                    continue
+            else:
+                continue
+            V[i] = p + away / dist * (CLEARANCE - dist)
+            moved = moved_any = True
+        if not moved:
+            break
+    if not moved_any:
+        return None
+    note = (f"{zone.object_id}: points closer than 1.27 cm to an edge or point they do not share moved "
+            f"{CLEARANCE * 100:.1f} cm clear of it for EnergyPlus's enclosure test")
+    return replace(zone, vertices=V, warnings=tuple(zone.warnings) + (note,))
+
+
+#: How far (m) :func:`separated_zone` moves each copy of a pinch vertex into its own
+#: material: copies end up about twice this apart, clear of EnergyPlus's 1.27 cm per-axis merge.
+EPLUS_UNPINCH = 0.02
+
+
+def separated_zone(zone: ZoneShell) -> ZoneShell | None:
+    """The zone with sheets that EnergyPlus would join pulled apart, or None.
+
+    The repair separates sheets that touch along an edge or at a point by 8 mm
+    (:mod:`lod2energy.repair.unpinch`); EnergyPlus merges points within 1.27 cm per axis and
+    joins them again (an edge on four surfaces). Here the zone's points are merged as
+    EnergyPlus merges them and the sheets separated by :data:`EPLUS_UNPINCH` instead; faces
+    and their classes stay, only the pinch points move.
+    """
+    from dataclasses import replace
+
+    from lod2energy.repair.unpinch import unpinch
+
+    from .common import _clean_ring
+    from .eplus_enclosure import eplus_merge
+
+    V, idx = eplus_merge(zone.vertices)
+    if len(V) == len(zone.vertices):
+        return None
+    kept, faces = [], []
+    for f in zone.faces:
+        rings = [tuple(_clean_ring([int(idx[i]) for i in r])) for r in f.rings]
+        if len(set(rings[0])) < 3 or any(len(set(r)) < 3 for r in rings[1:]):
+            return None
+        kept.append(f)
+        faces.append(Face(tuple(rings)))
+    u = unpinch(PolyMesh(V, tuple(faces)), DEFAULT, offset=EPLUS_UNPINCH)
+    if u is None:
+        return None
+    new = tuple(replace(f, rings=g.rings) for f, g in zip(kept, u.faces))
+    note = (f"{zone.object_id}: sheets that touch within EnergyPlus's 1.27 cm tolerance separated by "
+            f"{2 * EPLUS_UNPINCH * 100:.0f} cm")
+    return replace(zone, vertices=np.asarray(u.vertices, dtype=np.float64), faces=new,
+                   warnings=tuple(zone.warnings) + (note,))
 
 
 def roof_zone(zone: ZoneShell) -> ZoneShell | None:
@@ -135,5 +259,5 @@ def block_zone(zone: ZoneShell, simplify: float = BLOCK_SIMPLIFY, opening: float
 
 
 #: Tried in this order by the IDF writer: least change first.
-FALLBACKS = (roof_zone, block_zone, partial(block_zone, opening=0.1), partial(block_zone, opening=0.5),
+FALLBACKS = (cleared_zone, separated_zone, roof_zone, block_zone, partial(block_zone, opening=0.1), partial(block_zone, opening=0.5),
              partial(block_zone, hull=True))

@@ -138,3 +138,19 @@ def test_zone_that_fails_gets_a_simpler_envelope(monkeypatch):
     assert "fails EnergyPlus's enclosure test" in nz.warnings[-1]
     assert real([p.points for p in np_]) == []
     assert idf.enclosable(z, 0, np_) is None        # pieces that pass are kept as they are
+
+
+def test_cleared_zone_moves_a_near_miss_off_the_edge():
+    # a corner 7 mm from an edge it is not on (two walls drawn a few mm apart): EnergyPlus
+    # would insert it into that edge; it moves 1.6 cm clear, nothing else moves
+    from lod2energy.exporters.common import ZoneFace, ZoneShell
+
+    V = np.array([[0, 0, 0], [10, 0, 0], [10, 1, 0], [5, 0.007, 0], [6, 1, 0], [5, 1, 0]], dtype=float)
+    faces = (ZoneFace(((0, 1, 2),), "ground", None, 0.3, 0), ZoneFace(((3, 4, 5),), "ground", None, 0.3, 1))
+    z = ZoneShell("b", "b", V, faces, 2.8, 0.0)
+    nz = zone_fallback.cleared_zone(z)
+    assert nz is not None and "moved" in nz.warnings[-1]
+    assert np.linalg.norm(nz.vertices[3] - [5, 0, 0]) == pytest.approx(zone_fallback.CLEARANCE)
+    assert nz.vertices[3][1] > 0.007                    # away from the edge, on its own side
+    assert np.array_equal(np.delete(nz.vertices, 3, axis=0), np.delete(V, 3, axis=0))
+    assert zone_fallback.cleared_zone(nz) is None       # nothing left to clear
