@@ -30,7 +30,7 @@ from lod2energy.model import (
 from lod2energy.repair._mesh import Face, PolyMesh, compact, face_area, topology
 from lod2energy.repair.alphashape import alpha_repair
 from lod2energy.repair.cleanup import cleanup, desliver, merge_slivers, snap_vertices
-from lod2energy.repair.footprint import extrude_footprint, extrude_roofs
+from lod2energy.repair.footprint import ROOF_SNAP, extrude_footprint, extrude_roofs
 from lod2energy.repair.holefill import fill_holes
 from lod2energy.repair.hull import convex_hull
 from lod2energy.repair.metrics import fidelity
@@ -235,26 +235,36 @@ def roof_model(m: PolyMesh, lod, tol: Tolerances) -> PolyMesh | None:
     """The input rebuilt as a 2.5D model (:func:`footprint.extrude_roofs`), made valid.
 
     The union of roof prisms is cleaned, oriented, separated where prisms only touch along an
-    edge (:func:`unpinch`) and rid of union slivers (:func:`desliver`). Returns None when no
-    valid result is found or the input's vertices are on average more than
-    :data:`ROOF_MODEL_MAX_DISPLACEMENT` from it.
+    edge (:func:`unpinch`) and rid of union slivers (:func:`desliver`). When the prisms over
+    the outlines as drawn give no valid result (outlines a hair apart leave micro-edges and
+    separate pieces, a ring touching itself gives no prism), the same is tried with prisms
+    over the snapped partition of the outlines (``extrude_roofs(m, ROOF_SNAP)``: exact shared
+    edges, pinched corners filled). Returns None when no valid result is found or the input's
+    vertices are on average more than :data:`ROOF_MODEL_MAX_DISPLACEMENT` from it.
     """
     from lod2energy.repair.metrics import point_triangle_distance
     from lod2energy.repair._mesh import triangulate_mesh
-    r = extrude_roofs(m)
-    if r is None:
-        return None
-    r = orient(cleanup(r, tol))
-
     def good(x):
         return x is not None and is_repaired(x, lod, tol)
-    if not good(r):
-        u = unpinch(r, tol)
-        if u is not None:
-            u = close(cleanup(u, tol), tol)
-            r = u if good(u) else r
-    if not good(r):
-        r = desliver(r, tol, good)
+
+    def made_valid(snap):
+        r = extrude_roofs(m, snap)
+        if r is None:
+            return None
+        r = orient(cleanup(r, tol))
+        if not good(r):
+            u = unpinch(r, tol)
+            if u is not None:
+                u = close(cleanup(u, tol), tol)
+                r = u if good(u) else r
+        if not good(r):
+            r = desliver(r, tol, good)
+        return r
+    # the outlines as they are first; when that union cannot be made valid, the outlines
+    # snapped into a partition (prisms meeting exactly, polygons that pinch split)
+    r = made_valid(0.0)
+    if r is None:
+        r = made_valid(ROOF_SNAP)
     if r is None:
         return None
     tris, _ = triangulate_mesh(m)
