@@ -13,7 +13,8 @@ The steps follow EnergyPlus 9-25:
 
 1. surface vertices as EnergyPlus keeps them: a vertex closer than :data:`COINCIDENT` to the
    one before it is dropped (``GetVertices``), so is a vertex on the line through its
-   neighbours (``CheckConvexity``, "collinear points that have been removed");
+   neighbours in the coordinate plane EnergyPlus projects the surface on (``CheckConvexity``,
+   "collinear points that have been removed");
 2. the zone's unique vertices: a vertex is new unless it is almost equal (per axis, under
    :data:`POINT_TOL`) to one met before; each surface point is the *first* almost-equal
    unique vertex;
@@ -36,8 +37,13 @@ from .common import polygon_area3d, weld
 POINT_TOL = 0.0127
 #: Consecutive surface vertices closer than this (m) are merged by EnergyPlus's GetVertices.
 COINCIDENT = 0.01
-#: A vertex this close (m) to the line through its neighbours is removed as collinear.
-COLLINEAR = 1e-4
+#: EnergyPlus's ``CheckConvexity`` works in the first coordinate plane (XY, XZ, YZ) in which
+#: the polygon's doubled signed area exceeds this (m2) ...
+PLANE_DET = 1e-4
+#: ... and drops a vertex where the outline turns by less than this (rad) in that plane:
+#: collinear in the projection, which for a wall a fraction of a degree off vertical
+#: (projected on XY) need not be collinear in 3D.
+TURN_THRESHOLD = 1e-6
 
 
 @dataclass(frozen=True)
@@ -59,21 +65,30 @@ class BadEdge:
     surfaces: tuple[int, ...]
 
 
-def _line_distance(a: np.ndarray, b: np.ndarray, c: np.ndarray) -> float:
-    ac = c - a
-    L = float(ac @ ac)
-    if L <= 0.0:
-        return float(np.linalg.norm(b - a))
-    t = float((b - a) @ ac) / L
-    return float(np.linalg.norm(a + t * ac - b))
+def eplus_collinear(points: np.ndarray) -> list[int]:
+    """Indices of the vertices EnergyPlus's ``CheckConvexity`` finds collinear with their
+    neighbours (in its projection plane, see :data:`PLANE_DET`, :data:`TURN_THRESHOLD`)."""
+    q = np.asarray(points, dtype=np.float64)
+    k = len(q)
+    if k <= 3:
+        return []
+    for i, j in ((0, 1), (0, 2), (1, 2)):
+        A, B = q[:, i], q[:, j]
+        if abs(float(np.sum(A * np.roll(B, -1) - np.roll(A, -1) * B))) > PLANE_DET:
+            break
+    p0, p2 = np.roll(np.arange(k), 1), np.roll(np.arange(k), -1)
+    ua, ub = A - A[p0], B - B[p0]
+    va, vb = A[p2] - A, B[p2] - B
+    turn = np.arctan2(ua * vb - ub * va, ua * va + ub * vb)
+    return [int(i) for i in np.nonzero(np.abs(turn) < TURN_THRESHOLD)[0]]
 
 
 def eplus_vertices(points: np.ndarray) -> np.ndarray:
     """A surface's vertices as EnergyPlus keeps them, (k, 3) -> (k', 3).
 
-    Vertices closer than :data:`COINCIDENT` to the previous kept one and vertices within
-    :data:`COLLINEAR` of the line through their neighbours are dropped while more than three
-    remain.
+    Vertices closer than :data:`COINCIDENT` to the previous kept one are dropped
+    (``GetVertices``), then the vertices :func:`eplus_collinear` finds, while at least three
+    remain (``CheckConvexity``).
     """
     pts = [np.asarray(p, dtype=np.float64) for p in points]
     keep = [pts[0]] if pts else []
@@ -82,16 +97,11 @@ def eplus_vertices(points: np.ndarray) -> np.ndarray:
             keep.append(p)
     while len(keep) > 3 and np.linalg.norm(keep[0] - keep[-1]) < COINCIDENT:
         keep.pop()
-    changed = True
-    while changed and len(keep) > 3:
-        changed = False
-        k = len(keep)
-        for i in range(k):
-            if _line_distance(keep[i - 1], keep[i], keep[(i + 1) % k]) < COLLINEAR:
-                del keep[i]
-                changed = True
-                break
-    return np.asarray(keep, dtype=np.float64).reshape(-1, 3)
+    q = np.asarray(keep, dtype=np.float64).reshape(-1, 3)
+    drop = eplus_collinear(q)
+    if drop and len(q) - len(drop) >= 3:
+        q = np.delete(q, drop, axis=0)
+    return q
 
 
 class _Grid:

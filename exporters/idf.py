@@ -28,7 +28,7 @@ from typing import Iterable, Sequence
 
 import numpy as np
 
-from .eplus_enclosure import _on_line, enclosure_defects, snap_polygons
+from .eplus_enclosure import _on_line, eplus_collinear, enclosure_defects, snap_polygons
 from .zone_fallback import FALLBACKS
 from .common import (
     COLLINEAR_TOL, MIN_PIECE_AREA, PLANAR_TOL, WELD_TOL, ExportResult, ZoneFace, ZoneShell, _is_convex_2d,
@@ -473,7 +473,36 @@ def zone_pieces(zone: ZoneShell, zi: int, party: dict, split: bool = True) -> li
                 pieces.append(Piece(p, f.kind, boundary, f.u_value, f.index))
     if split and any(party.get((zi, fi)) for fi in range(len(zone.faces))):
         pieces = conform(pieces)
-    return eplus_enclose(pieces)
+    return eplus_enclose(keep_corners(pieces))
+
+
+#: A vertex EnergyPlus finds collinear but which lies farther than this (m) from the line
+#: through its neighbours in 3D is a real corner (:func:`keep_corners`).
+CORNER_TOL = 1e-3
+
+
+def keep_corners(pieces: list[Piece], tol: float = CORNER_TOL) -> list[Piece]:
+    """Pieces in which EnergyPlus would drop no real corner.
+
+    EnergyPlus tests collinearity in a coordinate plane (:func:`eplus_enclosure.eplus_collinear`):
+    on a wall a fraction of a degree off vertical, projected on XY, a corner of a stepped
+    bottom edge looks collinear and is removed, which opens the zone. Such a piece is written
+    as a fan of triangles around its centroid (a triangle keeps its three vertices).
+    """
+    out = []
+    for p in pieces:
+        q = p.points
+        lost = [i for i in eplus_collinear(q)
+                if not _on_line(q[i - 1], q[(i + 1) % len(q)], q[i], tol)]
+        if not lost:
+            out.append(p)
+            continue
+        c = q.mean(axis=0)
+        for i in range(len(q)):
+            tri = np.array([c, q[i], q[(i + 1) % len(q)]])
+            if polygon_area3d(tri) > 1e-9:
+                out.append(replace(p, points=tri))
+    return out
 
 
 #: Vertex merges tried by :func:`eplus_enclose`: none (slivers dropped only), EnergyPlus's

@@ -154,3 +154,36 @@ def test_cleared_zone_moves_a_near_miss_off_the_edge():
     assert nz.vertices[3][1] > 0.007                    # away from the edge, on its own side
     assert np.array_equal(np.delete(nz.vertices, 3, axis=0), np.delete(V, 3, axis=0))
     assert zone_fallback.cleared_zone(nz) is None       # nothing left to clear
+
+
+def _stepped_wall(lean: float) -> np.ndarray:
+    """A 10 m wall whose bottom edge has a 0.5 m step up at x = 5 m, leaning ``lean`` m over 3 m."""
+    return np.array([[0, 0, 0], [5, 0, 0.5], [10, 0, 0], [10, lean, 3], [0, lean, 3]], float)
+
+
+def test_energyplus_finds_collinear_points_in_its_projection_plane():
+    from lod2energy.exporters.eplus_enclosure import eplus_collinear, eplus_vertices
+    # 0.04 degrees off vertical: EnergyPlus projects on XY, where the step's corner is collinear
+    assert eplus_collinear(_stepped_wall(0.002)) == [1]
+    assert len(eplus_vertices(_stepped_wall(0.002))) == 4
+    # exactly vertical: projected on XZ, the corner is a corner
+    assert eplus_collinear(_stepped_wall(0.0)) == []
+    # a point on a straight edge is dropped in either case
+    straight = np.array([[0, 0, 0], [5, 0, 0], [10, 0, 0], [10, 0, 3], [0, 0, 3]], float)
+    assert eplus_collinear(straight) == [1]
+
+
+def test_keep_corners_fans_a_piece_energyplus_would_strip():
+    from lod2energy.exporters.eplus_enclosure import eplus_vertices
+    wall = _stepped_wall(0.002)
+    piece = idf.Piece(wall, "wall", "Outdoors", 1.0, 0)
+    out = idf.keep_corners([piece])
+    assert len(out) == 5 and all(len(p.points) == 3 for p in out)
+    assert all(len(eplus_vertices(p.points)) == 3 for p in out)
+    assert sum(polygon_area3d(p.points) for p in out) == pytest.approx(polygon_area3d(wall))
+    # every corner of the wall is still written
+    corners = np.vstack([p.points for p in out])
+    assert all(np.min(np.linalg.norm(corners - w, axis=1)) < 1e-9 for w in wall)
+    # a piece EnergyPlus keeps whole is left alone
+    plain = idf.Piece(_stepped_wall(0.0), "wall", "Outdoors", 1.0, 0)
+    assert idf.keep_corners([plain]) == [plain]
