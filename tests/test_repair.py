@@ -397,3 +397,46 @@ def test_repaired_building_round_trips_through_cityjson(tmp_path, suffix):
     for b in back:
         assert_energy_ready(b)
         assert repair_building(b) is b
+
+
+def test_solid_without_lod_is_repaired_and_keeps_its_901():
+    """A Solid whose 'lod' is missing or junk (FME's reader tests) is a volume by its type:
+    it is repaired like any other; its LoD is not invented."""
+    from factories import box_polygons, building_from_polygons, BOX_SEMANTICS
+    from lod2energy.validate.compliance import energy_compliance
+    polys = box_polygons()[:5]
+    b = building_from_polygons(polys, "Solid", BOX_SEMANTICS[:5], lod=None)
+    codes = {d.code for d in validate_building(b)}
+    assert 302 in codes
+    r = repair_building(b)
+    assert r.provenance["repair"]["stage"] not in ("valid", None, "irreparable")
+    assert {d.code for d in validate_building(r)} <= {901}
+    comp = energy_compliance(r, validate_building(r))
+    assert comp["closed_2manifold"] and not any("LoDNone" in x for x in comp["reasons"])
+
+
+def test_alpha_search_keeps_a_slender_tower():
+    """A 55 m shaft under a 20 m deck (Euromast-like) fills less than a third of its convex
+    hull; the alpha search must not take it for a hollow skin."""
+    from factories import box_polygons, building_from_polygons
+    from lod2energy.repair.alphashape import alpha_repair
+    from lod2energy.repair.pipeline import mesh_of_geometry
+    from lod2energy.repair._mesh import signed_volume
+    shaft = box_polygons(3, 3, 55)
+    del shaft[1]  # no top: the deck sits on it
+    deck = box_polygons(20, 20, 5, origin=(-8.5, -8.5, 55))
+    b = building_from_polygons(shaft + deck, "Solid")
+    m = mesh_of_geometry(b.vertices, b.root.geometries[0])
+    r = alpha_repair(m)
+    assert r is not None
+    assert signed_volume(r) == pytest.approx(3 * 3 * 55 + 20 * 20 * 5, rel=0.15)
+
+
+def test_lone_wall_beside_a_solid_is_not_made_a_volume():
+    """A LoD2 MultiSurface of one face (Euromast carries one beside its Solid) bounds no
+    volume: it is left a surface, not wrapped into a slab."""
+    from factories import box_polygons, building_from_polygons
+    from lod2energy.repair.pipeline import _targets
+    wall = building_from_polygons([box_polygons()[2]], "MultiSurface")
+    assert _targets(wall, None) == []
+    assert repair_building(wall).provenance.get("repair", {}).get("stage") in (None, "valid")

@@ -203,6 +203,17 @@ def _hull_volume(m: PolyMesh) -> float:
         return 0.0
 
 
+#: A closed candidate whose volume per surface area (m) is below this while it fills less
+#: than a third of the input's convex hull is a skin around the surfaces (about 2 x OFFSET
+#: deep), not a building: a 1.5 m cube has 0.25 m.
+SKIN_DEPTH = 0.25
+
+
+def _area(m: PolyMesh) -> float:
+    from lod2energy.repair._mesh import face_area
+    return float(sum(face_area(m.vertices, f) for f in m.faces))
+
+
 def _volume(m: PolyMesh) -> float:
     from lod2energy.repair._mesh import signed_volume
     return signed_volume(m)
@@ -237,8 +248,10 @@ def alpha_repair(m: PolyMesh, tol: Tolerances = DEFAULT, deadline: float | None 
             continue
         if accept is not None and not accept(r):
             continue
-        if _volume(r) < hv / 3:
-            continue  # a hollow skin around missing walls, not a building
+        vol = _volume(r)
+        if vol < hv / 3 and vol < SKIN_DEPTH * _area(r):
+            continue  # a hollow skin around missing walls, not a building (a slender tower
+            # fills a third of its hull neither, but its volume per area is metres)
         rt, _ = triangulate_mesh(r)
         score = point_triangle_distance(pts, r.vertices, rt).mean() + \
             point_triangle_distance(r.vertices, m.vertices, tris).mean()

@@ -205,7 +205,19 @@ def ladder(m: PolyMesh, lod, tol: Tolerances, deadline: float) -> tuple[str, Pol
     if kept is not None:
         log.append(f"{kept[1]}: ok except {kept[0]} sliver(s) (1003 kept)")
         return kept[1], kept[2], log
-    if not late():
+    return global_stages(m0, lod, tol, deadline, log)
+
+
+def global_stages(m0: PolyMesh, lod, tol: Tolerances, deadline: float,
+                  log: list[str]) -> tuple[str, PolyMesh | None, list[str]]:
+    """The global end of the ladder on a cleaned shell: 2.5D roof model, alpha shapes,
+    footprint extrusion, convex hull; "irreparable" when none is valid."""
+    def ok(name, r):
+        good = is_repaired(r, lod, tol)
+        log.append(f"{name}: {'ok' if good else ('no result' if r is None else 'failed')}")
+        return good
+
+    if time.monotonic() <= deadline:
         m4r = roof_model(m0, lod, tol)
         if m4r is not None and ok("roofs", m4r):
             return "roofs", m4r, log
@@ -224,6 +236,11 @@ def ladder(m: PolyMesh, lod, tol: Tolerances, deadline: float) -> tuple[str, Pol
         return "hull", m6, log
     return "irreparable", None, log
 
+
+#: A remove-and-refill result whose volumetric IoU with the input is below this has cut out
+#: more than a corrupted neighbourhood: the global stages are tried too and the closer result
+#: is kept.
+REFILL_MIN_IOU = 0.9
 
 #: A 2.5D roof model is kept only when the input's vertices lie this close to it on average
 #: (m): beyond that the building is not 2.5D (overhangs, parts below ground) and the alpha
@@ -275,6 +292,20 @@ def roof_model(m: PolyMesh, lod, tol: Tolerances) -> PolyMesh | None:
     return r
 
 
+#: A surface-type geometry (MultiSurface, CompositeSurface) of fewer faces bounds no volume.
+MIN_VOLUME_FACES = 4
+
+
+def _bounds_volume(g: Geometry) -> bool:
+    """Is ``g`` meant to enclose a volume: LoD >= 1 (or a Solid-type geometry whose 'lod' is
+    missing or junk, 901), and not a surface set of fewer than :data:`MIN_VOLUME_FACES` faces
+    (a lone wall beside a building's Solid). LoD0 footprints and roof outlines are not volumes."""
+    if g.is_volumetric:
+        return g.lod is None or lod_key(g.lod) >= 1
+    n = sum(len(sh.surfaces) for so in g.solids for sh in so.shells)
+    return lod_key(g.lod) >= 1 and (n == 0 or n >= MIN_VOLUME_FACES)  # empty: irreparable
+
+
 def _targets(b: Building, lod: str | None) -> list[tuple[int, int, Geometry]]:
     """(object index, geometry index, geometry) of the geometries the ladder looks at."""
     out = []
@@ -286,8 +317,8 @@ def _targets(b: Building, lod: str | None) -> list[tuple[int, int, Geometry]]:
                 continue
             if lod is not None and g.lod != lod:
                 continue
-            if lod is None and lod_key(g.lod) < 1:
-                continue  # LoD0 footprints and roof edges are not volumes
+            if lod is None and not _bounds_volume(g):
+                continue
             out.append((oi, gi, g))
     # the highest LoD first: it is the one energy models use, so it gets the time budget first
     return sorted(out, key=lambda t: -lod_key(t[2].lod))
@@ -295,7 +326,8 @@ def _targets(b: Building, lod: str | None) -> list[tuple[int, int, Geometry]]:
 
 def _clean_surfaces(b: Building, lod: str | None, tol: Tolerances, lookup: dict, extra: list,
                     objs: list) -> list[dict]:
-    """Polygon-level clean-up (snap, repeated points, degenerate faces) of LoD0 surfaces.
+    """Polygon-level clean-up (snap, repeated points, degenerate faces) of the surface
+    geometries that bound no volume (LoD0, a lone wall: :func:`_bounds_volume`).
 
     LoD0 footprints and roof outlines are not volumes: they keep their type and only lose
     what val3dity rejects at polygon level (101/102). Returns one log entry per change.
@@ -309,7 +341,7 @@ def _clean_surfaces(b: Building, lod: str | None, tol: Tolerances, lookup: dict,
         if o.type not in BUILDING_TYPES:
             continue
         for gi, g in enumerate(o.geometries):
-            if not g.is_polygonal or not g.solids or lod_key(g.lod) >= 1 or g.is_volumetric:
+            if not g.is_polygonal or not g.solids or _bounds_volume(g):
                 continue
             codes = sorted({d.code for d in validate_geometry(b.vertices, o.id, gi, g, tol)})
             if not codes:
@@ -401,7 +433,18 @@ def repair_building(b: Building, tol: Tolerances = DEFAULT, timeout: float = DEF
         else:
             res = compact(res)
             input_closed, env = _envelope(m, res, stage, tol)
-            entry.update(stage=stage, n_faces_after=res.n_faces, **fidelity(m, res, input_closed, env))
+            fid = fidelity(m, res, input_closed, env)
+            if stage == "refill" and fid["iou"] < REFILL_MIN_IOU:
+                # the cut took a large part of the shell with it: a global stage may keep more
+                gstage, gres, glog = global_stages(cleanup(m, tol), g.lod, tol, deadline, [])
+                if gres is not None:
+                    gres = compact(gres)
+                    gclosed, genv = _envelope(m, gres, gstage, tol)
+                    gfid = fidelity(m, gres, gclosed, genv)
+                    entry["log"] = log + [f"refill: IoU {fid['iou']:.3f}, global stages tried"] + glog
+                    if gfid["iou"] > fid["iou"]:
+                        stage, res, fid, input_closed, env = gstage, gres, gfid, gclosed, genv
+            entry.update(stage=stage, n_faces_after=res.n_faces, **fid)
             if any(face_area(res.vertices, f) <= tol.sliver_area for f in res.faces):
                 entry["defects_after"] = [1003]
             # per output face: the input surface it derives from (-1: made by the repair)

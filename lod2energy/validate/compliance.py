@@ -81,7 +81,7 @@ def energy_compliance(b: Building, defects: Iterable[Defect], graph: FaceGraph |
     has_faces = graph.n_faces > 0
     # LoD0 (footprint, roof outline) is no volume: the repair ladder leaves it alone, so the
     # geometric failures below only restate that; say it once, plainly
-    flat_lod = has_faces and lod_key(lod) < 1
+    flat_lod = has_faces and lod is not None and lod_key(lod) < 1
     closed = has_faces and graph.n_boundary == 0 and graph.n_nonmanifold == 0 and not (codes & _CLOSED_CODES)
     if not has_faces:
         reasons.append("no envelope geometry")
