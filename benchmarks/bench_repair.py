@@ -36,6 +36,12 @@ TILES = [
     "rotterdam/fme_msurface_buildings_semsrf_attributes.json",
     "rotterdam/fme_solid_buildings_metadata.json",
     "rotterdam/rotterdam_subset.json",
+    "rotterdam/rotterdam_one.json",
+    "rotterdam/Example_CityGML_Converted_Rotterdam.json",
+    "rotterdam/euromast.json",
+    "rotterdam/fme_solid_buildings_lod_empty.json",
+    "rotterdam/fme_solid_buildings_lod_missing.json",
+    "rotterdam/fme_solid_buildings_lod_null.json",
     "delft-3dfier-lod1/delft.json",
 ]
 
@@ -87,9 +93,15 @@ def markdown(rows: list[dict]) -> str:
                      f"{_f(r['miou'])} | {_f(r['map_v'])} | {_f(r['mean_hausdorff'], 2)} | "
                      f"{r['per_s']:.1f} | {r['max_rss_mb']:.0f} |")
     n = max(tot["n"], 1)
+    w = [(r["n_measured"], r) for r in rows if r.get("n_measured")]
+    k = sum(m for m, _ in w)
+
+    def pooled(key):
+        return sum(m * r[key] for m, r in w) / k if k else None
     lines.append(f"| **all** | {tot['n']} | {tot['vb']} ({100 * tot['vb'] / n:.1f}%) | "
                  f"{tot['va']} ({100 * tot['va'] / n:.1f}%) | {tot['cb']} | {tot['ca']} ({100 * tot['ca'] / n:.1f}%) "
-                 "| | | | | | |")
+                 f"| {k} repaired | {_f(pooled('miou'))} | {_f(pooled('map_v'))} | "
+                 f"{_f(pooled('mean_hausdorff'), 2)} | | |")
     return head + "\n".join(lines) + "\n"
 
 

@@ -40,9 +40,9 @@ COINCIDENT = 0.01
 #: EnergyPlus's ``CheckConvexity`` works in the first coordinate plane (XY, XZ, YZ) in which
 #: the polygon's doubled signed area exceeds this (m2) ...
 PLANE_DET = 1e-4
-#: ... and drops a vertex where the outline turns by less than this (rad) in that plane:
-#: collinear in the projection, which for a wall a fraction of a degree off vertical
-#: (projected on XY) need not be collinear in 3D.
+#: ... and drops a vertex where the sine of the outline's turn is below this in that plane
+#: (straight on, or doubling back in a spike): collinear in the projection, which for a wall
+#: a fraction of a degree off vertical (projected on XY) need not be collinear in 3D.
 TURN_THRESHOLD = 1e-6
 
 
@@ -80,7 +80,8 @@ def eplus_collinear(points: np.ndarray) -> list[int]:
     ua, ub = A - A[p0], B - B[p0]
     va, vb = A[p2] - A, B[p2] - B
     turn = np.arctan2(ua * vb - ub * va, ua * va + ub * vb)
-    return [int(i) for i in np.nonzero(np.abs(turn) < TURN_THRESHOLD)[0]]
+    # the sine of the turn decides: a spike (the outline doubling back, turn = pi) counts too
+    return [int(i) for i in np.nonzero(np.abs(np.sin(turn)) < TURN_THRESHOLD)[0]]
 
 
 def eplus_vertices(points: np.ndarray) -> np.ndarray:

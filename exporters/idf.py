@@ -473,7 +473,18 @@ def zone_pieces(zone: ZoneShell, zi: int, party: dict, split: bool = True) -> li
                 pieces.append(Piece(p, f.kind, boundary, f.u_value, f.index))
     if split and any(party.get((zi, fi)) for fi in range(len(zone.faces))):
         pieces = conform(pieces)
-    return eplus_enclose(keep_corners(pieces))
+    return _as_written(eplus_enclose(keep_corners(_as_written(pieces))))
+
+
+#: Decimals of the vertex coordinates written to the IDF (m): 0.1 mm.
+WRITE_DECIMALS = 4
+
+
+def _as_written(pieces: list[Piece]) -> list[Piece]:
+    """Pieces with their points rounded as the IDF writes them, so that every emulated
+    EnergyPlus test sees what EnergyPlus will read (rounding can make a near-collinear vertex
+    collinear in EnergyPlus's projection plane)."""
+    return [replace(p, points=np.round(p.points, WRITE_DECIMALS)) for p in pieces]
 
 
 #: A vertex EnergyPlus finds collinear but which lies farther than this (m) from the line
@@ -841,7 +852,7 @@ def read_epw_header(path: str | Path) -> tuple[dict, list[float] | None]:
 
 # --------------------------------------------------------------------------- writing
 
-def _fmt(x: float, nd: int = 4) -> str:
+def _fmt(x: float, nd: int = WRITE_DECIMALS) -> str:
     s = f"{x:.{nd}f}"
     return "0" if s in ("-0." + "0" * nd, "0." + "0" * nd) else s.rstrip("0").rstrip(".")
 

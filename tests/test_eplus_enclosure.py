@@ -187,3 +187,24 @@ def test_keep_corners_fans_a_piece_energyplus_would_strip():
     # a piece EnergyPlus keeps whole is left alone
     plain = idf.Piece(_stepped_wall(0.0), "wall", "Outdoors", 1.0, 0)
     assert idf.keep_corners([plain]) == [plain]
+
+
+def test_energyplus_drops_a_spike_in_its_projection_plane():
+    """A 4 cm wall of a 3 cm column (real Delfshaven case): projected on XY it doubles back
+    at its last vertex, which EnergyPlus removes as collinear (the sine of the turn is 0)."""
+    from lod2energy.exporters.eplus_enclosure import eplus_collinear
+    wall = np.array([[1.745, 7.698, 6.8552], [1.7326, 7.698, 6.8307], [1.745, 7.7156, 6.8153],
+                     [1.745, 7.728, 6.8343]])
+    assert eplus_collinear(wall) == [3]
+    piece = idf.Piece(wall, "wall", "Outdoors", 1.0, 0)
+    assert all(len(p.points) == 3 for p in idf.keep_corners([piece]))
+
+
+def test_pieces_are_checked_as_written():
+    """Every piece leaves zone_pieces rounded to the written precision: the emulated tests
+    see the coordinates EnergyPlus reads."""
+    b = energy_ready(box(10.00004, 8.00007, 6.00002))
+    zs = idf.zone_shells(b, np.zeros(3), None)
+    pcs = idf.zone_pieces(zs[0], 0, {}, True)
+    assert pcs and all(np.array_equal(p.points, np.round(p.points, idf.WRITE_DECIMALS)) for p in pcs)
+    assert any(np.any(np.abs(p.points - 10.00004) < 1e-3) for p in pcs)

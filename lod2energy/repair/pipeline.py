@@ -615,6 +615,7 @@ def dataset_table(buildings: Iterable[Building]) -> dict:
         "miou": float(np.mean([r["iou"] for r in fixed])) if fixed else None,
         "map_v": float(np.mean([r["mean_displacement"] for r in fixed])) if fixed else None,
         "mean_hausdorff": float(np.mean([r["hausdorff"] for r in fixed])) if fixed else None,
+        "n_measured": len(fixed),
         "stages": {s: stages[s] for s in STAGES if stages[s]},
     }
 
