@@ -44,6 +44,8 @@ PLANE_DET = 1e-4
 #: (straight on, or doubling back in a spike): collinear in the projection, which for a wall
 #: a fraction of a degree off vertical (projected on XY) need not be collinear in 3D.
 TURN_THRESHOLD = 1e-6
+#: A projected edge shorter than this (m) has no direction.
+PROJECTED_EPS = 1e-9
 
 
 @dataclass(frozen=True)
@@ -80,8 +82,11 @@ def eplus_collinear(points: np.ndarray) -> list[int]:
     ua, ub = A - A[p0], B - B[p0]
     va, vb = A[p2] - A, B[p2] - B
     turn = np.arctan2(ua * vb - ub * va, ua * va + ub * vb)
-    # the sine of the turn decides: a spike (the outline doubling back, turn = pi) counts too
-    return [int(i) for i in np.nonzero(np.abs(np.sin(turn)) < TURN_THRESHOLD)[0]]
+    # the sine of the turn decides: a spike (the outline doubling back, turn = pi) counts too;
+    # a vertex next to an edge that projects to a point (a vertical edge seen from above) has
+    # no turn and is kept
+    seen = (np.hypot(ua, ub) > PROJECTED_EPS) & (np.hypot(va, vb) > PROJECTED_EPS)
+    return [int(i) for i in np.nonzero(seen & (np.abs(np.sin(turn)) < TURN_THRESHOLD))[0]]
 
 
 def eplus_vertices(points: np.ndarray) -> np.ndarray:

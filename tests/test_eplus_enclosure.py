@@ -196,6 +196,11 @@ def test_energyplus_drops_a_spike_in_its_projection_plane():
     wall = np.array([[1.745, 7.698, 6.8552], [1.7326, 7.698, 6.8307], [1.745, 7.7156, 6.8153],
                      [1.745, 7.728, 6.8343]])
     assert eplus_collinear(wall) == [3]
+    # a vertical edge projects to a point on XY: its ends have no turn there and are kept
+    # (a real Delfshaven wall; EnergyPlus removed none of its vertices)
+    vertical = np.array([[13.026, 23.851, 4.825], [20.599, 5.663, 0.0], [11.8, 26.798, 0.0],
+                         [11.8, 26.798, 4.825]])
+    assert eplus_collinear(vertical) == []
     piece = idf.Piece(wall, "wall", "Outdoors", 1.0, 0)
     assert all(len(p.points) == 3 for p in idf.keep_corners([piece]))
 
