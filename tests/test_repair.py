@@ -433,10 +433,16 @@ def test_alpha_search_keeps_a_slender_tower():
 
 
 def test_lone_wall_beside_a_solid_is_not_made_a_volume():
-    """A LoD2 MultiSurface of one face (Euromast carries one beside its Solid) bounds no
-    volume: it is left a surface, not wrapped into a slab."""
+    """A LoD2 MultiSurface of one face beside the object's LoD2 Solid (as in Euromast) is an
+    extra: it is left a surface, not wrapped into a slab; alone it is a building with missing
+    walls and is repaired."""
+    from dataclasses import replace as dc_replace
     from factories import box_polygons, building_from_polygons
     from lod2energy.repair.pipeline import _targets
     wall = building_from_polygons([box_polygons()[2]], "MultiSurface")
-    assert _targets(wall, None) == []
-    assert repair_building(wall).provenance.get("repair", {}).get("stage") in (None, "valid")
+    solid = building_from_polygons(box_polygons(), "Solid")
+    g_wall, g_solid = wall.root.geometries[0], solid.root.geometries[0]
+    both = Building("b", "Building", solid.vertices,
+                    (dc_replace(solid.root, geometries=(g_wall, g_solid)),))
+    assert [gi for _, gi, _ in _targets(both, None)] == [1]
+    assert [gi for _, gi, _ in _targets(wall, None)] == [0]

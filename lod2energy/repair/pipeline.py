@@ -19,7 +19,7 @@ from __future__ import annotations
 import time
 from collections import Counter
 from dataclasses import replace
-from typing import Iterable, Iterator, Mapping
+from typing import Iterable, Iterator, Mapping, Sequence
 
 import numpy as np
 
@@ -292,18 +292,23 @@ def roof_model(m: PolyMesh, lod, tol: Tolerances) -> PolyMesh | None:
     return r
 
 
-#: A surface-type geometry (MultiSurface, CompositeSurface) of fewer faces bounds no volume.
+#: A surface-type geometry (MultiSurface, CompositeSurface) of fewer faces beside a Solid of
+#: the same object and LoD is an extra, not an envelope.
 MIN_VOLUME_FACES = 4
 
 
-def _bounds_volume(g: Geometry) -> bool:
+def _bounds_volume(g: Geometry, siblings: Sequence[Geometry] = ()) -> bool:
     """Is ``g`` meant to enclose a volume: LoD >= 1 (or a Solid-type geometry whose 'lod' is
     missing or junk, 901), and not a surface set of fewer than :data:`MIN_VOLUME_FACES` faces
-    (a lone wall beside a building's Solid). LoD0 footprints and roof outlines are not volumes."""
+    next to a Solid-type geometry of the same LoD among ``siblings`` (Euromast's lone wall
+    beside its Solid). LoD0 footprints and roof outlines are not volumes."""
     if g.is_volumetric:
         return g.lod is None or lod_key(g.lod) >= 1
+    if lod_key(g.lod) < 1:
+        return False
     n = sum(len(sh.surfaces) for so in g.solids for sh in so.shells)
-    return lod_key(g.lod) >= 1 and (n == 0 or n >= MIN_VOLUME_FACES)  # empty: irreparable
+    extra = any(s is not g and s.is_volumetric and s.lod == g.lod for s in siblings)
+    return not (extra and 0 < n < MIN_VOLUME_FACES)
 
 
 def _targets(b: Building, lod: str | None) -> list[tuple[int, int, Geometry]]:
@@ -317,7 +322,7 @@ def _targets(b: Building, lod: str | None) -> list[tuple[int, int, Geometry]]:
                 continue
             if lod is not None and g.lod != lod:
                 continue
-            if lod is None and not _bounds_volume(g):
+            if lod is None and not _bounds_volume(g, o.geometries):
                 continue
             out.append((oi, gi, g))
     # the highest LoD first: it is the one energy models use, so it gets the time budget first
@@ -341,7 +346,7 @@ def _clean_surfaces(b: Building, lod: str | None, tol: Tolerances, lookup: dict,
         if o.type not in BUILDING_TYPES:
             continue
         for gi, g in enumerate(o.geometries):
-            if not g.is_polygonal or not g.solids or _bounds_volume(g):
+            if not g.is_polygonal or not g.solids or _bounds_volume(g, o.geometries):
                 continue
             codes = sorted({d.code for d in validate_geometry(b.vertices, o.id, gi, g, tol)})
             if not codes:
