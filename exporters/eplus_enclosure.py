@@ -72,7 +72,7 @@ def eplus_collinear(points: np.ndarray) -> list[int]:
     neighbours (in its projection plane, see :data:`PLANE_DET`, :data:`TURN_THRESHOLD`)."""
     q = np.asarray(points, dtype=np.float64)
     k = len(q)
-    if k <= 3:
+    if k < 3:
         return []
     for i, j in ((0, 1), (0, 2), (1, 2)):
         A, B = q[:, i], q[:, j]
@@ -87,6 +87,19 @@ def eplus_collinear(points: np.ndarray) -> list[int]:
     # no turn and is kept
     seen = (np.hypot(ua, ub) > PROJECTED_EPS) & (np.hypot(va, vb) > PROJECTED_EPS)
     return [int(i) for i in np.nonzero(seen & (np.abs(np.sin(turn)) < TURN_THRESHOLD))[0]]
+
+
+def eplus_degenerate(points: np.ndarray) -> bool:
+    """Would EnergyPlus call the surface degenerate (fewer than 3 sides once coincident and
+    collinear vertices are removed: a severe error)?"""
+    pts = [np.asarray(p, dtype=np.float64) for p in points]
+    keep = [pts[0]] if pts else []
+    for p in pts[1:]:
+        if np.linalg.norm(p - keep[-1]) >= COINCIDENT:
+            keep.append(p)
+    while len(keep) > 1 and np.linalg.norm(keep[0] - keep[-1]) < COINCIDENT:
+        keep.pop()
+    return len(keep) - len(eplus_collinear(np.asarray(keep).reshape(-1, 3))) < 3
 
 
 def eplus_vertices(points: np.ndarray) -> np.ndarray:

@@ -28,7 +28,7 @@ from typing import Iterable, Sequence
 
 import numpy as np
 
-from .eplus_enclosure import _on_line, eplus_collinear, enclosure_defects, snap_polygons
+from .eplus_enclosure import _on_line, eplus_collinear, eplus_degenerate, enclosure_defects, snap_polygons
 from .zone_fallback import FALLBACKS
 from .common import (
     COLLINEAR_TOL, MIN_PIECE_AREA, PLANAR_TOL, WELD_TOL, ExportResult, ZoneFace, ZoneShell, _is_convex_2d,
@@ -473,7 +473,8 @@ def zone_pieces(zone: ZoneShell, zi: int, party: dict, split: bool = True) -> li
                 pieces.append(Piece(p, f.kind, boundary, f.u_value, f.index))
     if split and any(party.get((zi, fi)) for fi in range(len(zone.faces))):
         pieces = conform(pieces)
-    return _as_written(eplus_enclose(keep_corners(_as_written(pieces))))
+    # after the enclosure candidates too: merging vertices can bend a piece out of plane
+    return _as_written(keep_corners(eplus_enclose(keep_corners(_as_written(pieces)))))
 
 
 #: Decimals of the vertex coordinates written to the IDF (m): 0.1 mm.
@@ -497,23 +498,31 @@ def keep_corners(pieces: list[Piece], tol: float = CORNER_TOL) -> list[Piece]:
 
     EnergyPlus tests collinearity in a coordinate plane (:func:`eplus_enclosure.eplus_collinear`):
     on a wall a fraction of a degree off vertical, projected on XY, a corner of a stepped
-    bottom edge looks collinear and is removed, which opens the zone. Such a piece is written
-    as a fan of triangles around its centroid (a triangle keeps its three vertices).
+    bottom edge looks collinear and is removed, which opens the zone. Such a piece, one that
+    EnergyPlus would call degenerate (fewer than 3 sides left) and one more than
+    :data:`PIECE_PLANAR` out of plane are written as a fan of triangles around the centroid
+    (a triangle keeps its three vertices and is planar); a fan triangle EnergyPlus would
+    still call degenerate is left out (its short side is merged away by EnergyPlus too).
     """
     out = []
     for p in pieces:
         q = p.points
         lost = [i for i in eplus_collinear(q)
                 if not _on_line(q[i - 1], q[(i + 1) % len(q)], q[i], tol)]
-        if not lost:
+        if not lost and not eplus_degenerate(q) and (len(q) == 3 or _planar_dev(q) <= PIECE_PLANAR):
             out.append(p)
             continue
-        c = q.mean(axis=0)
+        c = np.round(q.mean(axis=0), WRITE_DECIMALS)
         for i in range(len(q)):
             tri = np.array([c, q[i], q[(i + 1) % len(q)]])
-            if polygon_area3d(tri) > 1e-9:
+            if polygon_area3d(tri) > 1e-9 and not eplus_degenerate(tri):
                 out.append(replace(p, points=tri))
     return out
+
+
+#: A piece whose points lie farther than this (m) from their Newell plane is written as
+#: triangles (EnergyPlus calls more than 1 cm "out of line" a severe error).
+PIECE_PLANAR = 0.005
 
 
 #: Vertex merges tried by :func:`eplus_enclose`: none (slivers dropped only), EnergyPlus's
@@ -1256,8 +1265,10 @@ def self_check(path: str | Path, run: bool = False, weather: str | Path | None =
         except (TypeError, ValueError):
             problems.append(f"surface {s.Name}: unreadable vertices")
             continue
-        if len(pts) < 3 or polygon_area3d(pts) <= MIN_PIECE_AREA:
-            problems.append(f"surface {s.Name}: degenerate ({len(pts)} vertices)")
+        if len(pts) < 3 or polygon_area3d(pts) <= MIN_PIECE_AREA or eplus_degenerate(pts):
+            problems.append(f"surface {s.Name}: degenerate for EnergyPlus ({len(pts)} vertices)")
+        elif _planar_dev(pts) > 2 * PIECE_PLANAR:
+            problems.append(f"surface {s.Name}: non-planar for EnergyPlus ({_planar_dev(pts):.4f} m out of plane)")
         by_zone.setdefault(s.Zone_Name.upper(), []).append(pts)
     for w in idf.idfobjects["FENESTRATIONSURFACE:DETAILED"]:
         names[w.Name.upper()] = names.get(w.Name.upper(), 0) + 1

@@ -213,3 +213,27 @@ def test_pieces_are_checked_as_written():
     pcs = idf.zone_pieces(zs[0], 0, {}, True)
     assert pcs and all(np.array_equal(p.points, np.round(p.points, idf.WRITE_DECIMALS)) for p in pcs)
     assert any(np.any(np.abs(p.points - 10.00004) < 1e-3) for p in pcs)
+
+
+def test_triangle_collinear_in_projection_is_degenerate_for_energyplus():
+    """A near-vertical sliver triangle (real Delfshaven wall): EnergyPlus projects it on XY,
+    finds a vertex collinear and, with 3 sides only, calls it degenerate (a severe error).
+    The writer fans it; the self-check flags such a surface."""
+    from lod2energy.exporters.eplus_enclosure import eplus_collinear, eplus_degenerate
+    tri = np.array([[4.207, 18.371, 9.367], [7.1675, 31.623, 0.0], [4.209, 18.38, 0.0]])
+    assert eplus_collinear(tri) == [1]
+    assert eplus_degenerate(tri)
+    assert not eplus_degenerate(np.array([[0, 0, 0], [1, 0, 0], [0, 0, 1.0]]))
+    out = idf.keep_corners([idf.Piece(tri, "wall", "Outdoors", 1.0, 0)])
+    assert out and not any(eplus_degenerate(p.points) for p in out)
+
+
+def test_out_of_plane_piece_is_written_as_triangles():
+    """A roof quad with one corner 4 cm up (1 cm off its Newell plane; EnergyPlus reports 1 cm
+    "out of line" as a severe error) becomes planar triangles."""
+    quad = np.array([[0, 0, 10.0], [8, 0, 10.0], [8, 6, 10.04], [0, 6, 10.0]])
+    out = idf.keep_corners([idf.Piece(quad, "roof", "Outdoors", 1.0, 0)])
+    assert len(out) == 4 and all(len(p.points) == 3 for p in out)
+    assert sum(polygon_area3d(p.points) for p in out) == pytest.approx(polygon_area3d(quad), rel=1e-3)
+    flat = idf.Piece(np.array([[0, 0, 10.0], [8, 0, 10.0], [8, 6, 10.0], [0, 6, 10.0]]), "roof", "Outdoors", 1.0, 0)
+    assert idf.keep_corners([flat]) == [flat]
