@@ -154,7 +154,9 @@ class FaceGraph:
 
     @property
     def status(self) -> str:
-        """"non-manifold", "open" or "watertight"."""
+        """"non-manifold", "open", "watertight", or "empty" (no face: nothing bounds a volume)."""
+        if self.n_faces == 0:
+            return "empty"
         if self.n_nonmanifold:
             return "non-manifold"
         if self.n_boundary:

@@ -118,3 +118,8 @@ def test_batched_graphs_equal_one_by_one():
         assert np.array_equal(a.edge_index, b.edge_index) and np.array_equal(a.mesh_edges, b.mesh_edges)
         assert np.array_equal(a.incidence, b.incidence) and a.face_ids == b.face_ids
         np.testing.assert_allclose(a.shell_volumes(), b.shell_volumes())
+
+
+def test_no_faces_is_empty_not_watertight():
+    g = face_graph(V, [])
+    assert g.n_faces == 0 and g.status == "empty"
