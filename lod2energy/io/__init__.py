@@ -77,6 +77,8 @@ def _register_builtin() -> None:
 
     register_format("CityJSON", (".json", ".city.json"), _cj)
     register_format("CityJSONSeq", (".jsonl", ".city.jsonl", ".cjseq"), _cj)
+    from lod2energy.io import citygml
+    register_format("CityGML", (".gml", ".xml"), citygml.read)
     try:  # mesh readers (POLY/OBJ/OFF) live in lod2energy.io.mesh
         from lod2energy.io import mesh
         mesh.register(register_format)

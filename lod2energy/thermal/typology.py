@@ -46,7 +46,7 @@ BUILDING_TYPES = ("single-family", "terraced", "multi-family", "apartment-block"
 _CRS_COUNTRY = {
     "28992": "NL", "7415": "NL",
     "25832": "DE", "25833": "DE", "31466": "DE", "31467": "DE", "31468": "DE", "31469": "DE",
-    "5677": "DE", "5678": "DE", "4647": "DE",
+    "5677": "DE", "5678": "DE", "4647": "DE", "5650": "DE", "5555": "DE", "5556": "DE",
     "31287": "AT", "31255": "AT", "31256": "AT", "31257": "AT",
     "2056": "CH", "21781": "CH", "5728": "CH",
     "3067": "FI", "3873": "FI", "3874": "FI", "3875": "FI", "3876": "FI", "3877": "FI",
@@ -55,14 +55,22 @@ _CRS_COUNTRY = {
 }
 
 
+#: CRS names of the German surveying authorities (AdV), as German CityGML tiles give them
+#: (``urn:adv:crs:ETRS89_UTM32*DE_DHHN2016_NH``, ``urn:adv:crs:DE_DHDN_3GK4*DE_DHN92_NH``).
+_ADV_CRS = re.compile(r"urn:adv:crs:", re.IGNORECASE)
+
+
 def country_from_crs(crs: Any) -> str | None:
-    """ISO country code guessed from an EPSG code in a CRS string (None when unknown)."""
+    """ISO country code guessed from an EPSG code in a CRS string, or an AdV CRS name (Germany);
+    None when unknown."""
     if not crs:
         return None
     m = re.findall(r"(\d{4,5})", str(crs))
     for code in reversed(m):
         if code in _CRS_COUNTRY:
             return _CRS_COUNTRY[code]
+    if _ADV_CRS.search(str(crs)):
+        return "DE"
     return None
 
 
