@@ -37,7 +37,8 @@ def iou_exact(Va, Ta, Vb, Tb, origin) -> float | None:
         return None
     inter = (a ^ b).volume()
     union = (a + b).volume()
-    return float(inter / union) if union > 0 else None
+    # floating-point booleans can give inter a hair above union: IoU is a ratio in [0, 1]
+    return min(1.0, float(inter / union)) if union > 0 else None
 
 
 def winding_number(Q: np.ndarray, V: np.ndarray, tris: np.ndarray, chunk: int = 2048) -> np.ndarray:
