@@ -395,15 +395,20 @@ class ZoneShell:
         ends = tuple(np.cumsum([len(r) for r in face.rings]).tolist())
         return pts, ends
 
+    def face_triangles(self, face: ZoneFace) -> np.ndarray:
+        """Triangles ``(t, 3)`` of one face (indices into ``vertices``)."""
+        idx = np.concatenate([np.asarray(r, dtype=np.intp) for r in face.rings])
+        pts, ends = self.face_points(face)
+        t = triangulate(pts, ends)
+        return idx[t] if len(t) else np.zeros((0, 3), dtype=np.intp)
+
     def triangles(self) -> tuple[np.ndarray, list[str]]:
         """Triangles of every face ``(t, 3)`` (vertex indices) and the face kind of each."""
         tris, kinds = [], []
         for f in self.faces:
-            idx = np.concatenate([np.asarray(r, dtype=np.intp) for r in f.rings])
-            pts, ends = self.face_points(f)
-            t = triangulate(pts, ends)
+            t = self.face_triangles(f)
             if len(t):
-                tris.append(idx[t])
+                tris.append(t)
                 kinds.extend([f.kind] * len(t))
         if not tris:
             return np.zeros((0, 3), dtype=np.intp), []

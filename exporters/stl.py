@@ -36,6 +36,8 @@ CROSS_WELD_TOL = 1e-3
 ZONE_WELD_TOL = 1e-3
 #: Distance (m) by which vertices of bodies that only touch are moved apart.
 SEPARATION = 2e-3
+#: A triangle lower than this (m) over its longest edge is a cap to flip away (flip_caps).
+CAP_HEIGHT = 1e-6
 #: Patch order (binary attribute = index).
 PATCHES = ("roof", "wall", "ground", "floor")
 
@@ -61,14 +63,25 @@ class StlOptions:
 
 
 def _zone_mesh(z: ZoneShell) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    tris, kinds = z.triangles()
-    codes = np.array([PATCHES.index(k) for k in kinds], dtype=np.intp)
+    # caps are flipped inside each face first: a run of collinear points shared by two
+    # faces makes each face's triangulation fan its caps onto the same chord, which then
+    # carries four triangles, and no neighbour across it can be told apart afterwards
+    tris, codes = [], []
+    for f in z.faces:
+        t = z.face_triangles(f)
+        if len(t):
+            t, _ = flip_caps(z.vertices, t, np.zeros(len(t), dtype=np.intp))
+            tris.append(t)
+            codes.append(np.full(len(t), PATCHES.index(f.kind), dtype=np.intp))
+    if not tris:
+        return z.vertices, np.zeros((0, 3), dtype=np.intp), np.zeros(0, dtype=np.intp)
+    tris, codes = np.concatenate(tris), np.concatenate(codes)
     tris, codes = cancel_fins(tris, codes)
     tris, codes = flip_caps(z.vertices, tris, codes)
     return z.vertices, tris, codes
 
 
-def flip_caps(v: np.ndarray, t: np.ndarray, c: np.ndarray, rel: float = 1e-9
+def flip_caps(v: np.ndarray, t: np.ndarray, c: np.ndarray, rel: float = 1e-9, height: float = CAP_HEIGHT
               ) -> tuple[np.ndarray, np.ndarray]:
     """Remove zero-area "cap" triangles by flipping their longest edge.
 
@@ -85,7 +98,12 @@ def flip_caps(v: np.ndarray, t: np.ndarray, c: np.ndarray, rel: float = 1e-9
         Closed, consistently wound triangles.
     c : (t,) int
     rel : float
-        A triangle is a cap when twice its area is under ``rel`` times its longest edge squared.
+        A triangle is a cap when twice its area is under ``rel`` times its longest edge squared
+        (its height over that edge under ``rel`` times the edge) ...
+    height : float, m
+        ... or its height over its longest edge is under ``height``: such a triangle is flat
+        once its corners are stored as float32 (binary STL; ~2e-6 m resolution 30 m from the
+        local origin).
 
     Returns
     -------
@@ -98,7 +116,8 @@ def flip_caps(v: np.ndarray, t: np.ndarray, c: np.ndarray, rel: float = 1e-9
         e = np.stack([P[:, 1] - P[:, 0], P[:, 2] - P[:, 1], P[:, 0] - P[:, 2]], axis=1)
         L2 = (e ** 2).sum(axis=2)
         a2 = np.linalg.norm(np.cross(P[:, 1] - P[:, 0], P[:, 2] - P[:, 0]), axis=1)
-        caps = np.nonzero(a2 < rel * L2.max(axis=1))[0]
+        Lmax = np.sqrt(L2.max(axis=1))
+        caps = np.nonzero(a2 < np.maximum(rel * Lmax, height) * Lmax)[0]
         done = False
         for k in caps:
             i = int(np.argmax(L2[k]))

@@ -284,3 +284,48 @@ def test_one_failing_building_does_not_stop_the_batch(tmp_path, monkeypatch):
     by = {r.building_ids[0]: r for r in res}
     assert not by[bad.id].ok and "synthetic failure" in by[bad.id].problems[0]
     assert by[good.id].ok and Path(by[good.id].path).exists()
+
+
+def test_caps_of_two_faces_on_one_chord_are_flipped_face_by_face(monkeypatch):
+    # The ground and the front wall share the run A-P-Q-B, whose inner points lie 50 nm off
+    # the line (Berlin LoD2 ground outlines). Both faces triangulate into caps fanned onto
+    # the chord A-B, which so carries four triangles: a non-manifold STL, and no single
+    # neighbour across A-B to flip a cap into. Flipped face by face, it closes.
+    from lod2energy.exporters.common import ZoneFace, ZoneShell
+    e = 5e-8
+    v = np.array([[0, 0, 0], [6, -e, 0], [13, -e, 0], [20, 0, 0], [20, 10, 0], [0, 10, 0],
+                  [0, 0, 6], [20, 0, 6], [20, 10, 6], [0, 10, 6]], dtype=float)
+    A, P, Q, B, C, D, A2, B2, C2, D2 = range(10)
+    faces = {  # hand-made triangulations, each face wound outward
+        "ground": [(A, D, C), (A, C, B), (A, B, Q), (A, Q, P)],
+        "front": [(A, P, Q), (A, Q, B), (A, B, B2), (A, B2, A2)],
+        "back": [(C, D, D2), (C, D2, C2)], "left": [(D, A, A2), (D, A2, D2)],
+        "right": [(B, C, C2), (B, C2, B2)], "roof": [(A2, B2, C2), (A2, C2, D2)]}
+    kind = {"ground": "ground", "roof": "roof"}
+    zfaces = tuple(ZoneFace((tuple(sorted({i for t in tris for i in t})),), kind.get(n, "wall"), None, 1.0, k)
+                   for k, (n, tris) in enumerate(faces.items()))
+    tri_of = {f.index: np.array(faces[n], dtype=np.intp) for f, n in zip(zfaces, faces)}
+    monkeypatch.setattr(ZoneShell, "face_triangles", lambda self, f: tri_of[f.index].copy())
+    z = ZoneShell("chord", "chord", v, zfaces, 2.8, 0.0)
+    all_tris = np.concatenate(list(tri_of.values()))
+    assert not trimesh.Trimesh(v, all_tris, process=False).is_watertight       # A-B in four triangles
+    _, t, codes = stl._zone_mesh(z)
+    tm = trimesh.Trimesh(v, t, process=False)
+    assert tm.is_watertight and tm.is_winding_consistent and tm.volume == pytest.approx(1200.0)
+    P3 = v[t]
+    h2 = np.linalg.norm(np.cross(P3[:, 1] - P3[:, 0], P3[:, 2] - P3[:, 0]), axis=1)
+    assert h2.min() > 1e-3                                                    # no cap left
+    assert np.bincount(codes, minlength=3)[:3].tolist() == [2, 10, 4]        # roof, wall, ground kept
+
+
+@pytest.mark.skipif(not (DATA / "citygml-real").exists(), reason="shared CityGML tiles not available")
+def test_berlin_tile_stls_are_closed(tmp_path):
+    # real LoD2 CityGML: ground outlines with collinear runs shared with walls (see above)
+    from lod2energy.config import Tolerances
+    from lod2energy.io import read
+    from lod2energy.pipeline import repair_one
+    _, feats = read(str(DATA / "citygml-real" / "berlin" / "3920_5818.gml"))
+    bs = [energy_ready(repair_one(b, Tolerances())) for b in feats if hasattr(b, "vertices")]
+    res = stl.write(bs, tmp_path)
+    assert len(res) == len(bs) >= 70
+    assert [r.building_ids for r in res if not r.ok] == []
