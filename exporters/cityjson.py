@@ -298,12 +298,8 @@ def on_grid(b: Building, transform: Mapping) -> Building:
 
 
 def _crs_for_version(crs: str, version: str) -> str:
-    import re
-    m = re.search(r"EPSG(?:/0/|::?)(\d+)", crs or "")
-    if not m:
-        return crs
-    code = m.group(1)
-    return f"urn:ogc:def:crs:EPSG::{code}" if version == "1.0" else f"https://www.opengis.net/def/crs/EPSG/0/{code}"
+    from lod2energy.crs import cityjson_reference_system
+    return cityjson_reference_system(crs, version) or crs
 
 
 def _header_fixes(md: dict, ext: dict, version: str) -> list[str]:

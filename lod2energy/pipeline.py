@@ -164,11 +164,19 @@ def _repair_attributes(b: Building) -> Building:
     return replace(b, objects=(root,) + b.objects[1:])
 
 
+#: Output suffixes of ``lod2energy repair`` (the writer picks CityJSON or CityJSONSeq by them).
+REPAIR_SUFFIXES = (".json", ".jsonl", ".cjseq")
+
+
 def repair_file(a, tol: Tolerances) -> int:
     """``lod2energy repair IN -o OUT``: every CityObject kept, defective buildings replaced by solids."""
     from lod2energy.io import cityjson
     from lod2energy.repair import dataset_table, repair_features, repair_info
 
+    if not a.output.lower().endswith(REPAIR_SUFFIXES):
+        _err(f"repair writes CityJSON (.json, .city.json) or CityJSONSeq (.jsonl, .city.jsonl): "
+             f"cannot write {a.output!r}")
+        return EXIT_UNUSABLE
     opened = _open_input(a.input)
     if opened is None:
         return EXIT_UNUSABLE

@@ -122,6 +122,21 @@ def test_repair_command_closes_an_open_box_and_keeps_other_objects(tmp_path, cap
     assert g.type == "Solid" and got["b1"].root.attributes["repair_stage"] == b["stage"]
 
 
+def test_repair_refuses_an_output_it_cannot_write(tmp_path, capsys):
+    out = tmp_path / "out.gml"
+    rc, _, err = run(["repair", "-q", write(tmp_path, box_doc()), "-o", str(out)], capsys)
+    assert rc == 2 and "out.gml" in err and not out.exists()
+
+
+def test_repaired_file_spells_the_crs_as_its_version_wants(tmp_path, capsys):
+    doc = box_doc()
+    doc.setdefault("metadata", {})["referenceSystem"] = "urn:ogc:def:crs:EPSG::25833"
+    out = tmp_path / "out.city.json"
+    rc, _, _ = run(["repair", "-q", write(tmp_path, doc), "-o", str(out)], capsys)
+    assert rc == 0
+    assert json.loads(out.read_text())["metadata"]["referenceSystem"] == "https://www.opengis.net/def/crs/EPSG/0/25833"
+
+
 def test_export_runs_the_whole_pipeline_on_the_bundled_example(tmp_path, capsys):
     import csv
     from pathlib import Path

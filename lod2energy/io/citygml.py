@@ -44,6 +44,7 @@ import numpy as np
 
 from lod2energy.errors import FormatNotSupportedError, InputError
 from lod2energy.io.cityjson import build_feature
+from lod2energy.crs import cityjson_reference_system
 from lod2energy.model import Building, CityModel, FeatureError, frozen_mapping
 
 XLINK_HREF = "{http://www.w3.org/1999/xlink}href"
@@ -173,7 +174,9 @@ def read(path: str, **_) -> "tuple[CityModel | None, Iterator[Building | Feature
             raise FormatNotSupportedError(f"{path}: CityGML {version} is not supported (1.0 and 2.0 are)")
     except InputError as e:
         return None, iter([FeatureError(None, e.code, str(e))])
-    md = {"referenceSystem": crs} if crs else {}
+    # CityJSON's spelling of the CRS (AdV names such as urn:adv:crs:ETRS89_UTM32*DE_DHHN2016_NH
+    # become their EPSG code), the srsName as written when no EPSG code is recognised
+    md = {"referenceSystem": cityjson_reference_system(crs)} if crs else {}
     model = CityModel(version="2.0", metadata=frozen_mapping(md), source=path, format="CityGML")
     return model, _features(path)
 

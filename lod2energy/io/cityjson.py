@@ -17,6 +17,7 @@ from typing import Any, Iterable, Iterator, Mapping
 
 import numpy as np
 
+from lod2energy.crs import cityjson_reference_system
 from lod2energy.errors import FormatNotSupportedError, InputError
 from lod2energy.model import (
     MULTISOLID_TYPES, SOLID_TYPES, SURFACE_TYPES, Building, CityModel, CityObject, FeatureError,
@@ -505,6 +506,8 @@ def _header_json(model: CityModel, version: str) -> dict:
     d.update(_plain(model.extra))
     if model.metadata:
         d["metadata"] = _plain(model.metadata)
+        if d["metadata"].get("referenceSystem"):  # the spelling the written version's schema wants
+            d["metadata"]["referenceSystem"] = cityjson_reference_system(d["metadata"]["referenceSystem"], version)
     if model.extensions:
         d["extensions"] = _plain(model.extensions)
     if model.appearance:

@@ -1,0 +1,57 @@
+"""Coordinate reference system names: EPSG codes from the spellings found in city models.
+
+CityJSON 1.1/2.0 want ``https://www.opengis.net/def/crs/EPSG/0/<code>``, CityJSON 1.0
+``urn:ogc:def:crs:EPSG::<code>``; CityGML files use OGC URNs, ``EPSG:<code>``, compound
+URNs (``urn:ogc:def:crs,crs:EPSG::25832,crs:EPSG::7837``) or the German AdV names
+(``urn:adv:crs:ETRS89_UTM32*DE_DHHN2016_NH``, ``urn:adv:crs:DE_DHDN_3GK4*DE_DHN92_NH``).
+
+>>> epsg_code("urn:adv:crs:ETRS89_UTM32*DE_DHHN2016_NH*GCG2016")
+25832
+>>> cityjson_reference_system("urn:ogc:def:crs:EPSG::25833", "2.0")
+'https://www.opengis.net/def/crs/EPSG/0/25833'
+"""
+from __future__ import annotations
+
+import re
+from typing import Any
+
+_EPSG = re.compile(r"EPSG(?:/[\d.]+/|:[\d.]*:|:)(\d{4,6})", re.IGNORECASE)
+#: AdV (German surveying authorities) CRS names -> the EPSG code of their horizontal part.
+#: The height reference (DHHN92 / DHHN2016) has no place in a single CityJSON code.
+_ADV = (
+    (re.compile(r"ETRS89_UTM(3[1-3])", re.IGNORECASE), lambda m: 25800 + int(m.group(1))),
+    (re.compile(r"DE_DHDN_3GK([2-5])", re.IGNORECASE), lambda m: 31464 + int(m.group(1))),
+)
+
+
+def epsg_code(crs: Any) -> int | None:
+    """The (first, i.e. horizontal) EPSG code a CRS name stands for, or None.
+
+    Parameters
+    ----------
+    crs : str or None
+        A CRS name as written in a CityJSON ``referenceSystem`` or a CityGML ``srsName``.
+    """
+    if not crs:
+        return None
+    s = str(crs)
+    m = _EPSG.search(s)
+    if m:
+        return int(m.group(1))
+    if "adv:crs" in s.lower():
+        for rx, code in _ADV:
+            m = rx.search(s)
+            if m:
+                return code(m)
+    return None
+
+
+def cityjson_reference_system(crs: Any, version: str = "2.0") -> str | None:
+    """``crs`` spelled as CityJSON ``version`` wants it; the input unchanged when no EPSG
+    code is recognised (None for no CRS)."""
+    if not crs:
+        return None
+    code = epsg_code(crs)
+    if code is None:
+        return str(crs)
+    return f"urn:ogc:def:crs:EPSG::{code}" if version == "1.0" else f"https://www.opengis.net/def/crs/EPSG/0/{code}"
