@@ -43,13 +43,18 @@ TILES = [
     "rotterdam/fme_solid_buildings_lod_missing.json",
     "rotterdam/fme_solid_buildings_lod_null.json",
     "delft-3dfier-lod1/delft.json",
+    "citygml-real/berlin/3900_5819.gml",
+    "citygml-real/berlin/3920_5818.gml",
+    "citygml-real/berlin/3920_5820.gml",
+    "citygml-real/nrw/LoD2_32_280_5657_1_NW.gml",
+    "citygml-real/munich/LOD2_4424_5482_solid.gml",
 ]
 
 
 def run_tile(args) -> dict:
     rel, timeout = args
     sys.path.insert(0, str(REPO))
-    from lod2energy.io.cityjson import read
+    from lod2energy.io import read
     from lod2energy.model import Building
     from lod2energy.repair.pipeline import dataset_table, repair_building
     from lod2energy.validate.checks import validate_building

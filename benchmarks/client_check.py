@@ -15,8 +15,9 @@ Usage (from the repository root)::
     python benchmarks/client_check.py [TILE ...] [--idf] [--run N] [--days D] [--jobs 2]
                                       [--out FILE.md] [--keep DIR]
 
-Without TILE: every real CityJSON / CityJSONSeq file under ../shared/data (not the val3dity
-conformance files, but the Delfshaven tile kept among them). Prints a markdown table; exit code 1 when any file failed its client.
+Without TILE: every real CityJSON / CityJSONSeq file under ../shared/data and the real
+CityGML tiles of ``citygml-real`` (not the val3dity / QIE conformance files, but the
+Delfshaven tile kept among them). Prints a markdown table; exit code 1 when any file failed its client.
 """
 from __future__ import annotations
 
@@ -33,13 +34,13 @@ from pathlib import Path
 
 REPO = Path(__file__).resolve().parents[1]
 DATA = REPO.parent / "shared" / "data"
-SKIP_DIRS = {"val3dity-tests", "citygml-qie-3dvalidation", "typology-teaser", "weather", "citygml-real"}
+SKIP_DIRS = {"val3dity-tests", "citygml-qie-3dvalidation", "typology-teaser", "weather"}
 
 
 def default_tiles() -> list[Path]:
     out = []
-    for p in sorted(DATA.glob("*/*")):
-        if p.parent.name in SKIP_DIRS or not p.name.endswith((".json", ".jsonl")):
+    for p in sorted(DATA.glob("*/*")) + sorted(DATA.glob("citygml-real/*/*.gml")):
+        if p.parent.name in SKIP_DIRS or not p.name.endswith((".json", ".jsonl", ".gml")):
             continue
         out.append(p)
     # the whole Delfshaven tile sits with val3dity's files but is a real city tile
