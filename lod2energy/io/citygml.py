@@ -25,7 +25,8 @@ Rings: ``gml:posList`` (``srsDimension`` on it or an enclosing geometry, default
 is not closed is kept as given and reported as 103 (RING_NOT_CLOSED).
 
 CRS: the ``srsName`` of the document's ``gml:Envelope``, else the first ``srsName`` in the
-file, as ``metadata.referenceSystem``. The model's ``version`` is the CityJSON version the
+file, as ``metadata.referenceSystem`` in CityJSON's spelling (:mod:`lod2energy.crs`: OGC URNs
+and AdV names become ``https://www.opengis.net/def/crs/EPSG/0/<code>``). The model's ``version`` is the CityJSON version the
 data are written back as ("2.0"); ``format`` is "CityGML".
 
 Bad input never raises: XML that is not well-formed is one file-level error 901 (the file is
