@@ -918,6 +918,93 @@ def _construction_name(kind: str, boundary: str, u: float) -> str:
     return f"{_KIND_TYPE[kind]}_{boundary}_U{u:.3f}".replace(".", "p")
 
 
+#: EnergyPlus puts a zone's interior solar gains on its floors, and counts a surface as one
+#: only when it faces down more than 30 degrees past vertical (tilt > 120 degrees): outward
+#: n_z below this. A zone without one stops with a severe error.
+FLOOR_NZ = -0.5
+
+
+def floorless_parts(b: Building, lod: str | None = None) -> list[str]:
+    """BuildingParts of ``b`` without a face EnergyPlus can take as a floor (n_z < -0.5).
+
+    Typically a dormer or roof superstructure modelled as its own part, whose underside
+    follows a roof steeper than 60 degrees.
+    """
+    out = []
+    for z in zone_shells(b, np.zeros(3), lod):
+        obj = next((o for o in b.objects if o.id == z.object_id), None)
+        if obj is None or obj.type != "BuildingPart" or not z.faces:
+            continue
+        nz = min(unit(newell_normal(z.vertices[list(f.rings[0])]))[2] for f in z.faces)
+        if not nz < FLOOR_NZ:
+            out.append(z.object_id)
+    return out
+
+
+def merge_floorless_parts(b: Building, lod: str | None = None) -> tuple[Building, list[str]]:
+    """``b`` with no floorless part (:func:`floorless_parts`) left as a zone of its own.
+
+    A dormer is no separately conditioned zone, and EnergyPlus cannot distribute solar gains
+    in a zone without a floor. Its solid is united with the part it sits on when the union
+    is a valid solid (the repair ladder's criterion); otherwise it is left out of the IDF
+    (such parts are small: their underside follows a roof steeper than 60 degrees), and the
+    roof under it is then written as an outdoor roof.
+
+    Returns
+    -------
+    building : Building
+        For the IDF only; the other exports keep the parts.
+    warnings : list of str
+    """
+    from lod2energy.repair.parts import merge_parts, touching_part
+
+    lod = lod if lod is not None else b.default_lod()
+    warnings: list[str] = []
+    for _ in range(len(b.objects)):
+        todo = floorless_parts(b, lod)
+        if not todo:
+            break
+        pid = todo[0]
+        host = touching_part(b, pid, lod)
+        merged = merge_parts(b, {pid, host}, lod=lod, into=host) if host else b
+        if merged is not b:
+            b = merged
+            warnings.append(f"part {pid} has no surface EnergyPlus can take as a floor: united with {host} "
+                            "into one zone")
+            continue
+        objs = tuple(replace(o, geometries=tuple(g for g in o.geometries if not (g.is_polygonal and g.lod == lod)))
+                     if o.id == pid else o for o in b.objects)
+        b = replace(b, objects=objs)
+        warnings.append(f"part {pid} has no surface EnergyPlus can take as a floor (none faces down more than "
+                        "30 degrees past vertical) and no valid union with the part it sits on: left out of the IDF")
+    return b, warnings
+
+
+def with_floor(pieces: list[Piece], tilt_band: float = 0.05) -> tuple[list[Piece], int]:
+    """Pieces of a zone with at least one Floor: EnergyPlus needs one in every zone.
+
+    A zone without ground or floor surfaces (a roof superstructure whose underside sits on
+    the main roof) has EnergyPlus guess its floor. Its most downward-facing pieces (outward
+    ``n_z`` within ``tilt_band`` of the lowest, and under ``FLOOR_NZ``) are written as
+    Floor, boundary condition unchanged.
+
+    Returns
+    -------
+    pieces : list of Piece
+    changed : int
+        How many pieces became Floor (0 when the zone had a floor).
+    """
+    if not pieces or any(p.kind in ("ground", "floor") for p in pieces):
+        return pieces, 0
+    nz = np.array([unit(newell_normal(p.points))[2] for p in pieces])
+    low = float(nz.min())
+    if not low < FLOOR_NZ:  # EnergyPlus would not take it as a floor either
+        return pieces, 0
+    pick = (nz <= low + tilt_band) & (nz < FLOOR_NZ)
+    out = [replace(p, kind="floor") if k else p for p, k in zip(pieces, pick)]
+    return out, int(pick.sum())
+
+
 def render_idf(zones: Sequence[ZoneShell], pieces: Sequence[list[Piece]], delta: np.ndarray,
                offset: np.ndarray, options: IdfOptions, building_ids: Sequence[str],
                shading: Sequence[np.ndarray] = (), site: dict | None = None,
@@ -940,6 +1027,10 @@ def render_idf(zones: Sequence[ZoneShell], pieces: Sequence[list[Piece]], delta:
     wall_area = win_area = 0.0
     b_name = reg.name(building_ids[0] if len(building_ids) == 1 else "Dataset", 80)
     for z, zp in zip(zones, pieces):
+        zp, floored = with_floor(zp)
+        if floored:
+            warnings.append(f"zone {z.object_id}: no floor surface; its {floored} most downward-facing "
+                            "surface(s) written as Floor (EnergyPlus needs a floor in every zone)")
         zname = reg.name(z.object_id, 60)
         zone_ctx.append({"name": zname, "comment": comment_text(z.object_id),
                          "volume": _fmt(max(_pieces_volume(zp), 0.0), 3),
@@ -1073,6 +1164,9 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
     blist = [b for b in buildings if b.type in BUILDING_TYPES and b.energy_objects(options.lod)]
     if not blist:
         return []
+    merge_notes: dict[int, list[str]] = {}
+    for bi, b in enumerate(blist):
+        blist[bi], merge_notes[bi] = merge_floorless_parts(b, options.lod)
     origin = local_origin(blist)
     zones: list[ZoneShell] = []
     zones_of: dict[int, list[int]] = {}
@@ -1122,6 +1216,7 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
             offset, stats, warns = render(g, path, None)
             problems = self_check(path)
             warns = list(warns) + ["party walls not split: the split zone fails EnergyPlus's enclosure test"]
+        warns = [w for i in g for w in merge_notes[i]] + list(warns)
         res = ExportResult(ids, str(path), not problems, tuple(problems),
                            tuple(float(x) for x in offset), tuple(warns), stats)
         if options.run:
@@ -1131,7 +1226,8 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
                 # walls: write the building again with whole-face party walls and re-run
                 offset, stats, warns = render(g, path, None)
                 problems = self_check(path)
-                warns = list(warns) + ["party walls not split: EnergyPlus found the split zone not enclosed"]
+                warns = ([w for i in g for w in merge_notes[i]] + list(warns)
+                         + ["party walls not split: EnergyPlus found the split zone not enclosed"])
                 res = ExportResult(ids, str(path), not problems, tuple(problems),
                                    tuple(float(x) for x in offset), tuple(warns), stats)
                 res = _run(res, path, weather, options)

@@ -215,7 +215,14 @@ def face_graph(vertices: np.ndarray, surfaces: Sequence[Surface], tol: Tolerance
     if nf == 0:
         return _empty_graph(face_ids)
     V = np.asarray(vertices, dtype=np.float64)
-    canon = snap_ids(V, tol.snap_tol, vertex_groups) if len(V) else np.zeros(0, np.intp)
+    # only the vertices the faces use snap: an unused vertex (the input's, kept in the vertex
+    # list after a repair) must not chain two vertices of the shell into one
+    canon = np.arange(len(V))
+    ring_arrays = [np.asarray(r, dtype=np.intp) for s in surfaces for r in s.rings]
+    used = np.unique(np.concatenate(ring_arrays)) if ring_arrays and len(V) else np.zeros(0, np.intp)
+    if len(used):
+        groups = None if vertex_groups is None else np.asarray(vertex_groups)[used]
+        canon[used] = used[snap_ids(V[used], tol.snap_tol, groups)]
     shell_of_face = np.zeros(nf, np.intp) if shell_of_face is None else np.asarray(shell_of_face)
 
     # flatten every ring: element arrays (vertex id, ring id), ring arrays (face, is_outer)

@@ -132,3 +132,61 @@ def real_buildings(rel: str, ids: list[str] | None = None, n: int | None = None,
         if n is not None and len(out) >= n:
             break
     return out
+
+
+def _outward(polys):
+    """Each ring oriented away from the (convex) part's centroid."""
+    c = np.mean([p for poly in polys for p in poly], axis=0)
+    out = []
+    for poly in polys:
+        p = np.asarray(poly, float)
+        n = np.sum(np.cross(p, np.roll(p, -1, axis=0)), axis=0)
+        out.append(p if n @ (p.mean(axis=0) - c) > 0 else p[::-1])
+    return out
+
+
+def parts_with_semantics(parts, id="dormer_house"):
+    """A Building of BuildingParts from ``[(polygons, semantic types), ...]`` (one ring each)."""
+    from types import MappingProxyType
+    from lod2energy.model import Building, CityObject, Geometry, Shell, Solid, Surface
+    verts, index, objs, kids = [], {}, [], []
+    for k, (polys, types) in enumerate(parts):
+        faces = []
+        for i, ring in enumerate(_outward(polys)):
+            ids = []
+            for p in ring:
+                key = tuple(round(float(x), 9) for x in p)
+                ids.append(index.setdefault(key, len(verts)))
+                if ids[-1] == len(verts):
+                    verts.append(key)
+            faces.append(Surface.from_lists([ids], i))
+        sem = tuple(MappingProxyType({"type": t}) for t in types)
+        pid = f"{id}-part{k}"
+        kids.append(pid)
+        objs.append(CityObject(pid, "BuildingPart", (Geometry("Solid", "2", (Solid((Shell(tuple(faces)),)),), sem),),
+                               parents=(id,)))
+    return Building(id, "Building", np.asarray(verts, float), (CityObject(id, "Building", (), children=tuple(kids)),
+                                                               *objs))
+
+
+def steep_house_with_dormer(dormer_x=(3.0, 6.0)):
+    """A 10 x 8 m house, eaves 3 m, roofs pitched 70 degrees; a prism dormer on the south roof
+    whose underside lies in the roof (outward n_z = -cos 70 = -0.34: no floor for EnergyPlus)."""
+    t = np.tan(np.radians(70))
+    ridge = 3 + 4 * t
+    house = [[(0, 0, 0), (10, 0, 0), (10, 8, 0), (0, 8, 0)],
+             [(0, 0, 3), (10, 0, 3), (10, 4, ridge), (0, 4, ridge)],
+             [(0, 8, 3), (10, 8, 3), (10, 4, ridge), (0, 4, ridge)],
+             [(0, 0, 0), (10, 0, 0), (10, 0, 3), (0, 0, 3)], [(0, 8, 0), (10, 8, 0), (10, 8, 3), (0, 8, 3)],
+             [(0, 0, 0), (0, 8, 0), (0, 8, 3), (0, 4, ridge), (0, 0, 3)],
+             [(10, 0, 0), (10, 8, 0), (10, 8, 3), (10, 4, ridge), (10, 0, 3)]]
+    house_t = ["GroundSurface", "RoofSurface", "RoofSurface"] + ["WallSurface"] * 4
+    x0, x1 = dormer_x
+    y0, top = 1.0, 8.0
+    zb, y1 = 3 + y0 * t, (top - 3) / t
+    dormer = [[(x0, y0, zb), (x1, y0, zb), (x1, y1, top), (x0, y1, top)],      # underside, in the roof
+              [(x0, y0, top), (x1, y0, top), (x1, y1, top), (x0, y1, top)],
+              [(x0, y0, zb), (x1, y0, zb), (x1, y0, top), (x0, y0, top)],
+              [(x0, y0, zb), (x0, y0, top), (x0, y1, top)], [(x1, y0, zb), (x1, y0, top), (x1, y1, top)]]
+    dormer_t = ["WallSurface", "RoofSurface", "WallSurface", "WallSurface", "WallSurface"]
+    return house, house_t, dormer, dormer_t

@@ -9,7 +9,8 @@ import sqlite3
 
 import pytest
 
-from export_helpers import DATA, EPW, energy_ready, real_buildings, two_part_building
+from export_helpers import (DATA, EPW, energy_ready, parts_with_semantics, real_buildings, steep_house_with_dormer,
+                            two_part_building)
 from factories import box
 
 from lod2energy import energyplus
@@ -234,3 +235,15 @@ def test_enclosure_emulation_agrees_with_energyplus(tmp_path, weather, w):
     assert bool(rr.err.not_enclosed) == bool(enclosure_defects(polys))
     if w == 0.01:
         assert rr.err.not_enclosed  # the case shows something: EnergyPlus does reject it
+
+
+def test_dormers_without_a_floor_run_clean(tmp_path, weather):
+    # EnergyPlus stops with a severe error on a zone with no surface facing down more than
+    # 30 degrees past vertical (it puts interior solar gains on the floor): dormer parts
+    # whose underside follows a 70-degree roof join the house's zone
+    house, ht, dormer, dt = steep_house_with_dormer()
+    second = [[(x + 4, y, z) for x, y, z in r] for r in dormer]
+    b = energy_ready(parts_with_semantics([(house, ht), (dormer, dt), (second, dt)]))
+    r = idf.write([b], tmp_path, _opts(), weather=weather)[0]
+    assert r.ok, r.problems
+    assert r.severe_errors == 0 and r.not_enclosed == ()

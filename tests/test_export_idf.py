@@ -10,7 +10,8 @@ import re
 import numpy as np
 import pytest
 
-from export_helpers import DATA, energy_ready, l_shaped, real_buildings, shifted, two_part_building
+from export_helpers import (DATA, energy_ready, l_shaped, parts_with_semantics, real_buildings, shifted,
+                            steep_house_with_dormer, two_part_building)
 from factories import box, gabled_house
 
 from lod2energy import energyplus
@@ -263,3 +264,39 @@ def test_real_buildings_pass_self_check(tmp_path, rel, multipart, n):
     assert not bad
     for r in res:
         assert r.stats["surfaces"] >= 5 and np.all(np.isfinite(r.offset))
+
+
+# --------------------------------------------------------------------------- zones without a floor
+
+def test_a_dormer_without_a_floor_joins_the_zone_it_sits_on(tmp_path):
+    house, ht, dormer, dt = steep_house_with_dormer()
+    b = energy_ready(parts_with_semantics([(house, ht), (dormer, dt)]))
+    assert idf.floorless_parts(b) == ["dormer_house-part1"]
+    merged, notes = idf.merge_floorless_parts(b)
+    assert idf.floorless_parts(merged) == [] and "united with dormer_house-part0" in notes[0]
+    assert [o.id for o, _, _ in merged.energy_objects()] == ["dormer_house-part0"]
+    assert [o.id for o, _, _ in b.energy_objects()] == ["dormer_house-part0", "dormer_house-part1"]  # input kept
+    res = idf.write([b], tmp_path)
+    assert res[0].ok, res[0].problems
+    text = open(res[0].path).read()
+    assert text.count("\nZone,") == 1 and any("united with" in w for w in res[0].warnings)
+
+
+def test_a_floorless_part_that_touches_nothing_is_left_out():
+    house, ht, dormer, dt = steep_house_with_dormer()
+    lifted = [[(x, y, z + 20) for x, y, z in r] for r in dormer]
+    b = energy_ready(parts_with_semantics([(house, ht), (lifted, dt)]))
+    merged, notes = idf.merge_floorless_parts(b)
+    assert [o.id for o, _, _ in merged.energy_objects()] == ["dormer_house-part0"]
+    assert "left out of the IDF" in notes[0]
+
+
+def test_a_zone_without_ground_label_gets_its_downward_face_as_floor():
+    pieces = [idf.Piece(np.array(p, float), k, "Outdoors", 0.3, i) for i, (p, k) in enumerate([
+        ([(0, 0, 0), (0, 1, 0), (1, 1, 0), (1, 0, 0)], "wall"),             # faces down, labelled wall
+        ([(0, 0, 1), (1, 0, 1), (1, 1, 1), (0, 1, 1)], "roof")])]
+    out, n = idf.with_floor(pieces)
+    assert n == 1 and [p.kind for p in out] == ["floor", "roof"]
+    assert idf.with_floor(out) == (out, 0)                                   # a floor already: unchanged
+    steep = [idf.Piece(np.array([(0, 0, 0), (1, 0, 0), (1, 1, 2.5)], float), "wall", "Outdoors", 0.3, 0)]
+    assert idf.with_floor(steep)[1] == 0                                     # EnergyPlus would not take it

@@ -123,3 +123,17 @@ def test_batched_graphs_equal_one_by_one():
 def test_no_faces_is_empty_not_watertight():
     g = face_graph(V, [])
     assert g.n_faces == 0 and g.status == "empty"
+
+
+def test_an_unused_vertex_does_not_chain_two_vertices_into_one():
+    # roof corners 1.2 mm apart (> snap_tol) with an unused vertex between them (the input's
+    # vertex left in the list by a repair): they stay two vertices
+    v = np.vstack([V, V[4] + [0, 0, 0.0012], V[4] + [0, 0, 0.0006]])
+    faces = BOX_FACES + [[[4, 8, 5]]]                                          # a sliver on edge 4-5
+    g = face_graph(v, surfaces(faces))
+    g_chained = face_graph(np.vstack([V, V[4] + [0, 0, 0.0012]]), surfaces(faces))
+    assert g.n_faces == g_chained.n_faces == 7
+    snapped_if_chained = snap_ids(v, 0.001)
+    assert snapped_if_chained[8] == snapped_if_chained[9] == 4                 # all three, transitively
+    # with 9 unused, 8 stays a vertex of its own: the sliver keeps three corners
+    assert g.x[6, 0] > 0 and g_chained.x[6, 0] > 0

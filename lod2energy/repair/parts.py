@@ -13,7 +13,7 @@ import numpy as np
 
 from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.model import Building, Geometry, Shell, Solid, Surface
-from lod2energy.repair._mesh import Face, PolyMesh, compact, merge_coplanar, triangulate_mesh
+from lod2energy.repair._mesh import Face, PolyMesh, compact, merge_coplanar, topology, triangulate_mesh
 
 
 def _part_meshes(b: Building, lod):
@@ -62,9 +62,61 @@ def merge_overlapping_parts(b: Building, tol: Tolerances = DEFAULT, lod=None) ->
     pairs = overlapping_parts(b, lod)
     if not pairs:
         return b
+    return merge_parts(b, {a for a, _, _ in pairs} | {c for _, c, _ in pairs}, tol, lod)
+
+
+def touching_part(b: Building, part_id: str, lod=None, gap: float = 0.01) -> str | None:
+    """The BuildingPart whose solid touches or overlaps ``part_id``'s solid (within ``gap``),
+    the largest by volume when several do; None when it stands alone.
+
+    Parameters
+    ----------
+    gap : float, m
+        Largest distance between two solids that still touch.
+    """
+    lod = lod if lod is not None else b.default_lod()
     parts = _part_meshes(b, lod)
-    ids = {a for a, _, _ in pairs} | {c for _, c, _ in pairs}
-    parts = [p for p in parts if p[0].id in ids]
+    mine = [p for p in parts if p[0].id == part_id]
+    if not mine:
+        return None
+    m0 = mine[0][3]
+    lo0, hi0 = m0.vertices.min(axis=0) - gap, m0.vertices.max(axis=0) + gap
+    origin = m0.vertices.mean(axis=0)
+    a = _manifold(m0, origin)
+    if a is None:
+        return None
+    best, best_vol = None, -1.0
+    for o, _, _, m in parts:
+        if o.id == part_id or np.any(m.vertices.max(axis=0) < lo0) or np.any(m.vertices.min(axis=0) > hi0):
+            continue
+        other = _manifold(m, origin)
+        # touching solids stay two bodies for manifold3d's booleans: ask for the gap instead
+        if other is None or a.min_gap(other, 2 * gap) > gap:
+            continue
+        if other.volume() > best_vol:
+            best, best_vol = o.id, other.volume()
+    return best
+
+
+def merge_parts(b: Building, ids, tol: Tolerances = DEFAULT, lod=None, into: str | None = None,
+                collapse: float | None = None, strict: bool = True) -> Building:
+    """``b`` with the solids of the BuildingParts ``ids`` united into one solid.
+
+    The union goes on the Building (it replaces the Building's own geometry at ``lod``), or
+    on the part ``into`` (one of ``ids``). ``b`` unchanged when a part has no closed solid
+    at ``lod`` or the union is not a valid closed solid. Each union face keeps the semantic
+    surface of the part face it lies on. Union edges shorter than ``collapse`` (m, default
+    the snap tolerance) are collapsed. ``strict``: the union must pass the repair ladder's
+    criterion (val3dity-valid, no sliver); else a closed, consistently oriented 2-manifold
+    will do (an exporter that cleans its own pieces, as the IDF writer does).
+    """
+    lod = lod if lod is not None else b.default_lod()
+    ids = set(ids)
+    if into is not None and into not in ids:
+        raise ValueError(f"into={into!r} is not one of the parts merged")
+    parts = [p for p in _part_meshes(b, lod) if p[0].id in ids]
+    if len(parts) < 2 or len(parts) != len(ids):
+        return b
     origin = np.vstack([m.vertices for *_, m in parts]).mean(axis=0)
     mans = [_manifold(m, origin) for *_, m in parts]
     if any(x is None for x in mans):
@@ -75,6 +127,11 @@ def merge_overlapping_parts(b: Building, tol: Tolerances = DEFAULT, lod=None) ->
     mesh = union.to_mesh()
     V = np.asarray(mesh.vert_properties, dtype=np.float64)[:, :3] + origin
     T = np.asarray(mesh.tri_verts, dtype=np.int64)
+    # where parts meet, the union leaves sub-millimetre edges (a vertex of one part a hair off
+    # a face of the other): collapsed one at a time, keeping the surface 2-manifold
+    from lod2energy.geometry import collapse_short_edges
+    V, T, _ = collapse_short_edges(V, T, np.zeros(len(T), dtype=np.intp),
+                                   tol.snap_tol if collapse is None else collapse)
     # semantics: the part face each union triangle lies on
     sems, offs = [], []
     for o, gi, g, m in parts:
@@ -105,18 +162,24 @@ def merge_overlapping_parts(b: Building, tol: Tolerances = DEFAULT, lod=None) ->
         faces.append(Face((tuple(int(i) for i in t),), src, sem))
     merged = compact(merge_coplanar(PolyMesh(V, tuple(faces)), angle_tol=1e-6, dist_tol=1e-4))
     from lod2energy.repair.pipeline import is_repaired
-    if not is_repaired(merged, lod, tol):
+    if strict and not is_repaired(merged, lod, tol):
         return b
+    if not strict:
+        top = topology(merged)
+        if top.boundary or top.nonmanifold or top.misoriented:
+            return b
     base = len(b.vertices)
     surfaces = tuple(Surface.from_lists([[base + i for i in r] for r in f.rings], f.semantic) for f in merged.faces)
     geom = Geometry("Solid", lod, (Solid((Shell(surfaces),)),), tuple(sems))
+    target = b.root.id if into is None else into
     objs = []
     for o in b.objects:
-        if o.id == b.root.id:
+        if o.id == target:
             gs = [g for g in o.geometries if not (g.is_polygonal and g.lod == lod)]
             o = replace(o, geometries=tuple(gs) + (geom,))
         elif o.id in ids:
             o = replace(o, geometries=tuple(g for g in o.geometries if not (g.is_polygonal and g.lod == lod)))
         objs.append(o)
     nb = replace(b, objects=tuple(objs), vertices=np.vstack([b.vertices, merged.vertices]))
-    return nb.with_provenance(merged_parts=sorted(ids))
+    done = sorted(set(b.provenance.get("merged_parts") or ()) | ids)
+    return nb.with_provenance(merged_parts=done)
