@@ -286,12 +286,16 @@ def prepare_building(b: Building, lod: str | None = None, keep_other_lods: bool 
     return replace(b, objects=objs)
 
 
-def on_grid(b: Building, transform: Mapping) -> Building:
+def on_grid(b: Building, transform: Mapping, frame=None) -> Building:
     """``b`` with its vertices rounded to the grid of ``transform`` (scale, translate), as a
-    CityJSON file stores them."""
+    CityJSON file stores them (for a geographic input, on the file's grid in degrees:
+    ``frame`` moves them there and back)."""
     scale = np.asarray(transform["scale"], dtype=np.float64)
     translate = np.asarray(transform["translate"], dtype=np.float64)
-    v = np.rint((b.vertices - translate) / scale) * scale + translate
+    fv = cjio.file_coordinates(b.vertices, frame)
+    v = np.rint((fv - translate) / scale) * scale + translate
+    if frame is not None and len(v):
+        v = frame.to_local(v)
     if np.array_equal(v, b.vertices):
         return b
     return replace(b, vertices=v)
@@ -445,7 +449,7 @@ def write(path: str, model: CityModel, buildings: Iterable[Building], version: s
         blod = lod if lod is not None else (b.provenance.get("thermal") or {}).get("lod")
         # checked as it will be read back: coordinates on the file's grid (a repaired vertex
         # off the grid moves by up to scale/2, which can tip a face over a tolerance)
-        b = on_grid(b, transform)
+        b = on_grid(b, transform, m.frame)
         why = _ready_problem(b, blod, keep_other_lods) if exclude_unready else None
         if why is not None:
             skipped.append((b.id, why))
@@ -643,7 +647,8 @@ def self_check(path: str, extension: Mapping | None = None, tol=None) -> list[st
         problems += _extension_problems(d, extension, what)
     if problems:
         return problems[:_MAX_PROBLEMS]
-    model, feats = cjio.read(path)
+    from lod2energy.io import to_local_frame
+    model, feats = to_local_frame(*cjio.read(path))  # a geographic file is checked in metres
     n_energy = 0
     for f in feats:
         if not isinstance(f, Building):

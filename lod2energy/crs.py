@@ -55,3 +55,23 @@ def cityjson_reference_system(crs: Any, version: str = "2.0") -> str | None:
     if code is None:
         return str(crs)
     return f"urn:ogc:def:crs:EPSG::{code}" if version == "1.0" else f"https://www.opengis.net/def/crs/EPSG/0/{code}"
+
+
+#: Geographic (latitude / longitude in degrees) EPSG CRSs met in city models, 2D and 3D:
+#: WGS 84, ETRS89, NAD83, JGD2000/2011 (and PLATEAU's JGD2011 + height), GDA94/2020, NZGD2000,
+#: CGCS2000, KGD2002, TWD97.
+GEOGRAPHIC_EPSG = frozenset({4326, 4979, 4258, 4937, 4269, 4759, 4612, 6667, 6668, 6697, 4283, 4939, 7843, 7844,
+                             4167, 4959, 4490, 4480, 4737, 3824})
+_CRS84 = re.compile(r"CRS[ :_]?84", re.IGNORECASE)
+
+
+def is_geographic(crs: Any) -> bool:
+    """Whether ``crs`` names a geographic CRS (coordinates in degrees, not metres)."""
+    if not crs:
+        return False
+    return bool(_CRS84.search(str(crs))) or epsg_code(crs) in GEOGRAPHIC_EPSG
+
+
+def latitude_first(crs: Any) -> bool:
+    """Axis order of a geographic CRS: EPSG's are (lat, lon), OGC CRS84's (lon, lat)."""
+    return not _CRS84.search(str(crs or ""))

@@ -363,6 +363,9 @@ class CityModel:
         Path of the input.
     format : str
         "CityJSON", "CityJSONSeq", "POLY", "OBJ", "OFF", ...
+    frame : LocalFrame or None
+        For a geographic CRS (degrees): the local metric frame the buildings' vertices were
+        moved into on reading (:mod:`lod2energy.geodesy`); writers move them back.
     """
 
     version: str = "2.0"
@@ -374,6 +377,7 @@ class CityModel:
     extra: Mapping[str, Any] = field(default_factory=lambda: _EMPTY)
     source: str = ""
     format: str = "CityJSON"
+    frame: Any = None
 
     @property
     def crs(self) -> str | None:

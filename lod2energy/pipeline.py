@@ -107,6 +107,13 @@ def prepare(b: Building, tol: Tolerances, a, source_model: CityModel | None = No
     return tb, rec
 
 
+def _frame_entry(model: CityModel | None) -> dict:
+    """Report entry for a geographic input: the local metric frame its buildings were
+    validated, repaired and exported in (IDF / STL offsets are in this frame)."""
+    frame = getattr(model, "frame", None)
+    return {"local_frame": frame.as_dict()} if frame is not None else {}
+
+
 def _progress(quiet: bool, desc: str):
     if quiet:
         return lambda: None, lambda: None
@@ -123,7 +130,17 @@ def _open_input(path: str):
         for fe in feats:
             _err(fe.message)
         return None
+    note_frame(path, model)
     return model, feats
+
+
+def note_frame(path: str, model: CityModel | None) -> None:
+    """One line on stderr when a geographic input is processed in a local metric frame."""
+    f = getattr(model, "frame", None)
+    if f is not None:
+        print(f"lod2energy: note: {path}: CRS {model.crs} is geographic (degrees); buildings are checked and "
+              f"exported in a local east-north-up frame in metres at lat {f.lat0:.7f}, lon {f.lon0:.7f} "
+              "(report.json: local_frame); CityJSON is written back in degrees", file=sys.stderr)
 
 
 def _err(msg: str) -> None:
@@ -210,8 +227,8 @@ def repair_file(a, tol: Tolerances) -> int:
     cityjson.write(a.output, model, out_b)
     table = dataset_table(out_b)
     if a.report:
-        _write_json(a.report, {"input_file": a.input, "output_file": a.output, "summary": table,
-                               "buildings": records, "unreadable": lost})
+        _write_json(a.report, {"input_file": a.input, "output_file": a.output, **_frame_entry(model),
+                               "summary": table, "buildings": records, "unreadable": lost})
     if not a.quiet:
         _print_repair_summary(table)
     return worst
@@ -303,6 +320,7 @@ def export_file(a, tol: Tolerances) -> int:
     rows = [r.row() for r in records]
     _write_json(os.path.join(a.output, "report.json"),
                 {"input_file": a.input, "output_dir": a.output, "seconds": round(time.perf_counter() - t0, 2),
+                 **_frame_entry(model),
                  "buildings": [{**r.row(), "repair": r.repair, "energy": r.energy, "thermal": r.thermal,
                                 "exports": r.exports} for r in records]})
     with open(os.path.join(a.output, "report.csv"), "w", newline="", encoding="utf-8") as f:

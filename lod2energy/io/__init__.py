@@ -33,9 +33,77 @@ def read(path: str, **options) -> "tuple[CityModel | None, Iterator[Building | F
     p = path.lower()
     for s in sorted(_READERS, key=len, reverse=True):
         if p.endswith(s):
-            return _READERS[s][1](path, **options)
+            return to_local_frame(*_READERS[s][1](path, **options))
     # unknown suffix: sniff JSON
-    return _READERS[".json"][1](path, **options)
+    return to_local_frame(*_READERS[".json"][1](path, **options))
+
+
+def _frame_origin(model: CityModel, translate: bool = False) -> "list[float] | None":
+    """Centre of the file's geographicalExtent (or, with ``translate``, the transform's
+    translation), in file coordinates."""
+    md = model.metadata or {}
+    ext = md.get("geographicalExtent") if hasattr(md, "get") else None
+    try:
+        if not translate and ext is not None and len(ext) == 6:
+            return [(float(ext[i]) + float(ext[i + 3])) / 2 for i in range(3)]
+        if translate and model.transform:
+            return [float(x) for x in model.transform["translate"]]
+    except (TypeError, ValueError, KeyError):
+        pass
+    return None
+
+
+def to_local_frame(model: "CityModel | None", features: "Iterator[Building | FeatureError]"
+                   ) -> "tuple[CityModel | None, Iterator[Building | FeatureError]]":
+    """Buildings of a file in a geographic CRS (degrees) moved into a local metric frame.
+
+    The frame (:class:`lod2energy.geodesy.LocalFrame`, east-north-up in metres) is tangent
+    at the centre of the file's ``geographicalExtent`` (else at the first building's first
+    vertex, else at the ``transform`` translation), and stored as ``model.frame`` so that
+    writers move vertices back. Its "up" is the ellipsoid normal at that point: a building
+    5 km away stands 0.045 degrees off it (its shape, areas and volume are exact). Files in
+    a projected CRS pass through unchanged.
+    """
+    import itertools
+    from dataclasses import replace
+
+    import numpy as np
+
+    from lod2energy import crs as crs_
+    from lod2energy.geodesy import LocalFrame
+
+    if model is None or not crs_.is_geographic(model.crs):
+        return model, features
+    features = iter(features)
+    pending: list = []
+    origin = _frame_origin(model)
+    if origin is None:
+        for f in features:
+            pending.append(f)
+            if isinstance(f, Building) and len(f.vertices):
+                origin = [float(x) for x in f.vertices[0]]
+                break
+    if origin is None:
+        origin = _frame_origin(model, translate=True)
+    if origin is None or not all(np.isfinite(origin)):
+        return model, itertools.chain(pending, features)
+    lat_first = crs_.latitude_first(model.crs)
+    if lat_first and abs(origin[0]) > 90 >= abs(origin[1]):
+        lat_first = False  # written (lon, lat) although the EPSG CRS says (lat, lon)
+    lat0, lon0 = (origin[0], origin[1]) if lat_first else (origin[1], origin[0])
+    if not (abs(lat0) <= 90 and abs(lon0) <= 180):
+        return model, itertools.chain(
+            [FeatureError(None, 901, f"{model.source}: CRS {model.crs} is geographic but the coordinates "
+                                     f"({origin[0]:g}, {origin[1]:g}) are not degrees")],
+            pending, features)
+    frame = LocalFrame(round(lat0, 7), round(lon0, 7), 0.0, lat_first)
+
+    def gen():
+        for f in itertools.chain(pending, features):
+            if isinstance(f, Building) and len(f.vertices):
+                f = replace(f, vertices=frame.to_local(f.vertices))
+            yield f
+    return replace(model, frame=frame), gen()
 
 
 _TYPE_RE = re.compile(rb'"type"\s*:\s*"([^"]{1,40})"')

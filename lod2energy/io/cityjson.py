@@ -489,7 +489,16 @@ def cityobject_json(o: CityObject, offset: int, version: str) -> dict:
     return d
 
 
-def _quantise(vertices: np.ndarray, transform: Mapping) -> list:
+def file_coordinates(vertices: np.ndarray, frame=None) -> np.ndarray:
+    """Vertices in the file's CRS: moved back from the local frame of a geographic input
+    (:func:`lod2energy.io.to_local_frame`), unchanged otherwise."""
+    if frame is None or not len(vertices):
+        return vertices
+    return frame.to_geodetic(vertices)
+
+
+def _quantise(vertices: np.ndarray, transform: Mapping, frame=None) -> list:
+    vertices = file_coordinates(vertices, frame)
     scale = np.asarray(transform["scale"], dtype=np.float64)
     translate = np.asarray(transform["translate"], dtype=np.float64)
     q = np.rint((vertices - translate) / scale).astype(np.int64)
@@ -521,7 +530,12 @@ def _transform_for(model: CityModel, buildings: list[Building]) -> dict:
     if model.transform:
         return _plain(model.transform)
     allv = [b.vertices for b in buildings if len(b.vertices)]
-    return default_transform(np.vstack(allv) if allv else np.zeros((0, 3)))
+    v = file_coordinates(np.vstack(allv), model.frame) if allv else np.zeros((0, 3))
+    if model.frame is not None:  # degrees: ~0.1 mm horizontally, 1 mm in height
+        t = default_transform(v)
+        return {"scale": [1e-9, 1e-9, 0.001], "translate": [float(round(x, 6)) for x in v.min(axis=0)]
+                if len(v) else t["translate"]}
+    return default_transform(v)
 
 
 def to_document(model: CityModel, buildings: Iterable[Building], version: str | None = None) -> dict:
@@ -535,7 +549,7 @@ def to_document(model: CityModel, buildings: Iterable[Building], version: str | 
     verts: list = []
     for b in buildings:
         off = len(verts)
-        verts.extend(_quantise(b.vertices, transform))
+        verts.extend(_quantise(b.vertices, transform, model.frame))
         for o in b.objects:
             cos[o.id] = cityobject_json(o, off, version)
     doc["CityObjects"] = cos
@@ -543,11 +557,11 @@ def to_document(model: CityModel, buildings: Iterable[Building], version: str | 
     return doc
 
 
-def feature_document(b: Building, transform: Mapping, version: str) -> dict:
-    """One CityJSONFeature (dict) for ``b``."""
+def feature_document(b: Building, transform: Mapping, version: str, frame=None) -> dict:
+    """One CityJSONFeature (dict) for ``b`` (vertices moved back out of ``frame``)."""
     return {"type": "CityJSONFeature", "id": b.id,
             "CityObjects": {o.id: cityobject_json(o, 0, version) for o in b.objects},
-            "vertices": _quantise(b.vertices, transform)}
+            "vertices": _quantise(b.vertices, transform, frame)}
 
 
 def write(path: str, model: CityModel, buildings: Iterable[Building], version: str | None = None) -> None:
@@ -564,7 +578,7 @@ def write(path: str, model: CityModel, buildings: Iterable[Building], version: s
         with open(tmp, "w", encoding="utf-8") as f:
             f.write(json.dumps(header, separators=(",", ":"), ensure_ascii=False) + "\n")
             for b in buildings:
-                f.write(json.dumps(feature_document(b, transform, version), separators=(",", ":"),
+                f.write(json.dumps(feature_document(b, transform, version, model.frame), separators=(",", ":"),
                                    ensure_ascii=False) + "\n")
     else:
         doc = to_document(model, buildings, version)
