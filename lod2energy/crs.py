@@ -34,7 +34,9 @@ def epsg_code(crs: Any) -> int | None:
     """
     if not crs:
         return None
-    s = str(crs)
+    s = str(crs).strip()
+    if s.isdigit():  # CityJSON 0.x / 1.0 "crs": {"epsg": 7415}
+        return int(s)
     m = _EPSG.search(s)
     if m:
         return int(m.group(1))

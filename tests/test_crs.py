@@ -20,6 +20,7 @@ from lod2energy.crs import cityjson_reference_system, epsg_code
     ("urn:adv:crs:ETRS89_UTM33*DE_DHHN92_NH", 25833),
     ("urn:adv:crs:DE_DHDN_3GK4*DE_DHN92_NH", 31468),
     ("urn:adv:crs:DE_DHDN_3GK3", 31467),
+    (7415, 7415), ("4979", 4979),
     ("urn:adv:crs:Unknown", None), ("local grid", None), ("", None), (None, None),
 ])
 def test_epsg_code(name, code):
