@@ -68,14 +68,14 @@ class _UsageError(Exception):
 
 
 def build_parser() -> argparse.ArgumentParser:
-    p = _Parser(prog="lod2energy", description="LoD2 city models (CityJSON) to simulation-ready geometry: "
+    p = _Parser(prog="lod2energy", description="LoD2 city models (CityJSON, CityGML) to simulation-ready geometry: "
                 "validate like val3dity, repair, label, assign U-values, export IDF / STL / CityJSON.",
                 epilog=EXIT_HELP, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--version", action="version", version=f"lod2energy {__version__}")
     sub = p.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
 
     v = sub.add_parser("validate", help="validate files (val3dity error codes + energy compliance)",
-                       description="Validate CityJSON / CityJSONSeq / OBJ / OFF / POLY files with val3dity's "
+                       description="Validate CityJSON / CityJSONSeq / CityGML / OBJ / OFF / POLY files with val3dity's "
                        "error codes, build each building's face-adjacency graph and assess energy compliance.",
                        epilog=EXIT_HELP, formatter_class=argparse.RawDescriptionHelpFormatter)
     v.add_argument("files", nargs="+", metavar="FILE")
