@@ -960,6 +960,8 @@ def merge_floorless_parts(b: Building, lod: str | None = None) -> tuple[Building
 
     lod = lod if lod is not None else b.default_lod()
     warnings: list[str] = []
+    if not any(o.type == "BuildingPart" for o, _, _ in b.energy_objects(lod)):
+        return b, warnings
     for _ in range(len(b.objects)):
         todo = floorless_parts(b, lod)
         if not todo:
