@@ -931,13 +931,10 @@ def floorless_parts(b: Building, lod: str | None = None) -> list[str]:
     follows a roof steeper than 60 degrees.
     """
     out = []
-    for z in zone_shells(b, np.zeros(3), lod):
-        obj = next((o for o in b.objects if o.id == z.object_id), None)
-        if obj is None or obj.type != "BuildingPart" or not z.faces:
-            continue
-        nz = min(unit(newell_normal(z.vertices[list(f.rings[0])]))[2] for f in z.faces)
-        if not nz < FLOOR_NZ:
-            out.append(z.object_id)
+    for o, _, g in b.energy_objects(lod):
+        nz = [unit(newell_normal(b.vertices[list(s.rings[0])]))[2] for *_, s in g.iter_surfaces()]
+        if o.type == "BuildingPart" and nz and not min(nz) < FLOOR_NZ:
+            out.append(o.id)
     return out
 
 
@@ -948,7 +945,8 @@ def merge_floorless_parts(b: Building, lod: str | None = None) -> tuple[Building
     in a zone without a floor. Its solid is united with the part it sits on when the union
     is a valid solid (the repair ladder's criterion); otherwise it is left out of the IDF
     (such parts are small: their underside follows a roof steeper than 60 degrees), and the
-    roof under it is then written as an outdoor roof.
+    roof under it is then written as an outdoor roof. A union keeps its host's floor, so one
+    pass over the floorless parts suffices.
 
     Returns
     -------
@@ -956,29 +954,22 @@ def merge_floorless_parts(b: Building, lod: str | None = None) -> tuple[Building
         For the IDF only; the other exports keep the parts.
     warnings : list of str
     """
-    from lod2energy.repair.parts import merge_parts, touching_part
+    from lod2energy.repair.parts import merge_parts, touching_part, without_geometry
 
     lod = lod if lod is not None else b.default_lod()
     warnings: list[str] = []
-    if not any(o.type == "BuildingPart" for o, _, _ in b.energy_objects(lod)):
-        return b, warnings
-    for _ in range(len(b.objects)):
-        todo = floorless_parts(b, lod)
-        if not todo:
-            break
-        pid = todo[0]
+    for pid in floorless_parts(b, lod):
         host = touching_part(b, pid, lod)
         merged = merge_parts(b, {pid, host}, lod=lod, into=host) if host else b
         if merged is not b:
             b = merged
             warnings.append(f"part {pid} has no surface EnergyPlus can take as a floor: united with {host} "
                             "into one zone")
-            continue
-        objs = tuple(replace(o, geometries=tuple(g for g in o.geometries if not (g.is_polygonal and g.lod == lod)))
-                     if o.id == pid else o for o in b.objects)
-        b = replace(b, objects=objs)
-        warnings.append(f"part {pid} has no surface EnergyPlus can take as a floor (none faces down more than "
-                        "30 degrees past vertical) and no valid union with the part it sits on: left out of the IDF")
+        else:
+            b = without_geometry(b, {pid}, lod)
+            warnings.append(f"part {pid} has no surface EnergyPlus can take as a floor (none faces down more "
+                            "than 30 degrees past vertical) and no valid union with the part it sits on: left "
+                            "out of the IDF")
     return b, warnings
 
 
@@ -1218,7 +1209,8 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
             offset, stats, warns = render(g, path, None)
             problems = self_check(path)
             warns = list(warns) + ["party walls not split: the split zone fails EnergyPlus's enclosure test"]
-        warns = [w for i in g for w in merge_notes[i]] + list(warns)
+        notes = [w for i in g for w in merge_notes[i]]
+        warns = notes + list(warns)
         res = ExportResult(ids, str(path), not problems, tuple(problems),
                            tuple(float(x) for x in offset), tuple(warns), stats)
         if options.run:
@@ -1228,8 +1220,7 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
                 # walls: write the building again with whole-face party walls and re-run
                 offset, stats, warns = render(g, path, None)
                 problems = self_check(path)
-                warns = ([w for i in g for w in merge_notes[i]] + list(warns)
-                         + ["party walls not split: EnergyPlus found the split zone not enclosed"])
+                warns = notes + list(warns) + ["party walls not split: EnergyPlus found the split zone not enclosed"]
                 res = ExportResult(ids, str(path), not problems, tuple(problems),
                                    tuple(float(x) for x in offset), tuple(warns), stats)
                 res = _run(res, path, weather, options)

@@ -152,6 +152,7 @@ def _print_validate_table(rows: list[dict]) -> None:
 
 def cmd_validate(a) -> int:
     from lod2energy.io import read
+    from lod2energy.pipeline import frame_entry, note_frame
     from lod2energy.validate.report import validate_features
 
     tol = _tolerances(a)
@@ -159,15 +160,13 @@ def cmd_validate(a) -> int:
     worst = EXIT_OK
     for path in a.files:
         model, feats = read(path, primitive=a.primitive, inner_shells=a.inner_shell)
-        from lod2energy.pipeline import note_frame
         note_frame(path, model)
         tick, close = _progress(a.quiet, os.path.basename(path))
         try:
             rep = validate_features(model, feats, path, tol, a.lod, tick)
         finally:
             close()
-        from lod2energy.pipeline import _frame_entry
-        rep.update(_frame_entry(model))
+        rep.update(frame_entry(model))
         reports.append(rep)
         for e in rep["dataset_errors"]:
             _err(e["info"] if path in e["info"] else f"{path}: {e['info']}")

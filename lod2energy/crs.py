@@ -24,28 +24,31 @@ _ADV = (
 )
 
 
-def epsg_code(crs: Any) -> int | None:
-    """The (first, i.e. horizontal) EPSG code a CRS name stands for, or None.
+def epsg_codes(crs: Any) -> list[int]:
+    """Every EPSG code a CRS name holds, in order (a compound URN holds two: horizontal,
+    vertical); an AdV name gives the code of its horizontal part.
 
     Parameters
     ----------
-    crs : str or None
-        A CRS name as written in a CityJSON ``referenceSystem`` or a CityGML ``srsName``.
+    crs : str, int or None
+        A CRS name as written in a CityJSON ``referenceSystem`` or a CityGML ``srsName``, or
+        a bare code (CityJSON 0.x / 1.0 ``"crs": {"epsg": 7415}``).
     """
     if not crs:
-        return None
+        return []
     s = str(crs).strip()
-    if s.isdigit():  # CityJSON 0.x / 1.0 "crs": {"epsg": 7415}
-        return int(s)
-    m = _EPSG.search(s)
-    if m:
-        return int(m.group(1))
-    if "adv:crs" in s.lower():
-        for rx, code in _ADV:
-            m = rx.search(s)
-            if m:
-                return code(m)
-    return None
+    if s.isdigit():
+        return [int(s)]
+    codes = [int(c) for c in _EPSG.findall(s)]
+    if not codes and "adv:crs" in s.lower():
+        codes = [code(m) for rx, code in _ADV for m in [rx.search(s)] if m][:1]
+    return codes
+
+
+def epsg_code(crs: Any) -> int | None:
+    """The first (horizontal) EPSG code of a CRS name (:func:`epsg_codes`), or None."""
+    codes = epsg_codes(crs)
+    return codes[0] if codes else None
 
 
 def cityjson_reference_system(crs: Any, version: str = "2.0") -> str | None:

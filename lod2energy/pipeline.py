@@ -107,7 +107,7 @@ def prepare(b: Building, tol: Tolerances, a, source_model: CityModel | None = No
     return tb, rec
 
 
-def _frame_entry(model: CityModel | None) -> dict:
+def frame_entry(model: CityModel | None) -> dict:
     """Report entry for a geographic input: the local metric frame its buildings were
     validated, repaired and exported in (IDF / STL offsets are in this frame)."""
     frame = getattr(model, "frame", None)
@@ -227,7 +227,7 @@ def repair_file(a, tol: Tolerances) -> int:
     cityjson.write(a.output, model, out_b)
     table = dataset_table(out_b)
     if a.report:
-        _write_json(a.report, {"input_file": a.input, "output_file": a.output, **_frame_entry(model),
+        _write_json(a.report, {"input_file": a.input, "output_file": a.output, **frame_entry(model),
                                "summary": table, "buildings": records, "unreadable": lost})
     if not a.quiet:
         _print_repair_summary(table)
@@ -320,7 +320,7 @@ def export_file(a, tol: Tolerances) -> int:
     rows = [r.row() for r in records]
     _write_json(os.path.join(a.output, "report.json"),
                 {"input_file": a.input, "output_dir": a.output, "seconds": round(time.perf_counter() - t0, 2),
-                 **_frame_entry(model),
+                 **frame_entry(model),
                  "buildings": [{**r.row(), "repair": r.repair, "energy": r.energy, "thermal": r.thermal,
                                 "exports": r.exports} for r in records]})
     with open(os.path.join(a.output, "report.csv"), "w", newline="", encoding="utf-8") as f:

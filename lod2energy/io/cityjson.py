@@ -530,12 +530,10 @@ def _transform_for(model: CityModel, buildings: list[Building]) -> dict:
     if model.transform:
         return _plain(model.transform)
     allv = [b.vertices for b in buildings if len(b.vertices)]
-    v = file_coordinates(np.vstack(allv), model.frame) if allv else np.zeros((0, 3))
+    t = default_transform(file_coordinates(np.vstack(allv), model.frame) if allv else np.zeros((0, 3)))
     if model.frame is not None:  # degrees: ~0.1 mm horizontally, 1 mm in height
-        t = default_transform(v)
-        return {"scale": [1e-9, 1e-9, 0.001], "translate": [float(round(x, 6)) for x in v.min(axis=0)]
-                if len(v) else t["translate"]}
-    return default_transform(v)
+        t["scale"] = [1e-9, 1e-9, 0.001]
+    return t
 
 
 def to_document(model: CityModel, buildings: Iterable[Building], version: str | None = None) -> dict:

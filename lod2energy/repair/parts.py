@@ -13,7 +13,7 @@ import numpy as np
 
 from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.model import Building, Geometry, Shell, Solid, Surface
-from lod2energy.repair._mesh import Face, PolyMesh, compact, merge_coplanar, topology, triangulate_mesh
+from lod2energy.repair._mesh import Face, PolyMesh, compact, merge_coplanar, triangulate_mesh
 
 
 def _part_meshes(b: Building, lod):
@@ -27,6 +27,13 @@ def _part_meshes(b: Building, lod):
                 out.append((o, gi, g, mesh_of_geometry(b.vertices, g)))
                 break
     return out
+
+
+def without_geometry(b: Building, ids, lod) -> Building:
+    """``b`` with the polygonal geometries at ``lod`` of the objects ``ids`` removed."""
+    return replace(b, objects=tuple(
+        replace(o, geometries=tuple(g for g in o.geometries if not (g.is_polygonal and g.lod == lod)))
+        if o.id in ids else o for o in b.objects))
 
 
 def _manifold(m: PolyMesh, origin):
@@ -98,17 +105,14 @@ def touching_part(b: Building, part_id: str, lod=None, gap: float = 0.01) -> str
     return best
 
 
-def merge_parts(b: Building, ids, tol: Tolerances = DEFAULT, lod=None, into: str | None = None,
-                collapse: float | None = None, strict: bool = True) -> Building:
+def merge_parts(b: Building, ids, tol: Tolerances = DEFAULT, lod=None, into: str | None = None) -> Building:
     """``b`` with the solids of the BuildingParts ``ids`` united into one solid.
 
     The union goes on the Building (it replaces the Building's own geometry at ``lod``), or
     on the part ``into`` (one of ``ids``). ``b`` unchanged when a part has no closed solid
     at ``lod`` or the union is not a valid closed solid. Each union face keeps the semantic
-    surface of the part face it lies on. Union edges shorter than ``collapse`` (m, default
-    the snap tolerance) are collapsed. ``strict``: the union must pass the repair ladder's
-    criterion (val3dity-valid, no sliver); else a closed, consistently oriented 2-manifold
-    will do (an exporter that cleans its own pieces, as the IDF writer does).
+    surface of the part face it lies on; union edges shorter than the snap tolerance are
+    collapsed.
     """
     lod = lod if lod is not None else b.default_lod()
     ids = set(ids)
@@ -130,8 +134,7 @@ def merge_parts(b: Building, ids, tol: Tolerances = DEFAULT, lod=None, into: str
     # where parts meet, the union leaves sub-millimetre edges (a vertex of one part a hair off
     # a face of the other): collapsed one at a time, keeping the surface 2-manifold
     from lod2energy.geometry import collapse_short_edges
-    V, T, _ = collapse_short_edges(V, T, np.zeros(len(T), dtype=np.intp),
-                                   tol.snap_tol if collapse is None else collapse)
+    V, T, _ = collapse_short_edges(V, T, np.zeros(len(T), dtype=np.intp), tol.snap_tol)
     # semantics: the part face each union triangle lies on
     sems, offs = [], []
     for o, gi, g, m in parts:
@@ -162,24 +165,14 @@ def merge_parts(b: Building, ids, tol: Tolerances = DEFAULT, lod=None, into: str
         faces.append(Face((tuple(int(i) for i in t),), src, sem))
     merged = compact(merge_coplanar(PolyMesh(V, tuple(faces)), angle_tol=1e-6, dist_tol=1e-4))
     from lod2energy.repair.pipeline import is_repaired
-    if strict and not is_repaired(merged, lod, tol):
+    if not is_repaired(merged, lod, tol):
         return b
-    if not strict:
-        top = topology(merged)
-        if top.boundary or top.nonmanifold or top.misoriented:
-            return b
     base = len(b.vertices)
     surfaces = tuple(Surface.from_lists([[base + i for i in r] for r in f.rings], f.semantic) for f in merged.faces)
     geom = Geometry("Solid", lod, (Solid((Shell(surfaces),)),), tuple(sems))
     target = b.root.id if into is None else into
-    objs = []
-    for o in b.objects:
-        if o.id == target:
-            gs = [g for g in o.geometries if not (g.is_polygonal and g.lod == lod)]
-            o = replace(o, geometries=tuple(gs) + (geom,))
-        elif o.id in ids:
-            o = replace(o, geometries=tuple(g for g in o.geometries if not (g.is_polygonal and g.lod == lod)))
-        objs.append(o)
-    nb = replace(b, objects=tuple(objs), vertices=np.vstack([b.vertices, merged.vertices]))
+    nb = without_geometry(b, ids | {target}, lod)
+    objs = tuple(replace(o, geometries=o.geometries + (geom,)) if o.id == target else o for o in nb.objects)
+    nb = replace(nb, objects=objs, vertices=np.vstack([b.vertices, merged.vertices]))
     done = sorted(set(b.provenance.get("merged_parts") or ()) | ids)
     return nb.with_provenance(merged_parts=done)

@@ -61,15 +61,14 @@ _ADV_CRS = re.compile(r"urn:adv:crs:", re.IGNORECASE)
 
 
 def country_from_crs(crs: Any) -> str | None:
-    """ISO country code guessed from an EPSG code in a CRS string, or an AdV CRS name (Germany);
-    None when unknown."""
-    if not crs:
-        return None
-    m = re.findall(r"(\d{4,5})", str(crs))
-    for code in reversed(m):
-        if code in _CRS_COUNTRY:
-            return _CRS_COUNTRY[code]
-    if _ADV_CRS.search(str(crs)):
+    """ISO country code guessed from the EPSG codes of a CRS name (:func:`lod2energy.crs.epsg_codes`),
+    or from an AdV CRS name (Germany); None when unknown."""
+    from lod2energy.crs import epsg_codes
+
+    for code in reversed(epsg_codes(crs)):
+        if str(code) in _CRS_COUNTRY:
+            return _CRS_COUNTRY[str(code)]
+    if crs and _ADV_CRS.search(str(crs)):
         return "DE"
     return None
 
