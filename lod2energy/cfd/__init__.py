@@ -254,4 +254,4 @@ def mesh_and_check(cdir: Path, case, nice: int = 10, root=None) -> tuple[dict, l
 
 def fluid_box_volume(case) -> float:
     """Volume (m3) the mesh would fill without buildings: the domain box (above the terrain)."""
-    return case.domain.volume if not case.terrain else case.fluid_volume_without_buildings
+    return case.fluid_volume_without_buildings or case.domain.volume

@@ -38,8 +38,8 @@ class MeshPlan:
     surface_level : int
         Level at the building surfaces (cells of ``cell_size``).
     feature_level : int
-        Level at feature edges and at cells of high curvature: one more when the smallest
-        building dimension is under 3 cells, two more under 1.5 cells.
+        Level at feature edges and at cells of high curvature: as many more (0 to 2) as it
+        takes to put two cells across the smallest building dimension.
     region_level : int
         Level inside a box around the buildings (``surface_level - 1``).
     cells : (3,) int
@@ -74,12 +74,10 @@ def plan_mesh(domain: Domain, cell_size: float, smallest: float) -> MeshPlan:
     if not (cell_size > 0 and math.isfinite(cell_size)):
         raise ParameterError(f"--cell-size must be a positive number of metres, not {cell_size!r}")
     level = int(min(MAX_LEVEL, max(0, round(math.log2(max(domain.h_max / cell_size, 1.0))))))
+    # at least two cells across the smallest building dimension (at most two more levels)
     extra = 0
-    if math.isfinite(smallest):
-        if smallest < 1.5 * cell_size:
-            extra = 2
-        elif smallest < 3 * cell_size:
-            extra = 1
+    if math.isfinite(smallest) and smallest > 0:
+        extra = int(min(2, max(0, math.ceil(math.log2(2 * cell_size / smallest)))))
     feature = min(level + extra, MAX_LEVEL + 1)
     h0 = cell_size * 2 ** level
     lx, ly, lz = domain.size
@@ -109,6 +107,10 @@ class Case:
         The ground surface.
     terrain : bool
         The ground is the file's TIN (not flat).
+    fluid_volume_without_buildings : float, m3
+        What the mesh would fill without buildings: the box, less the volume under the terrain.
+    terrain_level : int
+        Refinement level of the terrain surface.
     """
 
     offset: tuple[float, float, float]
@@ -124,6 +126,8 @@ class Case:
     terrain: bool = False
     min_gap: float = 0.0
     notes: tuple[str, ...] = field(default_factory=tuple)
+    fluid_volume_without_buildings: float = 0.0
+    terrain_level: int = 0
 
 
 def build_case(buildings, region: Region, wind_direction: float, cell_size: float, min_gap: float,
@@ -160,23 +164,53 @@ def build_case(buildings, region: Region, wind_direction: float, cell_size: floa
     if not bodies:
         raise ParameterError("no building of the region has a closed solid: " +
                              "; ".join(f"{i}: {m}" for i, m in failed[:3]))
-    ground_level = float(min(bd.base for bd in bodies))
-    notes = []
     tin = None
     if terrain is not None:
         from .terrain import local_tin
         tin = local_tin(terrain, offset)
-    united = unite(bodies, ground_level, min_gap)
-    above = united.vertices[:, 2] > ground_level
+    ground_level = float(min(bd.base for bd in bodies))
+    notes = []
+    small = smallest_feature(bodies, ground_level)
     h_max = float(max(bd.top for bd in bodies) - ground_level)
+    if tin is None:
+        united = unite(bodies, ground_level, min_gap)
+        domain, mesh = _size(united, h_max, ground_level, wind_direction, cell_size, small)
+        return Case(tuple(float(x) for x in offset), region, tuple(bd.id for bd in bodies), tuple(excluded),
+                    tuple(failed), united, ground_level, domain, mesh, flat_ground(domain.corners()), False,
+                    float(min_gap), tuple(notes), domain.volume, 0)
+    from dataclasses import replace
+    from .terrain import height_function, solid_under, terrain_grid, volume_under
+    height = height_function(tin)
+    # the domain is sized on the buildings as for flat ground; the box then reaches down under
+    # the terrain, and the terrain grid is sampled along the background mesh's lines
+    united0 = unite(bodies, ground_level, min_gap)
+    domain0, plan0 = _size(united0, h_max, ground_level, wind_direction, cell_size, small)
+    tlevel = max(0, plan0.surface_level - 2)
+    gv, gt, inner = terrain_grid(domain0, plan0.cells, tlevel, height)
+    zt = float(gv[:, 2].min())
+    floor = min(zt, ground_level) - 0.5 * plan0.background_cell
+    sink_to = min(zt, ground_level) - SINK
+    united = unite(bodies, ground_level, min_gap, sink_to=sink_to) if sink_to < ground_level - SINK else united0
+    domain = replace(domain0, floor=float(floor))
+    mesh = plan_mesh(domain, cell_size, small)
+    under = solid_under(gv, gt, min(floor, sink_to) - 1.0)
+    from .surfaces import _to_manifold
+    bodies_above = (_to_manifold(united.vertices, united.triangles) - under).volume()
+    fluid = domain.volume - volume_under(gv, gt[inner], floor)
+    united = replace(united, volume_above_ground=float(bodies_above))
+    notes.append(f"terrain: TINRelief resampled on a {domain.size[0] / (plan0.cells[0] * 2 ** tlevel):.2f} m grid "
+                 f"(z {zt:.2f}..{float(gv[:, 2].max()):.2f} m local)")
+    return Case(tuple(float(x) for x in offset), region, tuple(bd.id for bd in bodies), tuple(excluded),
+                tuple(failed), united, ground_level, domain, mesh, (gv, gt), True, float(min_gap), tuple(notes),
+                float(fluid), tlevel)
+
+
+def _size(united, h_max, ground_level, wind_direction, cell_size, small):
+    above = united.vertices[:, 2] > ground_level
     fa = frontal_area(united.vertices, united.triangles, wind_direction, ground_level)
     xy = united.vertices[above][:, :2] if above.any() else united.vertices[:, :2]
     domain = size_domain(xy, h_max, ground_level, wind_direction, fa)
-    small = smallest_feature(bodies, ground_level)
-    mesh = plan_mesh(domain, cell_size, small)
-    ground = flat_ground(domain.corners())
-    return Case(tuple(float(x) for x in offset), region, tuple(bd.id for bd in bodies), tuple(excluded),
-                tuple(failed), united, ground_level, domain, mesh, ground, tin is not None, float(min_gap), tuple(notes))
+    return domain, plan_mesh(domain, cell_size, small)
 
 
 def building_body_of(b, offset, lod):
@@ -263,12 +297,17 @@ def write_case(case: Case, outdir: str | Path, *, source: str = "", crs: str | N
     off = np.asarray(case.offset)
     plan = case.mesh
     loc = location_in_mesh(d, plan)
+    if case.terrain:
+        from .terrain import height_function
+        zt = height_function(case.ground)(loc[None, :2])[0]
+        if loc[2] < zt + plan.background_cell:
+            raise ParameterError("the terrain rises above the domain's mid-height: no point in the air found")
     u = case.united
     above = u.vertices[:, 2] > case.ground_level - 1e-9
     lo = u.vertices[above].min(axis=0) if above.any() else u.vertices.min(axis=0)
     hi = u.vertices[above].max(axis=0) if above.any() else u.vertices.max(axis=0)
     pad = max(plan.background_cell, 0.5 * d.h_max)
-    near = [lo[0] - pad, lo[1] - pad, case.ground_level - 1.0, hi[0] + pad, hi[1] + pad,
+    near = [lo[0] - pad, lo[1] - pad, d.bottom - 1.0, hi[0] + pad, hi[1] + pad,
             case.ground_level + 1.5 * d.h_max]
     ustar = KAPPA * UREF / math.log((ZREF + Z0) / Z0)
     fd = d.flow_dir
@@ -277,7 +316,7 @@ def write_case(case: Case, outdir: str | Path, *, source: str = "", crs: str | N
         offset=[round(float(x), 4) for x in off], background_cell=plan.background_cell,
         surface_level=plan.surface_level, feature_level=plan.feature_level, region_level=plan.region_level,
         surface_cell=plan.surface_cell, feature_cell=plan.feature_cell, smallest_feature=plan.smallest_feature,
-        terrain=case.terrain, ground_level_refinement=max(plan.region_level, 0), near_box=near,
+        terrain=case.terrain, ground_level_refinement=case.terrain_level, near_box=near,
         max_local_cells=2_000_000, max_global_cells=20_000_000, location_in_mesh=loc.tolist(),
         iterations=int(iterations), write_interval=max(1, int(iterations)), processors=int(processors),
         cmu=CMU, uref=UREF, zref=ZREF, z0=Z0, z_ground=case.ground_level,
@@ -302,7 +341,8 @@ def write_case(case: Case, outdir: str | Path, *, source: str = "", crs: str | N
     tri = cdir / "constant" / "triSurface"
     text_b = stl_text(u.vertices, u.triangles, u.codes, SOLIDS)
     gv, gt = case.ground
-    text_g = stl_text(np.asarray(gv), np.asarray(gt), np.zeros(len(gt), dtype=np.intp), ("ground",))
+    text_g = stl_text(np.asarray(gv), np.asarray(gt), np.zeros(len(gt), dtype=np.intp),
+                      ("terrain" if case.terrain else "ground",))
     for name, text, check in (("buildings.stl", text_b, _buildings_check(u.bodies)), ("ground.stl", text_g, _ground_check)):
         if check_surfaces:
             path, probs = write_checked(tri / name, lambda f, s=text: f.write(s), check, root=root)
@@ -336,8 +376,9 @@ def _region_text(r: Region) -> str:
 
 def _ground_text(case: Case) -> str:
     if case.terrain:
-        return ("the file's own terrain (TINRelief) over the domain, meshed by snappyHexMesh as the "
-                "patch `terrain`; the blockMesh floor lies under it")
+        return ("the file's own terrain (TINRelief), resampled on a grid along the background mesh lines "
+                "over the whole domain and meshed by snappyHexMesh as the patch `terrain`; the blockMesh "
+                f"floor (patch `ground`) lies under it at z = {case.domain.bottom:.3f} m and is cut away")
     return (f"flat at the terrain level z = {case.ground_level:.3f} m (local; the lowest ground of the "
             "region's buildings); it is the blockMesh floor, patch `ground` (the STL is for viewing)")
 
@@ -359,6 +400,8 @@ def case_json(case: Case, source: str, crs: str | None) -> dict:
                    "level_map_m": case.ground_level + case.offset[2]},
         "domain": case.domain.as_dict(),
         "domain_volume_m3": case.domain.volume,
+        "fluid_volume_without_buildings_m3": case.fluid_volume_without_buildings,
+        "notes": list(case.notes),
         "mesh_plan": case.mesh.as_dict(),
         "united": {"bodies": u.bodies, "triangles": int(len(u.triangles)),
                    "volume_above_ground_m3": round(u.volume_above_ground, 3),

@@ -86,6 +86,9 @@ class Domain:
         ``frontal_area / ((y_max - y_min) * (z_max - z_min))``.
     enlarged : float
         Factor applied to the lateral margins and the height to meet the blockage limit (1 = none).
+    floor : float or None, m
+        Bottom of the box when it lies under ``z_min`` (a terrain surface meshed by
+        snappyHexMesh above it); None: the box stands on the ground level ``z_min``.
     """
 
     centre: tuple[float, float]
@@ -101,11 +104,17 @@ class Domain:
     frontal_area: float
     blockage_ratio: float
     enlarged: float = 1.0
+    floor: float | None = None
+
+    @property
+    def bottom(self) -> float:
+        """z of the box's bottom face (m)."""
+        return self.z_min if self.floor is None else self.floor
 
     @property
     def size(self) -> tuple[float, float, float]:
-        """Length (along the wind), width, height (m)."""
-        return (self.x_max - self.x_min, self.y_max - self.y_min, self.z_max - self.z_min)
+        """Length (along the wind), width, height (m) of the box."""
+        return (self.x_max - self.x_min, self.y_max - self.y_min, self.z_max - self.bottom)
 
     @property
     def volume(self) -> float:
@@ -124,7 +133,7 @@ class Domain:
         uv = np.array([[self.x_min, self.y_min], [self.x_max, self.y_min],
                        [self.x_max, self.y_max], [self.x_min, self.y_max]])
         xy = from_wind_frame(uv, np.asarray(self.centre), self.wind_direction)
-        bottom = np.column_stack([xy, np.full(4, self.z_min)])
+        bottom = np.column_stack([xy, np.full(4, self.bottom)])
         top = np.column_stack([xy, np.full(4, self.z_max)])
         return np.vstack([bottom, top])
 
@@ -134,7 +143,7 @@ class Domain:
         uv = to_wind_frame(p[:, :2], np.asarray(self.centre), self.wind_direction)
         return ((uv[:, 0] > self.x_min + margin) & (uv[:, 0] < self.x_max - margin)
                 & (uv[:, 1] > self.y_min + margin) & (uv[:, 1] < self.y_max - margin)
-                & (p[:, 2] > self.z_min + margin) & (p[:, 2] < self.z_max - margin))
+                & (p[:, 2] > self.bottom + margin) & (p[:, 2] < self.z_max - margin))
 
     def as_dict(self) -> dict:
         lx, ly, lz = self.size
@@ -149,7 +158,8 @@ class Domain:
             "upstream_m": round(bx0 - self.x_min, 3),
             "downstream_m": round(self.x_max - bx1, 3),
             "lateral_m": [round(by0 - self.y_min, 3), round(self.y_max - by1, 3)],
-            "top_above_ground_m": round(lz, 3),
+            "top_above_ground_m": round(self.z_max - self.z_min, 3),
+            "box_floor_m": round(self.bottom, 3),
             "length_m": round(lx, 3), "width_m": round(ly, 3), "height_m": round(lz, 3),
             "frontal_area_m2": round(self.frontal_area, 3),
             "blockage_ratio": round(self.blockage_ratio, 5),

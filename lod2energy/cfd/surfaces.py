@@ -205,7 +205,8 @@ def gap_fills(bodies: list[BuildingBody], min_gap: float, floor: float
     return out, float(area)
 
 
-def unite(bodies: list[BuildingBody], ground: float, min_gap: float = 0.0) -> UnitedSurface:
+def unite(bodies: list[BuildingBody], ground: float, min_gap: float = 0.0,
+          sink_to: float | None = None) -> UnitedSurface:
     """Sink, close gaps and unite building bodies into watertight surfaces.
 
     Parameters
@@ -216,6 +217,8 @@ def unite(bodies: list[BuildingBody], ground: float, min_gap: float = 0.0) -> Un
         Ground level (domain floor), local z.
     min_gap : float, m
         Gaps narrower than this are closed (0: none).
+    sink_to : float, optional, m
+        Level the bottoms are moved down to (default ``ground - SINK``).
 
     Raises
     ------
@@ -225,7 +228,7 @@ def unite(bodies: list[BuildingBody], ground: float, min_gap: float = 0.0) -> Un
     from lod2energy.exporters.stl import merge_meshes
     import manifold3d as m3
 
-    floor = ground - SINK
+    floor = ground - SINK if sink_to is None else float(sink_to)
     meshes = [sink(m, floor) for bd in bodies for m in bd.meshes]
     fills, fill_area = gap_fills(bodies, min_gap, floor)
     v, t, c, warnings = merge_meshes(meshes + fills, union=True)
