@@ -163,3 +163,48 @@ def residuals(log_text: str) -> dict[str, list[float]]:
     for m in re.finditer(r"Solving for (\w+), Initial residual = ([-+]?\d+(?:\.\d*)?(?:[eE][-+]?\d+)?|-?nan|-?inf)", log_text):
         out.setdefault(m.group(1), []).append(float(m.group(2)))
     return out
+
+
+def restore_initial_fields(case: str | Path) -> None:
+    """Copy ``0.orig/`` to ``0/`` (as the Allrun script does) through :mod:`lod2energy.safe_write`."""
+    case = Path(case)
+    src = case / "0.orig"
+    for p in sorted(src.rglob("*")):
+        if p.is_file() and not p.is_symlink():
+            write_text(case / "0" / p.relative_to(src), p.read_text(encoding="utf-8"), root=case, fsync=False)
+
+
+@dataclass(frozen=True)
+class SolverRun:
+    """Outcome of a simpleFoam run.
+
+    Parameters
+    ----------
+    ok : bool
+        simpleFoam exited 0 and printed "End".
+    iterations : int
+        Iterations run (time steps).
+    residuals : dict
+        Field -> initial residual per solve.
+    seconds : float
+    problems : tuple of str
+    """
+
+    ok: bool
+    iterations: int
+    residuals: dict
+    seconds: float
+    problems: tuple[str, ...] = ()
+
+
+def run_solver(case: str | Path, nice: int = 10, timeout: float = 3600) -> SolverRun:
+    """Restore ``0/`` from ``0.orig/`` and run simpleFoam in ``case`` (``log.simpleFoam``)."""
+    case = Path(case)
+    restore_initial_fields(case)
+    rc, text, dt = run_tool(case, ("simpleFoam",), nice=nice, timeout=timeout)
+    problems = []
+    if rc != 0 or "FOAM FATAL" in text:
+        problems.append(f"simpleFoam failed (exit {rc}): {' '.join(text.splitlines()[-3:])[:300]}")
+    ended = bool(re.search(r"^End\s*$", text, re.M))
+    its = len(re.findall(r"^Time = \S+", text, re.M))
+    return SolverRun(rc == 0 and ended and not problems, its, residuals(text), round(dt, 2), tuple(problems))
