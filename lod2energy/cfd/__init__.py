@@ -17,7 +17,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Mapping
 
-from lod2energy.errors import ParameterError
+from lod2energy.errors import Lod2EnergyError, ParameterError
 
 #: Default cell size (m) at the building surfaces.
 DEFAULT_CELL_SIZE = 2.0
@@ -197,8 +197,12 @@ def export_case(buildings, model, outdir: str | Path, options: CfdOptions | None
     except (ParameterError, ValueError) as e:
         return CfdResult(False, "", (f"CFD case not written: {e}",), {"region": region.as_dict()})
     t_build = time.perf_counter() - t0
-    cdir, checks, problems = write_case(case, outdir, source=source, crs=crs, iterations=options.iterations,
-                                        processors=options.processors, frame_note=frame_note)
+    try:
+        cdir, checks, problems = write_case(case, outdir, source=source, crs=crs, iterations=options.iterations,
+                                            processors=options.processors, frame_note=frame_note)
+    except (Lod2EnergyError, ValueError, OSError) as e:
+        return CfdResult(False, "", (f"CFD case not written: {type(e).__name__}: {e}",), {"region": region.as_dict()},
+                         case.included)
     t_write = time.perf_counter() - t0 - t_build
     stats: dict[str, Any] = {
         "region": region.as_dict(),

@@ -360,7 +360,7 @@ def write_case(case: Case, outdir: str | Path, *, source: str = "", crs: str | N
         crs=crs or "unknown", frame_note=frame_note, region_text=_region_text(case.region),
         n_included=len(case.included), n_excluded=len(case.excluded), offset=ctx["offset"], d=dd,
         bodies=u.bodies, sink=SINK, min_gap=sidecar["min_gap_m"], gap_fills=u.gap_fills,
-        gap_fill_area=u.gap_fill_area, ground_text=_ground_text(case), mesh=plan,
+        gap_fill_area=u.gap_fill_area, ground_text=_ground_text(case), mesh=plan, terrain=case.terrain,
         abl={"uref": UREF, "zref": ZREF, "z0": Z0, "cmu": CMU})
     write_text(cdir / "README.md", readme, root=root)
     return cdir, checks, problems
