@@ -303,12 +303,7 @@ def write_case(case: Case, outdir: str | Path, *, source: str = "", crs: str | N
         if loc[2] < zt + plan.background_cell:
             raise ParameterError("the terrain rises above the domain's mid-height: no point in the air found")
     u = case.united
-    above = u.vertices[:, 2] > case.ground_level - 1e-9
-    lo = u.vertices[above].min(axis=0) if above.any() else u.vertices.min(axis=0)
-    hi = u.vertices[above].max(axis=0) if above.any() else u.vertices.max(axis=0)
-    pad = max(plan.background_cell, 0.5 * d.h_max)
-    near = [lo[0] - pad, lo[1] - pad, d.bottom - 1.0, hi[0] + pad, hi[1] + pad,
-            case.ground_level + 1.5 * d.h_max]
+    near = max(plan.background_cell, 0.5 * d.h_max)
     ustar = KAPPA * UREF / math.log((ZREF + Z0) / Z0)
     fd = d.flow_dir
     ctx = dict(
@@ -316,7 +311,7 @@ def write_case(case: Case, outdir: str | Path, *, source: str = "", crs: str | N
         offset=[round(float(x), 4) for x in off], background_cell=plan.background_cell,
         surface_level=plan.surface_level, feature_level=plan.feature_level, region_level=plan.region_level,
         surface_cell=plan.surface_cell, feature_cell=plan.feature_cell, smallest_feature=plan.smallest_feature,
-        terrain=case.terrain, ground_level_refinement=case.terrain_level, near_box=near,
+        terrain=case.terrain, ground_level_refinement=case.terrain_level, near_distance=near,
         max_local_cells=2_000_000, max_global_cells=20_000_000, location_in_mesh=loc.tolist(),
         iterations=int(iterations), write_interval=max(1, int(iterations)), processors=int(processors),
         cmu=CMU, uref=UREF, zref=ZREF, z0=Z0, z_ground=case.ground_level,
