@@ -202,3 +202,26 @@ def test_cli_arguments_and_options():
     for bad in (["--region", "0,0,10"], ["--region", "a,b,c,d"], ["--cell-size", "-1"], ["--centre", "1,2"]):
         with pytest.raises(ParameterError):
             options_from_args(ap.parse_args(bad))
+
+
+def test_an_open_building_is_left_out_with_its_reason_and_the_case_goes_on(tmp_path):
+    from factories import open_box
+    from lod2energy.cfd import export_case
+    good = box(10, 10, 6, id="good")
+    bad = _translated(open_box(id="bad"), 40, 0)
+    before = good.vertices.copy()
+    res = export_case([good, bad], None, tmp_path, CfdOptions(cell_size=3.0))
+    assert res.building_ids == ("good",)
+    assert [f["id"] for f in res.stats["buildings_failed"]] == ["bad"]
+    assert any("bad" in p for p in res.problems)
+    assert np.array_equal(good.vertices, before)  # input untouched
+    assert (tmp_path / "cfd" / "case.json").is_file()
+    # nothing written outside OUTDIR
+    assert {p.name for p in tmp_path.iterdir()} == {"cfd"}
+
+
+def test_no_building_in_the_region_writes_nothing(tmp_path):
+    from lod2energy.cfd import export_case
+    res = export_case([box()], None, tmp_path, CfdOptions(region=(500.0, 500.0, 600.0, 600.0)))
+    assert not res.ok and res.path == "" and "no building in the region" in res.problems[0]
+    assert not (tmp_path / "cfd").exists()

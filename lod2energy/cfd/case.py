@@ -252,6 +252,9 @@ def _surface_check(path: Path):
 
 def _ground_check(path: Path) -> list[str]:
     """surfaceCheck on an open ground sheet: no illegal triangle, one part, one normal zone."""
+    from lod2energy.openfoam import surface_check_binary
+    if surface_check_binary() is None:
+        return []
     sc = _surface_check(path)
     problems = [f for f in sc.failures if "not closed" not in f.lower()]
     if sc.returncode != 0:
@@ -265,6 +268,10 @@ def _ground_check(path: Path) -> list[str]:
 
 def _buildings_check(expected_bodies: int):
     def check(path: Path) -> list[str]:
+        from lod2energy.openfoam import surface_check_binary
+        if surface_check_binary() is None:  # without OpenFOAM: the STL exporter's own re-read check
+            from lod2energy.exporters.stl import self_check
+            return self_check(path)
         sc = _surface_check(path)
         problems = list(sc.failures)
         if not sc.closed:
