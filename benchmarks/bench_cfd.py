@@ -66,7 +66,16 @@ def table(rows: list[tuple[str, dict]], cell: float) -> str:
             f"| {name} | {r['buildings']} | {r['ground']} | | | | | | | | | FAILED | | {r['problems'][:2]} |")
     return (f"# CFD case benchmark (OpenFOAM v1912, --cell-size {cell:g} m)\n\n"
             "Measured by `benchmarks/bench_cfd.py` on a 2-core machine shared with other jobs "
-            "(tools under `nice -n 10`; wall-clock seconds).\n\n" + head + "\n".join(lines) + "\n")
+            "(load average 10-15 during the run; tools under `nice -n 10`; wall-clock seconds, so the "
+            "mesh times are upper bounds).\n\n" + head + "\n".join(lines) + "\n\n"
+            "- prepare: reading the file and validate/repair/label of the region's buildings; case: "
+            "union, domain, dictionaries, surfaceCheck on both surfaces; mesh: blockMesh + "
+            "surfaceFeatureExtract + snappyHexMesh + checkMesh.\n"
+            "- carved = domain volume (less the volume under the terrain for a TIN ground) minus "
+            "checkMesh's total cell volume; united = volume of the united building surfaces above "
+            "the ground (manifold3d).\n"
+            "- wind 270 deg (westerly), buildings at level `surface_level` (cell size), feature edges "
+            "up to two levels finer (two cells across the smallest building dimension), no layers.\n")
 
 
 def main(argv=None) -> int:
@@ -74,8 +83,15 @@ def main(argv=None) -> int:
     ap.add_argument("--cell-size", type=float, default=2.0)
     ap.add_argument("--out", default=str(REPO / "benchmarks" / "results" / "cfd.md"))
     ap.add_argument("--only", default=None, help="run only districts whose name contains this")
+    ap.add_argument("--from-log", default=None, help="tabulate the output of an earlier run instead")
     a = ap.parse_args(argv)
     rows = []
+    if a.from_log:  # re-tabulate the JSON lines printed by an earlier run
+        for line in Path(a.from_log).read_text().splitlines():
+            name, sep, rest = line.partition(" {")
+            if sep and any(name == d[0] for d in DISTRICTS):
+                rows.append((name, json.loads("{" + rest)))
+        return _write(rows, a)
     with tempfile.TemporaryDirectory(prefix="bench_cfd_") as tmp:
         for i, (name, path, extra) in enumerate(DISTRICTS):
             if a.only and a.only.lower() not in name.lower():
@@ -86,6 +102,10 @@ def main(argv=None) -> int:
             r = run(path, extra, a.cell_size, Path(tmp) / f"d{i}")
             print(name, json.dumps(r), flush=True)
             rows.append((name, r))
+    return _write(rows, a)
+
+
+def _write(rows, a) -> int:
     text = table(rows, a.cell_size)
     from lod2energy.safe_write import write_text
     out = Path(a.out)
