@@ -66,7 +66,7 @@ def table(rows: list[tuple[str, dict]], cell: float) -> str:
             f"| {name} | {r['buildings']} | {r['ground']} | | | | | | | | | FAILED | | {r['problems'][:2]} |")
     return (f"# CFD case benchmark (OpenFOAM v1912, --cell-size {cell:g} m)\n\n"
             "Measured by `benchmarks/bench_cfd.py` on a 2-core machine shared with other jobs "
-            "(load average 10-15 during the run; tools under `nice -n 10`; wall-clock seconds, so the "
+            "(load average 10-20 during the run; tools under `nice -n 10`; wall-clock seconds, so the "
             "mesh times are upper bounds).\n\n" + head + "\n".join(lines) + "\n\n"
             "- prepare: reading the file and validate/repair/label of the region's buildings; case: "
             "union, domain, dictionaries, surfaceCheck on both surfaces; mesh: blockMesh + "
