@@ -1264,7 +1264,7 @@ def storey_zones(zone: ZoneShell, zi: int, pieces: list[Piece], n_below: int, st
         enclosed), when it did.
     """
     from lod2energy import zoning
-    from lod2energy.thermal.storeys import ATTIC_MIN_HEIGHT
+    from lod2energy.thermal.storeys import ATTIC_MIN_HEIGHT, MIN_STOREY_HEIGHT
 
     single = [(zone, pieces, False)]
     if not pieces:
@@ -1272,28 +1272,36 @@ def storey_zones(zone: ZoneShell, zi: int, pieces: list[Piece], n_below: int, st
     ground, eave, ridge, pitched = zoning.zone_levels([(p.points, p.kind) for p in pieces])
     n = max(1, int(round((eave - ground) / storey_height))) if storey_height > 0 else 1
     n = min(n, max(n_below, 1)) if n_below else n
+    n = max(1, min(n, int((eave - ground) / MIN_STOREY_HEIGHT)))
     attic = pitched and ridge - eave >= ATTIC_MIN_HEIGHT
     allz = np.concatenate([p.points[:, 2] for p in pieces])
     horiz = [float(p.points[0, 2]) for p in pieces if np.ptp(p.points[:, 2]) <= 1e-6]
     cuts, attic = zoning.storey_cuts(allz, ground, eave, ridge, n, attic, horiz)
     if not cuts:
         return single, None
-    slabs = zoning.split_storeys([(p.points, p) for p in pieces], cuts, _pieces_from_points, attic)
-    if slabs is None:
-        return single, f"zone {zone.object_id}: kept as one zone (a storey section does not close)"
-    out = []
-    for k, sl in enumerate(slabs):
-        zp = [replace(tag, points=q) for q, tag in sl.polygons]
-        zp += [Piece(q, "floor", "Surface", 0.0, -1, f"{zi}.{k - 1}.{i}:f") for i, q in enumerate(sl.floor)]
-        zp += [Piece(q, "ceiling", "Surface", 0.0, -1, f"{zi}.{k}.{i}:c") for i, q in enumerate(sl.ceiling)]
-        pts = [p.points for p in zp]
-        if check_closed_outward(pts) or enclosure_defects(pts):
-            return single, (f"zone {zone.object_id}: kept as one zone (storey {k + 1} would not be "
-                            "enclosed for EnergyPlus)")
-        name = f"{zone.object_id}_Attic" if sl.attic else f"{zone.object_id}_S{k + 1}"
-        wwr = zone.wwr if (not sl.attic or attic_mode == "conditioned") else 0.0
-        out.append((replace(zone, object_id=name, wwr=wwr), zp, sl.attic))
-    return out, None
+    note = None
+    for cs, with_attic in zoning.cut_variants(cuts, attic, allz, horiz):
+        slabs = zoning.split_storeys([(p.points, p) for p in pieces], cs, _pieces_from_points, with_attic)
+        if slabs is None:
+            note = f"zone {zone.object_id}: kept as one zone (no storey section closes)"
+            continue
+        out = []
+        for k, sl in enumerate(slabs):
+            zp = [replace(tag, points=q) for q, tag in sl.polygons]
+            zp += [Piece(q, "floor", "Surface", 0.0, -1, f"{zi}.{k - 1}.{i}:f") for i, q in enumerate(sl.floor)]
+            zp += [Piece(q, "ceiling", "Surface", 0.0, -1, f"{zi}.{k}.{i}:c") for i, q in enumerate(sl.ceiling)]
+            pts = [p.points for p in zp]
+            if check_closed_outward(pts) or enclosure_defects(pts):
+                note = (f"zone {zone.object_id}: kept as one zone (no storey cut gives zones EnergyPlus "
+                        "would find enclosed)")
+                out = None
+                break
+            name = f"{zone.object_id}_Attic" if sl.attic else f"{zone.object_id}_S{k + 1}"
+            wwr = zone.wwr if (not sl.attic or attic_mode == "conditioned") else 0.0
+            out.append((replace(zone, object_id=name, wwr=wwr), zp, sl.attic))
+        if out:
+            return out, None
+    return single, note
 
 
 def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions | None = None,

@@ -12,9 +12,11 @@ slabs partition the shell).
 
 Cut heights (:func:`storey_cuts`): the storeys under the eave split ``eave - ground`` evenly;
 a pitched roof space of at least ``attic_min`` metres is its own zone (cut at the eave).
-A cut is moved to a vertex height within :data:`SNAP` (so that eaves and floor lines become
-cut lines instead of slivers) and dropped when it would pass within :data:`CLEARANCE` of a
-vertex or through a horizontal surface.
+A cut that would pass within :data:`CLEARANCE` of a vertex is moved to the nearest vertex
+height within :data:`SNAP` (so that eaves and floor lines become cut lines instead of
+slivers), else shifted by up to 0.4 m (:data:`SHIFTS`), and dropped when
+every such height passes within :data:`CLEARANCE` of a vertex or through a horizontal
+surface.
 """
 from __future__ import annotations
 
@@ -26,9 +28,13 @@ import numpy as np
 #: A cut is moved to a vertex height this close (m).
 SNAP = 0.4
 #: No vertex may lie this close (m) to a cut (other than on it): it would make a sliver.
-CLEARANCE = 0.1
+CLEARANCE = 0.05
 #: Points within this distance (m) of a plane lie on it.
 ON_PLANE = 1e-6
+#: Section edges shorter than this (m) make the cut fail (EnergyPlus merges points 1.27 cm apart).
+MIN_EDGE = 0.03
+#: Shifts (m) tried for the storey cuts when a section fails (:func:`cut_variants`).
+SHIFTS = (0.0, 0.2, -0.2, 0.4, -0.4)
 DECIMALS = 4
 
 
@@ -84,7 +90,8 @@ def storey_cuts(z_values: np.ndarray, ground: float, eave: float, ridge: float, 
     for i, t in enumerate(targets):
         is_attic = attic and i == len(targets) - 1
         near = z[np.abs(z - t) <= SNAP]
-        cands = sorted([float(t)] + [float(v) for v in near], key=lambda c: (abs(c - t), c))
+        cands = sorted([float(t)] + [float(v) for v in near] + [t + d for d in SHIFTS[1:]],
+                       key=lambda c: (abs(c - t), c))
         for c in cands:
             c = round(c, DECIMALS)
             if not (zmin + CLEARANCE < c < zmax - CLEARANCE):
@@ -100,6 +107,34 @@ def storey_cuts(z_values: np.ndarray, ground: float, eave: float, ridge: float, 
             kept_attic = kept_attic or is_attic
             break
     return out, kept_attic
+
+
+def cut_variants(cuts: Sequence[float], attic: bool, z_values: np.ndarray,
+                 horizontal_z: Sequence[float] = ()) -> list[tuple[list[float], bool]]:
+    """Cut sets to try in turn: the cuts, then the storey cuts shifted by :data:`SHIFTS` (the
+    attic cut stays at the eave), then the same without the attic cut; each kept only when
+    it clears every vertex by :data:`CLEARANCE` and every horizontal surface."""
+    z = np.unique(np.round(np.asarray(z_values, dtype=np.float64), DECIMALS))
+    zmin, zmax = float(z.min()), float(z.max())
+
+    def ok(cs):
+        for c in cs:
+            d = np.abs(z - c)
+            if not (zmin + CLEARANCE < c < zmax - CLEARANCE) or np.any((d > ON_PLANE) & (d < CLEARANCE)):
+                return False
+            if any(abs(h - c) < CLEARANCE for h in horizontal_z):
+                return False
+        return all(b - a >= 1.0 for a, b in zip(cs, cs[1:]))
+
+    out = []
+    for with_attic in ((True, False) if attic else (False,)):
+        base = list(cuts) if with_attic or not attic else list(cuts[:-1])
+        n_storey = len(base) - (1 if with_attic else 0)
+        for d in SHIFTS:
+            cs = [round(c + d, DECIMALS) if i < n_storey else c for i, c in enumerate(base)]
+            if cs and ok(cs) and (cs, with_attic) not in out:
+                out.append((cs, with_attic))
+    return out
 
 
 def _clip(poly: np.ndarray, c: float, keep_above: bool) -> np.ndarray:
@@ -178,7 +213,10 @@ def _section_loops(polys: Sequence[np.ndarray], c: float) -> list[np.ndarray] | 
             loop.append(cur)
             todo.discard(cur)
         if len(loop) >= 3:
-            loops.append(np.array([[*pts[k][:2], c] for k in loop]))
+            lp = np.array([[*pts[k][:2], c] for k in loop])
+            if np.min(np.linalg.norm(lp - np.roll(lp, -1, axis=0), axis=1)) < MIN_EDGE:
+                return None  # EnergyPlus would merge the two ends: the cap would not match its walls
+            loops.append(lp)
     return loops
 
 

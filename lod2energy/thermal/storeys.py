@@ -37,6 +37,9 @@ STOREY_HEIGHT = {"residential": 2.8, "office": 3.5, "retail": 4.0, "education": 
                  "hospitality": 3.2, "industry": 5.0, "other": 3.0}
 #: A roof space at least this high (ridge - eave, m) counts as a storey and is its own zone.
 ATTIC_MIN_HEIGHT = 2.0
+#: Storey zones are never cut lower than this (m): a count that would need lower storeys
+#: (an attribute counting storeys in the roof space, say) gives fewer, taller storey zones.
+MIN_STOREY_HEIGHT = 2.2
 #: Roof faces tilted less than this (degrees) are flat.
 FLAT_TILT = 10.0
 MAX_STOREYS = 200
