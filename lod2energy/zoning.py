@@ -32,7 +32,7 @@ CLEARANCE = 0.05
 #: Points within this distance (m) of a plane lie on it.
 ON_PLANE = 1e-6
 #: Section edges shorter than this (m) make the cut fail (EnergyPlus merges points 1.27 cm apart).
-MIN_EDGE = 0.03
+MIN_EDGE = 0.015
 #: Shifts (m) tried for the storey cuts when a section fails (:func:`cut_variants`).
 SHIFTS = (0.0, 0.2, -0.2, 0.4, -0.4)
 DECIMALS = 4
