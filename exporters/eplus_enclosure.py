@@ -339,6 +339,8 @@ def enclosure_defects(surfaces: Sequence[np.ndarray], tol: float = POINT_TOL) ->
 def width(points: np.ndarray) -> float:
     """Width (m) of a polygon across its main direction: its extent along the second
     principal axis of its points."""
+    # lod2energy.geometry.best_fit_plane gives only the third axis (the normal); the width
+    # needs the second
     q = np.asarray(points, dtype=np.float64)
     q = q - q.mean(axis=0)
     if len(q) < 3:
