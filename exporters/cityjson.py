@@ -152,6 +152,59 @@ def _validators(version: str) -> _SchemaSet:
               for i, b in enumerate(branches)))
 
 
+def _schema_files(version: str) -> tuple[dict, dict | None, dict]:
+    """The bundled official schema of ``version``: (main, feature or None, ``{file name: schema}``)."""
+    d = _data() / "schemas" / "cityjson" / _VDIR[version]
+    if version == "1.0":
+        main = json.loads((d / "cityjson.min.schema.json").read_text(encoding="utf-8"))
+        return main, None, {}
+    files = {f.name: json.loads(f.read_text(encoding="utf-8")) for f in d.iterdir()
+             if f.name.endswith(".schema.json") and ".min." not in f.name}
+    return files["cityjson.schema.json"], files.get("cityjsonfeature.schema.json"), files
+
+
+#: As jsonschema validates: formats not asserted, and the document never filled with defaults.
+_COMPILE = {"use_formats": False, "use_default": False}
+
+
+@lru_cache(maxsize=None)
+def _compiled(version: str) -> tuple[Any, Any]:
+    """Compiled (``fastjsonschema``) validators of the document and of a CityJSONFeature for
+    ``version``, built once per process; ``$ref`` s to the official files resolve to the
+    bundled copies, never to the network. (None, None) when fastjsonschema is missing."""
+    try:
+        import fastjsonschema
+    except ImportError:  # the interpreted validators still decide, only slower
+        return None, None
+    main, feat, files = _schema_files(version)
+
+    def local(uri: str) -> dict:
+        name = uri.split("#", 1)[0].rsplit("/", 1)[-1]
+        if name not in files:
+            raise Lod2EnergyError(f"schema reference {uri} is not a bundled CityJSON {version} file")
+        return files[name]
+
+    handlers = {"https": local, "http": local}
+    return (fastjsonschema.compile(main, handlers=handlers, **_COMPILE),
+            fastjsonschema.compile(feat, handlers=handlers, **_COMPILE) if feat else None)
+
+
+def _schema_valid_fast(version: str, doc: Any, feature: bool = False) -> bool:
+    """True when the compiled validator accepts ``doc``. Only a shortcut for valid files:
+    False (or no compiled validator) sends the document to the interpreted validators of
+    :func:`_schema_errors`, which give the messages and the final verdict."""
+    import fastjsonschema
+
+    v = _compiled(version)[1 if feature else 0]
+    if v is None:
+        return False
+    try:
+        v(doc)
+    except fastjsonschema.JsonSchemaException:
+        return False
+    return True
+
+
 def _light(co: Any) -> Any:
     if not isinstance(co, Mapping):
         return co
@@ -629,12 +682,16 @@ def self_check(path: str, extension: Mapping | None = None, tol=None) -> list[st
     except Lod2EnergyError as e:
         return [f"{path}: {e}"]
     schemas = _validators(version)
-    problems += _schema_errors(schemas, head, docs[0][0])
+    # a document the compiled validator accepts has no schema error: the interpreted
+    # validators (slow, with the messages) only see the documents it rejects
+    if not _schema_valid_fast(version, head):
+        problems += _schema_errors(schemas, head, docs[0][0])
     for what, d in docs[1:]:
         if schemas.feature is None:
             problems.append(f"{what}: CityJSONFeature needs CityJSON 1.1 or later")
             break
-        problems += _schema_errors(schemas, d, what, feature=True)
+        if not _schema_valid_fast(version, d, feature=True):
+            problems += _schema_errors(schemas, d, what, feature=True)
         if len(problems) > _MAX_PROBLEMS:
             break
     if extension is None:

@@ -123,44 +123,67 @@ def eplus_vertices(points: np.ndarray) -> np.ndarray:
     return q
 
 
-class _Grid:
-    """Points on a hash grid of cell ``tol``: the first stored point almost equal to a query."""
+def _near_pairs(points: np.ndarray, tol: float) -> np.ndarray:
+    """Pairs of points almost equal per axis (``|p - q| < tol`` on every axis), ``(m, 2) int``
+    with ``i < j``, sorted by ``j`` then ``i``.
 
-    def __init__(self, tol: float = POINT_TOL):
-        self.tol = tol
-        self.points: list[np.ndarray] = []
-        self._cells: dict[tuple[int, int, int], list[int]] = {}
+    A k-d tree under the max-norm proposes the pairs within ``tol`` (``<=``); the test
+    EnergyPlus makes (strictly less, per axis) then decides, with the same arithmetic as a
+    point-by-point comparison.
+    """
+    from scipy.spatial import cKDTree
 
-    def _cell(self, p: np.ndarray) -> tuple[int, int, int]:
-        return tuple(int(x) for x in np.floor(p / self.tol))
+    P = np.asarray(points, dtype=np.float64).reshape(-1, 3)
+    if len(P) < 2:
+        return np.empty((0, 2), dtype=np.intp)
+    pairs = cKDTree(P).query_pairs(tol, p=np.inf, output_type="ndarray").astype(np.intp).reshape(-1, 2)
+    if len(pairs):
+        pairs = np.sort(pairs, axis=1)
+        pairs = pairs[np.all(np.abs(P[pairs[:, 0]] - P[pairs[:, 1]]) < tol, axis=1)]
+        pairs = pairs[np.lexsort((pairs[:, 0], pairs[:, 1]))]
+    return pairs
 
-    def near(self, p: np.ndarray) -> list[int]:
-        """Indices of the stored points almost equal to ``p`` (per axis under ``tol``), ascending."""
-        cx, cy, cz = self._cell(p)
-        out = []
-        for dx in (-1, 0, 1):
-            for dy in (-1, 0, 1):
-                for dz in (-1, 0, 1):
-                    for i in self._cells.get((cx + dx, cy + dy, cz + dz), ()):
-                        if np.all(np.abs(self.points[i] - p) < self.tol):
-                            out.append(i)
-        return sorted(out)
 
-    def append(self, p: np.ndarray) -> int:
-        self.points.append(p)
-        self._cells.setdefault(self._cell(p), []).append(len(self.points) - 1)
-        return len(self.points) - 1
+def _first_unique(n: int, pairs: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """EnergyPlus's greedy merge over ``n`` points in order: a point is new unless almost
+    equal to a unique point met before, and then becomes the first such point.
+
+    Parameters
+    ----------
+    n : int
+    pairs : (m, 2) int
+        :func:`_near_pairs` (``i < j``, sorted by ``j`` then ``i``).
+
+    Returns
+    -------
+    unique : (n,) bool
+        The points that start a unique vertex.
+    rep : (n,) int
+        For each point, the index of the point whose unique vertex it becomes.
+    """
+    uniq = np.ones(n, dtype=bool)
+    rep = np.arange(n, dtype=np.intp)
+    if len(pairs):
+        # sequential by nature (whether j is new depends on which earlier points are); only
+        # the points with an earlier neighbour take part, in the order EnergyPlus meets them
+        u = uniq.tolist()
+        r = rep.tolist()
+        for i, j in pairs.tolist():
+            if u[j] and u[i]:
+                u[j] = False
+                r[j] = i
+        uniq = np.asarray(u, dtype=bool)
+        rep = np.asarray(r, dtype=np.intp)
+    return uniq, rep
 
 
 def unique_vertices(surfaces: Sequence[np.ndarray], tol: float = POINT_TOL) -> list[np.ndarray]:
     """The zone's unique vertices in EnergyPlus's order (a point is new unless almost equal
     to one met before)."""
-    g = _Grid(tol)
-    for s in surfaces:
-        for p in s:
-            if not g.near(p):
-                g.append(p)
-    return g.points
+    arrs = [np.asarray(s, dtype=np.float64).reshape(-1, 3) for s in surfaces]
+    P = np.concatenate(arrs) if arrs else np.empty((0, 3))
+    uniq, _ = _first_unique(len(P), _near_pairs(P, tol))
+    return list(P[uniq])
 
 
 def eplus_merge(points: np.ndarray, tol: float = POINT_TOL) -> tuple[np.ndarray, np.ndarray]:
@@ -173,36 +196,56 @@ def eplus_merge(points: np.ndarray, tol: float = POINT_TOL) -> tuple[np.ndarray,
     index : (n,) int
         The unique point of each input point.
     """
-    g = _Grid(tol)
-    idx = np.empty(len(points), dtype=np.intp)
-    for i, p in enumerate(np.asarray(points, dtype=np.float64)):
-        near = g.near(p)
-        idx[i] = near[0] if near else g.append(p)
-    return np.asarray(g.points, dtype=np.float64).reshape(-1, 3), idx
+    P = np.asarray(points, dtype=np.float64).reshape(-1, 3)
+    uniq, rep = _first_unique(len(P), _near_pairs(P, tol))
+    number = np.cumsum(uniq) - 1
+    return P[uniq].reshape(-1, 3), number[rep].astype(np.intp)
 
 
 def _edges_not_two(surfaces: Sequence[np.ndarray], tol: float) -> list[tuple[np.ndarray, np.ndarray, list[int]]]:
     """EnergyPlus's edge count: an edge is the first stored one whose ends are almost equal to
-    its ends (either direction). Returns (start, end, surfaces) of edges not used twice."""
-    starts, ends = _Grid(tol), _Grid(tol)
-    used: list[list[int]] = []
-    for si, s in enumerate(surfaces):
+    its ends (either direction). Returns (start, end, surfaces) of edges not used twice.
+
+    Edge ``e`` of the concatenated surfaces runs from point ``e`` to point ``nxt[e]`` (the
+    next vertex of its surface); an edge is stored when no stored edge matches it.
+    """
+    arrs = [np.asarray(s, dtype=np.float64).reshape(-1, 3) for s in surfaces]
+    if not arrs:
+        return []
+    P = np.concatenate(arrs)
+    n = len(P)
+    nxt = np.arange(1, n + 1, dtype=np.intp)
+    owner = np.empty(n, dtype=np.intp)
+    k0 = 0
+    for si, s in enumerate(arrs):
         k = len(s)
-        for i in range(k):
-            a, b = s[i], s[(i + 1) % k]
-            hit = None
-            sa, eb = set(starts.near(a)), set(ends.near(b))
-            sb, ea = set(starts.near(b)), set(ends.near(a))
-            both = (sa & eb) | (sb & ea)
-            if both:
-                hit = min(both)
-            if hit is None:
-                starts.append(a)
-                ends.append(b)
-                used.append([si])
-            else:
-                used[hit].append(si)
-    return [(starts.points[i], ends.points[i], u) for i, u in enumerate(used) if len(u) != 2]
+        if k:
+            nxt[k0 + k - 1] = k0
+            owner[k0:k0 + k] = si
+        k0 += k
+    near: list[set[int]] = [{i} for i in range(n)]
+    for i, j in _near_pairs(P, tol).tolist():
+        near[i].add(j)
+        near[j].add(i)
+    nx = nxt.tolist()
+    own = owner.tolist()
+    stored = [False] * n
+    used: dict[int, list[int]] = {}
+    for e in range(n):
+        a_near, b_near = near[e], near[nx[e]]
+        hit = None
+        for f in a_near:        # stored edges starting near a and ending near b ...
+            if f < e and stored[f] and nx[f] in b_near and (hit is None or f < hit):
+                hit = f
+        for f in b_near:        # ... or starting near b and ending near a
+            if f < e and stored[f] and nx[f] in a_near and (hit is None or f < hit):
+                hit = f
+        if hit is None:
+            stored[e] = True
+            used[e] = [own[e]]
+        else:
+            used[hit].append(own[e])
+    return [(P[f], P[nx[f]], u) for f, u in sorted(used.items()) if len(u) != 2]
 
 
 def _on_line(a: np.ndarray, b: np.ndarray, t: np.ndarray, tol: float) -> bool:
@@ -215,29 +258,49 @@ def _on_line(a: np.ndarray, b: np.ndarray, t: np.ndarray, tol: float) -> bool:
     return abs(L - (float(np.linalg.norm(t - a)) + float(np.linalg.norm(b - t)))) < tol
 
 
+def _first_on_edge(pts: np.ndarray, uniq: np.ndarray, tol: float) -> tuple[int, int] | None:
+    """The first (edge, unique vertex) pair, in EnergyPlus's scan order, where the vertex
+    lies on the edge (:func:`_on_line`) without being almost equal to either end."""
+    a = pts
+    b = np.roll(pts, -1, axis=0)
+    lo = np.minimum(a, b) - tol
+    hi = np.maximum(a, b) + tol
+    inbox = np.all((uniq[None, :, :] >= lo[:, None, :]) & (uniq[None, :, :] <= hi[:, None, :]), axis=2)
+    ii, tt = np.nonzero(inbox)      # row-major: by edge, then by unique vertex, as scanned
+    if not len(ii):
+        return None
+    A, B, T = a[ii], b[ii], uniq[tt]
+    at_end = np.all(np.abs(T - A) < tol, axis=1) | np.all(np.abs(T - B) < tol, axis=1)
+    ab = B - A
+    L = np.linalg.norm(ab, axis=1)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        off = np.linalg.norm(np.cross(ab, T - A), axis=1) / L
+        slack = np.abs(L - (np.linalg.norm(T - A, axis=1) + np.linalg.norm(B - T, axis=1)))
+    ok = ~at_end & (L > 0.0) & (off < tol) & (slack < tol)
+    if not ok.any():
+        return None
+    m = int(np.argmax(ok))
+    return int(ii[m]), int(tt[m])
+
+
 def _insert_collinear(face: np.ndarray, uniq: np.ndarray, tol: float) -> np.ndarray:
-    """``face`` with every unique vertex EnergyPlus finds on one of its edges inserted."""
-    pts = [p for p in face]
+    """``face`` with every unique vertex EnergyPlus finds on one of its edges inserted
+    (one at a time, rescanning after each insertion, as EnergyPlus does)."""
+    pts = np.asarray(face, dtype=np.float64).reshape(-1, 3)
+    uniq = np.asarray(uniq, dtype=np.float64).reshape(-1, 3)
+    if not len(pts) or not len(uniq):
+        return pts
     for _ in range(len(uniq) + 1):
-        inserted = False
-        k = len(pts)
-        for i in range(k):
-            a, b = pts[i], pts[(i + 1) % k]
-            lo = np.minimum(a, b) - tol
-            hi = np.maximum(a, b) + tol
-            for t in np.nonzero(np.all((uniq >= lo) & (uniq <= hi), axis=1))[0]:
-                pt = uniq[t]
-                if np.all(np.abs(pt - a) < tol) or np.all(np.abs(pt - b) < tol):
-                    continue
-                if _on_line(a, b, pt, tol):
-                    pts.insert(i + 1, pt)
-                    inserted = True
-                    break
-            if inserted:
-                break
-        if not inserted:
+        # only vertices inside the face's box (grown by tol) can be on one of its edges; the
+        # box grows with each insertion
+        box = np.all((uniq >= pts.min(axis=0) - tol) & (uniq <= pts.max(axis=0) + tol), axis=1)
+        cand = uniq[box]
+        hit = _first_on_edge(pts, cand, tol) if len(cand) else None
+        if hit is None:
             break
-    return np.asarray(pts)
+        i, t = hit
+        pts = np.insert(pts, i + 1, cand[t], axis=0)
+    return pts
 
 
 def enclosure_defects(surfaces: Sequence[np.ndarray], tol: float = POINT_TOL) -> list[BadEdge]:
@@ -276,6 +339,8 @@ def enclosure_defects(surfaces: Sequence[np.ndarray], tol: float = POINT_TOL) ->
 def width(points: np.ndarray) -> float:
     """Width (m) of a polygon across its main direction: its extent along the second
     principal axis of its points."""
+    # lod2energy.geometry.best_fit_plane gives only the third axis (the normal); the width
+    # needs the second
     q = np.asarray(points, dtype=np.float64)
     q = q - q.mean(axis=0)
     if len(q) < 3:

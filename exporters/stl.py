@@ -22,6 +22,7 @@ import numpy as np
 
 from lod2energy.errors import ParameterError
 from lod2energy.geometry import collapse_short_edges  # noqa: F401 - re-exported, used below
+from lod2energy.geometry import triangle_areas, triangle_normals
 from lod2energy.model import BUILDING_TYPES, Building
 
 from .common import ExportResult, ZoneShell, local_origin, weld, output_path, safe_stem, signed_volume, zone_shells
@@ -115,7 +116,7 @@ def flip_caps(v: np.ndarray, t: np.ndarray, c: np.ndarray, rel: float = 1e-9, he
         P = v[t]
         e = np.stack([P[:, 1] - P[:, 0], P[:, 2] - P[:, 1], P[:, 0] - P[:, 2]], axis=1)
         L2 = (e ** 2).sum(axis=2)
-        a2 = np.linalg.norm(np.cross(P[:, 1] - P[:, 0], P[:, 2] - P[:, 0]), axis=1)
+        a2 = np.linalg.norm(triangle_normals(v, t, unit=False), axis=1)  # 2 x area
         Lmax = np.sqrt(L2.max(axis=1))
         caps = np.nonzero(a2 < np.maximum(rel * Lmax, height) * Lmax)[0]
         done = False
@@ -297,10 +298,8 @@ def _closed_by_position(v: np.ndarray, t: np.ndarray) -> bool:
 
 
 def _facet_normals(v: np.ndarray, t: np.ndarray) -> np.ndarray:
-    n = np.cross(v[t[:, 1]] - v[t[:, 0]], v[t[:, 2]] - v[t[:, 0]])
-    L = np.linalg.norm(n, axis=1)
-    L[L == 0] = 1.0
-    return n / L[:, None]
+    """Unit facet normals, (t, 3) float; zero for a degenerate triangle."""
+    return triangle_normals(v, t)
 
 
 def write_ascii(path: Path, v: np.ndarray, t: np.ndarray, codes: np.ndarray) -> None:
@@ -453,7 +452,7 @@ def self_check(path: str | Path) -> list[str]:
     if repeated.any():
         problems.append(f"{int(repeated.sum())} triangle(s) with coincident corners once read as float32 "
                         "(illegal for surfaceCheck; the surface is not closed)")
-    area = 0.5 * np.linalg.norm(np.cross(pts[t[:, 1]] - pts[t[:, 0]], pts[t[:, 2]] - pts[t[:, 0]]), axis=1)
+    area = triangle_areas(pts, t)
     flat = ~repeated & (area <= 1e-10)
     if flat.any():
         problems.append(f"{int(flat.sum())} degenerate triangle(s)")

@@ -52,6 +52,15 @@ def idd_path() -> Path | None:
     return None
 
 
+def idd():
+    """The installed ``Energy+.idd`` parsed (:class:`lod2energy.idd.Idd`), once per process;
+    None when EnergyPlus is not installed."""
+    from lod2energy.idd import load_idd
+
+    p = idd_path()
+    return load_idd(str(p)) if p is not None else None
+
+
 def version() -> str | None:
     """EnergyPlus version "major.minor" (e.g. "25.2"), or None."""
     try:

@@ -346,3 +346,61 @@ def test_rotterdam_tile_with_installations(tmp_path):
     assert res.version == "1.0"
     assert len(res.building_ids) + len(res.skipped) == len(bs)
     assert len(res.building_ids) >= len(bs) // 2
+
+
+# ----------------------------------------------------------------------------- compiled schema check
+
+def _random_mutation(doc, rng):
+    """Change one value somewhere in ``doc``: a key dropped, a type changed, a string or
+    number replaced, a list emptied, an unknown key added."""
+    path, node = [], doc
+    while isinstance(node, (dict, list)) and node and rng.random() < 0.8:
+        keys = list(node.keys()) if isinstance(node, dict) else list(range(len(node)))
+        k = keys[rng.integers(len(keys))]
+        path.append((node, k))
+        node = node[k]
+    if not path:
+        doc["bogus"] = 1
+        return
+    parent, k = path[-1]
+    r = rng.integers(6)
+    if r == 0 and isinstance(parent, dict):
+        del parent[k]
+    elif r == 1:
+        parent[k] = "x"
+    elif r == 2:
+        parent[k] = -1.5
+    elif r == 3:
+        parent[k] = []
+    elif r == 4:
+        parent[k] = {"unknown": True}
+    else:
+        parent[k] = None
+
+
+@pytest.mark.parametrize("version", ("1.1", "2.0"))
+def test_compiled_schema_check_never_accepts_what_jsonschema_rejects(tmp_path, version):
+    """The compiled validator is only a shortcut for valid documents: whatever it accepts
+    the official schema (jsonschema) accepts too, and it does not change the document."""
+    res = X.write(str(tmp_path / "g.city.json"), model(version), two_buildings(), version)
+    assert res.ok
+    good = json.loads(Path(res.path).read_text())
+    schemas = X._validators(version)
+    assert X._schema_valid_fast(version, good)
+    rng = np.random.default_rng(3)
+    rejected = 0
+    for _ in range(200):
+        doc = json.loads(json.dumps(good))
+        for _ in range(int(rng.integers(1, 3))):
+            _random_mutation(doc, rng)
+        before = json.dumps(doc, sort_keys=True)
+        fast = X._schema_valid_fast(version, doc)
+        assert json.dumps(doc, sort_keys=True) == before
+        full = not X._schema_errors(schemas, doc, "doc")   # agrees with iter_errors (test above)
+        assert full or not fast
+        rejected += not fast
+    assert rejected > 60
+    for fn in (_bad_semantic_type, _bad_object_type, _address_as_object):
+        doc = json.loads(json.dumps(good))
+        fn(doc)
+        assert not X._schema_valid_fast(version, doc)

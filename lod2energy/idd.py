@@ -1,0 +1,334 @@
+"""EnergyPlus's Input Data Dictionary (``Energy+.idd``) read once, and IDF text checked against it.
+
+The IDF self-check used to re-parse every written file with eppy, which costs about 0.1 s a
+file and checks little: eppy prints and skips an unknown object, accepts any text in a numeric
+field and crashes on too many fields. Here the IDD is parsed once per process
+(:func:`load_idd`, cached) into frozen object and field definitions, and :func:`check_idf`
+tests a file the way EnergyPlus's input processor does before it simulates:
+
+- every object is a class of the IDD (case-insensitive), with no more fields than the IDD
+  defines (extensible objects repeat their last ``\\extensible:N`` fields);
+- ``\\required-field`` fields are given (or have a ``\\default``), ``\\unique-object`` classes
+  appear at most once and ``\\required-object`` classes at least once;
+- numeric fields are numbers (or ``autosize`` / ``autocalculate`` where the IDD allows them),
+  integers where ``\\type integer``, within ``\\minimum``/``\\minimum>``/``\\maximum``/
+  ``\\maximum<``; ``\\type choice`` fields hold one of their ``\\key`` values;
+- the ``Version`` object matches the IDD's version (major.minor).
+
+Field values are read as EnergyPlus reads them: ``!`` starts a comment, ``,`` separates
+fields, ``;`` ends an object, surrounding blanks are dropped.
+"""
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass
+from functools import lru_cache
+from pathlib import Path
+
+
+@dataclass(frozen=True)
+class FieldDef:
+    """One field of an IDD class.
+
+    Attributes
+    ----------
+    name : str
+        ``\\field`` text, e.g. "Vertex 1 X-coordinate".
+    numeric : bool
+        An ``N`` field (else ``A``).
+    type : str
+        ``\\type`` (alpha, choice, object-list, real, integer, node, external-list).
+    required : bool
+    keys : tuple of str
+        ``\\key`` values, upper case.
+    minimum, maximum : float or None
+    min_exclusive, max_exclusive : bool
+        ``\\minimum>`` / ``\\maximum<``.
+    autosizable, autocalculatable : bool
+    default : str or None
+    """
+    name: str
+    numeric: bool
+    type: str
+    required: bool = False
+    keys: tuple[str, ...] = ()
+    minimum: float | None = None
+    maximum: float | None = None
+    min_exclusive: bool = False
+    max_exclusive: bool = False
+    autosizable: bool = False
+    autocalculatable: bool = False
+    default: str | None = None
+
+
+@dataclass(frozen=True)
+class ClassDef:
+    """One IDD class (object type).
+
+    Attributes
+    ----------
+    name : str
+        As the IDD spells it ("BuildingSurface:Detailed").
+    fields : tuple of FieldDef
+    extensible : int
+        ``\\extensible:N`` (0: not extensible).
+    first_extensible : int
+        Index of the ``\\begin-extensible`` field (``len(fields)`` when none).
+    unique, required : bool
+        ``\\unique-object``, ``\\required-object``.
+    """
+    name: str
+    fields: tuple[FieldDef, ...]
+    extensible: int = 0
+    first_extensible: int = 0
+    unique: bool = False
+    required: bool = False
+
+    def field(self, i: int) -> FieldDef | None:
+        """Definition of field ``i`` (0-based, after the class name); extensible classes
+        repeat their last ``extensible`` fields. None beyond a non-extensible class."""
+        if i < len(self.fields):
+            return self.fields[i]
+        if not self.extensible:
+            return None
+        k0 = self.first_extensible
+        return self.fields[k0 + (i - k0) % self.extensible]
+
+    @property
+    def field_index(self) -> dict[str, int]:
+        """``{upper-case field name: index}``."""
+        return {f.name.upper(): i for i, f in enumerate(self.fields)}
+
+
+@dataclass(frozen=True)
+class Idd:
+    """A parsed ``Energy+.idd``: ``version`` ("25.2.0") and ``classes`` by upper-case name."""
+    version: str
+    classes: dict
+
+    def __hash__(self) -> int:  # frozen with a dict: hash by identity (one per process)
+        return id(self)
+
+
+@dataclass(frozen=True)
+class IdfObject:
+    """One object of an IDF file: its class as written, its field values, its first line."""
+    cls: str
+    fields: tuple[str, ...]
+    line: int
+
+
+_FIELD_ID = re.compile(r"^[AN]\d+$")
+
+
+def _num(text: str) -> float | None:
+    try:
+        return float(text.strip().split()[0])
+    except (ValueError, IndexError):
+        return None
+
+
+def parse_idd(text: str) -> Idd:
+    """Parse the text of an ``Energy+.idd``."""
+    m = re.search(r"!IDD_Version\s+(\S+)", text)
+    version = m.group(1) if m else ""
+    classes: dict[str, ClassDef] = {}
+    cur: dict | None = None
+    fld: dict | None = None
+
+    def close_field():
+        nonlocal fld
+        if fld is not None and cur is not None:
+            cur["fields"].append(fld)
+        fld = None
+
+    def close_class():
+        nonlocal cur
+        close_field()
+        if cur is not None:
+            fields = tuple(FieldDef(
+                name=f["name"], numeric=f["numeric"],
+                type=f.get("type") or ("real" if f["numeric"] else "alpha"),
+                required=f.get("required", False), keys=tuple(f.get("keys", ())),
+                minimum=f.get("minimum"), maximum=f.get("maximum"),
+                min_exclusive=f.get("min_exclusive", False), max_exclusive=f.get("max_exclusive", False),
+                autosizable=f.get("autosizable", False), autocalculatable=f.get("autocalculatable", False),
+                default=f.get("default")) for f in cur["fields"])
+            first = next((i for i, f in enumerate(cur["fields"]) if f.get("begin_ext")), len(fields))
+            classes[cur["name"].upper()] = ClassDef(cur["name"], fields, cur.get("extensible", 0), first,
+                                                    cur.get("unique", False), cur.get("required", False))
+        cur = None
+
+    def attribute(attr: str):
+        target = fld if fld is not None else cur
+        if target is None:
+            return
+        key, _, value = attr.partition(" ")
+        value = value.strip()
+        low = key.lower()
+        if fld is not None:
+            if low == "field":
+                fld["name"] = value
+            elif low == "required-field":
+                fld["required"] = True
+            elif low == "type":
+                fld["type"] = value.lower()
+            elif low == "key":
+                fld.setdefault("keys", []).append(value.upper())
+            elif low in ("minimum", "minimum>"):
+                fld["minimum"] = _num(value)
+                fld["min_exclusive"] = low.endswith(">")
+            elif low in ("maximum", "maximum<"):
+                fld["maximum"] = _num(value)
+                fld["max_exclusive"] = low.endswith("<")
+            elif low == "autosizable":
+                fld["autosizable"] = True
+            elif low == "autocalculatable":
+                fld["autocalculatable"] = True
+            elif low == "default":
+                fld["default"] = value
+            elif low == "begin-extensible":
+                fld["begin_ext"] = True
+        else:
+            if low.startswith("extensible:"):
+                cur["extensible"] = int(re.match(r"\d+", low.split(":", 1)[1]).group(0))
+            elif low == "unique-object":
+                cur["unique"] = True
+            elif low == "required-object":
+                cur["required"] = True
+
+    for raw in text.splitlines():
+        line = raw.split("!", 1)[0].strip()
+        if not line:
+            continue
+        if line.startswith("\\"):
+            if line.lower().startswith("\\group"):
+                continue
+            attribute(line[1:])
+            continue
+        code, sep, attr = line.partition("\\")
+        for tok in (t.strip() for t in re.split(r"[,;]", code)):
+            if not tok:
+                continue
+            if _FIELD_ID.match(tok) and cur is not None:
+                close_field()
+                fld = {"name": tok, "numeric": tok[0] == "N"}
+            else:
+                close_class()
+                cur = {"name": tok, "fields": []}
+        if sep:
+            attribute(attr)
+    close_class()
+    return Idd(version, classes)
+
+
+@lru_cache(maxsize=None)
+def load_idd(path: str) -> Idd:
+    """The parsed IDD at ``path``, read once per process."""
+    return parse_idd(Path(path).read_text(encoding="latin-1"))
+
+
+def parse_idf(text: str) -> list[IdfObject]:
+    """The objects of an IDF text, in order (comments removed, values stripped)."""
+    out: list[IdfObject] = []
+    values: list[str] = []
+    start = None
+    token: list[str] = []
+    for n, raw in enumerate(text.splitlines(), 1):
+        line = raw.split("!", 1)[0]
+        if not line.strip():
+            continue
+        for part in re.split(r"([,;])", line):
+            if part == ",":
+                values.append("".join(token).strip())
+                token = []
+            elif part == ";":
+                values.append("".join(token).strip())
+                token = []
+                if start is None:
+                    start = n
+                out.append(IdfObject(values[0], tuple(values[1:]), start))
+                values, start = [], None
+            elif part.strip():
+                if start is None:
+                    start = n
+                token.append(part)
+    if values or "".join(token).strip():
+        out.append(IdfObject((values + ["".join(token).strip()])[0], tuple(values[1:]), start or 0))
+    return out
+
+
+def _field_problem(f: FieldDef, v: str) -> str | None:
+    if f.numeric:
+        low = v.lower()
+        if low == "autosize" and f.autosizable or low == "autocalculate" and f.autocalculatable:
+            return None
+        try:
+            x = float(v)
+        except ValueError:
+            return f"{v!r} is not a number"
+        if not math.isfinite(x):
+            return f"{v!r} is not a finite number"
+        if f.type == "integer" and not x.is_integer():
+            return f"{v!r} is not an integer"
+        if f.minimum is not None and (x <= f.minimum if f.min_exclusive else x < f.minimum):
+            return f"{v} is below the minimum {'>' if f.min_exclusive else ''}{f.minimum:g}"
+        if f.maximum is not None and (x >= f.maximum if f.max_exclusive else x > f.maximum):
+            return f"{v} is above the maximum {'<' if f.max_exclusive else ''}{f.maximum:g}"
+        return None
+    if f.type == "choice" and f.keys and v.upper() not in f.keys:
+        return f"{v!r} is not one of {', '.join(f.keys[:6])}{', ...' if len(f.keys) > 6 else ''}"
+    return None
+
+
+def check_idf(objects: list[IdfObject], idd: Idd, max_problems: int = 20) -> list[str]:
+    """Problems EnergyPlus's input processor would report for these objects (empty: none).
+
+    Parameters
+    ----------
+    objects : list of IdfObject
+        :func:`parse_idf` of the file.
+    idd : Idd
+    max_problems : int
+        Stop after this many.
+    """
+    problems: list[str] = []
+    seen: dict[str, int] = {}
+    for o in objects:
+        if len(problems) >= max_problems:
+            break
+        c = idd.classes.get(o.cls.upper())
+        if c is None:
+            problems.append(f"line {o.line}: unknown object {o.cls!r}")
+            continue
+        seen[c.name] = seen.get(c.name, 0) + 1
+        if not c.extensible and len(o.fields) > len(c.fields):
+            problems.append(f"line {o.line}: {c.name} has {len(o.fields)} fields, the IDD defines {len(c.fields)}")
+            continue
+        if c.extensible and len(o.fields) > c.first_extensible and (len(o.fields) - c.first_extensible) % c.extensible:
+            problems.append(f"line {o.line}: {c.name} ends inside a group of {c.extensible} extensible fields")
+        for i, f in enumerate(c.fields[:c.first_extensible]):
+            v = o.fields[i] if i < len(o.fields) else ""
+            if f.required and not v and f.default is None:
+                problems.append(f"line {o.line}: {c.name}: required field {f.name!r} is empty")
+        for i, v in enumerate(o.fields):
+            if not v:
+                continue
+            f = c.field(i)
+            why = _field_problem(f, v)
+            if why:
+                problems.append(f"line {o.line}: {c.name}, {f.name}: {why}")
+                if len(problems) >= max_problems:
+                    break
+        if c.name == "Version" and o.fields and idd.version:
+            want = ".".join(idd.version.split(".")[:2])
+            got = ".".join(o.fields[0].split(".")[:2])
+            if got != want:
+                problems.append(f"line {o.line}: Version {o.fields[0]} but the IDD is {idd.version}")
+    for c in idd.classes.values():
+        if c.unique and seen.get(c.name, 0) > 1:
+            problems.append(f"{c.name} appears {seen[c.name]} times (a unique object)")
+        if c.required and not seen.get(c.name):
+            problems.append(f"required object {c.name} is missing")
+    return problems[:max_problems]
