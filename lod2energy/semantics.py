@@ -31,6 +31,7 @@ from typing import Any, Iterable, Mapping
 
 import numpy as np
 
+from lod2energy.geometry import newell_normal, plane_basis
 from lod2energy.model import BUILDING_TYPES, Building, Geometry, Shell, Solid, Surface, frozen_mapping
 from lod2energy.validate.defect import Defect
 
@@ -117,12 +118,6 @@ def envelope_objects(b: Building, lod: str | None = None) -> list:
 
 # ----------------------------------------------------------------------------- face geometry
 
-def _ring_vector(p: np.ndarray) -> np.ndarray:
-    """Newell area vector of a closed ring ``p`` (k, 3): |v| = area, direction = normal."""
-    q = np.roll(p, -1, axis=0)
-    return 0.5 * np.cross(p, q).sum(axis=0)
-
-
 def _ring_centroid(p: np.ndarray, n_hat: np.ndarray) -> tuple[float, np.ndarray]:
     """Signed area (along ``n_hat``) and area centroid of a planar ring (fan triangulation)."""
     if len(p) < 3:
@@ -157,7 +152,7 @@ def face_metrics(vertices: np.ndarray, surface: Surface) -> tuple[float, np.ndar
     outer = vertices[surface.outer]
     origin = outer.mean(axis=0) if len(outer) else np.zeros(3)
     outer = outer - origin
-    vec = _ring_vector(outer) if len(outer) >= 3 else np.zeros(3)
+    vec = 0.5 * newell_normal(vertices[surface.outer]) if len(outer) >= 3 else np.zeros(3)
     norm = float(np.linalg.norm(vec))
     if norm < 1e-15:
         return 0.0, np.zeros(3), origin
@@ -255,13 +250,6 @@ def rule_labels(t: FaceTable, rules: LabelRules = DEFAULT_RULES) -> list[str]:
 
 # ----------------------------------------------------------------------------- helpers
 
-def _plane_basis(n: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    a = np.array([1.0, 0, 0]) if abs(n[0]) < 0.9 else np.array([0, 1.0, 0])
-    u = np.cross(n, a)
-    u /= np.linalg.norm(u)
-    return u, np.cross(n, u)
-
-
 def _polygon2d(vertices: np.ndarray, s: Surface, origin: np.ndarray, u: np.ndarray, v: np.ndarray):
     from shapely.geometry import Polygon
     from shapely.validation import make_valid
@@ -330,7 +318,7 @@ class _SourceFaces:
     def _distance(self, j: int, point: np.ndarray) -> float:
         st, entry, n, c, s = self.items[j]
         if j not in self._poly:
-            u, v = _plane_basis(n)
+            u, v = plane_basis(n)
             self._poly[j] = (u, v, _polygon2d(self.vertices, s, c, u, v))
         u, v, poly = self._poly[j]
         d = point - c
@@ -369,7 +357,7 @@ def _closure_faces(vertices: np.ndarray, tables: list[FaceTable], gi: int, candi
         if t.area[i] <= 0:
             continue
         n, c = t.normal[i], t.centroid[i]
-        u, v = _plane_basis(n)
+        u, v = plane_basis(n)
         mine = None
         for gj, o in enumerate(tables):
             if gj == gi or len(o.area) == 0:

@@ -15,7 +15,7 @@ import time
 import numpy as np
 
 from lod2energy.config import DEFAULT, Tolerances
-from lod2energy.repair._mesh import PolyMesh, merge_coplanar, triangles_to_mesh, triangulate_mesh
+from lod2energy.polymesh import PolyMesh, merge_coplanar, triangles_to_mesh, triangulate_mesh
 from lod2energy.repair.metrics import point_triangle_distance
 from lod2energy.repair.validity import shell_defects
 
@@ -210,12 +210,12 @@ SKIN_DEPTH = 0.25
 
 
 def _area(m: PolyMesh) -> float:
-    from lod2energy.repair._mesh import face_area
+    from lod2energy.polymesh import face_area
     return float(sum(face_area(m.vertices, f) for f in m.faces))
 
 
 def _volume(m: PolyMesh) -> float:
-    from lod2energy.repair._mesh import signed_volume
+    from lod2energy.polymesh import signed_volume
     return signed_volume(m)
 
 

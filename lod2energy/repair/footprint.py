@@ -19,8 +19,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from lod2energy.geometry import collapse_short_edges
-from lod2energy.repair._mesh import Face, PolyMesh, face_area, face_normal
+from lod2energy.geometry import collapse_short_edges, snap_map
+from lod2energy.polymesh import Face, PolyMesh, face_area, face_normal
 
 
 def footprint_polygon(m: PolyMesh, simplify: float = 0.01):
@@ -238,26 +238,14 @@ def roof_partition(polys: list, snap: float = ROOF_SNAP) -> list[tuple[object, l
         Cells (counter-clockwise exteriors) and the indices into ``polys`` of the faces over them.
     """
     import shapely
-    from scipy.spatial import cKDTree
     from shapely.geometry import Polygon
     from shapely.geometry.polygon import orient as orient2d
 
     rings = [[np.asarray(p.exterior.coords)[:-1]] + [np.asarray(r.coords)[:-1] for r in p.interiors]
              for p in polys]
     pts = np.vstack([r for rs in rings for r in rs])
-    # merge vertices within snap (union-find over close pairs), each group to its mean
-    parent = np.arange(len(pts))
-
-    def find(i):
-        while parent[i] != i:
-            parent[i] = parent[parent[i]]
-            i = parent[i]
-        return i
-    for i, j in cKDTree(pts).query_pairs(snap):
-        a, b = find(i), find(j)
-        if a != b:
-            parent[max(a, b)] = min(a, b)
-    root = np.array([find(i) for i in range(len(pts))])
+    # merge vertices within snap (transitive clusters), each group to its mean
+    root = snap_map(pts, snap)
     sums = np.zeros((len(pts), 2))
     np.add.at(sums, root, pts)
     cnt = np.bincount(root, minlength=len(pts)).astype(float)
@@ -441,7 +429,7 @@ def extrude_roofs(m: PolyMesh, snap: float = 0.0) -> PolyMesh | None:
     """
     import manifold3d as m3
 
-    from lod2energy.repair._mesh import merge_coplanar, triangles_to_mesh
+    from lod2energy.polymesh import merge_coplanar, triangles_to_mesh
 
     V = m.vertices
     used = sorted({i for f in m.faces for r in f.rings for i in r})

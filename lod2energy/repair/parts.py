@@ -13,7 +13,7 @@ import numpy as np
 
 from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.model import Building, Geometry, Shell, Solid, Surface
-from lod2energy.repair._mesh import Face, PolyMesh, compact, merge_coplanar, triangulate_mesh
+from lod2energy.polymesh import Face, PolyMesh, compact, merge_coplanar, triangulate_mesh
 
 
 def _part_meshes(b: Building, lod):

@@ -27,7 +27,7 @@ from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.model import (
     BUILDING_TYPES, Building, FeatureError, Geometry, Shell, Solid, Surface, frozen_mapping, lod_key,
 )
-from lod2energy.repair._mesh import Face, PolyMesh, compact, face_area, topology
+from lod2energy.polymesh import Face, PolyMesh, compact, face_area, topology
 from lod2energy.repair.alphashape import alpha_repair
 from lod2energy.repair.cleanup import cleanup, desliver, merge_slivers, snap_vertices
 from lod2energy.repair.footprint import ROOF_SNAP, extrude_footprint, extrude_roofs
@@ -260,7 +260,7 @@ def roof_model(m: PolyMesh, lod, tol: Tolerances) -> PolyMesh | None:
     vertices are on average more than :data:`ROOF_MODEL_MAX_DISPLACEMENT` from it.
     """
     from lod2energy.repair.metrics import point_triangle_distance
-    from lod2energy.repair._mesh import triangulate_mesh
+    from lod2energy.polymesh import triangulate_mesh
     def good(x):
         return x is not None and is_repaired(x, lod, tol)
 

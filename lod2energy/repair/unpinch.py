@@ -17,7 +17,7 @@ from collections import defaultdict
 import numpy as np
 
 from lod2energy.config import DEFAULT, Tolerances
-from lod2energy.repair._mesh import Face, PolyMesh, face_normal, fan_groups, topology
+from lod2energy.polymesh import Face, PolyMesh, face_normal, fan_groups, topology
 
 #: Distance (m) each copy of a pinch vertex moves into its own material: more than the
 #: clean-up's T-junction distance (5 mm, which would zip the sheets together again) and

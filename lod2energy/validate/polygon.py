@@ -31,9 +31,9 @@ import shapely
 from scipy.spatial import cKDTree
 
 from lod2energy.config import DEFAULT, Tolerances
+from lod2energy.geometry import constrained_delaunay, cross_rows as _cross, plane_bases
 from lod2energy.model import Shell
 from lod2energy.validate.snap import snapped_ids
-from lod2energy.validate.triangulate import constrained_delaunay
 
 INFO_104_TRIANGLE = " outer ring (a triangle) is collapsed to a line"
 INFO_104_RING = "ring self-intersects or is collapsed to a line"
@@ -79,18 +79,6 @@ def _exactly_collinear(a: np.ndarray, b: np.ndarray, c: np.ndarray) -> bool:
             and U[0] * V[1] - U[1] * V[0] == 0)
 
 
-def _plane_basis(normals: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Two unit vectors spanning each plane, ``(m, 3)`` each, right-handed with the normal."""
-    m = len(normals)
-    helper = np.zeros((m, 3))
-    ax = np.argmin(np.abs(normals), axis=1)
-    helper[np.arange(m), ax] = 1.0
-    u = _cross(normals, helper)
-    u /= np.linalg.norm(u, axis=1, keepdims=True)
-    v = _cross(normals, u)
-    return u, v
-
-
 def _smallest_eigenvector(cov: np.ndarray) -> np.ndarray:
     """Unit eigenvector of the smallest eigenvalue of each (3, 3) covariance, as a plane normal.
 
@@ -124,13 +112,6 @@ def fit_planes(points: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     c = points.mean(axis=1)
     X = points - c[:, None, :]
     return c, _smallest_eigenvector(np.einsum("mni,mnj->mij", X, X))
-
-
-def _cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
-    """Row-wise cross product of (..., 3) arrays (cheaper than np.cross on small arrays)."""
-    return np.stack([a[..., 1] * b[..., 2] - a[..., 2] * b[..., 1],
-                     a[..., 2] * b[..., 0] - a[..., 0] * b[..., 2],
-                     a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0]], axis=-1)
 
 
 def _triples(n: int) -> np.ndarray:
@@ -352,7 +333,7 @@ def check_polygons_multi(items: Sequence[tuple[np.ndarray, Shell]], tol: Toleran
                 info[f] = [(f, 203, info_203(abs(h[k]), tol.planarity_d2p_tol))]
         u = np.zeros((F, 3))
         v = np.zeros((F, 3))
-        u[gf], v[gf] = _plane_basis(nrm[gf])
+        u[gf], v[gf] = plane_bases(nrm[gf], helper="least")
         XY[:, 0] = np.einsum("ki,ki->k", X, u[fp])
         XY[:, 1] = np.einsum("ki,ki->k", X, v[fp])
         H[:] = np.where(sel, h, 0.0)
