@@ -207,6 +207,14 @@ def signed_volume(m: PolyMesh, tris: np.ndarray | None = None) -> float:
 
 # ----------------------------------------------------------------------------- topology
 
+def _find(parent, x):
+    """Root of ``x`` in a union-find forest ``parent`` (list or dict), halving the path."""
+    while parent[x] != x:
+        parent[x] = parent[parent[x]]
+        x = parent[x]
+    return x
+
+
 def edge_faces(faces) -> dict[tuple[int, int], list[tuple[int, int]]]:
     """Undirected edge ``(min, max)`` -> list of ``(face_index, +1 if min->max else -1)``."""
     inc: dict[tuple[int, int], list[tuple[int, int]]] = defaultdict(list)
@@ -244,13 +252,6 @@ def topology(m: PolyMesh) -> Topology:
     boundary, nonman, misor = [], [], []
     n = len(m.faces)
     parent = list(range(n))
-
-    def find(x):
-        while parent[x] != x:
-            parent[x] = parent[parent[x]]
-            x = parent[x]
-        return x
-
     for e, lst in inc.items():
         k = len(lst)
         if k == 1:
@@ -261,10 +262,10 @@ def topology(m: PolyMesh) -> Topology:
             if lst[0][1] == lst[1][1]:
                 misor.append(e)
         for (f, _) in lst[1:]:
-            ra, rb = find(lst[0][0]), find(f)
+            ra, rb = _find(parent, lst[0][0]), _find(parent, f)
             if ra != rb:
                 parent[max(ra, rb)] = min(ra, rb)
-    labels = np.array([find(i) for i in range(n)], dtype=np.int64)
+    labels = np.array([_find(parent, i) for i in range(n)], dtype=np.int64)
     ncomp = len(set(labels.tolist()))
     nmv = nonmanifold_vertices(m.faces, inc)
     return Topology(inc, sorted(boundary), sorted(nonman), sorted(misor), nmv, ncomp, labels)
@@ -274,21 +275,15 @@ def fan_groups(faces, links) -> list[list[int]]:
     """Connected groups of ``faces`` (ids) where each item of ``links`` (a sequence of face ids)
     joins its members; faces outside ``faces`` are ignored. Groups in order of first face."""
     parent = {f: f for f in faces}
-
-    def find(x):
-        while parent[x] != x:
-            parent[x] = parent[parent[x]]
-            x = parent[x]
-        return x
     for grp in links:
         grp = [g for g in grp if g in parent]
         for g in grp[1:]:
-            ra, rb = find(grp[0]), find(g)
+            ra, rb = _find(parent, grp[0]), _find(parent, g)
             if ra != rb:
                 parent[rb] = ra
     out: dict[int, list[int]] = {}
     for f in faces:
-        out.setdefault(find(f), []).append(f)
+        out.setdefault(_find(parent, f), []).append(f)
     return list(out.values())
 
 
@@ -371,13 +366,6 @@ def merge_coplanar(m: PolyMesh, angle_tol: float = 1e-3, dist_tol: float = 1e-4)
     normals = [face_normal(V, f) for f in faces]
     n = len(faces)
     parent = list(range(n))
-
-    def find(x):
-        while parent[x] != x:
-            parent[x] = parent[parent[x]]
-            x = parent[x]
-        return x
-
     for (a, b), lst in inc.items():
         if len(lst) != 2:
             continue
@@ -390,12 +378,12 @@ def merge_coplanar(m: PolyMesh, angle_tol: float = 1e-3, dist_tol: float = 1e-4)
         p = V[faces[g].outer[0]]
         if abs(np.dot(p - V[faces[f].outer[0]], normals[f])) > dist_tol:
             continue
-        rf, rg = find(f), find(g)
+        rf, rg = _find(parent, f), _find(parent, g)
         if rf != rg:
             parent[max(rf, rg)] = min(rf, rg)
     groups: dict[int, list[int]] = defaultdict(list)
     for i in range(n):
-        groups[find(i)].append(i)
+        groups[_find(parent, i)].append(i)
     out = []
     for root in sorted(groups):
         g = groups[root]

@@ -99,21 +99,10 @@ DEFAULT_RULES = LabelRules()
 def envelope_objects(b: Building, lod: str | None = None) -> list:
     """The geometries that make the thermal envelope: ``(object, geom_index, geometry)``.
 
-    Like ``b.energy_objects(lod)`` but restricted to Building / BuildingPart objects
-    (installations such as balconies or chimneys are neither labelled nor given U-values),
-    and when an object has several polygonal geometries at ``lod`` the volumetric one with
-    the most surfaces is taken (a Solid beside a MultiSurface, as in some city models).
+    :meth:`Building.envelope` restricted to Building / BuildingPart objects (installations
+    such as balconies or chimneys are neither labelled nor given U-values).
     """
-    lod = lod if lod is not None else b.default_lod()
-    out = []
-    for o in b.objects:
-        if o.type not in BUILDING_TYPES:
-            continue
-        cands = [(gi, g) for gi, g in enumerate(o.geometries) if g.is_polygonal and g.lod == lod]
-        if cands:
-            gi, g = max(cands, key=lambda c: (c[1].is_volumetric, c[1].n_surfaces, -c[0]))
-            out.append((o, gi, g))
-    return out
+    return [e for e in b.envelope(lod) if e[0].type in BUILDING_TYPES]
 
 
 # ----------------------------------------------------------------------------- face geometry

@@ -336,7 +336,7 @@ def desliver(m: PolyMesh, tol: Tolerances, accept) -> PolyMesh | None:
     return None
 
 
-TJUNCTION_TOL = 0.005  # m: a vertex this close to another polygon's edge is on it
+TJUNCTION_TOL = DEFAULT.tjunction_tol  # m: a vertex this close to another polygon's edge is on it
 
 
 def cleanup(m: PolyMesh, tol: Tolerances = DEFAULT, tjunction_tol: float | None = None) -> PolyMesh:
@@ -346,10 +346,10 @@ def cleanup(m: PolyMesh, tol: Tolerances = DEFAULT, tjunction_tol: float | None 
     ----------
     tjunction_tol : float, m
         Distance under which a vertex is inserted into a polygon edge; default
-        ``max(snap_tol, TJUNCTION_TOL)`` (half the planarity tolerance: the polygon stays
+        ``max(tol.snap_tol, tol.tjunction_tol)`` (half the planarity tolerance: the polygon stays
         planar within it).
     """
-    tj = max(tol.snap_tol, TJUNCTION_TOL) if tjunction_tol is None else tjunction_tol
+    tj = max(tol.snap_tol, tol.tjunction_tol) if tjunction_tol is None else tjunction_tol
     m = snap_vertices(m, tol.snap_tol)
     m = clean_rings(m)
     m = split_pinched(m)
