@@ -23,6 +23,27 @@ class Tolerances:
         Skip the 204 check (val3dity ``--ignore204``).
     sliver_area : float, m2
         Faces with an area at or under this are slivers (energy compliance).
+    volume_eps : float, m3
+        Shared volumes at or under this count as touching, not overlapping (401, 501, 601
+        and the inner-shell tests; absorbs round-off of coplanar shared walls).
+    area_eps : float, m2
+        Shared boundary area at or under this counts as no shared face (inner shells, 601).
+    tjunction_tol : float, m
+        Repair clean-up: a vertex this close to another polygon's edge is inserted into it
+        (at least ``snap_tol``; half the planarity tolerance, so the polygon stays planar).
+    unpinch_offset : float, m
+        Repair: how far each copy of a pinch vertex moves into its own fan's material.
+    wrap_offset : float, m
+        Repair: distance the alpha wrap keeps from the input surfaces.
+    skin_depth : float, m
+        Repair: an alpha result whose volume per surface area is under this (while it fills
+        under a third of the input's convex hull) is a skin around the surfaces, refused.
+    roof_snap : float, m
+        Repair ``roofs`` stage: roof outlines closer than this in plan share their vertices
+        and edges (5 x the default snap tolerance).
+    roof_max_displacement : float, m
+        Repair ``roofs`` stage: the 2.5D model is kept only when the input's vertices lie
+        this close to it on average.
     """
 
     snap_tol: float = 0.001
@@ -31,6 +52,14 @@ class Tolerances:
     overlap_tol: float = -1.0
     ignore204: bool = False
     sliver_area: float = 1e-4
+    volume_eps: float = 1e-6
+    area_eps: float = 1e-6
+    tjunction_tol: float = 0.005
+    unpinch_offset: float = 0.008
+    wrap_offset: float = 0.01
+    skin_depth: float = 0.25
+    roof_snap: float = 5e-3
+    roof_max_displacement: float = 0.10
 
 
 DEFAULT = Tolerances()

@@ -16,9 +16,9 @@ from dataclasses import dataclass
 from typing import Sequence
 
 import numpy as np
-from scipy.spatial import cKDTree
 
 from lod2energy.config import DEFAULT, Tolerances
+from lod2energy.geometry import snap_map
 from lod2energy.model import Building, Surface
 
 FEATURE_NAMES = ("area", "n_x", "n_y", "n_z", "h", "degenerate", "planarity",
@@ -42,46 +42,9 @@ def snap_ids(vertices: np.ndarray, snap_tol: float, groups: np.ndarray | None = 
         The smallest index of each vertex's cluster (transitively merged).
     """
     n = len(vertices)
-    ids = np.arange(n)
     if n < 2 or snap_tol <= 0:
-        return ids
-    pairs = cKDTree(vertices).query_pairs(snap_tol, output_type="ndarray")
-    if groups is not None and len(pairs):
-        pairs = pairs[groups[pairs[:, 0]] == groups[pairs[:, 1]]]
-    if len(pairs) == 0:
-        return ids
-    # union-find by repeated min-label propagation (few rounds for tiny clusters)
-    a, b = pairs[:, 0], pairs[:, 1]
-    while True:
-        la, lb = ids[a], ids[b]
-        m = np.minimum(la, lb)
-        changed = (la != m) | (lb != m)
-        if not changed.any():
-            break
-        np.minimum.at(ids, a, m)
-        np.minimum.at(ids, b, m)
-        ids = ids[ids]
-    return ids
-
-
-def newell(points: np.ndarray) -> np.ndarray:
-    """Newell vector of a ring: direction = normal, length = 2 x area.
-
-    Parameters
-    ----------
-    points : (k, 3) float
-
-    Returns
-    -------
-    (3,) float
-    """
-    p = points - points.mean(axis=0)
-    q = np.roll(p, -1, axis=0)
-    return np.array([
-        np.sum((p[:, 1] - q[:, 1]) * (p[:, 2] + q[:, 2])),
-        np.sum((p[:, 2] - q[:, 2]) * (p[:, 0] + q[:, 0])),
-        np.sum((p[:, 0] - q[:, 0]) * (p[:, 1] + q[:, 1])),
-    ])
+        return np.arange(n)
+    return snap_map(vertices, snap_tol, groups)
 
 
 @dataclass(frozen=True, eq=False)

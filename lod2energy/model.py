@@ -268,26 +268,32 @@ class Building:
             return None
         return self.lods[-1]
 
-    def energy_objects(self, lod: str | None = None) -> list[tuple[CityObject, int, Geometry]]:
-        """The geometries that describe the building's envelope at ``lod``.
+    def envelope(self, lod: str | None = None) -> list[tuple[CityObject, int, Geometry]]:
+        """The geometries that describe the building's envelope at ``lod``: the one choice.
 
-        Returns one ``(object, geom_index, geometry)`` per envelope object (the Building and
-        its BuildingParts) that has a polygonal geometry at ``lod`` (a Solid-type one first, else
-        the first one).
+        One ``(object, geom_index, geometry)`` per envelope object (the Building and its
+        BuildingParts, see :attr:`envelope_objects`) that has a polygonal geometry at ``lod``
+        (default :meth:`default_lod`): a volumetric (Solid-type) one first, since it describes
+        the envelope better than a surface set; among several of the same kind the one with
+        the most surfaces, then the first.
         """
         lod = lod if lod is not None else self.default_lod()
         out = []
         for o in self.envelope_objects:
             cands = [(gi, g) for gi, g in enumerate(o.geometries) if g.is_polygonal and g.lod == lod]
-            if cands:  # a volumetric geometry describes the envelope better than a surface set
-                gi, g = min(cands, key=lambda c: (not c[1].is_volumetric, c[0]))
+            if cands:
+                gi, g = min(cands, key=lambda c: (not c[1].is_volumetric, -c[1].n_surfaces, c[0]))
                 out.append((o, gi, g))
         return out
 
+    def energy_objects(self, lod: str | None = None) -> list[tuple[CityObject, int, Geometry]]:
+        """The envelope geometries at ``lod`` (:meth:`envelope`; the older name)."""
+        return self.envelope(lod)
+
     def shells(self, lod: str | None = None, exterior_only: bool = True) -> list[ShellRef]:
-        """Shells of the envelope at ``lod`` (see :meth:`energy_objects`)."""
+        """Shells of the envelope at ``lod`` (see :meth:`envelope`)."""
         refs = []
-        for o, gi, g in self.energy_objects(lod):
+        for o, gi, g in self.envelope(lod):
             for si, hi, sh in g.iter_shells():
                 if exterior_only and hi > 0:
                     continue

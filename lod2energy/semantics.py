@@ -31,6 +31,7 @@ from typing import Any, Iterable, Mapping
 
 import numpy as np
 
+from lod2energy.geometry import newell_normal, plane_basis
 from lod2energy.model import BUILDING_TYPES, Building, Geometry, Shell, Solid, Surface, frozen_mapping
 from lod2energy.validate.defect import Defect
 
@@ -98,30 +99,13 @@ DEFAULT_RULES = LabelRules()
 def envelope_objects(b: Building, lod: str | None = None) -> list:
     """The geometries that make the thermal envelope: ``(object, geom_index, geometry)``.
 
-    Like ``b.energy_objects(lod)`` but restricted to Building / BuildingPart objects
-    (installations such as balconies or chimneys are neither labelled nor given U-values),
-    and when an object has several polygonal geometries at ``lod`` the volumetric one with
-    the most surfaces is taken (a Solid beside a MultiSurface, as in some city models).
+    :meth:`Building.envelope` restricted to Building / BuildingPart objects (installations
+    such as balconies or chimneys are neither labelled nor given U-values).
     """
-    lod = lod if lod is not None else b.default_lod()
-    out = []
-    for o in b.objects:
-        if o.type not in BUILDING_TYPES:
-            continue
-        cands = [(gi, g) for gi, g in enumerate(o.geometries) if g.is_polygonal and g.lod == lod]
-        if cands:
-            gi, g = max(cands, key=lambda c: (c[1].is_volumetric, c[1].n_surfaces, -c[0]))
-            out.append((o, gi, g))
-    return out
+    return [e for e in b.envelope(lod) if e[0].type in BUILDING_TYPES]
 
 
 # ----------------------------------------------------------------------------- face geometry
-
-def _ring_vector(p: np.ndarray) -> np.ndarray:
-    """Newell area vector of a closed ring ``p`` (k, 3): |v| = area, direction = normal."""
-    q = np.roll(p, -1, axis=0)
-    return 0.5 * np.cross(p, q).sum(axis=0)
-
 
 def _ring_centroid(p: np.ndarray, n_hat: np.ndarray) -> tuple[float, np.ndarray]:
     """Signed area (along ``n_hat``) and area centroid of a planar ring (fan triangulation)."""
@@ -157,7 +141,7 @@ def face_metrics(vertices: np.ndarray, surface: Surface) -> tuple[float, np.ndar
     outer = vertices[surface.outer]
     origin = outer.mean(axis=0) if len(outer) else np.zeros(3)
     outer = outer - origin
-    vec = _ring_vector(outer) if len(outer) >= 3 else np.zeros(3)
+    vec = 0.5 * newell_normal(vertices[surface.outer]) if len(outer) >= 3 else np.zeros(3)
     norm = float(np.linalg.norm(vec))
     if norm < 1e-15:
         return 0.0, np.zeros(3), origin
@@ -255,13 +239,6 @@ def rule_labels(t: FaceTable, rules: LabelRules = DEFAULT_RULES) -> list[str]:
 
 # ----------------------------------------------------------------------------- helpers
 
-def _plane_basis(n: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    a = np.array([1.0, 0, 0]) if abs(n[0]) < 0.9 else np.array([0, 1.0, 0])
-    u = np.cross(n, a)
-    u /= np.linalg.norm(u)
-    return u, np.cross(n, u)
-
-
 def _polygon2d(vertices: np.ndarray, s: Surface, origin: np.ndarray, u: np.ndarray, v: np.ndarray):
     from shapely.geometry import Polygon
     from shapely.validation import make_valid
@@ -330,7 +307,7 @@ class _SourceFaces:
     def _distance(self, j: int, point: np.ndarray) -> float:
         st, entry, n, c, s = self.items[j]
         if j not in self._poly:
-            u, v = _plane_basis(n)
+            u, v = plane_basis(n)
             self._poly[j] = (u, v, _polygon2d(self.vertices, s, c, u, v))
         u, v, poly = self._poly[j]
         d = point - c
@@ -369,7 +346,7 @@ def _closure_faces(vertices: np.ndarray, tables: list[FaceTable], gi: int, candi
         if t.area[i] <= 0:
             continue
         n, c = t.normal[i], t.centroid[i]
-        u, v = _plane_basis(n)
+        u, v = plane_basis(n)
         mine = None
         for gj, o in enumerate(tables):
             if gj == gi or len(o.area) == 0:

@@ -18,7 +18,7 @@ import numpy as np
 from lod2energy.cli import main
 from lod2energy.model import Building
 from lod2energy.repair import repair_features
-from lod2energy.repair._mesh import Face, PolyMesh
+from lod2energy.polymesh import Face, PolyMesh
 from lod2energy.repair.alphashape import MAX_WRAP_AREA, alpha_wrap
 from lod2energy.repair.plausible import MAX_EXTENT, implausible
 

@@ -150,7 +150,7 @@ def assert_energy_ready(b):
         m = mesh_of_geometry(b.vertices, g)
         assert shell_defects(m, DEFAULT) == []
         tris = []
-        from lod2energy.repair._mesh import triangulate_mesh
+        from lod2energy.polymesh import triangulate_mesh
         tris, _ = triangulate_mesh(m)
         tm = trimesh.Trimesh(m.vertices, tris, process=False)
         assert tm.is_watertight
@@ -363,7 +363,7 @@ def test_composite_solid_becomes_one_solid_without_internal_wall():
     assert info["stage"] in ("cleanup", "holefill")
     assert_energy_ready(r)
     m = mesh_of_geometry(r.vertices, r.root.geometries[0])
-    from lod2energy.repair._mesh import signed_volume
+    from lod2energy.polymesh import signed_volume
     assert signed_volume(m) == pytest.approx(20 * 8 * 6)
     assert info["iou"] == pytest.approx(1.0, abs=1e-6)
 
@@ -421,7 +421,7 @@ def test_alpha_search_keeps_a_slender_tower():
     from factories import box_polygons, building_from_polygons
     from lod2energy.repair.alphashape import alpha_repair
     from lod2energy.repair.pipeline import mesh_of_geometry
-    from lod2energy.repair._mesh import signed_volume
+    from lod2energy.polymesh import signed_volume
     shaft = box_polygons(3, 3, 55)
     del shaft[1]  # no top: the deck sits on it
     deck = box_polygons(20, 20, 5, origin=(-8.5, -8.5, 55))

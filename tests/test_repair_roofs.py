@@ -8,9 +8,9 @@ import pytest
 
 from factories import gabled_house
 from lod2energy.config import DEFAULT
-from lod2energy.repair._mesh import Face, PolyMesh, signed_volume, topology
+from lod2energy.polymesh import Face, PolyMesh, signed_volume, topology
 from lod2energy.repair.cleanup import cleanup
-from lod2energy.repair.footprint import (
+from lod2energy.repair.roofs import (
     MAX_HOLE, PINCH_COLUMN, ROOF_SNAP, extrude_roofs, ground_level, pinches, roof_partition,
 )
 from lod2energy.repair.orientation import orient

@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 
 from lod2energy.config import DEFAULT
-from lod2energy.repair._mesh import Face, PolyMesh, signed_volume, topology
+from lod2energy.polymesh import Face, PolyMesh, signed_volume, topology
 from lod2energy.repair.pipeline import repair_building
 from lod2energy.repair.unpinch import OFFSET, unpinch
 from lod2energy.repair.validity import shell_defects

@@ -322,7 +322,7 @@ def _features_of_document(doc: Mapping[str, Any], transform: Mapping | None,
     for item in _features_of_document_raw(doc, transform, what):
         if isinstance(templates, Mapping) and isinstance(item, Building) and any(
                 g.type == "GeometryInstance" for o in item.objects for g in o.geometries):
-            # instances are validated on their template (lod2energy.validate.polygon.check_instance)
+            # instances are validated on their template (lod2energy.validate.checks.check_instance)
             item = item.with_provenance(geometry_templates=templates)
         yield item
 

@@ -15,12 +15,12 @@ import time
 import numpy as np
 
 from lod2energy.config import DEFAULT, Tolerances
-from lod2energy.repair._mesh import PolyMesh, merge_coplanar, triangles_to_mesh, triangulate_mesh
+from lod2energy.polymesh import PolyMesh, merge_coplanar, triangles_to_mesh, triangulate_mesh
 from lod2energy.repair.metrics import point_triangle_distance
 from lod2energy.repair.validity import shell_defects
 
 ALPHAS = (8.0, 4.0, 2.0)  # m: 8 and 4 bridge missing party walls; 2 follows closed but tangled shells closer (hollow skins are rejected below)
-OFFSET = 0.01  # m
+OFFSET = DEFAULT.wrap_offset  # m, default of Tolerances.wrap_offset
 
 MAX_WRAP_AREA = 1.0e6
 """Largest surface area handed to the alpha wrap, m2.
@@ -205,17 +205,17 @@ def _hull_volume(m: PolyMesh) -> float:
 
 #: A closed candidate whose volume per surface area (m) is below this while it fills less
 #: than a third of the input's convex hull is a skin around the surfaces (about 2 x OFFSET
-#: deep), not a building: a 1.5 m cube has 0.25 m.
-SKIN_DEPTH = 0.25
+#: deep), not a building: a 1.5 m cube has 0.25 m. Default of ``Tolerances.skin_depth``.
+SKIN_DEPTH = DEFAULT.skin_depth
 
 
 def _area(m: PolyMesh) -> float:
-    from lod2energy.repair._mesh import face_area
+    from lod2energy.polymesh import face_area
     return float(sum(face_area(m.vertices, f) for f in m.faces))
 
 
 def _volume(m: PolyMesh) -> float:
-    from lod2energy.repair._mesh import signed_volume
+    from lod2energy.polymesh import signed_volume
     return signed_volume(m)
 
 
@@ -242,14 +242,14 @@ def alpha_repair(m: PolyMesh, tol: Tolerances = DEFAULT, deadline: float | None 
             break
         if best is not None and kind == "wrap" and target[0] != 400:
             continue  # a coarser valid wrap is already in hand
-        r = alpha_complex(m, a) if kind == "complex" else alpha_wrap(m, a, target_faces=target[0],
+        r = alpha_complex(m, a) if kind == "complex" else alpha_wrap(m, a, tol.wrap_offset, target_faces=target[0],
                                                                             deadline=deadline)
         if r is None or shell_defects(r, tol, first_only=True):
             continue
         if accept is not None and not accept(r):
             continue
         vol = _volume(r)
-        if vol < hv / 3 and vol < SKIN_DEPTH * _area(r):
+        if vol < hv / 3 and vol < tol.skin_depth * _area(r):
             continue  # a hollow skin around missing walls, not a building (a slender tower
             # fills a third of its hull neither, but its volume per area is metres)
         rt, _ = triangulate_mesh(r)

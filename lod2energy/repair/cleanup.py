@@ -13,10 +13,13 @@ import numpy as np
 from scipy.spatial import cKDTree
 
 from lod2energy.config import DEFAULT, Tolerances
-from lod2energy.repair._mesh import (
-    Face, PolyMesh, edge_faces, face_area, face_normal, plane_basis, planarity, ring_is_simple_2d,
-    triangulate_face,
+from lod2energy.geometry import plane_basis, snap_map
+from lod2energy.model import Shell, Surface
+from lod2energy.polymesh import (
+    Face, PolyMesh, edge_faces, face_area, face_normal, planarity, ring_is_simple_2d, split_loop, triangulate_face,
 )
+from lod2energy.repair.holefill import triangulate_loop
+from lod2energy.validate.polygon import check_polygons
 
 
 def snap_vertices(m: PolyMesh, snap_tol: float) -> PolyMesh:
@@ -24,21 +27,9 @@ def snap_vertices(m: PolyMesh, snap_tol: float) -> PolyMesh:
     V = m.vertices
     if len(V) < 2:
         return m
-    pairs = cKDTree(V).query_pairs(snap_tol * (1 + 1e-9) + 1e-12, output_type="ndarray")
-    if len(pairs) == 0:
+    lut = snap_map(V, snap_tol * (1 + 1e-9) + 1e-12)
+    if (lut == np.arange(len(V))).all():
         return m
-    parent = np.arange(len(V))
-
-    def find(x):
-        while parent[x] != x:
-            parent[x] = parent[parent[x]]
-            x = parent[x]
-        return x
-    for a, b in sorted(map(tuple, pairs.tolist())):
-        ra, rb = find(a), find(b)
-        if ra != rb:
-            parent[max(ra, rb)] = min(ra, rb)
-    lut = np.array([find(i) for i in range(len(V))])
     faces = [Face(tuple(tuple(int(lut[i]) for i in r) for r in f.rings), f.source, f.semantic)
              for f in m.faces]
     return m.with_faces(faces)
@@ -87,29 +78,10 @@ def split_pinched(m: PolyMesh) -> PolyMesh:
         if len(f.rings) > 1 or len(set(r)) == len(r):
             faces.append(f)
             continue
-        for sub in _split_loop(list(r)):
+        for sub in split_loop(list(r)):
             if len(set(sub)) >= 3:
                 faces.append(Face((tuple(sub),), f.source, f.semantic))
     return m.with_faces(faces)
-
-
-def _split_loop(r: list[int]) -> list[list[int]]:
-    """Split a closed vertex loop at repeated vertices into loops without repeats."""
-    out, stack, pos = [], [], {}
-    for v in r:
-        if v in pos:
-            k = pos[v]
-            sub = stack[k:]
-            out.append(sub)
-            for u in sub[1:]:
-                pos.pop(u, None)
-            stack = stack[:k + 1]
-        else:
-            pos[v] = len(stack)
-            stack.append(v)
-    if len(stack) >= 3:
-        out.append(stack)
-    return out
 
 
 def split_t_junctions(m: PolyMesh, tol: float, min_gap: float = 0.001) -> PolyMesh:
@@ -205,8 +177,6 @@ def drop_degenerate(m: PolyMesh, area_eps: float = 1e-10) -> PolyMesh:
 
 def invalid_polygons(m: PolyMesh, tol: Tolerances) -> dict[int, set[int]]:
     """Faces the project's polygon validator rejects: ``{face_index: {codes}}``."""
-    from lod2energy.model import Shell, Surface
-    from lod2energy.validate.polygon import check_polygons
     shell = Shell(tuple(Surface.from_lists([list(r) for r in f.rings]) for f in m.faces))
     out: dict[int, set[int]] = defaultdict(set)
     for fi, code, _ in check_polygons(m.vertices, shell, tol):
@@ -221,7 +191,6 @@ def fix_nonplanar(m: PolyMesh, tol: Tolerances, rounds: int = 3) -> PolyMesh:
     The project's polygon validator decides (204 is only checked once every polygon is
     otherwise valid, hence the rounds).
     """
-    from lod2energy.repair.holefill import triangulate_loop
     for _ in range(rounds):
         bad = {f: c for f, c in invalid_polygons(m, tol).items() if c & {104, 201, 203, 204, 205, 206, 207, 208}}
         if not bad:
@@ -367,7 +336,7 @@ def desliver(m: PolyMesh, tol: Tolerances, accept) -> PolyMesh | None:
     return None
 
 
-TJUNCTION_TOL = 0.005  # m: a vertex this close to another polygon's edge is on it
+TJUNCTION_TOL = DEFAULT.tjunction_tol  # m: a vertex this close to another polygon's edge is on it
 
 
 def cleanup(m: PolyMesh, tol: Tolerances = DEFAULT, tjunction_tol: float | None = None) -> PolyMesh:
@@ -377,10 +346,10 @@ def cleanup(m: PolyMesh, tol: Tolerances = DEFAULT, tjunction_tol: float | None 
     ----------
     tjunction_tol : float, m
         Distance under which a vertex is inserted into a polygon edge; default
-        ``max(snap_tol, TJUNCTION_TOL)`` (half the planarity tolerance: the polygon stays
+        ``max(tol.snap_tol, tol.tjunction_tol)`` (half the planarity tolerance: the polygon stays
         planar within it).
     """
-    tj = max(tol.snap_tol, TJUNCTION_TOL) if tjunction_tol is None else tjunction_tol
+    tj = max(tol.snap_tol, tol.tjunction_tol) if tjunction_tol is None else tjunction_tol
     m = snap_vertices(m, tol.snap_tol)
     m = clean_rings(m)
     m = split_pinched(m)

@@ -2,8 +2,8 @@
 
 Open (boundary) edges are walked into closed loops, oriented so that the filling face agrees
 with its neighbours. A planar loop becomes one new polygon; a non-planar one is split into
-triangles by a constrained Delaunay triangulation in its projected plane (ear clipping, then
-Lawson flips of the interior edges). Nothing outside the holes moves.
+triangles by a constrained Delaunay triangulation in its projected plane
+(:func:`lod2energy.geometry.constrained_delaunay`). Nothing outside the holes moves.
 """
 from __future__ import annotations
 
@@ -12,15 +12,8 @@ from collections import defaultdict
 import numpy as np
 
 from lod2energy.config import DEFAULT, Tolerances
-from lod2energy.repair._mesh import (
-    Face, PolyMesh, edge_faces, newell_normal, plane_basis, ring_is_simple_2d,
-)
-from lod2energy.repair.cleanup import _split_loop
-
-try:
-    import mapbox_earcut as _earcut
-except ImportError:  # pragma: no cover
-    _earcut = None
+from lod2energy.geometry import constrained_delaunay, lawson_cdt, newell_normal, plane_basis, ring_area_2d
+from lod2energy.polymesh import Face, PolyMesh, edge_faces, ring_is_simple_2d, split_loop
 
 
 def boundary_loops(m: PolyMesh) -> list[list[int]]:
@@ -57,12 +50,12 @@ def boundary_loops(m: PolyMesh) -> list[list[int]]:
                 cur = out_edges[cur].pop(0)
             if loop is None:
                 continue
-            loops.extend(sub for sub in _split_loop(loop) if len(sub) >= 3)
+            loops.extend(sub for sub in split_loop(loop) if len(sub) >= 3)
     return loops
 
 
 def _loop_plane(P: np.ndarray) -> tuple[np.ndarray, float]:
-    n = newell_normal(P)
+    n = newell_normal(P, centred=False)
     ln = np.linalg.norm(n)
     if ln < 1e-12:
         c = P.mean(axis=0)
@@ -72,43 +65,6 @@ def _loop_plane(P: np.ndarray) -> tuple[np.ndarray, float]:
         n = n / ln
     c = P.mean(axis=0)
     return n, float(np.abs((P - c) @ n).max())
-
-
-def _lawson(P2: np.ndarray, tris: list[list[int]], n_ring: int) -> list[list[int]]:
-    """Delaunay flips of interior edges (constrained by the ring, indices local to P2)."""
-    def ccw(a, b, c):
-        return (P2[b, 0] - P2[a, 0]) * (P2[c, 1] - P2[a, 1]) - (P2[b, 1] - P2[a, 1]) * (P2[c, 0] - P2[a, 0])
-
-    def incircle(a, b, c, d):
-        m = np.array([[P2[i, 0] - P2[d, 0], P2[i, 1] - P2[d, 1],
-                       (P2[i, 0] - P2[d, 0]) ** 2 + (P2[i, 1] - P2[d, 1]) ** 2] for i in (a, b, c)])
-        return np.linalg.det(m)
-
-    ring_edges = {(i, (i + 1) % n_ring) for i in range(n_ring)}
-    ring_edges |= {(b, a) for a, b in ring_edges}
-    for _ in range(4 * len(tris) + 4):
-        emap = {}
-        for ti, t in enumerate(tris):
-            for k in range(3):
-                emap[(t[k], t[(k + 1) % 3])] = ti
-        flipped = False
-        for (a, b), ti in sorted(emap.items()):
-            if (a, b) in ring_edges or (b, a) not in emap or a > b:
-                continue
-            tj = emap[(b, a)]
-            c = [v for v in tris[ti] if v not in (a, b)][0]
-            d = [v for v in tris[tj] if v not in (a, b)][0]
-            # triangles (a, b, c) and (b, a, d); flip to (c, a, d)/(d, b, c) if d is in circle abc
-            if ccw(a, b, c) <= 0:
-                continue
-            if incircle(a, b, c, d) > 1e-12 and ccw(c, a, d) > 1e-12 and ccw(d, b, c) > 1e-12:
-                tris[ti] = [c, a, d]
-                tris[tj] = [d, b, c]
-                flipped = True
-                break
-        if not flipped:
-            break
-    return tris
 
 
 def triangulate_loop(V: np.ndarray, loop: list[int]) -> list[tuple[int, ...]] | None:
@@ -125,50 +81,23 @@ def triangulate_loop(V: np.ndarray, loop: list[int]) -> list[tuple[int, ...]] | 
         P2 = (P - P.mean(axis=0)) @ B.T
         if not ring_is_simple_2d(P2):
             continue
-        # earcut wants any orientation; keep ours by checking the 2D signed area
-        area = 0.5 * np.sum(P2[:, 0] * np.roll(P2[:, 1], -1) - np.roll(P2[:, 0], -1) * P2[:, 1])
+        # the triangulation is counter-clockwise in 2D; keep the loop's orientation
+        area = ring_area_2d(P2)
         if abs(area) < 1e-14:
             continue
-        t = None
         try:
-            from lod2energy.validate.triangulate import constrained_delaunay
             t = np.asarray(constrained_delaunay(P2, np.array([len(loop)])), dtype=np.int64).reshape(-1, 3)
-            if len(t) == len(loop) - 2:
-                tl = [list(map(int, x)) for x in t]
-                if area < 0:
-                    tl = [[a, c, b] for a, b, c in tl]
-                return [tuple(loop[i] for i in tri) for tri in tl]
         except Exception:  # noqa: BLE001 - fall back on ear clipping + flips
-            pass
-        t = np.asarray(_earcut.triangulate_float64(P2, np.array([len(loop)], dtype=np.uint32)),
-                       dtype=np.int64).reshape(-1, 3)
-        if len(t) != len(loop) - 2:
-            continue
+            t = None
+        if t is None or len(t) != len(loop) - 2:
+            t = lawson_cdt(P2, np.array([len(loop)]))
+            if len(t) != len(loop) - 2:
+                continue
         tl = [list(map(int, x)) for x in t]
-        # orient every triangle counter-clockwise in 2D when the loop is, else clockwise
-        sgn = 1 if area > 0 else -1
-        fixed = []
-        for a, b, c in tl:
-            s = (P2[b, 0] - P2[a, 0]) * (P2[c, 1] - P2[a, 1]) - (P2[b, 1] - P2[a, 1]) * (P2[c, 0] - P2[a, 0])
-            fixed.append([a, b, c] if s * sgn > 0 else [a, c, b])
-        if sgn < 0:
-            P2f = P2.copy()
-            P2f[:, 1] *= -1
-            fixed = [[a, c, b] for a, b, c in fixed]
-            fixed = _lawson(P2f, fixed, len(loop))
-            fixed = [[a, c, b] for a, b, c in fixed]
-        else:
-            fixed = _lawson(P2, fixed, len(loop))
-        return [tuple(loop[i] for i in tri) for tri in fixed]
+        if area < 0:
+            tl = [[a, c, b] for a, b, c in tl]
+        return [tuple(loop[i] for i in tri) for tri in tl]
     return None
-
-
-def _d2p(P: np.ndarray) -> float:
-    if len(P) <= 3:
-        return 0.0
-    c = P.mean(axis=0)
-    _, _, vt = np.linalg.svd(P - c, full_matrices=False)
-    return float(np.abs((P - c) @ vt[2]).max())
 
 
 def _planar_polygon(V: np.ndarray, loop: list[int], tol: Tolerances) -> bool:
@@ -178,7 +107,7 @@ def _planar_polygon(V: np.ndarray, loop: list[int], tol: Tolerances) -> bool:
         return False
     B = plane_basis(n)
     P2 = (P - P.mean(axis=0)) @ B.T
-    area = 0.5 * abs(np.sum(P2[:, 0] * np.roll(P2[:, 1], -1) - np.roll(P2[:, 0], -1) * P2[:, 1]))
+    area = abs(ring_area_2d(P2))
     return area > tol.sliver_area and ring_is_simple_2d(P2)
 
 

@@ -7,7 +7,7 @@ from __future__ import annotations
 import numpy as np
 from scipy.spatial import ConvexHull, QhullError
 
-from lod2energy.repair._mesh import PolyMesh, merge_coplanar, triangles_to_mesh
+from lod2energy.polymesh import PolyMesh, merge_coplanar, triangles_to_mesh
 
 
 def convex_hull(m: PolyMesh) -> PolyMesh | None:

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from lod2energy.repair._mesh import PolyMesh, triangulate_mesh
+from lod2energy.polymesh import PolyMesh, triangulate_mesh
 
 
 def _manifold(V: np.ndarray, tris: np.ndarray):

@@ -10,7 +10,7 @@ from collections import deque
 
 import numpy as np
 
-from lod2energy.repair._mesh import PolyMesh, edge_faces, signed_volume
+from lod2energy.polymesh import PolyMesh, edge_faces, signed_volume
 
 
 def orient(m: PolyMesh) -> PolyMesh:

@@ -13,7 +13,9 @@ import numpy as np
 
 from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.model import Building, Geometry, Shell, Solid, Surface
-from lod2energy.repair._mesh import Face, PolyMesh, compact, merge_coplanar, triangulate_mesh
+from lod2energy.polymesh import Face, PolyMesh, compact, merge_coplanar, triangulate_mesh
+from lod2energy.repair.accept import is_repaired
+from lod2energy.repair.convert import mesh_of_geometry
 
 
 def _part_meshes(b: Building, lod):
@@ -23,7 +25,6 @@ def _part_meshes(b: Building, lod):
             continue
         for gi, g in enumerate(o.geometries):
             if g.is_polygonal and g.lod == lod and g.type == "Solid":
-                from lod2energy.repair.pipeline import mesh_of_geometry
                 out.append((o, gi, g, mesh_of_geometry(b.vertices, g)))
                 break
     return out
@@ -164,7 +165,6 @@ def merge_parts(b: Building, ids, tol: Tolerances = DEFAULT, lod=None, into: str
                 break
         faces.append(Face((tuple(int(i) for i in t),), src, sem))
     merged = compact(merge_coplanar(PolyMesh(V, tuple(faces)), angle_tol=1e-6, dist_tol=1e-4))
-    from lod2energy.repair.pipeline import is_repaired
     if not is_repaired(merged, lod, tol):
         return b
     base = len(b.vertices)

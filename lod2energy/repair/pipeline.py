@@ -25,19 +25,25 @@ import numpy as np
 
 from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.model import (
-    BUILDING_TYPES, Building, FeatureError, Geometry, Shell, Solid, Surface, frozen_mapping, lod_key,
+    BUILDING_TYPES, Building, FeatureError, Geometry, frozen_mapping, lod_key,
 )
-from lod2energy.repair._mesh import Face, PolyMesh, compact, face_area, topology
+from lod2energy.polymesh import PolyMesh, compact, face_area, topology
+from lod2energy.repair.accept import is_repaired, val3dity_codes
 from lod2energy.repair.alphashape import alpha_repair
-from lod2energy.repair.cleanup import cleanup, desliver, merge_slivers, snap_vertices
-from lod2energy.repair.footprint import ROOF_SNAP, extrude_footprint, extrude_roofs
+from lod2energy.repair.cleanup import clean_rings, cleanup, desliver, drop_degenerate, merge_slivers, snap_vertices
+from lod2energy.repair.convert import geometry_of_mesh, mesh_of_geometry
+from lod2energy.repair.footprint import extrude_footprint
 from lod2energy.repair.holefill import fill_holes
 from lod2energy.repair.hull import convex_hull
 from lod2energy.repair.metrics import fidelity
 from lod2energy.repair.orientation import orient
+from lod2energy.repair.parts import merge_overlapping_parts, overlapping_parts
+from lod2energy.repair.plausible import implausible
 from lod2energy.repair.refill import close, refill
+from lod2energy.repair.roofs import ROOF_MODEL_MAX_DISPLACEMENT, roof_model
 from lod2energy.repair.unpinch import unpinch
 from lod2energy.repair.validity import energy_codes, shell_defects
+from lod2energy.validate.checks import validate_building, validate_geometry
 
 STAGES = ("valid", "cleanup", "orientation", "holefill", "refill", "roofs", "alphashape", "footprint",
           "hull", "irreparable")
@@ -49,72 +55,9 @@ DEFAULT_TIMEOUT = 30.0
 GLOBAL_MIN_SECONDS = 25.0
 
 
-# ----------------------------------------------------------------------------- geometry <-> mesh
-
-def mesh_of_geometry(vertices: np.ndarray, g: Geometry) -> PolyMesh:
-    """All exterior-shell surfaces of ``g`` as one PolyMesh with its own vertices.
-
-    ``Face.source`` numbers the surfaces in :meth:`Geometry.iter_surfaces` order (exterior
-    shells only).
-    """
-    faces = []
-    k = 0
-    for si, hi, fi, s in g.iter_surfaces():
-        if hi > 0:
-            continue
-        faces.append(Face(tuple(tuple(int(i) for i in r) for r in s.rings), k, s.semantic))
-        k += 1
-    m = PolyMesh(np.asarray(vertices, dtype=np.float64), tuple(faces))
-    return compact(m)
-
-
-def geometry_of_mesh(m: PolyMesh, g: Geometry, lookup: dict, extra: list, base: int) -> Geometry:
-    """A Solid geometry at ``g``'s LoD from ``m``; vertex indices into the building's array.
-
-    ``lookup`` maps coordinate tuples of the building's vertices to their index; vertices not
-    found are appended to ``extra`` (their index is ``base + position``).
-    """
-    idx = np.empty(len(m.vertices), dtype=np.int64)
-    for i, p in enumerate(m.vertices):
-        key = (float(p[0]), float(p[1]), float(p[2]))
-        j = lookup.get(key)
-        if j is None:
-            j = base + len(extra)
-            extra.append(p)
-            lookup[key] = j
-        idx[i] = j
-    sem_ok = len(g.semantic_surfaces)
-    surfaces = tuple(Surface.from_lists([[int(idx[v]) for v in r] for r in f.rings],
-                                        f.semantic if (f.semantic is not None and f.semantic < sem_ok) else None)
-                     for f in m.faces)
-    return Geometry("Solid", g.lod, (Solid((Shell(surfaces),)),), g.semantic_surfaces)
-
-
-def _probe_geometry(m: PolyMesh, lod) -> Geometry:
-    surfaces = tuple(Surface.from_lists([list(r) for r in f.rings]) for f in m.faces)
-    return Geometry("Solid", lod, (Solid((Shell(surfaces),)),))
-
-
-def val3dity_codes(m: PolyMesh, lod, tol: Tolerances, coid: str = "probe") -> list[int]:
-    """Codes the project's validator finds on ``m`` as a Solid (601 cannot occur here)."""
-    from lod2energy.validate.checks import validate_geometry
-    return sorted({d.code for d in validate_geometry(m.vertices, coid, 0, _probe_geometry(m, lod), tol)})
-
-
-def is_repaired(m: PolyMesh | None, lod, tol: Tolerances) -> bool:
-    """The ladder's stopping criterion."""
-    if m is None or not m.faces:
-        return False
-    # crossings are the project validator's call (val3dity semantics: touching counts)
-    if shell_defects(m, tol, first_only=True, self_intersection=False):
-        return False
-    return not val3dity_codes(m, lod, tol)
-
-
 # ----------------------------------------------------------------------------- the ladder
 
 def _input_defects(V: np.ndarray, g: Geometry, coid: str, gi: int, m: PolyMesh, tol: Tolerances) -> list[int]:
-    from lod2energy.validate.checks import validate_geometry
     codes = {d.code for d in validate_geometry(V, coid, gi, g, tol)}
     sd = shell_defects(snap_vertices(m, tol.snap_tol), tol)
     if g.is_volumetric:
@@ -242,56 +185,6 @@ def global_stages(m0: PolyMesh, lod, tol: Tolerances, deadline: float,
 #: is kept.
 REFILL_MIN_IOU = 0.9
 
-#: A 2.5D roof model is kept only when the input's vertices lie this close to it on average
-#: (m): beyond that the building is not 2.5D (overhangs, parts below ground) and the alpha
-#: shapes decide.
-ROOF_MODEL_MAX_DISPLACEMENT = 0.10
-
-
-def roof_model(m: PolyMesh, lod, tol: Tolerances) -> PolyMesh | None:
-    """The input rebuilt as a 2.5D model (:func:`footprint.extrude_roofs`), made valid.
-
-    The union of roof prisms is cleaned, oriented, separated where prisms only touch along an
-    edge (:func:`unpinch`) and rid of union slivers (:func:`desliver`). When the prisms over
-    the outlines as drawn give no valid result (outlines a hair apart leave micro-edges and
-    separate pieces, a ring touching itself gives no prism), the same is tried with prisms
-    over the snapped partition of the outlines (``extrude_roofs(m, ROOF_SNAP)``: exact shared
-    edges, pinched corners filled). Returns None when no valid result is found or the input's
-    vertices are on average more than :data:`ROOF_MODEL_MAX_DISPLACEMENT` from it.
-    """
-    from lod2energy.repair.metrics import point_triangle_distance
-    from lod2energy.repair._mesh import triangulate_mesh
-    def good(x):
-        return x is not None and is_repaired(x, lod, tol)
-
-    def made_valid(snap):
-        r = extrude_roofs(m, snap)
-        if r is None:
-            return None
-        r = orient(cleanup(r, tol))
-        if not good(r):
-            u = unpinch(r, tol)
-            if u is not None:
-                u = close(cleanup(u, tol), tol)
-                r = u if good(u) else r
-        if not good(r):
-            r = desliver(r, tol, good)
-        return r
-    # the outlines as they are first; when that union cannot be made valid, the outlines
-    # snapped into a partition (prisms meeting exactly, polygons that pinch split)
-    r = made_valid(0.0)
-    if r is None:
-        r = made_valid(ROOF_SNAP)
-    if r is None:
-        return None
-    tris, _ = triangulate_mesh(m)
-    rt, _ = triangulate_mesh(r)
-    pts = m.vertices[np.unique(tris)]
-    if len(rt) == 0 or point_triangle_distance(pts, r.vertices, rt).mean() > ROOF_MODEL_MAX_DISPLACEMENT:
-        return None
-    return r
-
-
 #: A surface-type geometry (MultiSurface, CompositeSurface) of fewer faces beside a Solid of
 #: the same object and LoD is an extra, not an envelope.
 MIN_VOLUME_FACES = 4
@@ -337,8 +230,6 @@ def _clean_surfaces(b: Building, lod: str | None, tol: Tolerances, lookup: dict,
     LoD0 footprints and roof outlines are not volumes: they keep their type and only lose
     what val3dity rejects at polygon level (101/102). Returns one log entry per change.
     """
-    from lod2energy.repair.cleanup import clean_rings, drop_degenerate
-    from lod2energy.validate.checks import validate_geometry
     out = []
     if lod is not None:
         return out
@@ -387,7 +278,6 @@ def repair_building(b: Building, tol: Tolerances = DEFAULT, timeout: float = DEF
         ``b`` itself when nothing needed a repair (with provenance when it carried none);
         else a new building with ``provenance["repair"]`` set.
     """
-    from lod2energy.repair.plausible import implausible
     t0 = time.monotonic()
     deadline = t0 + timeout
     targets = _targets(b, lod)
@@ -404,7 +294,6 @@ def repair_building(b: Building, tol: Tolerances = DEFAULT, timeout: float = DEF
         m = mesh_of_geometry(b.vertices, g)
         why = implausible(m) if m.faces else None
         if why is not None and not np.isfinite(m.vertices).all():
-            from lod2energy.validate.checks import validate_geometry  # no mesh work on NaN
             codes = sorted({d.code for d in validate_geometry(b.vertices, o.id, gi, g, tol)})
         else:
             codes = _input_defects(b.vertices, g, o.id, gi, m, tol)
@@ -463,7 +352,6 @@ def repair_building(b: Building, tol: Tolerances = DEFAULT, timeout: float = DEF
         per_geom.append(entry)
     surfaces_log = _clean_surfaces(b, lod, tol, lookup, extra, objs)
     changed = changed or bool(surfaces_log)
-    from lod2energy.repair.parts import merge_overlapping_parts, overlapping_parts
     if not changed and all(e["stage"] == "valid" for e in per_geom):
         if not merge_parts:
             return b  # untouched: the same object
@@ -502,7 +390,6 @@ def _envelope(m: PolyMesh, res: PolyMesh, stage: str, tol: Tolerances) -> tuple[
 
 
 def _summary(b: Building, per_geom: list, before: list[int], tol: Tolerances, seconds: float) -> dict:
-    from lod2energy.validate.checks import validate_building
     after = set()
     for d in validate_building(b, tol):
         after.add(d.code)
@@ -626,5 +513,6 @@ def dataset_table(buildings: Iterable[Building]) -> dict:
 
 
 __all__ = ["STAGES", "DEFAULT_TIMEOUT", "repair_building", "repair_features", "dataset_table",
-           "repair_info", "repair_attributes", "ladder", "mesh_of_geometry", "is_repaired", "merge_slivers", "fill_holes",
+           "repair_info", "repair_attributes", "ladder", "mesh_of_geometry", "geometry_of_mesh", "is_repaired", "roof_model",
+           "ROOF_MODEL_MAX_DISPLACEMENT", "merge_slivers", "fill_holes",
            "frozen_mapping"]

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from lod2energy.repair._mesh import PolyMesh
+from lod2energy.polymesh import PolyMesh
 
 MAX_EXTENT = 5_000.0
 """Largest plausible bounding-box side of one Building/BuildingPart geometry, m.

@@ -13,7 +13,7 @@ from collections import defaultdict
 import numpy as np
 
 from lod2energy.config import DEFAULT, Tolerances
-from lod2energy.repair._mesh import PolyMesh, face_area, topology, triangulate_mesh
+from lod2energy.polymesh import PolyMesh, face_area, topology, triangulate_mesh
 from lod2energy.repair.cleanup import drop_degenerate, fix_nonplanar, merge_slivers
 from lod2energy.repair.holefill import fill_holes
 from lod2energy.repair.orientation import orient

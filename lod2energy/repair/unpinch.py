@@ -17,12 +17,12 @@ from collections import defaultdict
 import numpy as np
 
 from lod2energy.config import DEFAULT, Tolerances
-from lod2energy.repair._mesh import Face, PolyMesh, face_normal, fan_groups, topology
+from lod2energy.polymesh import Face, PolyMesh, face_normal, fan_groups, topology
 
 #: Distance (m) each copy of a pinch vertex moves into its own material: more than the
 #: clean-up's T-junction distance (5 mm, which would zip the sheets together again) and
-#: under val3dity's planarity tolerance (10 mm).
-OFFSET = 0.008
+#: under val3dity's planarity tolerance (10 mm). Default of ``Tolerances.unpinch_offset``.
+OFFSET = DEFAULT.unpinch_offset
 
 
 def _edge_pairs(m: PolyMesh, e: tuple[int, int], lst: list[tuple[int, int]], normals: np.ndarray,
@@ -87,7 +87,7 @@ def _corner_direction(normals: list[np.ndarray]) -> np.ndarray:
     return np.sum(distinct, axis=0) if distinct else np.zeros(3)
 
 
-def unpinch(m: PolyMesh, tol: Tolerances = DEFAULT, offset: float = OFFSET, bridge: bool = False
+def unpinch(m: PolyMesh, tol: Tolerances = DEFAULT, offset: float | None = None, bridge: bool = False
             ) -> PolyMesh | None:
     """Separate the sheets of ``m`` that meet at non-manifold edges or vertices.
 
@@ -97,7 +97,8 @@ def unpinch(m: PolyMesh, tol: Tolerances = DEFAULT, offset: float = OFFSET, brid
         A consistently and outward oriented shell (see :func:`orientation.orient`).
     tol : Tolerances
     offset : float, m
-        How far each copy of a pinch vertex moves into its own fan's material.
+        How far each copy of a pinch vertex moves into its own fan's material (default
+        ``tol.unpinch_offset``).
     bridge : bool
         Pair the faces around a non-manifold edge across the empty wedges instead, and move
         the copies into those wedges: the sheets are joined by a thin bridge of material
@@ -109,6 +110,7 @@ def unpinch(m: PolyMesh, tol: Tolerances = DEFAULT, offset: float = OFFSET, brid
         The separated shell (new vertices appended), or None when there is no pinch or the
         faces around a non-manifold edge cannot be paired consistently.
     """
+    offset = tol.unpinch_offset if offset is None else offset
     topo = topology(m)
     if not topo.nonmanifold and not topo.nm_vertices:
         return None

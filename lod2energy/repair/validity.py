@@ -12,7 +12,7 @@ from __future__ import annotations
 import numpy as np
 
 from lod2energy.config import DEFAULT, Tolerances
-from lod2energy.repair._mesh import (
+from lod2energy.polymesh import (
     PolyMesh, face_area, face_normal, plane_basis, planarity, ring_is_simple_2d, signed_volume,
     topology, triangulate_mesh,
 )

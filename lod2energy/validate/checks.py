@@ -25,6 +25,7 @@ from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.model import MULTISOLID_TYPES, Building, Geometry
 from lod2energy.validate import polygon, shell as shell_checks, solid as solid_checks
 from lod2energy.validate.defect import Defect
+from lod2energy.validate.instance import template_geometry
 
 
 def validate_geometry(vertices, coid: str, gi: int, g: Geometry, tol: Tolerances = DEFAULT) -> list[Defect]:
@@ -154,7 +155,7 @@ def validate_buildings(buildings, tol: Tolerances = DEFAULT) -> list[list[Defect
         for o in b.objects:
             for gi, g in enumerate(o.geometries):
                 if g.type == "GeometryInstance":
-                    found = polygon.check_instance(b, o, gi, g, tol)
+                    found = check_instance(b, o, gi, g, tol)
                 elif not g.is_polygonal:
                     continue
                 else:
@@ -173,3 +174,22 @@ def validate_buildings(buildings, tol: Tolerances = DEFAULT) -> list[list[Defect
         if ok:
             out.extend(Defect(code, loc, info) for loc, code, info in next(found))
     return outs
+
+
+def check_instance(building, obj, gi, geometry, tol: Tolerances = DEFAULT) -> list:
+    """Defects of a GeometryInstance: its template validated in template coordinates.
+
+    val3dity validates the template geometry itself (``vertices-templates``, no
+    transformation) once per instance. The template comes from
+    ``building.provenance["geometry_templates"]`` (set by the CityJSON reader); an instance
+    whose template cannot be found gives no defect (nothing to validate).
+
+    Returns
+    -------
+    list of Defect
+    """
+    resolved = template_geometry(building, geometry)
+    if resolved is None:
+        return []
+    tverts, tgeom = resolved
+    return validate_geometry(tverts, obj.id, gi, tgeom, tol)

@@ -28,7 +28,7 @@ _DEGENERATE_CODES = {101, 102, 104, 306}
 
 
 def _energy_locations(b: Building, lod: str | None) -> set[str]:
-    return {f"coid={o.id}|geom={gi}" for o, gi, _ in b.energy_objects(lod)}
+    return {f"coid={o.id}|geom={gi}" for o, gi, _ in b.envelope(lod)}
 
 
 def _codes_on(defects: Iterable[Defect], prefixes: set[str]) -> set[int]:

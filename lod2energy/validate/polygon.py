@@ -31,9 +31,9 @@ import shapely
 from scipy.spatial import cKDTree
 
 from lod2energy.config import DEFAULT, Tolerances
+from lod2energy.geometry import constrained_delaunay, cross_rows as _cross, plane_bases
 from lod2energy.model import Shell
 from lod2energy.validate.snap import snapped_ids
-from lod2energy.validate.triangulate import constrained_delaunay
 
 INFO_104_TRIANGLE = " outer ring (a triangle) is collapsed to a line"
 INFO_104_RING = "ring self-intersects or is collapsed to a line"
@@ -79,18 +79,6 @@ def _exactly_collinear(a: np.ndarray, b: np.ndarray, c: np.ndarray) -> bool:
             and U[0] * V[1] - U[1] * V[0] == 0)
 
 
-def _plane_basis(normals: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Two unit vectors spanning each plane, ``(m, 3)`` each, right-handed with the normal."""
-    m = len(normals)
-    helper = np.zeros((m, 3))
-    ax = np.argmin(np.abs(normals), axis=1)
-    helper[np.arange(m), ax] = 1.0
-    u = _cross(normals, helper)
-    u /= np.linalg.norm(u, axis=1, keepdims=True)
-    v = _cross(normals, u)
-    return u, v
-
-
 def _smallest_eigenvector(cov: np.ndarray) -> np.ndarray:
     """Unit eigenvector of the smallest eigenvalue of each (3, 3) covariance, as a plane normal.
 
@@ -124,13 +112,6 @@ def fit_planes(points: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     c = points.mean(axis=1)
     X = points - c[:, None, :]
     return c, _smallest_eigenvector(np.einsum("mni,mnj->mij", X, X))
-
-
-def _cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
-    """Row-wise cross product of (..., 3) arrays (cheaper than np.cross on small arrays)."""
-    return np.stack([a[..., 1] * b[..., 2] - a[..., 2] * b[..., 1],
-                     a[..., 2] * b[..., 0] - a[..., 0] * b[..., 2],
-                     a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0]], axis=-1)
 
 
 def _triples(n: int) -> np.ndarray:
@@ -352,7 +333,7 @@ def check_polygons_multi(items: Sequence[tuple[np.ndarray, Shell]], tol: Toleran
                 info[f] = [(f, 203, info_203(abs(h[k]), tol.planarity_d2p_tol))]
         u = np.zeros((F, 3))
         v = np.zeros((F, 3))
-        u[gf], v[gf] = _plane_basis(nrm[gf])
+        u[gf], v[gf] = plane_bases(nrm[gf], helper="least")
         XY[:, 0] = np.einsum("ki,ki->k", X, u[fp])
         XY[:, 1] = np.einsum("ki,ki->k", X, v[fp])
         H[:] = np.where(sel, h, 0.0)
@@ -536,66 +517,3 @@ def prefetch_shells(items: Sequence[tuple[np.ndarray, Shell]], tol: Tolerances =
         part = items[i:i + chunk]
         for (v, sh), res in zip(part, check_polygons_multi(part, tol)):
             _CACHE[sh] = (v, tol, tuple(res))
-
-
-def check_instance(building, obj, gi, geometry, tol: Tolerances = DEFAULT) -> list:
-    """Defects of a GeometryInstance: its template validated in template coordinates.
-
-    val3dity validates the template geometry itself (``vertices-templates``, no
-    transformation) once per instance. The template comes from
-    ``building.provenance["geometry_templates"]`` (set by the CityJSON reader); an instance
-    whose template cannot be found gives no defect (nothing to validate).
-
-    Returns
-    -------
-    list of Defect
-    """
-    from lod2energy.validate.checks import validate_geometry  # late: checks imports this module
-
-    resolved = template_geometry(building, geometry)
-    if resolved is None:
-        return []
-    tverts, tgeom = resolved
-    return validate_geometry(tverts, obj.id, gi, tgeom, tol)
-
-
-def template_geometry(building, geometry):
-    """``(vertices (n, 3), Geometry)`` of the template an instance refers to, or None."""
-    raw = geometry.raw or {}
-    t = raw.get("template")
-    templates = (building.provenance or {}).get("geometry_templates")
-    if not isinstance(t, int) or isinstance(t, bool) or not templates:
-        return None
-    key = (id(templates), t)
-    hit = _TEMPLATE_CACHE.get(key)
-    if hit is not None and hit[0] is templates:
-        return hit[1]
-    parsed = parse_template(templates, t)
-    if len(_TEMPLATE_CACHE) > 256:
-        _TEMPLATE_CACHE.clear()
-    _TEMPLATE_CACHE[key] = (templates, parsed)
-    return parsed
-
-
-_TEMPLATE_CACHE: dict = {}
-
-
-def parse_template(templates, index: int):
-    """Parse template ``index`` of a CityJSON ``geometry-templates`` object, or None."""
-    from lod2energy.io.cityjson import _Collector, _parse_geometry  # reader's own parser
-    from lod2energy.errors import InputError
-
-    try:
-        tlist = templates.get("templates") or []
-        tv = np.asarray(templates.get("vertices-templates") or [], dtype=np.float64).reshape(-1, 3)
-        g = dict(tlist[index])
-    except (TypeError, ValueError, IndexError, AttributeError):
-        return None
-    g.setdefault("lod", "0")
-    try:
-        geom = _parse_geometry(g, _Collector(len(tv)), f"template={index}")
-    except InputError:
-        return None
-    if not geom.is_polygonal:
-        return None
-    return tv, geom

@@ -28,11 +28,11 @@ try:
 except ImportError:  # pragma: no cover - declared dependency
     _m3d = None
 
-VOLUME_EPS = 1e-6
-"""Shared volumes at or under this (m3) count as touching, not overlapping."""
+VOLUME_EPS = DEFAULT.volume_eps
+"""Default of ``Tolerances.volume_eps``: shared volumes at or under this (m3) count as touching."""
 
-AREA_EPS = 1e-6
-"""Shared boundary area at or under this (m2) counts as no shared face."""
+AREA_EPS = DEFAULT.area_eps
+"""Default of ``Tolerances.area_eps``: shared boundary area at or under this (m2) is no shared face."""
 
 PARTS_TYPES = ("Building", "BuildingPart")
 
@@ -74,15 +74,15 @@ def to_manifold(vertices: np.ndarray, tris: np.ndarray, origin: np.ndarray):
     return man
 
 
-def _overlaps(a, b, overlap_tol: float) -> bool:
+def _overlaps(a, b, tol: Tolerances) -> bool:
     """Whether two manifolds' interiors share volume (see module docstring)."""
     x = a ^ b
     v = x.volume()
-    if v <= VOLUME_EPS:
+    if v <= tol.volume_eps:
         return False
-    if overlap_tol > 0:
+    if tol.overlap_tol > 0:
         area = x.surface_area()
-        return area > 0 and v / area > overlap_tol
+        return area > 0 and v / area > tol.overlap_tol
     return True
 
 
@@ -107,18 +107,18 @@ def _overlap_by_vertices(vertices: np.ndarray, t1: np.ndarray, t2: np.ndarray) -
     return bool((np.abs(w12) > 0.75).any() or (np.abs(w21) > 0.75).any())
 
 
-def _positive_parts(man) -> int:
+def _positive_parts(man, tol: Tolerances) -> int:
     """Number of connected solid pieces (cavity boundaries are not pieces)."""
-    return sum(1 for p in man.decompose() if p.volume() > VOLUME_EPS)
+    return sum(1 for p in man.decompose() if p.volume() > tol.volume_eps)
 
 
-def _same_shell(vertices: np.ndarray, t1: np.ndarray, t2: np.ndarray, snap_tol: float) -> bool:
+def _same_shell(vertices: np.ndarray, t1: np.ndarray, t2: np.ndarray, tol: Tolerances) -> bool:
     """Whether two closed shells have the same vertices (within snap_tol) and volume."""
-    p1 = np.unique(np.round(vertices[np.unique(t1)] / max(snap_tol, 1e-12)), axis=0)
-    p2 = np.unique(np.round(vertices[np.unique(t2)] / max(snap_tol, 1e-12)), axis=0)
+    p1 = np.unique(np.round(vertices[np.unique(t1)] / max(tol.snap_tol, 1e-12)), axis=0)
+    p2 = np.unique(np.round(vertices[np.unique(t2)] / max(tol.snap_tol, 1e-12)), axis=0)
     if p1.shape != p2.shape or not np.array_equal(p1, p2):
         return False
-    return abs(abs(signed_volume(vertices, t1)) - abs(signed_volume(vertices, t2))) <= VOLUME_EPS
+    return abs(abs(signed_volume(vertices, t1)) - abs(signed_volume(vertices, t2))) <= tol.volume_eps
 
 
 # ----------------------------------------------------------------------------- 401-405
@@ -164,36 +164,36 @@ def check_solid(vertices: np.ndarray, solid: Solid, tol: Tolerances = DEFAULT
             out.append((k, 401, f"0--{k}"))
             continue
         if v_out.all():
-            if (w_out > 0.75).any() or (m ^ outer).volume() > VOLUME_EPS:
+            if (w_out > 0.75).any() or (m ^ outer).volume() > tol.volume_eps:
                 out.append((k, 401, f"0--{k}"))
             else:
                 out.append((k, 403, f"Inner shell (#{k}) is completely outside the outer shell (#0)"))
             continue
         outside = (m - outer).volume()
-        if outside > VOLUME_EPS:
-            if (m ^ outer).volume() <= VOLUME_EPS:
+        if outside > tol.volume_eps:
+            if (m ^ outer).volume() <= tol.volume_eps:
                 out.append((k, 403, f"Inner shell (#{k}) is completely outside the outer shell (#0)"))
             else:
                 out.append((k, 401, f"0--{k}"))
             continue
         # inside: it must not share a face with the exterior shell
-        if (outer - m).surface_area() < a_outer + m.surface_area() - AREA_EPS:
+        if (outer - m).surface_area() < a_outer + m.surface_area() - tol.area_eps:
             out.append((k, 401, f"0--{k}"))
     for i in range(len(inner)):
         for j in range(i + 1, len(inner)):
-            if _same_shell(vertices, tris[i + 1], tris[j + 1], tol.snap_tol):
+            if _same_shell(vertices, tris[i + 1], tris[j + 1], tol):
                 out.append((i + 1, 402, f"{i + 1}--{j + 1}"))
                 continue
             a, b = inner[i], inner[j]
-            if (a ^ b).volume() > VOLUME_EPS or \
-                    (a + b).surface_area() < a.surface_area() + b.surface_area() - AREA_EPS:
+            if (a ^ b).volume() > tol.volume_eps or \
+                    (a + b).surface_area() < a.surface_area() + b.surface_area() - tol.area_eps:
                 out.append((i + 1, 401, f"{i + 1}--{j + 1}"))
     if out:
         return out
     rest = outer
     for m in inner:
         rest = rest - m
-    if _positive_parts(rest) != 1:
+    if _positive_parts(rest, tol) != 1:
         out.append((None, 404, ""))
     return out
 
@@ -252,7 +252,7 @@ def check_multisolid(vertices: np.ndarray, geometry: Geometry, tol: Tolerances =
     for i in range(len(solids)):
         for j in range(i + 1, len(solids)):
             if len(tris[i]) == len(tris[j]) and all(
-                    _same_shell(vertices, a, b, tol.snap_tol) for a, b in zip(tris[i], tris[j])):
+                    _same_shell(vertices, a, b, tol) for a, b in zip(tris[i], tris[j])):
                 out.append((i, 502, f"solid #{i} and solid #{j}"))
     if out:
         return out
@@ -261,12 +261,12 @@ def check_multisolid(vertices: np.ndarray, geometry: Geometry, tol: Tolerances =
         return out
     boxes = np.array([[vertices[np.unique(ts[0])].min(0), vertices[np.unique(ts[0])].max(0)] for ts in tris])
     for i, j in bbox_pairs(boxes[:, 0], boxes[:, 1], pad=1e-9).tolist():
-        if _overlaps(mans[i], mans[j], tol.overlap_tol):
+        if _overlaps(mans[i], mans[j], tol):
             out.append((i, 501, f"solid #{i} and solid #{j}"))
     if out or geometry.type != "CompositeSolid":
         return out
     union = _m3d.Manifold.batch_boolean(mans, _m3d.OpType.Add)
-    n = _positive_parts(union)
+    n = _positive_parts(union, tol)
     if n != 1:
         out.append((None, 503, f"CompositeSolid is formed of {n} parts"))
     return out
@@ -427,7 +427,7 @@ def check_parts_overlap_multi(buildings: Sequence[Building], tol: Tolerances = D
         if mans[i] is None or mans[j] is None:
             overlap = _overlap_by_vertices(v, tris[i], tris[j])
         else:
-            overlap = _overlaps(mans[i], mans[j], tol.overlap_tol)
+            overlap = _overlaps(mans[i], mans[j], tol)
         if overlap:
             (_, _, lod, a, ga, _), (_, _, _, b, gb, _) = items[i], items[j]
             outs[bi].append((f"coid={a}|geom={ga}&&coid={b}|geom={gb}", 601, f"geometries are lod={lod}"))

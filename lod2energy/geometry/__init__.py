@@ -1,0 +1,42 @@
+"""Shared numeric geometry on plain numpy arrays, one module per operation.
+
+- :mod:`~lod2energy.geometry.vectors`: cross products, Newell normals, plane bases, 2D projection;
+- :mod:`~lod2energy.geometry.snap`: vertex snapping (the one clustering of close points);
+- :mod:`~lod2energy.geometry.triangulate`: ear clipping, constrained Delaunay, bulk triangulation;
+- :mod:`~lod2energy.geometry.intersect`: box pairs, segment/triangle tests, winding number;
+- :mod:`~lod2energy.geometry.measure`: areas, signed volume, best-fit plane, planarity;
+- :mod:`~lod2energy.geometry.simplify`: short-edge collapse, collinear vertices.
+
+Everything works on a building's ``vertices`` (n, 3) float, metres, and integer rings of
+:class:`~lod2energy.model.Surface`. Nothing here imports from validate/ or repair/: they
+call these functions. The names are re-exported here (``from lod2energy.geometry import X``).
+"""
+from __future__ import annotations
+
+from lod2energy.geometry.intersect import (
+    bbox_pairs, points_in_solid, segment_triangle_intersect, triangle_pairs_intersect, winding_number,
+)
+from lod2energy.geometry.measure import (
+    best_fit_plane, plane_distance, ring_area_2d, signed_volume, triangle_areas, triangle_normals,
+)
+from lod2energy.geometry.simplify import collapse_short_edges, drop_collinear
+from lod2energy.geometry.snap import close_pairs, snap_map
+from lod2energy.geometry.triangulate import (
+    SLIVER_RATIO, constrained_delaunay, ear_triangles, earcut_rings, lawson_cdt, triangulate_flat,
+    triangulate_shell, triangulate_surface, triangulate_surfaces,
+)
+from lod2energy.geometry.vectors import (
+    cross2, cross_rows, newell_normal, newell_normals, plane_basis, plane_bases, polygon_normal, project_2d,
+    rings_normal, unit_rows,
+)
+
+__all__ = [
+    "cross_rows", "newell_normal", "polygon_normal", "best_fit_plane", "project_2d", "snap_map",
+    "triangulate_surface", "triangulate_surfaces", "triangulate_flat", "triangulate_shell", "triangle_normals",
+    "triangle_areas", "signed_volume", "bbox_pairs", "segment_triangle_intersect", "triangle_pairs_intersect",
+    "winding_number", "points_in_solid", "collapse_short_edges",
+    # added with the package
+    "newell_normals", "rings_normal", "plane_basis", "plane_bases", "unit_rows", "cross2", "close_pairs",
+    "earcut_rings", "ear_triangles", "constrained_delaunay", "lawson_cdt", "SLIVER_RATIO",
+    "plane_distance", "ring_area_2d", "drop_collinear",
+]

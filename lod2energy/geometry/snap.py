@@ -1,0 +1,136 @@
+"""Vertex snapping: the clustering of points closer than a tolerance, in its two forms.
+
+- :func:`snap_map`: transitive clusters (chains of close points merge), the lowest index
+  represents a cluster; the face graph and the repair ladder's cleanup use it.
+- :func:`snap_points`: val3dity's first-come rule, which validation must reproduce exactly:
+  val3dity adds the points of a shell one by one (face by face, ring by ring) and merges a
+  new point into the *first* already-kept point whose squared distance is strictly below
+  ``snap_tol**2`` (``Surface::add_point``); chains do not collapse transitively.
+"""
+from __future__ import annotations
+
+import numpy as np
+from scipy.sparse import coo_matrix
+from scipy.sparse.csgraph import connected_components
+from scipy.spatial import cKDTree
+
+__all__ = ["snap_map", "close_pairs", "snap_points", "first_occurrence"]
+
+
+def close_pairs(points: np.ndarray, tol: float, groups: np.ndarray | None = None) -> np.ndarray:
+    """Pairs ``(i, j)``, ``i < j``, of points at most ``tol`` apart.
+
+    Parameters
+    ----------
+    points : (n, 3) float
+    tol : float, m
+    groups : (n,) int, optional
+        Points of different groups never pair.
+
+    Returns
+    -------
+    (p, 2) int
+    """
+    pairs = cKDTree(points).query_pairs(tol, output_type="ndarray")
+    if groups is not None and len(pairs):
+        pairs = pairs[groups[pairs[:, 0]] == groups[pairs[:, 1]]]
+    return pairs
+
+
+def snap_map(points: np.ndarray, tol: float, groups: np.ndarray | None = None) -> np.ndarray:
+    """Representative of each point after merging points closer than ``tol``.
+
+    Chains of close points merge into one cluster (transitive closure); the representative
+    is the cluster's lowest index, as val3dity keeps the first vertex it met.
+
+    Parameters
+    ----------
+    points : (n, 3) float
+    tol : float, m
+        Points at most ``tol`` apart merge; ``<= 0`` merges only identical coordinates.
+    groups : (n,) int, optional
+        Points of different groups (buildings) never merge (only with ``tol > 0``).
+
+    Returns
+    -------
+    (n,) int
+        ``rep[i]`` is the index of the point that ``i`` merges into (``rep[rep] == rep``).
+    """
+    p = np.asarray(points, dtype=np.float64)
+    n = len(p)
+    if n == 0:
+        return np.zeros(0, dtype=np.intp)
+    if tol <= 0:
+        _, first, inv = np.unique(p, axis=0, return_index=True, return_inverse=True)
+        return first[inv.ravel()].astype(np.intp)
+    pairs = close_pairs(p, tol, groups)
+    if len(pairs) == 0:
+        return np.arange(n, dtype=np.intp)
+    g = coo_matrix((np.ones(len(pairs)), (pairs[:, 0], pairs[:, 1])), shape=(n, n))
+    _, lab = connected_components(g, directed=False)
+    first = np.full(lab.max() + 1, n, dtype=np.intp)
+    np.minimum.at(first, lab, np.arange(n))
+    return first[lab]
+
+
+def first_occurrence(ids: np.ndarray) -> np.ndarray:
+    """Distinct values of ``ids`` in the order they first occur.
+
+    Parameters
+    ----------
+    ids : (k,) int
+
+    Returns
+    -------
+    (u,) int
+    """
+    ids = np.asarray(ids, dtype=np.intp)
+    if ids.size == 0:
+        return ids
+    u, first = np.unique(ids, return_index=True)
+    return u[np.argsort(first, kind="stable")]
+
+
+def snap_points(points: np.ndarray, snap_tol: float) -> np.ndarray:
+    """Representative of each point, val3dity's way.
+
+    Parameters
+    ----------
+    points : (k, 3) float
+        Points in insertion order, m.
+    snap_tol : float, m
+        Points closer than this (strictly) merge; ``<= 0`` disables snapping.
+
+    Returns
+    -------
+    rep : (k,) int
+        ``rep[i]`` is the index (into ``points``) of the kept point that ``points[i]``
+        merges into; ``rep[i] == i`` for kept points, and always ``rep[i] <= i``.
+    """
+    pts = np.asarray(points, dtype=np.float64).reshape(-1, 3)
+    n = len(pts)
+    rep = np.arange(n, dtype=np.intp)
+    if n < 2 or not snap_tol or snap_tol <= 0 or not np.isfinite(pts).all():
+        return rep
+    tol2 = snap_tol * snap_tol
+    # slightly larger radius for the tree, exact val3dity test below
+    pairs = cKDTree(pts).query_pairs(snap_tol * (1 + 1e-9) + 1e-300, output_type="ndarray")
+    if len(pairs) == 0:
+        return rep
+    d = pts[pairs[:, 0]] - pts[pairs[:, 1]]
+    d2 = d[:, 0] * d[:, 0] + d[:, 1] * d[:, 1] + d[:, 2] * d[:, 2]
+    pairs = pairs[d2 < tol2]
+    if len(pairs) == 0:
+        return rep
+    near: dict[int, list[int]] = {}
+    for a, b in pairs.tolist():
+        lo, hi = (a, b) if a < b else (b, a)
+        near.setdefault(hi, []).append(lo)
+    kept = np.ones(n, dtype=bool)
+    for i in sorted(near):
+        # the first kept point (lowest insertion index) within tolerance wins
+        cands = sorted(j for j in near[i] if kept[j])
+        if cands:
+            rep[i] = cands[0]
+            kept[i] = False
+    return rep

@@ -1,0 +1,550 @@
+"""Triangulation of planar polygons with holes: ear clipping, constrained Delaunay, bulk paths.
+
+The one home of triangulation. :func:`triangulate_flat` handles many polygons at once
+(triangles, quads, convex fans in bulk; ear clipping by mapbox-earcut for the rest, replaced
+by the constrained Delaunay triangulation where ear clipping leaves slivers).
+:func:`constrained_delaunay` is the CDT val3dity's check 204 works on (CGAL): the plain
+Delaunay triangulation when it already holds every ring edge, else ear clipping followed by
+constrained Lawson flips (:func:`lawson_cdt`, the one implementation of edge flips).
+"""
+from __future__ import annotations
+
+from typing import Sequence
+
+import numpy as np
+import shapely
+from scipy.spatial import Delaunay
+
+from lod2energy.geometry.vectors import _cross, cross2 as _cross2, newell_normal, project_2d
+
+try:  # mapbox_earcut is a declared dependency; keep import errors readable
+    import mapbox_earcut as _earcut
+except ImportError:  # pragma: no cover
+    _earcut = None
+
+__all__ = ["triangulate_surface", "triangulate_surfaces", "triangulate_flat", "triangulate_shell",
+           "earcut_rings", "ear_triangles", "constrained_delaunay", "lawson_cdt", "SLIVER_RATIO"]
+
+
+def _fix_orientation(tris: np.ndarray, p2: np.ndarray, local: np.ndarray) -> np.ndarray:
+    """Flip triangles (local indices into p2) whose 2D area is negative."""
+    a, b, c = p2[local[:, 0]], p2[local[:, 1]], p2[local[:, 2]]
+    area = (b[:, 0] - a[:, 0]) * (c[:, 1] - a[:, 1]) - (b[:, 1] - a[:, 1]) * (c[:, 0] - a[:, 0])
+    neg = area < 0
+    if neg.any():
+        tris = tris.copy()
+        tris[neg] = tris[neg][:, [0, 2, 1]]
+    return tris
+
+
+def earcut_rings(p2: np.ndarray, ring_ends: np.ndarray) -> np.ndarray:
+    """mapbox-earcut triangles (t, 3) of 2D rings ``p2`` (n, 2) ending at ``ring_ends`` (r,), as it orients them."""
+    if _earcut is None:  # pragma: no cover
+        raise ImportError("mapbox_earcut is required for triangulation (pip install mapbox-earcut)")
+    t = _earcut.triangulate_float64(np.ascontiguousarray(p2, dtype=np.float64),
+                                    np.asarray(ring_ends, dtype=np.uint32))
+    return np.asarray(t, dtype=np.intp).reshape(-1, 3)
+
+
+def triangulate_surface(vertices: np.ndarray, surface, normal: np.ndarray | None = None) -> np.ndarray:
+    """Triangulate one polygon (holes included) in its own plane.
+
+    Parameters
+    ----------
+    vertices : (n, 3) float
+        The building's vertices, m.
+    surface : Surface or sequence of (k,) int
+        The polygon (outer ring first, then holes), or its rings.
+    normal : (3,) float, optional
+        Plane normal; default: Newell normal of the outer ring.
+
+    Returns
+    -------
+    (t, 3) int
+        Triangles as indices into ``vertices``, oriented like the outer ring (their
+        normals agree with ``normal``). Empty for a degenerate polygon.
+    """
+    rings = surface.rings if hasattr(surface, "rings") else surface
+    outer = np.asarray(rings[0], dtype=np.intp)
+    if len(rings) == 1 and len(outer) == 3:
+        return outer.reshape(1, 3).copy()
+    if len(outer) < 3:
+        return np.zeros((0, 3), dtype=np.intp)
+    if normal is None:
+        normal = newell_normal(vertices[outer])
+    if not np.any(normal):
+        return np.zeros((0, 3), dtype=np.intp)
+    ids = np.concatenate([np.asarray(r, dtype=np.intp) for r in rings])
+    p2 = project_2d(vertices[ids], normal)
+    p2 = p2 - p2.mean(axis=0)
+    ends = np.cumsum([len(r) for r in rings])
+    local = earcut_rings(p2, ends)
+    if len(local) > 1 and _sliver_mask_2d(p2[local]).any():
+        # ear clipping leaves slivers along near-collinear vertices, which can cross a
+        # neighbouring face; val3dity's constrained Delaunay triangulation avoids them
+        try:
+            local = np.asarray(constrained_delaunay(p2, ends), dtype=np.intp).reshape(-1, 3)
+        except Exception:  # pragma: no cover - keep the ear-clipping result
+            pass
+    if len(local) == 0:
+        return np.zeros((0, 3), dtype=np.intp)
+    return _fix_orientation(ids[local], p2, local)
+
+
+def _triangulate_quads(vertices: np.ndarray, quads: np.ndarray, normals: np.ndarray) -> np.ndarray:
+    """Split simple quads (m, 4) along the diagonal through their sharpest corner."""
+    m = len(quads)
+    ax = np.argmax(np.abs(normals), axis=1)
+    ij = np.array([(1, 2), (2, 0), (0, 1)])[ax]
+    flip = normals[np.arange(m), ax] < 0
+    ij[flip] = ij[flip][:, ::-1]
+    pts = vertices[quads]                                        # (m, 4, 3)
+    p2 = np.stack([np.take_along_axis(pts, np.broadcast_to(ij[:, None, k:k + 1], (m, 4, 1)), 2)[..., 0]
+                   for k in range(2)], axis=-1)                  # (m, 4, 2)
+    prv = np.roll(p2, 1, axis=1)
+    nxt = np.roll(p2, -1, axis=1)
+    turn = ((p2[..., 0] - prv[..., 0]) * (nxt[..., 1] - p2[..., 1])
+            - (p2[..., 1] - prv[..., 1]) * (nxt[..., 0] - p2[..., 0]))   # (m, 4) > 0 convex corner
+    # the diagonal leaves the sharpest corner (reflex or collinear): no zero-area triangle
+    use_bd = np.minimum(turn[:, 1], turn[:, 3]) < np.minimum(turn[:, 0], turn[:, 2])
+    a, b, c, d = quads.T
+    t1 = np.where(use_bd[:, None], np.stack([a, b, d], 1), np.stack([a, b, c], 1))
+    t2 = np.where(use_bd[:, None], np.stack([b, c, d], 1), np.stack([a, c, d], 1))
+    return np.stack([t1, t2], axis=1).reshape(-1, 3)
+
+
+def triangulate_surfaces(vertices: np.ndarray, ringsets: Sequence[Sequence[np.ndarray]]
+                         ) -> tuple[np.ndarray, np.ndarray]:
+    """Triangulate many polygons at once (see :func:`triangulate_flat`).
+
+    Parameters
+    ----------
+    vertices : (n, 3) float
+        The building's vertices, m.
+    ringsets : sequence of sequence of (k,) int
+        For each polygon its rings (outer first).
+
+    Returns
+    -------
+    tris : (T, 3) int
+        Indices into ``vertices``, each oriented like its polygon's outer ring, grouped
+        by polygon in input order.
+    poly_of_tri : (T,) int
+        Index (into ``ringsets``) of the polygon of each triangle.
+    """
+    rings = [np.asarray(r, dtype=np.intp) for rs in ringsets for r in rs]
+    if not rings:
+        return np.zeros((0, 3), dtype=np.intp), np.zeros(0, dtype=np.intp)
+    return triangulate_flat(vertices, np.concatenate(rings), np.array([len(r) for r in rings]),
+                            np.array([len(rs) for rs in ringsets]))
+
+
+SLIVER_RATIO = 0.01
+"""Triangles whose height is under this share of their longest edge are slivers."""
+
+
+def _sliver_mask(P: np.ndarray) -> np.ndarray:
+    """(..., 3, 3) triangle corners -> (...) bool: sliver (2 area / longest edge^2 < SLIVER_RATIO)."""
+    e = np.stack([P[..., 1, :] - P[..., 0, :], P[..., 2, :] - P[..., 1, :], P[..., 0, :] - P[..., 2, :]], -2)
+    longest = (e * e).sum(-1).max(-1)
+    cr = _cross(e[..., 0, :], -e[..., 2, :])
+    return np.sqrt((cr * cr).sum(-1)) < SLIVER_RATIO * longest
+
+
+def _sliver_mask_2d(P: np.ndarray) -> np.ndarray:
+    """(t, 3, 2) triangles -> (t,) bool: sliver (see :func:`_sliver_mask`)."""
+    e0, e1, e2 = P[:, 1] - P[:, 0], P[:, 2] - P[:, 1], P[:, 0] - P[:, 2]
+    longest = np.maximum(np.maximum((e0 * e0).sum(1), (e1 * e1).sum(1)), (e2 * e2).sum(1))
+    return np.abs(e0[:, 0] * e1[:, 1] - e0[:, 1] * e1[:, 0]) < SLIVER_RATIO * longest
+
+
+def _has_sliver(vertices: np.ndarray, tris: np.ndarray) -> np.ndarray:
+    """(m, t, 3) triangles of m polygons -> (m,) bool: the polygon's triangulation has a sliver."""
+    return _sliver_mask(vertices[tris]).any(axis=-1)
+
+
+def _fan_convex(vertices: np.ndarray, polys: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Fan triangulation of convex polygons (m, k), from a corner whose neighbours are corners too.
+
+    Returns ``(tris (m, k-2, 3), ok (m,))``; ``ok`` is False for polygons that are not
+    convex (or have no such corner), which need a general triangulation.
+    """
+    m, k = polys.shape
+    P = vertices[polys]
+    P = P - P.mean(axis=1, keepdims=True)
+    n = _cross(P, np.roll(P, -1, axis=1)).sum(axis=1)
+    ax = np.argmax(np.abs(n), axis=1)
+    ij = np.array([(1, 2), (2, 0), (0, 1)])[ax]
+    flip = n[np.arange(m), ax] < 0
+    ij[flip] = ij[flip][:, ::-1]
+    rows = np.arange(m)[:, None]
+    p2 = np.stack([P[rows, np.arange(k)[None, :], ij[:, :1]], P[rows, np.arange(k)[None, :], ij[:, 1:]]], -1)
+    e_in = p2 - np.roll(p2, 1, axis=1)
+    e_out = np.roll(p2, -1, axis=1) - p2
+    turn = e_in[..., 0] * e_out[..., 1] - e_in[..., 1] * e_out[..., 0]
+    scale = np.linalg.norm(e_in, axis=2) * np.linalg.norm(e_out, axis=2)
+    strict = turn > 1e-9 * scale
+    convex = (turn >= -1e-12 * scale).all(axis=1)
+    apex_ok = strict & np.roll(strict, 1, axis=1) & np.roll(strict, -1, axis=1)
+    ok = convex & apex_ok.any(axis=1) & np.any(n != 0, axis=1)
+    a = np.argmax(apex_ok, axis=1)
+    i = np.arange(1, k - 1)
+    loc = np.stack([np.broadcast_to(a[:, None], (m, k - 2)), (a[:, None] + i) % k, (a[:, None] + i + 1) % k], -1)
+    return np.take_along_axis(polys[:, None, :], loc.reshape(m, 1, -1), axis=2).reshape(m, k - 2, 3), ok
+
+
+def _triangulate_general(vertices, ids, ring_start, ring_len, first_ring, rpp, polys):
+    """Ear clipping (constrained Delaunay where it leaves slivers) of polygons ``polys``,
+    with normals, projections, orientation fixes and sliver tests vectorised."""
+    # vertex slots of the chosen polygons (all their rings)
+    r0 = first_ring[polys]
+    nr = rpp[polys]
+    rings = np.repeat(r0, nr) + (np.arange(nr.sum()) - np.repeat(np.cumsum(nr) - nr, nr))
+    rl = ring_len[rings]
+    slot = np.repeat(ring_start[rings], rl) + (np.arange(rl.sum()) - np.repeat(np.cumsum(rl) - rl, rl))
+    ring_of = np.repeat(np.arange(len(rings)), rl)
+    poly_of_ring = np.repeat(np.arange(len(polys)), nr)
+    poly_of = poly_of_ring[ring_of]
+    P = vertices[ids[slot]]
+    # Newell normals of the outer rings
+    rstart = np.concatenate(([0], np.cumsum(rl)[:-1]))
+    nxt = np.arange(len(slot)) + 1
+    nxt[rstart + rl - 1] = rstart
+    o = P[np.concatenate(([0], np.cumsum(np.bincount(poly_of, minlength=len(polys)))[:-1]))][poly_of]
+    Q = P - o
+    cr = _cross(Q, Q[nxt])
+    is_outer = np.zeros(len(rings), dtype=bool)
+    is_outer[np.concatenate(([0], np.cumsum(nr)[:-1]))] = True
+    cr[~is_outer[ring_of]] = 0.0
+    n = np.zeros((len(polys), 3))
+    np.add.at(n, poly_of, cr)
+    ax = np.argmax(np.abs(n), axis=1)
+    ij = np.array([(1, 2), (2, 0), (0, 1)])[ax]
+    flip = n[np.arange(len(polys)), ax] < 0
+    ij[flip] = ij[flip][:, ::-1]
+    ijv = ij[poly_of]
+    p2 = np.ascontiguousarray(np.stack([Q[np.arange(len(Q)), ijv[:, 0]], Q[np.arange(len(Q)), ijv[:, 1]]], -1))
+    pstart = np.concatenate(([0], np.cumsum(np.bincount(poly_of, minlength=len(polys)))))
+    rend_local = (rstart + rl) - pstart[poly_of_ring]
+    good = np.any(n != 0, axis=1)
+    tl, towner = [], []
+    rcut = np.concatenate(([0], np.cumsum(nr)))
+    for k in np.flatnonzero(good).tolist():
+        a, b = pstart[k], pstart[k + 1]
+        loc = earcut_rings(p2[a:b], rend_local[rcut[k]:rcut[k + 1]])
+        if len(loc):
+            tl.append(loc + a)
+            towner.append(np.full(len(loc), k, dtype=np.intp))
+    if not tl:
+        return np.zeros((0, 3), dtype=np.intp), np.zeros(0, dtype=np.intp)
+    T = np.concatenate(tl)
+    own = np.concatenate(towner)
+    A2 = p2[T]
+    area = ((A2[:, 1, 0] - A2[:, 0, 0]) * (A2[:, 2, 1] - A2[:, 0, 1])
+            - (A2[:, 1, 1] - A2[:, 0, 1]) * (A2[:, 2, 0] - A2[:, 0, 0]))
+    neg = area < 0
+    T[neg] = T[neg][:, [0, 2, 1]]
+    sl = _sliver_mask_2d(A2)
+    redo = np.unique(own[sl & (np.bincount(own, minlength=len(polys))[own] > 1)])
+    if len(redo):
+        keep = ~np.isin(own, redo)
+        T, own = T[keep], own[keep]
+        extra_t, extra_o = [T], [own]
+        for k in redo.tolist():
+            a, b = pstart[k], pstart[k + 1]
+            ends = rend_local[rcut[k]:rcut[k + 1]]
+            try:
+                loc = np.asarray(constrained_delaunay(p2[a:b], ends), dtype=np.intp).reshape(-1, 3)
+            except Exception:  # keep ear clipping when the CDT fails
+                loc = earcut_rings(p2[a:b], ends)
+                ar = _cross2(p2[a:b][loc[:, 0]], p2[a:b][loc[:, 1]], p2[a:b][loc[:, 2]]) if len(loc) else loc
+                if len(loc):
+                    loc[ar < 0] = loc[ar < 0][:, [0, 2, 1]]
+            extra_t.append(loc + a)
+            extra_o.append(np.full(len(loc), k, dtype=np.intp))
+        T, own = np.concatenate(extra_t), np.concatenate(extra_o)
+    return ids[slot[T]], polys[own]
+
+
+def triangulate_flat(vertices: np.ndarray, ids: np.ndarray, ring_len: np.ndarray,
+                     rings_per_poly: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Triangulate many polygons given in a flat encoding, in their own planes.
+
+    Triangles, quadrilaterals (split through their sharpest corner) and convex
+    polygons (fans from a strict corner) are handled in bulk; other polygons get ear
+    clipping, replaced by a constrained Delaunay triangulation (as val3dity's) where it
+    leaves slivers. No triangle has zero area unless its polygon has.
+
+    Parameters
+    ----------
+    vertices : (n, 3) float
+    ids : (m,) int
+        All ring vertex indices, rings and polygons concatenated.
+    ring_len : (r,) int
+        Length of each ring.
+    rings_per_poly : (f,) int
+        Number of rings of each polygon (outer first).
+
+    Returns
+    -------
+    tris : (T, 3) int
+    poly_of_tri : (T,) int
+    """
+    ids = np.asarray(ids, dtype=np.intp)
+    ring_len = np.asarray(ring_len, dtype=np.intp)
+    rpp = np.asarray(rings_per_poly, dtype=np.intp)
+    nf = len(rpp)
+    if nf == 0:
+        return np.zeros((0, 3), dtype=np.intp), np.zeros(0, dtype=np.intp)
+    ring_start = np.concatenate(([0], np.cumsum(ring_len)[:-1]))
+    first_ring = np.concatenate(([0], np.cumsum(rpp)[:-1]))
+    ostart = ring_start[first_ring]
+    nout = ring_len[first_ring]
+    simple = rpp == 1
+    out_t, out_f = [], []
+    tri_f = np.flatnonzero(simple & (nout == 3))
+    if len(tri_f):
+        out_t.append(ids[ostart[tri_f, None] + np.arange(3)])
+        out_f.append(tri_f)
+    quad_c = np.flatnonzero(simple & (nout == 4))
+    normals = np.zeros((nf, 3))
+    if len(quad_c):
+        q = ids[ostart[quad_c, None] + np.arange(4)]
+        P = vertices[q]
+        P = P - P.mean(axis=1, keepdims=True)
+        normals[quad_c] = _cross(P, np.roll(P, -1, axis=1)).sum(axis=1)
+        good = np.any(normals[quad_c] != 0, axis=1)
+        quad_f = quad_c[good]
+        if len(quad_f):
+            out_t.append(_triangulate_quads(vertices, q[good], normals[quad_f]))
+            out_f.append(np.repeat(quad_f, 2))
+    else:
+        quad_f = quad_c
+    done = np.zeros(nf, dtype=bool)
+    done[tri_f] = True
+    done[quad_f] = True
+    big = np.flatnonzero(simple & (nout >= 5))
+    for k in np.unique(nout[big]).tolist():
+        fk = big[nout[big] == k]
+        t, ok = _fan_convex(vertices, ids[ostart[fk, None] + np.arange(k)])
+        ok &= ~_has_sliver(vertices, t)
+        if ok.any():
+            out_t.append(t[ok].reshape(-1, 3))
+            out_f.append(np.repeat(fk[ok], k - 2))
+            done[fk[ok]] = True
+    rest = np.flatnonzero(~done & (nout >= 3))
+    if len(rest):
+        t, owner = _triangulate_general(vertices, ids, ring_start, ring_len, first_ring, rpp, rest)
+        if len(t):
+            out_t.append(t)
+            out_f.append(owner)
+    if not out_t:
+        return np.zeros((0, 3), dtype=np.intp), np.zeros(0, dtype=np.intp)
+    tris = np.concatenate(out_t).astype(np.intp)
+    fot = np.concatenate(out_f).astype(np.intp)
+    order = np.argsort(fot, kind="stable")
+    return tris[order], fot[order]
+
+
+def triangulate_shell(vertices: np.ndarray, shell, rings_map: np.ndarray | None = None
+                      ) -> tuple[np.ndarray, np.ndarray]:
+    """Triangulate every surface of a shell.
+
+    Parameters
+    ----------
+    vertices : (n, 3) float
+        The building's vertices, m.
+    shell : Shell or sequence of Surface
+    rings_map : (n,) int, optional
+        Index map applied to ring indices first (e.g. snapped representatives).
+
+    Returns
+    -------
+    tris : (T, 3) int
+        Indices into ``vertices``, each oriented like its surface's outer ring.
+    face_of_tri : (T,) int
+        Index of the surface (in ``shell.surfaces``) each triangle comes from.
+    """
+    surfaces = shell.surfaces if hasattr(shell, "surfaces") else shell
+    if rings_map is not None:
+        mp = np.asarray(rings_map)
+        ringsets = [[mp[r] for r in s.rings] for s in surfaces]
+    else:
+        ringsets = [s.rings for s in surfaces]
+    return triangulate_surfaces(vertices, ringsets)
+
+
+
+
+# ----------------------------------------------------------------------------- constrained Delaunay
+
+def _incircle(pa, pb, pc, pd) -> float:
+    """> 0 when ``pd`` is inside the circle through the CCW triangle ``pa, pb, pc``."""
+    adx, ady = pa[0] - pd[0], pa[1] - pd[1]
+    bdx, bdy = pb[0] - pd[0], pb[1] - pd[1]
+    cdx, cdy = pc[0] - pd[0], pc[1] - pd[1]
+    ad = adx * adx + ady * ady
+    bd = bdx * bdx + bdy * bdy
+    cd = cdx * cdx + cdy * cdy
+    det = adx * (bdy * cd - bd * cdy) - ady * (bdx * cd - bd * cdx) + ad * (bdx * cdy - bdy * cdx)
+    # Shewchuk's permanent: below ~1e-14 of it the sign is rounding noise (cocircular)
+    perm = ((abs(bdx * cdy) + abs(bdy * cdx)) * ad + (abs(cdx * ady) + abs(cdy * adx)) * bd
+            + (abs(adx * bdy) + abs(ady * bdx)) * cd)
+    return det if abs(det) > 1e-14 * perm else 0.0
+
+
+def _orient(pa, pb, pc) -> float:
+    return (pb[0] - pa[0]) * (pc[1] - pa[1]) - (pb[1] - pa[1]) * (pc[0] - pa[0])
+
+
+def ear_triangles(points2d: np.ndarray, ring_ends: np.ndarray) -> np.ndarray:
+    """Ear-clipping triangulation.
+
+    Parameters
+    ----------
+    points2d : (n, 2) float
+        Ring vertices (outer ring first, then holes), open rings, concatenated.
+    ring_ends : (r,) int
+        Cumulative ring sizes (``ring_ends[-1] == n``).
+
+    Returns
+    -------
+    (t, 3) int
+        Triangles as indices into ``points2d``, each counter-clockwise.
+    """
+    pts = np.ascontiguousarray(points2d, dtype=np.float64)
+    tri = earcut_rings(pts, ring_ends)
+    if len(tri) == 0:
+        return tri
+    a, b, c = pts[tri[:, 0]], pts[tri[:, 1]], pts[tri[:, 2]]
+    area2 = (b[:, 0] - a[:, 0]) * (c[:, 1] - a[:, 1]) - (b[:, 1] - a[:, 1]) * (c[:, 0] - a[:, 0])
+    cw = area2 < 0
+    tri[cw] = tri[cw][:, [0, 2, 1]]
+    return tri
+
+
+def constrained_delaunay(points2d: np.ndarray, ring_ends: np.ndarray, max_flips: int | None = None) -> np.ndarray:
+    """CDT of a polygon with holes whose constraints are its ring edges.
+
+    When the plain Delaunay triangulation (Qhull) already holds every ring edge, the CDT is
+    its triangles inside the polygon; otherwise ear clipping + constrained Lawson flips.
+
+    Parameters
+    ----------
+    points2d : (n, 2) float
+        Ring vertices (outer ring first, then holes), open rings, concatenated.
+    ring_ends : (r,) int
+        Cumulative ring sizes.
+    max_flips : int, optional
+        Safety bound on edge flips (default ``10 n^2``).
+
+    Returns
+    -------
+    (t, 3) int
+        Counter-clockwise triangles, indices into ``points2d``.
+    """
+    pts = np.asarray(points2d, dtype=np.float64)
+    fast = _delaunay_if_conforming(pts, ring_ends)
+    if fast is not None:
+        return fast
+    return lawson_cdt(pts, ring_ends, max_flips)
+
+
+def _ring_edges(ring_ends) -> set[tuple[int, int]]:
+    edges = set()
+    start = 0
+    for end in np.asarray(ring_ends).tolist():
+        for i in range(start, end):
+            j = i + 1 if i + 1 < end else start
+            edges.add((min(i, j), max(i, j)))
+        start = end
+    return edges
+
+
+def _delaunay_if_conforming(pts: np.ndarray, ring_ends) -> np.ndarray | None:
+    """Inside triangles of the Delaunay triangulation when it contains all ring edges, else None."""
+    if len(np.unique(pts, axis=0)) != len(pts):
+        return None  # a ring touching another at a vertex: leave it to the general path
+    try:
+        dt = Delaunay(pts)
+    except Exception:  # Qhull refuses degenerate input
+        return None
+    n = len(pts)
+    simp = np.sort(dt.simplices, axis=1)
+    have = np.concatenate([simp[:, 0] * n + simp[:, 1], simp[:, 1] * n + simp[:, 2], simp[:, 0] * n + simp[:, 2]])
+    ends = np.asarray(ring_ends, dtype=np.intp)
+    sizes = np.diff(np.concatenate([[0], ends]))
+    i = np.arange(n)
+    j = i + 1
+    j[ends - 1] = ends - sizes
+    need = np.minimum(i, j) * n + np.maximum(i, j)
+    if not np.isin(need, have).all():
+        return None
+    tri = dt.simplices
+    c = pts[tri].mean(axis=1)
+    start = 0
+    rings = []
+    for end in np.asarray(ring_ends).tolist():
+        rings.append(pts[start:end])
+        start = end
+    poly = shapely.Polygon(rings[0], rings[1:])
+    inside = shapely.contains_xy(poly, c[:, 0], c[:, 1])
+    tri = tri[inside].astype(np.intp)
+    a, b, cc = pts[tri[:, 0]], pts[tri[:, 1]], pts[tri[:, 2]]
+    cw = (b[:, 0] - a[:, 0]) * (cc[:, 1] - a[:, 1]) - (b[:, 1] - a[:, 1]) * (cc[:, 0] - a[:, 0]) < 0
+    tri[cw] = tri[cw][:, [0, 2, 1]]
+    return tri
+
+
+def lawson_cdt(pts: np.ndarray, ring_ends, max_flips: int | None = None) -> np.ndarray:
+    """CDT by ear clipping then constrained Lawson flips (general, slower path)."""
+    tri = ear_triangles(pts, ring_ends)
+    n = len(pts)
+    if len(tri) < 2:
+        return tri
+    constrained = _ring_edges(ring_ends)
+    tris = [list(t) for t in tri.tolist()]
+    edge_tris: dict[tuple[int, int], list[int]] = {}
+    for ti, (a, b, c) in enumerate(tris):
+        for u, v in ((a, b), (b, c), (c, a)):
+            edge_tris.setdefault((min(u, v), max(u, v)), []).append(ti)
+    stack = [e for e, ts in edge_tris.items() if len(ts) == 2 and e not in constrained]
+    P = pts.tolist()
+    budget = max_flips if max_flips is not None else 10 * n * n + 10
+    while stack and budget > 0:
+        e = stack.pop()
+        ts = edge_tris.get(e)
+        if ts is None or len(ts) != 2:
+            continue
+        t1, t2 = ts
+        a, b = e
+        # orient t1 so that it holds a -> b
+        A, B, C = tris[t1]
+        rot = {(A, B): (A, B, C), (B, C): (B, C, A), (C, A): (C, A, B)}
+        if (a, b) in rot:
+            a, b, c = rot[(a, b)]
+        else:
+            a, b, c = rot[(b, a)]
+        D = [v for v in tris[t2] if v != a and v != b]
+        if len(D) != 1:
+            continue
+        d = D[0]
+        if _incircle(P[a], P[b], P[c], P[d]) <= 0.0:
+            continue
+        if _orient(P[a], P[d], P[c]) <= 0 or _orient(P[d], P[b], P[c]) <= 0:
+            continue
+        budget -= 1
+        tris[t1] = [a, d, c]
+        tris[t2] = [d, b, c]
+        del edge_tris[(min(a, b), max(a, b))]
+        edge_tris[(min(c, d), max(c, d))] = [t1, t2]
+        # edge (b, d) moved from t2 to t2 (unchanged); (a, c) stays in t1; (b, c) moved t1 -> t2;
+        # (a, d) moved t2 -> t1
+        for (u, v), old, new in (((b, c), t1, t2), ((a, d), t2, t1)):
+            lst = edge_tris[(min(u, v), max(u, v))]
+            lst[lst.index(old)] = new
+        for u, v in ((a, c), (c, b), (b, d), (d, a)):
+            k = (min(u, v), max(u, v))
+            if k not in constrained and len(edge_tris.get(k, ())) == 2:
+                stack.append(k)
+    return np.asarray(tris, dtype=np.intp).reshape(-1, 3)

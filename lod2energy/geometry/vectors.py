@@ -1,0 +1,226 @@
+"""Vector maths on rings and points: cross products, Newell normals, unit vectors, plane bases, 2D projection.
+
+The one home of these operations: every module that needs a polygon's normal, a plane
+basis or a projection calls them (floating-point order matters for bit-identical results,
+so keep one implementation). Coordinates are metres.
+"""
+from __future__ import annotations
+
+from typing import Sequence
+
+import numpy as np
+
+__all__ = ["cross_rows", "unit_rows", "newell_normal", "polygon_normal", "newell_normals",
+           "rings_normal", "plane_basis", "plane_bases", "project_2d", "cross2"]
+
+
+def newell_normal(points: np.ndarray, centred: bool = True) -> np.ndarray:
+    """Newell's (area-weighted, unnormalised) normal of a closed ring.
+
+    Parameters
+    ----------
+    points : (k, 3) float
+        Ring vertices, open (first not repeated), m.
+    centred : bool
+        True: sum of the cross products of consecutive points taken about their mean (exact
+        to the last bits for national-grid coordinates). False: Newell's textbook sums
+        ``sum (y_i - y_i+1)(z_i + z_i+1)`` on the raw coordinates, the operation order the
+        repair ladder's results were tuned on (both agree to rounding; keep each caller's
+        order so that results stay bit-identical).
+
+    Returns
+    -------
+    (3,) float
+        Normal whose length is twice the ring's vector area, m2; zero for a degenerate ring.
+    """
+    p = np.asarray(points, dtype=np.float64)
+    if len(p) < 3:
+        return np.zeros(3)
+    if not centred:
+        q = np.roll(p, -1, axis=0)
+        return np.array([
+            np.sum((p[:, 1] - q[:, 1]) * (p[:, 2] + q[:, 2])),
+            np.sum((p[:, 2] - q[:, 2]) * (p[:, 0] + q[:, 0])),
+            np.sum((p[:, 0] - q[:, 0]) * (p[:, 1] + q[:, 1])),
+        ])
+    p = p - p.mean(axis=0)
+    return _cross(p, np.roll(p, -1, axis=0)).sum(axis=0)
+
+
+def polygon_normal(points: np.ndarray) -> np.ndarray:
+    """Unit normal of a ring (Newell), right-hand rule; zeros when degenerate.
+
+    Parameters
+    ----------
+    points : (k, 3) float
+        Ring vertices, m.
+
+    Returns
+    -------
+    (3,) float
+    """
+    n = newell_normal(points)
+    ln = np.linalg.norm(n)
+    return n / ln if ln > 0 else n
+
+
+def newell_normals(vertices: np.ndarray, rings: Sequence[np.ndarray]) -> np.ndarray:
+    """Newell normals of many rings at once.
+
+    Parameters
+    ----------
+    vertices : (n, 3) float
+    rings : sequence of (k_i,) int
+
+    Returns
+    -------
+    (len(rings), 3) float
+        Unnormalised normals (length = 2 x area), m2.
+    """
+    if len(rings) == 0:
+        return np.zeros((0, 3))
+    lens = np.fromiter((len(r) for r in rings), dtype=np.intp, count=len(rings))
+    idx = np.concatenate([np.asarray(r, dtype=np.intp) for r in rings])
+    starts = np.concatenate(([0], np.cumsum(lens)[:-1]))
+    nxt = np.arange(len(idx)) + 1
+    ends = starts + lens - 1
+    nxt[ends] = starts
+    p = vertices[idx]
+    p = p - p.mean(axis=0)
+    cr = _cross(p, p[nxt])
+    out = np.add.reduceat(cr, starts, axis=0) if len(idx) else np.zeros((0, 3))
+    out[lens == 0] = 0.0
+    return out
+
+
+def project_2d(points: np.ndarray, normal: np.ndarray) -> np.ndarray:
+    """Project points on the coordinate plane most orthogonal to ``normal``, keeping orientation.
+
+    A ring counter-clockwise around ``normal`` in 3D is counter-clockwise in 2D.
+
+    Parameters
+    ----------
+    points : (k, 3) float
+    normal : (3,) float
+
+    Returns
+    -------
+    (k, 2) float
+    """
+    ax = int(np.argmax(np.abs(normal)))
+    i, j = [(1, 2), (2, 0), (0, 1)][ax]
+    if normal[ax] < 0:
+        i, j = j, i
+    return np.asarray(points)[:, [i, j]]
+
+def cross_rows(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """Row-wise cross product of (..., 3) arrays (cheaper than np.cross on small batches).
+
+    Parameters
+    ----------
+    a, b : (..., 3) float
+
+    Returns
+    -------
+    (..., 3) float
+    """
+    a0, a1, a2 = a[..., 0], a[..., 1], a[..., 2]
+    b0, b1, b2 = b[..., 0], b[..., 1], b[..., 2]
+    return np.stack([a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0], axis=-1)
+
+
+def unit_rows(v: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Unit vectors of the rows of ``v`` (..., 3) (zero stays zero) and their lengths (...,)."""
+    ln = np.linalg.norm(v, axis=-1, keepdims=True)
+    return np.divide(v, ln, out=np.zeros_like(v), where=ln > 0), ln[..., 0]
+
+def cross2(o, a, b):
+    """z of the 2D cross product (a - o) x (b - o), over the last axis of (..., 2) arrays."""
+    return (a[..., 0] - o[..., 0]) * (b[..., 1] - o[..., 1]) - (a[..., 1] - o[..., 1]) * (b[..., 0] - o[..., 0])
+
+
+
+_cross = cross_rows
+_unit = unit_rows
+
+
+def rings_normal(vertices: np.ndarray, rings: Sequence[Sequence[int]], centred: bool = True) -> np.ndarray:
+    """Unit normal of a polygon with holes: Newell vectors of all its rings summed.
+
+    Holes wound against the outer ring subtract their area; a degenerate polygon gives zeros.
+
+    Parameters
+    ----------
+    vertices : (n, 3) float
+        m.
+    rings : sequence of sequence of int
+        Outer ring first, then holes (indices into ``vertices``).
+    centred : bool
+        See :func:`newell_normal`.
+
+    Returns
+    -------
+    (3,) float
+    """
+    n = newell_normal(vertices[list(rings[0])], centred)
+    for r in rings[1:]:
+        n = n + newell_normal(vertices[list(r)], centred)
+    ln = np.linalg.norm(n)
+    return n / ln if ln > 0 else np.zeros(3)
+
+
+def _cross3(a, b) -> np.ndarray:
+    return np.array([a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]])
+
+
+def plane_basis(n: np.ndarray) -> np.ndarray:
+    """Orthonormal basis ``(u, v)`` of the plane with normal ``n``, right-handed with ``n``.
+
+    ``u = n x a`` with ``a`` the x axis (the y axis when ``n`` is within 26 degrees of x).
+
+    Parameters
+    ----------
+    n : (3,) float
+        Normal (any length; zero gives the xy plane's basis).
+
+    Returns
+    -------
+    (2, 3) float
+    """
+    n = np.asarray(n, dtype=np.float64)
+    ln = float(np.sqrt(n @ n))
+    if not ln > 0:  # degenerate face: any basis will do (callers reject the face anyway)
+        return np.array([[1.0, 0.0, 0.0], [0.0, 1.0, 0.0]])
+    n = n / ln
+    a = (1.0, 0.0, 0.0) if abs(n[0]) < 0.9 else (0.0, 1.0, 0.0)
+    u = _cross3(n, a)
+    u /= np.sqrt(u @ u)
+    v = _cross3(n, u)
+    return np.vstack([u, v])
+
+
+def plane_bases(normals: np.ndarray, helper: str = "x_or_y") -> tuple[np.ndarray, np.ndarray]:
+    """Orthonormal bases ``u, v`` of many planes, each right-handed with its normal.
+
+    Parameters
+    ----------
+    normals : (m, 3) float
+        Unit normals.
+    helper : {"x_or_y", "least"}
+        The axis ``a`` in ``u = n x a``: ``"x_or_y"`` as :func:`plane_basis`; ``"least"`` the
+        coordinate axis along which the normal is smallest (the validator's projection).
+
+    Returns
+    -------
+    u, v : (m, 3) float
+    """
+    m = len(normals)
+    if helper == "least":
+        a = np.zeros((m, 3))
+        a[np.arange(m), np.argmin(np.abs(normals), axis=1)] = 1.0
+        u = _cross(normals, a)
+        u /= np.linalg.norm(u, axis=1, keepdims=True)
+        return u, _cross(normals, u)
+    a = np.where(np.abs(normals[:, :1]) < 0.9, np.array([[1.0, 0, 0]]), np.array([[0, 1.0, 0]]))
+    u, _ = _unit(_cross(normals, a))
+    return u, _cross(normals, u)
