@@ -263,7 +263,7 @@ def draw_graph(cv: Canvas, pic: dict, fs, origin) -> None:
         segs = [e["xy"] for e in pic["edges"] if e["kind"] == kind]
         if segs:
             cv.add(LineCollection(segs, colors=GRAPH_COLOURS[kind], linewidths=lw))
-    for kind, size in (("valid_face", 4.0), ("defective_face", 5.5)):
+    for kind, size in (("valid_face", 6.0), ("defective_face", 8.0)):
         pts = np.array([nd["xy"] for nd in pic["nodes"] if nd["kind"] == kind]).reshape(-1, 2)
         if len(pts):
             c = EllipseCollection(size, size, 0.0, units="dots", offsets=pts, facecolors=GRAPH_COLOURS[kind],
