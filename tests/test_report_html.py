@@ -259,3 +259,24 @@ def test_real_tile_report_in_chromium(tmp_path):
         assert p.evaluate("location.hash") == hrefs[0]
         assert p.locator(".panel img").count() == len(rep["buildings"])
         assert p.evaluate("[...document.images].every(i => i.complete && i.naturalWidth > 0)")
+
+
+def test_every_plot_is_an_svg_image_and_heating_colours_the_plan(tmp_path):
+    from lod2energy.viz import figures as F
+    bs = [box(id="ok"), open_box(id="hole")]
+    rep, outs = export_report(bs)
+    for k, row in enumerate(rep["buildings"]):
+        row["exports"]["idf"] = {"ok": True, "heating_kwh": 4000.0 * (k + 1), "problems": []}
+    rs = D.rows(rep)
+    fd = D.figure_data(rs)
+    assert sum(n for _, n in fd["heating_by_typology"].values()) == 2
+    urls = [F.plot_stages(fd["stages"]), F.plot_histograms(fd["iou"], fd["displacement"]),
+            F.plot_compliance(fd["compliance"]), F.plot_validity(fd["validity_by_code"]),
+            F.plot_heating(fd["heating_by_typology"])]
+    for u in urls:
+        assert u.startswith("data:image/svg+xml;base64,")
+        assert b"<svg" in base64.b64decode(u.split(",", 1)[1])[:400]
+    html = render_report_html(rep, inputs={b.id: b for b in bs}, outputs=outs)
+    assert html.count("data-heat-fill=") == 2 and 'id="by-heat"' in html and 'id="plot-heating"' in html
+    values = sorted(float(v) for v in re.findall(r'data-value="([0-9.]+)"', html))
+    assert values == pytest.approx(sorted(r.heating_kwh_m2 for r in rs), abs=1e-3)

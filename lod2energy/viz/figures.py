@@ -68,7 +68,7 @@ def plot_histograms(iou: dict, disp: dict) -> str:
     """IoU and mean displacement of the repaired buildings (the method's Figure 11)."""
     if not iou.get("n") and not disp.get("n"):
         return ""
-    fig = new_figure(7.0, 2.6, left=0.08, bottom=0.3, wspace=0.25)
+    fig = new_figure(7.4, 2.6, left=0.09, bottom=0.3, wspace=0.38)
     for k, (h, title, xl) in enumerate(((iou, "IoU input vs repaired", "IoU"),
                                         (disp, "mean vertex displacement", "m (bin index; edges below)"))):
         ax = fig.add_subplot(1, 2, k + 1)

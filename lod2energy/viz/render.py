@@ -60,14 +60,15 @@ def footprint(b: Building) -> list[np.ndarray]:
     """Plan footprint as rings ``[(k, 2) float, m]``: the ground faces projected on the ground
     plane; else the downward faces; else the convex hull of the vertices. Empty when the
     building has no usable geometry. Drawn as one SVG path (no polygon union needed)."""
-    fs = faces(b)
-    if not fs:
-        return []
-    ground = [p for p, t in fs if t == "GroundSurface"]
-    if not ground:
-        ground = [p for p, t in fs if _ring_normal(p)[2] < -0.7]
-    rings = [p[:, :2] for p in ground if len(p) >= 3]
+    refs = b.shells() or b.all_shells()
+    V = b.vertices
+    rings = [V[s.outer][:, :2] for r in refs for s in r.shell.surfaces
+             if len(s.outer) >= 3 and r.geometry.semantic_type(s) == "GroundSurface"]
     if rings:
+        return rings
+    fs = faces(b)
+    rings = [p[:, :2] for p, _ in fs if _ring_normal(p)[2] < -0.7]
+    if rings or not fs:
         return rings
     pts = np.vstack([p for p, _ in fs])[:, :2]
     try:
