@@ -1,0 +1,10 @@
+"""Pictures of what lod2energy did: the self-contained ``report.html`` and ``lod2energy view``.
+
+:func:`write_report_html` writes the page for a report of ``export``, ``repair --report`` or
+``validate --report``; :func:`view` writes (and opens) the panel of one building of a file.
+"""
+from lod2energy.viz.report import DEFAULT_CAP, render_report_html, write_report_for, write_report_html  # noqa: F401
+from lod2energy.viz.view import add_view_parser, cmd_view, view  # noqa: F401
+
+__all__ = ["DEFAULT_CAP", "render_report_html", "write_report_html", "write_report_for", "view",
+           "add_view_parser", "cmd_view"]

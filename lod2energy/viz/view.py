@@ -1,0 +1,111 @@
+"""``lod2energy view FILE [--id ID]``: the report panel of one building, written and opened.
+
+The building is validated, repaired, labelled and given U-values by
+:func:`lod2energy.pipeline.prepare`, as ``export`` does; the page has the same panel as
+``report.html`` (input and repaired renders, face-adjacency graph, defects and stages).
+"""
+from __future__ import annotations
+
+import os
+import sys
+from pathlib import Path
+from types import SimpleNamespace
+
+from lod2energy.config import DEFAULT, Tolerances
+from lod2energy.errors import InputError
+from lod2energy.model import Building, FeatureError
+
+
+class ViewError(InputError):
+    """The file cannot be read, or has no such building."""
+
+
+def _pick(path: str, building_id: str | None) -> Building:
+    from lod2energy.io import read
+    model, feats = read(path)
+    if model is None:
+        msgs = [f.message for f in feats if isinstance(f, FeatureError)]
+        raise ViewError(f"{path}: cannot read: {msgs[0] if msgs else 'unknown format'}")
+    for f in feats:
+        if not isinstance(f, Building):
+            continue
+        if building_id is None and f.is_building:
+            return f
+        if building_id is not None and (f.id == building_id or building_id in {o.id for o in f.objects}):
+            return f
+    if building_id is None:
+        raise ViewError(f"{path}: no building in this file")
+    raise ViewError(f"{path}: no building with id {building_id!r}")
+
+
+def has_display() -> bool:
+    """A browser window can be opened (a display on Linux; macOS and Windows always)."""
+    if sys.platform in ("darwin", "win32"):
+        return True
+    return bool(os.environ.get("DISPLAY") or os.environ.get("WAYLAND_DISPLAY"))
+
+
+def view(path, building_id: str | None = None, outdir=".", *, tol: Tolerances = DEFAULT, options=None,
+         open_browser: bool = True) -> Path:
+    """Write ``OUTDIR/view-<id>.html`` with the panel of one building (the first if no id) and
+    open it in a browser when a display is present.
+
+    Parameters
+    ----------
+    path : path-like
+        Any file ``lod2energy`` reads.
+    building_id : str, optional
+        Id of the building or of one of its BuildingParts.
+    outdir : path-like
+        Folder of the page (created).
+    options : object, optional
+        Pipeline options as :func:`lod2energy.pipeline.prepare` takes them (``lod``,
+        ``timeout``, ``merge_parts``, U-value overrides).
+
+    Returns
+    -------
+    Path of the page.
+    """
+    from lod2energy.pipeline import prepare
+    from lod2energy.viz.render import slug
+    from lod2energy.viz.report import write_report_html
+    path = os.fspath(path)
+    b = _pick(path, building_id)
+    a = options or SimpleNamespace(lod=None, timeout=30.0, merge_parts=False)
+    pb, rec = prepare(b, tol, a)
+    row = {**rec.row(), "repair": rec.repair, "energy": rec.energy, "thermal": rec.thermal, "exports": {}}
+    report = {"input_file": path, "buildings": [row]}
+    os.makedirs(outdir, exist_ok=True)
+    out = write_report_html(report, Path(outdir) / f"view-{slug(b.id)[2:]}.html", inputs={b.id: b},
+                            outputs={b.id: pb}, cap=1, tol=tol, input_files=[path])
+    if open_browser and has_display():
+        import webbrowser
+        webbrowser.open(out.as_uri())
+    return out
+
+
+def add_view_parser(subparsers) -> None:
+    """Add ``view FILE [--id ID] [-o OUTDIR] [--no-open]`` to the CLI's subparsers."""
+    v = subparsers.add_parser("view", help="write and open the report panel of one building",
+                              description="Validate, repair and label one building of FILE and write its "
+                              "report panel (input and repaired renders, face-adjacency graph, defects) "
+                              "as a self-contained HTML page; opens it when a display is present.")
+    v.add_argument("input", metavar="FILE")
+    v.add_argument("--id", default=None, help="building (or BuildingPart) id (default: the first building)")
+    v.add_argument("-o", "--output", default=".", metavar="OUTDIR", help="folder of the page (default .)")
+    v.add_argument("--no-open", action="store_true", help="do not open a browser")
+    v.add_argument("--lod", default=None, help="LoD of the envelope (default: the highest)")
+    v.add_argument("--timeout", type=float, default=30.0, help="repair budget per building, s")
+
+
+def cmd_view(args) -> int:
+    """Run ``lod2energy view``; prints the page's path. 0 on success, 2 on unusable input."""
+    try:
+        out = view(args.input, args.id, args.output, options=SimpleNamespace(
+            lod=getattr(args, "lod", None), timeout=getattr(args, "timeout", 30.0), merge_parts=False),
+            open_browser=not getattr(args, "no_open", False))
+    except (ViewError, OSError) as e:
+        print(f"lod2energy: error: {e}", file=sys.stderr)
+        return 2
+    print(out)
+    return 0
