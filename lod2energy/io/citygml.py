@@ -10,6 +10,11 @@ semantic type is written as CityJSON spells it ("Window", "Door"). 3.0's ``gen:g
 ``con:dateOfConstruction`` (its year, as ``yearOfConstruction``) and ``con:height`` (as
 ``measuredHeight``) are read too.
 
+LoD3/4 interior detail is not envelope: the polygons of InteriorWallSurface / CeilingSurface /
+FloorSurface and the rooms, furniture, interior installations (and 3.0 constructive elements)
+are left out of the building's geometries and counted in ``provenance["interior_left_out"]``
+(kind -> polygons or objects).
+
 Each top-level city object (a ``bldg:Building`` with its BuildingParts and
 installations; bridges, tunnels, furniture, generic objects the same way) becomes one
 feature: it is converted into a CityJSON-like ``CityObjects`` / ``vertices`` dict and built
@@ -88,6 +93,13 @@ OPENING_PROPERTIES = ("opening", "fillingSurface", "filling")
 BOUNDARY_PROPERTIES = ("boundedBy", "boundary")
 #: CityGML thematic surface -> CityJSON semantic surface type, where the names differ.
 SEMANTIC_TYPE = {"WindowSurface": "Window", "DoorSurface": "Door"}
+#: Thematic surfaces inside the building (LoD3/4 interior detail), not part of the envelope.
+INTERIOR_SURFACES = ("InteriorWallSurface", "CeilingSurface", "FloorSurface")
+#: Properties holding interior city objects (rooms, furniture, interior installations, 3.0's
+#: constructive elements and storeys): not read as envelope, counted.
+INTERIOR_PROPERTIES = ("interiorRoom", "interiorFurniture", "interiorBuildingInstallation",
+                       "buildingRoom", "buildingFurniture", "buildingConstructiveElement",
+                       "buildingSubdivision")
 #: CityGML versions read (another version is 904).
 VERSIONS = ("1.0", "2.0", "3.0")
 
@@ -258,6 +270,7 @@ class _Feature:
         self.vertices: list[tuple[float, float, float]] = []
         self.issues: list[tuple[int, str, str]] = []
         self.used: set[ET.Element] = set()
+        self.left_out: dict[str, int] = {}  # interior detail not read as envelope: kind -> count
 
     def _index(self, el: ET.Element, dim: int) -> None:
         """Ids of surfaces, the srsDimension of every coordinate list, thematic polygons."""
@@ -308,6 +321,8 @@ class _Feature:
         b = build_feature(self.oid, [o[0] for o in objects], cos, verts)
         errors = tuple(b.provenance.get("input_errors", ())) + tuple(self.issues)
         prov: dict[str, Any] = {"source_format": "CityGML"}
+        if self.left_out:
+            prov["interior_left_out"] = frozen_mapping(dict(sorted(self.left_out.items())))
         if errors:
             prov["input_errors"] = errors
         return b.with_provenance(**prov)
@@ -316,6 +331,9 @@ class _Feature:
         out.append((oid, otype, el, parent))
         k = 0
         for prop in el:
+            if _local(prop.tag) in INTERIOR_PROPERTIES:
+                for child in prop:
+                    self.left_out[_local(child.tag)] = self.left_out.get(_local(child.tag), 0) + 1
             if _local(prop.tag) not in CHILD_PROPERTIES:
                 continue
             for child in prop:
@@ -372,6 +390,10 @@ class _Feature:
                 continue
             for ts in prop:
                 if _local(ts.tag) not in THEMATIC:
+                    continue
+                if _local(ts.tag) in INTERIOR_SURFACES:  # interior detail: not envelope, counted
+                    n = sum(len(f) for _, f in self._theme_faces(ts, f"coid={oid}|{_local(ts.tag)}"))
+                    self.left_out[_local(ts.tag)] = self.left_out.get(_local(ts.tag), 0) + n
                     continue
                 for lod, faces in self._theme_faces(ts, f"coid={oid}|{_local(ts.tag)}"):
                     by_lod.setdefault(lod, []).extend(f for f in faces if f[0] not in self.used)
