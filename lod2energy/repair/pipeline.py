@@ -463,7 +463,7 @@ def repair_building(b: Building, tol: Tolerances = DEFAULT, timeout: float = DEF
         per_geom.append(entry)
     surfaces_log = _clean_surfaces(b, lod, tol, lookup, extra, objs)
     changed = changed or bool(surfaces_log)
-    from lod2energy.repair.parts import merge_overlapping_parts, overlapping_parts
+    from lod2energy.repair.parts import keep_parts_apart, merge_overlapping_parts, overlapping_parts
     if not changed and all(e["stage"] == "valid" for e in per_geom):
         if not merge_parts:
             return b  # untouched: the same object
@@ -474,11 +474,14 @@ def repair_building(b: Building, tol: Tolerances = DEFAULT, timeout: float = DEF
                                                   time.monotonic() - t0))
     V = np.vstack([b.vertices, np.asarray(extra).reshape(-1, 3)]) if extra else b.vertices
     nb = replace(b, objects=tuple(objs), vertices=V)
+    nb, parts_rec = keep_parts_apart(b, nb, tol, lod)  # no BuildingPart overlap made by the repair
     overlaps = overlapping_parts(nb, lod)
     if merge_parts and overlaps:
         nb = merge_overlapping_parts(nb, tol, lod)
     summary = _summary(nb, per_geom, sorted(defects_before), tol, time.monotonic() - t0)
     summary["overlapping_parts"] = [list(p) for p in overlaps]
+    if parts_rec:
+        summary["parts_overlap"] = parts_rec
     errors = [f"{e['object']}: {e['error']}" for e in per_geom if e.get("error")]
     if errors:
         summary["error"] = "; ".join(errors)
