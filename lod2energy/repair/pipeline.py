@@ -101,6 +101,10 @@ def val3dity_codes(m: PolyMesh, lod, tol: Tolerances, coid: str = "probe") -> li
     return sorted({d.code for d in validate_geometry(m.vertices, coid, 0, _probe_geometry(m, lod), tol)})
 
 
+def _valid_or_none(m: PolyMesh | None, lod, tol: Tolerances) -> PolyMesh | None:
+    return m if is_repaired(m, lod, tol) else None
+
+
 def is_repaired(m: PolyMesh | None, lod, tol: Tolerances) -> bool:
     """The ladder's stopping criterion."""
     if m is None or not m.faces:
@@ -387,7 +391,7 @@ def repair_building(b: Building, tol: Tolerances = DEFAULT, timeout: float = DEF
         ``b`` itself when nothing needed a repair (with provenance when it carried none);
         else a new building with ``provenance["repair"]`` set.
     """
-    from lod2energy.repair.plausible import implausible
+    from lod2energy.repair.plausible import closed_volume, implausible, not_hollow
     t0 = time.monotonic()
     deadline = t0 + timeout
     targets = _targets(b, lod)
@@ -430,6 +434,10 @@ def repair_building(b: Building, tol: Tolerances = DEFAULT, timeout: float = DEF
             log = ["timeout: jumped to the convex hull"]
         else:
             stage, res, log = ladder(m, g.lod, tol, deadline)
+            stage, res, log = not_hollow(  # a hollow result goes further up the ladder
+                m, stage, res, log, lambda: global_stages(cleanup(m, tol), g.lod, tol, deadline, []),
+                lambda: _valid_or_none(convex_hull(cleanup(m, tol)), g.lod, tol),
+                closed_volume(snap_vertices(m, tol.snap_tol)))
         entry["log"] = log
         if res is None:
             entry.update(stage="irreparable", n_faces_after=m.n_faces, iou=None,
