@@ -96,6 +96,11 @@ def prepare(b: Building, tol: Tolerances, a, source_model: CityModel | None = No
     rec.repair = {k: v for k, v in repair_info(rb).items() if k != "geometries"}
     if b.provenance.get("interior_left_out"):
         rec.repair["interior_left_out"] = dict(b.provenance["interior_left_out"])
+    if not getattr(a, "merge_parts", False):  # the energy model counts no volume twice
+        from lod2energy.repair.parts import clip_overlapping_parts
+        rb, parts_energy = clip_overlapping_parts(rb, tol, lod)
+        if parts_energy:
+            rec.repair["parts_energy"] = parts_energy
     lb = label_building(rb, lod=lod, source=b)
     tb = assign_u_values(lb, _thermal_options(a, source_model))
     after = validate_building(tb, tol)

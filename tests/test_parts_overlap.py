@@ -101,3 +101,33 @@ def test_real_denhaag_building_has_no_new_overlap_after_repair(bid):
     assert len(overlap_pairs(rb)) <= len(overlap_pairs(b))
     rec = rb.provenance["repair"].get("parts_overlap")
     assert rec and rec["resolved"] and not rec["left"]
+
+
+def part_volume(b: Building, pid: str) -> float:
+    from lod2energy.repair._mesh import signed_volume
+    from lod2energy.repair.pipeline import mesh_of_geometry
+    return signed_volume(mesh_of_geometry(b.vertices, b.object_index[pid].geometries[0]))
+
+
+def test_input_overlap_is_counted_once_in_the_energy_model():
+    from lod2energy.repair.parts import clip_overlapping_parts
+    b = two_parts(dx_b=5.0, x_b=9.0)                         # b (5 m long) overlaps a by 1 m: 48 m3
+    assert overlap_pairs(b)[("a", "b")] == pytest.approx(48.0)
+    cb, rec = clip_overlapping_parts(b)
+    assert rec == {"clipped": [["b", "a", 48.0]], "united": [], "left": []}   # the smaller part yields
+    assert overlap_pairs(cb) == {}
+    assert part_volume(cb, "a") == pytest.approx(480.0) and part_volume(cb, "b") == pytest.approx(192.0)
+    assert clip_overlapping_parts(two_parts())[1] == {}        # parts sharing a wall: nothing to do
+
+
+def test_export_reports_what_was_done_with_overlapping_parts(tmp_path, capsys):
+    import json
+    from lod2energy.cli import main
+    path = shared_path("val3dity-tests", "test_geometry_specific", "601_1.json")
+    out = tmp_path / "o"
+    main(["export", str(path), "-o", str(out), "--idf", "-q"])
+    capsys.readouterr()
+    (r,) = json.loads((out / "report.json").read_text())["buildings"]
+    rec = r["repair"]["parts_energy"]
+    assert rec["clipped"] and not rec["left"]
+    assert r["energy"]["compliant"] and r["exports"]["idf"]["ok"]

@@ -375,3 +375,69 @@ def keep_parts_apart(before: Building, after: Building, tol: Tolerances = DEFAUL
         if not done:
             rec["left"].append([a, c, vol(cur.get((a, c)))])
     return out, rec
+
+
+# ----------------------------------------------------------------------------- energy model: no volume twice
+
+#: Shared volume (m3) from which two overlapping parts are clipped for the energy model; below
+#: it the overlap is numerical noise for the heat balance (10 litres).
+ENERGY_OVERLAP = 0.01
+
+
+def clip_overlapping_parts(b: Building, tol: Tolerances = DEFAULT, lod=None,
+                           min_volume: float = ENERGY_OVERLAP) -> tuple[Building, dict]:
+    """``b`` with no volume shared by two BuildingParts, for the energy model (zones).
+
+    For every 601 pair sharing more than ``min_volume`` m3 the smaller part is clipped by
+    the larger (manifold3d difference; then the larger by the smaller), the clipped solid
+    kept only if valid; a pair neither clip resolves is united into the larger part
+    (:func:`merge_parts` ``into``); else left and reported.
+
+    Returns
+    -------
+    building : Building
+    record : dict
+        ``{"clipped": [[clipped, by, m3], ...], "united": [[into, other, m3], ...],
+        "left": [[a, b, m3], ...]}``; empty when no part shares volume.
+    """
+    from lod2energy.repair.pipeline import geometry_of_mesh, is_repaired
+    from lod2energy.repair._mesh import signed_volume
+    lod = lod if lod is not None else b.default_lod()
+    if len(_part_meshes_all(b, lod)) < 2:
+        return b, {}
+    pairs = {k: v for k, v in overlap_pairs(b, tol).items() if v is not None and v > min_volume}
+    if not pairs:
+        return b, {}
+    rec: dict = {"clipped": [], "united": [], "left": []}
+    out = b
+    for (a, c), v in sorted(pairs.items(), key=lambda kv: -kv[1]):
+        parts = {o.id: (o, gi, g, m) for o, gi, g, m in _part_meshes_all(out, lod)}
+        if a not in parts or c not in parts:
+            continue
+        origin = np.vstack([parts[a][3].vertices, parts[c][3].vertices]).mean(axis=0)
+        ma, mc = _manifold(parts[a][3], origin), _manifold(parts[c][3], origin)
+        if ma is None or mc is None or (ma ^ mc).volume() <= min_volume:
+            continue  # resolved by an earlier clip
+        small, big = sorted((a, c), key=lambda k: signed_volume(parts[k][3]))
+        done = False
+        for cut, by in ((small, big), (big, small)):
+            o, gi, g, m = parts[cut]
+            res = _clip_by(m, parts[by][3])
+            if res is None or not is_repaired(res, lod, tol):
+                continue
+            lookup = {(float(p[0]), float(p[1]), float(p[2])): i for i, p in enumerate(out.vertices)}
+            extra: list = []
+            ng = geometry_of_mesh(res, g, lookup, extra, len(out.vertices))
+            V = np.vstack([out.vertices, np.asarray(extra).reshape(-1, 3)]) if extra else out.vertices
+            out = out.replace_geometry(o.id, gi, ng, vertices=V)
+            rec["clipped"].append([cut, by, round(v, 6)])
+            done = True
+            break
+        if not done:
+            merged = merge_parts(out, {a, c}, tol, lod, into=big)
+            if merged is not out:
+                out = merged
+                rec["united"].append([big, small, round(v, 6)])
+            else:
+                rec["left"].append([a, c, round(v, 6)])
+    return out, rec
