@@ -853,6 +853,147 @@ def _area_centroid(p: np.ndarray) -> np.ndarray:
     return (np.asarray(tri_c) * tri_a[:, None]).sum(axis=0) / tri_a.sum()
 
 
+# --------------------------------------------------------------------------- real openings
+
+#: Semantic types of LoD3 openings and the EnergyPlus fenestration type each becomes.
+OPENING_SURFACE_TYPE = {"Window": "Window", "Door": "Door"}
+#: An opening is matched to a wall hole when its centroid is at most this far from the wall
+#: plane (m): recessed windows sit behind the facade by their reveal depth.
+OPENING_RECESS = 0.6
+
+
+@dataclass(frozen=True)
+class Opening:
+    """A real window or door of a zone, in the plane of its parent wall.
+
+    Parameters
+    ----------
+    points : (k, 3) float, m
+        The wall hole it fills, counter-clockwise seen from outside, zone-local frame.
+    kind : str
+        "Window" or "Door" (the EnergyPlus fenestration type).
+    wall_index : int
+        ``ZoneFace.index`` (input face) of the parent wall; its pieces carry the same index.
+    """
+
+    points: np.ndarray
+    kind: str
+    wall_index: int
+
+
+def _edges(rings) -> list[tuple[int, int]]:
+    return [tuple(sorted((int(r[k]), int(r[(k + 1) % len(r)])))) for r in rings for k in range(len(r))]
+
+
+def split_openings(zone: ZoneShell, recess: float = OPENING_RECESS) -> tuple[ZoneShell, tuple[Opening, ...], int]:
+    """Close a zone's walls through their openings and take the openings out as fenestration.
+
+    A wall hole (inner ring) is filled by the opening (Window / Door face) whose centroid lies
+    within ``recess`` of the wall plane and inside the hole; the opening face and its reveal
+    faces (faces whose vertices are all on the hole or on the opening) leave the zone, the hole
+    leaves the wall, and the hole polygon becomes the :class:`Opening`. A candidate is taken
+    only if the faces it removes are bounded exactly by the hole's edges, so the zone stays as
+    closed as it was.
+
+    Returns
+    -------
+    zone : ZoneShell
+        Without the matched openings and reveals (the input when nothing matched).
+    openings : tuple of Opening
+    unmatched : int
+        Opening faces left in the zone as opaque wall (no hole of a wall to fill).
+    """
+    from shapely.geometry import Point, Polygon
+
+    v = zone.vertices
+    faces = list(zone.faces)
+    cand = [i for i, f in enumerate(faces) if f.semantic_type in OPENING_SURFACE_TYPE]
+    if not cand:
+        return zone, (), 0
+    cents = {i: v[list(faces[i].rings[0])].mean(axis=0) for i in cand}
+    drop: set[int] = set()
+    new_rings: dict[int, list] = {}
+    out: list[Opening] = []
+    for wi, w in enumerate(faces):
+        if w.kind != "wall" or w.semantic_type in OPENING_SURFACE_TYPE or len(w.rings) < 2:
+            continue
+        outer = v[list(w.rings[0])]
+        n = unit(newell_normal(outer))
+        c = outer.mean(axis=0)
+        a, b = plane_basis(n)
+        keep = [w.rings[0]]
+        for hole in w.rings[1:]:
+            hp = v[list(hole)]
+            h2 = Polygon(np.column_stack([(hp - c) @ a, (hp - c) @ b]))
+            best = None
+            for oi in cand:
+                if oi in drop:
+                    continue
+                d = cents[oi] - c
+                if abs(float(d @ n)) <= recess and h2.buffer(0.01).contains(Point(float(d @ a), float(d @ b))):
+                    best = oi
+                    break
+            if best is None:
+                keep.append(hole)
+                continue
+            near = set(int(i) for i in hole) | set(int(i) for i in faces[best].rings[0])
+            group = {best} | {j for j, f in enumerate(faces) if j not in (wi, best) and j not in drop
+                              and f.semantic_type not in OPENING_SURFACE_TYPE
+                              and all(int(i) in near for r in f.rings for i in r)}
+            count: dict[tuple[int, int], int] = {}
+            for j in group:
+                for e in _edges(faces[j].rings):
+                    count[e] = count.get(e, 0) + 1
+            rim = {e for e, k in count.items() if k == 1}
+            if rim != set(_edges([hole])) or any(k > 2 for k in count.values()):
+                keep.append(hole)
+                continue
+            drop |= group
+            pts = hp[::-1] if float(newell_normal(hp) @ n) < 0 else hp
+            out.append(Opening(pts.copy(), OPENING_SURFACE_TYPE[faces[best].semantic_type], w.index))
+        if len(keep) != len(w.rings):
+            new_rings[wi] = keep
+    if not out:
+        return zone, (), len(cand)
+    kept = [replace(f, rings=tuple(new_rings[i])) if i in new_rings else f
+            for i, f in enumerate(faces) if i not in drop]
+    return replace(zone, faces=tuple(kept)), tuple(out), sum(1 for i in cand if i not in drop)
+
+
+def opening_polygon(op: Opening, piece: np.ndarray) -> np.ndarray | None:
+    """The fenestration polygon ``(3|4, 3)`` of an opening on its wall piece, or None.
+
+    The hole is clipped to the piece; one of 3 or 4 corners is written as it is (EnergyPlus
+    takes 3 or 4 vertices), any other shape (a round window) as the upright rectangle of the
+    same area centred on its centroid, inside its bounding box in the wall plane.
+    """
+    from shapely.geometry import Polygon
+
+    n = unit(newell_normal(piece))
+    up = np.array([0.0, 0.0, 1.0])
+    a = np.cross(up, n)
+    if np.linalg.norm(a) < 1e-6:
+        a, _ = plane_basis(n)
+    a = unit(a)
+    b = np.cross(n, a)
+    c = piece.mean(axis=0)
+    to2 = lambda p: np.column_stack([(p - c) @ a, (p - c) @ b])  # noqa: E731
+    try:
+        clip = Polygon(to2(op.points)).buffer(0).intersection(Polygon(to2(piece)))
+    except Exception:  # noqa: BLE001 - shapely topology errors on degenerate input
+        return None
+    if clip.geom_type != "Polygon" or clip.area < 0.01 or clip.area > 0.98 * polygon_area3d(piece):
+        return None
+    xy = np.asarray(clip.exterior.coords)[:-1]
+    if len(xy) > 4 or not _is_convex_2d(xy):
+        (x0, y0, x1, y1), (cx, cy) = clip.bounds, clip.centroid.coords[0]
+        t = math.sqrt(clip.area / max((x1 - x0) * (y1 - y0), 1e-12))
+        hw, hh = t * (x1 - x0) / 2, t * (y1 - y0) / 2
+        xy = np.array([[cx - hw, cy + hh], [cx - hw, cy - hh], [cx + hw, cy - hh], [cx + hw, cy + hh]])
+    p3 = c + xy[:, :1] * a + xy[:, 1:2] * b
+    return p3 if float(newell_normal(p3) @ n) > 0 else p3[::-1]
+
+
 # --------------------------------------------------------------------------- weather
 
 def read_epw_header(path: str | Path) -> tuple[dict, list[float] | None]:
@@ -1029,7 +1170,8 @@ def render_idf(zones: Sequence[ZoneShell], pieces: Sequence[list[Piece]], delta:
                offset: np.ndarray, options: IdfOptions, building_ids: Sequence[str],
                shading: Sequence[np.ndarray] = (), site: dict | None = None,
                ground: Sequence[float] | None = None, crs: str | None = None,
-               zone_info: Sequence["ZoneInfo"] | None = None) -> tuple[str, dict, list[str]]:
+               zone_info: Sequence["ZoneInfo"] | None = None,
+               openings: Sequence[Sequence["Opening"]] | None = None) -> tuple[str, dict, list[str]]:
     """IDF text for zones whose pieces are in a frame ``delta`` away from the file frame.
 
     ``zone_info`` (one per zone) gives each zone's use and whether it is conditioned: with
@@ -1037,6 +1179,9 @@ def render_idf(zones: Sequence[ZoneShell], pieces: Sequence[list[Piece]], delta:
     infiltration and ventilation come from :func:`lod2energy.thermal.use.use_conditions`; an
     unconditioned zone (attic) gets no HVAC and no loads. Interzone pieces (``boundary ==
     "Surface"``) are written with the name of their partner as the boundary object.
+
+    ``openings`` (per zone, :func:`split_openings`): a zone with real windows / doors gets
+    them as ``FenestrationSurface:Detailed`` on their wall pieces instead of the WWR rule.
 
     Returns
     -------
@@ -1052,11 +1197,13 @@ def render_idf(zones: Sequence[ZoneShell], pieces: Sequence[list[Piece]], delta:
     win_constructions: dict[str, dict] = {}
     zone_ctx, surf_ctx, win_ctx = [], [], []
     wall_area = win_area = 0.0
+    n_real = {"Window": 0, "Door": 0}
     b_name = reg.name(building_ids[0] if len(building_ids) == 1 else "Dataset", 80)
     links: dict[str, dict] = {}
     uses: dict[str, object] = {}
     infos = list(zone_info) if zone_info is not None else [None] * len(zones)
-    for z, zp, info in zip(zones, pieces, infos):
+    for zk, (z, zp, info) in enumerate(zip(zones, pieces, infos)):
+        zop = tuple(openings[zk]) if openings and zk < len(openings) else ()
         zp, floored = with_floor(zp)
         if floored:
             warnings.append(f"zone {z.object_id}: no floor surface; its {floored} most downward-facing "
@@ -1085,7 +1232,8 @@ def render_idf(zones: Sequence[ZoneShell], pieces: Sequence[list[Piece]], delta:
         # zone's window area stays wwr x its outdoor wall area (few windows = fast runs)
         walls = [polygon_area3d(p.points) for p in zp if p.kind == "wall" and p.boundary == "Outdoors"]
         eligible = sum(a for a in walls if a >= options.min_window_wall_area)
-        ratio = min(z.wwr * sum(walls) / eligible, 0.85) if eligible > 0 else 0.0
+        ratio = min(z.wwr * sum(walls) / eligible, 0.85) if eligible > 0 and not zop else 0.0
+        hosts: list[tuple[Piece, str, str]] = []  # outdoor wall pieces: piece, surface, construction
         for p in zp:
             stype = _KIND_TYPE[p.kind]
             if p.boundary == "Surface":
@@ -1116,6 +1264,7 @@ def render_idf(zones: Sequence[ZoneShell], pieces: Sequence[list[Piece]], delta:
             if p.kind == "wall" and outdoor:
                 a = polygon_area3d(p.points)
                 wall_area += a
+                hosts.append((p, sname, cname))
                 if ratio > 0 and a >= options.min_window_wall_area:
                     w = window_for(p.points - delta, ratio)
                     if w is not None and polygon_area3d(w) > 0.01:
@@ -1125,6 +1274,30 @@ def render_idf(zones: Sequence[ZoneShell], pieces: Sequence[list[Piece]], delta:
                         win_ctx.append({"name": reg.name(f"{sname}_Win", 99), "construction": wc, "base": sname,
                                         "vertices": _vertex_lines(upper_left_first(w))})
                         win_area += polygon_area3d(w)
+        for op in zop:  # real windows and doors, each on the outdoor piece of its wall it overlaps most
+            best = None
+            for p, sname, cname in hosts:
+                if p.face_index != op.wall_index:
+                    continue
+                w = opening_polygon(replace(op, points=op.points), p.points)
+                if w is not None and (best is None or polygon_area3d(w) > polygon_area3d(best[0])):
+                    best = (w, sname, cname)
+            if best is None:
+                warnings.append(f"zone {z.object_id}: a {op.kind.lower()} lies on no outdoor piece of its wall; "
+                                "not written (the wall is closed)")
+                continue
+            w, sname, cname = best
+            if op.kind == "Window":
+                cons = f"Window_U{z.u_window:.3f}_G{options.shgc:.2f}".replace(".", "p")
+                win_constructions.setdefault(cons, {"name": cons, "u_value": _fmt(min(z.u_window, 7.0), 4),
+                                                    "shgc": _fmt(options.shgc, 3), "vt": _fmt(options.shgc, 3)})
+                win_area += polygon_area3d(w)
+            else:
+                cons = cname  # a door: the opaque construction of its wall
+            n_real[op.kind] += 1
+            win_ctx.append({"name": reg.name(f"{sname}_{op.kind}{n_real[op.kind]}", 99), "type": op.kind,
+                            "construction": cons, "base": sname,
+                            "vertices": _vertex_lines(upper_left_first(w - delta))})
     for key, sc in links.items():
         other = links.get(key[:-1] + ("f" if key.endswith("c") else "c"))
         if other is None:
@@ -1173,6 +1346,7 @@ def render_idf(zones: Sequence[ZoneShell], pieces: Sequence[list[Piece]], delta:
              "zone_volume_m3": {z["name"]: float(z["volume"]) for z in zone_ctx},
              "conditioned_zones": [z["name"] for z in zone_ctx if z["conditioned"]],
              "zone_building": {z["name"]: z["building"] for z in zone_ctx},
+             "input_windows": n_real["Window"], "input_doors": n_real["Door"],
              "wwr_achieved": round(win_area / wall_area, 4) if wall_area > 0 else 0.0}
     return text, stats, warnings
 
@@ -1365,6 +1539,12 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
         zs = zone_shells(b, origin, options.lod, wwr=options.wwr, collinear_tol=COLLINEAR_TOL)
         zones_of[bi] = list(range(len(zones), len(zones) + len(zs)))
         zones.extend(zs)
+    openings: dict[int, tuple[Opening, ...]] = {}  # real windows / doors per zone (LoD3 input)
+    for zi in range(len(zones)):
+        zones[zi], openings[zi], unmatched = split_openings(zones[zi])
+        if unmatched:
+            merge_notes.setdefault(next(bi for bi, zl in zones_of.items() if zi in zl), []).append(
+                f"zone {zones[zi].object_id}: {unmatched} window/door face(s) fill no wall hole; written as wall")
     party = find_party_faces(zones) if options.party_walls else {}
     pieces = [zone_pieces(z, zi, party, options.party_split) for zi, z in enumerate(zones)]
     for zi in range(len(zones)):
@@ -1372,6 +1552,7 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
         if simpler is not None:
             zones[zi], pieces[zi] = simpler
             party = {k: v for k, v in party.items() if k[0] != zi}
+            openings[zi] = ()  # a fallback envelope: the WWR rule
 
     written_of, zone_notes, bstats = _written_zones(blist, zones, zones_of, pieces, options)
 
@@ -1387,14 +1568,15 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
         if options.shading and options.mode == "building":
             shading = _shading_for(g[0], blist, bboxes, zones, zones_of, party, options.shading_radius)
         if split_pieces is None and options.zoning == "building":
-            wl = [(zones[i], zone_pieces(zones[i], i, party, False), w[2])
+            wl = [(zones[i], zone_pieces(zones[i], i, party, False), w[2], i)
                   for i, w in zip(zi, [w for j in g for w in written_of[j]])]
         else:
             wl = [w for j in g for w in written_of[j]]
         g_site, g_warn, g_stats = _group_site(gb, crs, frame, site, station)
         text, stats, warns = render_idf([w[0] for w in wl], [w[1] for w in wl], offset - origin, offset,
                                         options, [b.id for b in gb], shading, g_site, ground, crs,
-                                        zone_info=[w[2] for w in wl])
+                                        zone_info=[w[2] for w in wl],
+                                        openings=[openings.get(w[3], ()) for w in wl])
         stats.update(g_stats)
         if len(g) == 1:
             stats.update(bstats[g[0]])
@@ -1444,7 +1626,7 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
     return [finish(j) for j in jobs]
 
 def _written_zones(blist, zones, zones_of, pieces, options):
-    """Per building: the zones to write ``[(ZoneShell, pieces, ZoneInfo)]``, notes, stats."""
+    """Per building: the zones to write ``[(ZoneShell, pieces, ZoneInfo, source zone index)]``, notes, stats."""
     from lod2energy.thermal.storeys import storeys
     from lod2energy.thermal.use import building_use
 
@@ -1464,7 +1646,7 @@ def _written_zones(blist, zones, zones_of, pieces, options):
             for k, (z, zp, attic) in enumerate(sz):
                 info = ZoneInfo(b.id, (k + 1 if not attic else None) if len(sz) > 1 else None, attic,
                                 not attic or options.attic == "conditioned", use.type)
-                out.append((z, zp, info))
+                out.append((z, zp, info, zi))  # zi: the source zone (its real openings)
         written_of[bi] = out
         bstats[bi] = {"use": use.type, "use_source": use.source, "storeys": st.count,
                       "storeys_source": st.source, "storey_height_m": round(st.storey_height, 3),

@@ -85,6 +85,8 @@ def prepare(b: Building, tol: Tolerances, a, source_model: CityModel | None = No
     from lod2energy.semantics import label_building
     from lod2energy.thermal import assign_u_values
 
+    from lod2energy.io.interior import without_interior
+    b = without_interior(b)  # LoD3/4 interior detail is not envelope (counted in the repair record)
     rec = Record(b.id, b.type)
     before = validate_building(b, tol)
     rec.input_errors = _codes(before)
@@ -92,6 +94,13 @@ def prepare(b: Building, tol: Tolerances, a, source_model: CityModel | None = No
     rb = repair_one(b, tol, getattr(a, "timeout", 30.0), getattr(a, "merge_parts", False), lod)
     from lod2energy.repair import repair_info
     rec.repair = {k: v for k, v in repair_info(rb).items() if k != "geometries"}
+    if b.provenance.get("interior_left_out"):
+        rec.repair["interior_left_out"] = dict(b.provenance["interior_left_out"])
+    if not getattr(a, "merge_parts", False):  # the energy model counts no volume twice
+        from lod2energy.repair.parts import clip_overlapping_parts
+        rb, parts_energy = clip_overlapping_parts(rb, tol, lod)
+        if parts_energy:
+            rec.repair["parts_energy"] = parts_energy
     lb = label_building(rb, lod=lod, source=b)
     tb = assign_u_values(lb, _thermal_options(a, source_model))
     after = validate_building(tb, tol)

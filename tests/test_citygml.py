@@ -243,7 +243,7 @@ def test_malformed_xml_is_one_dataset_error_901(tmp_path, capsys):
 
 @pytest.mark.parametrize("text,code", [
     ('<?xml version="1.0"?><svg xmlns="http://www.w3.org/2000/svg"/>', 904),
-    ('<CityModel xmlns="http://www.opengis.net/citygml/3.0"/>', 904),
+    ('<CityModel xmlns="http://www.opengis.net/citygml/4.0"/>', 904),
     ("", 901),
 ])
 def test_unknown_root_or_version_is_904(tmp_path, text, code):

@@ -1,7 +1,21 @@
-"""Reader for CityGML 1.0 / 2.0 (GML 3.1.1 / 3.2) building tiles, building by building.
+"""Reader for CityGML 1.0 / 2.0 / 3.0 (GML 3.1.1 / 3.2) building tiles, building by building.
 
-Elements are matched by local name, so any namespace prefix and either CityGML version
-works. Each top-level city object (a ``bldg:Building`` with its BuildingParts and
+Elements are matched by local name, so any namespace prefix and any of the three CityGML
+versions works. CityGML 3.0 is read as 2.0: its ``core:boundary`` is 2.0's ``boundedBy``,
+``bldg:buildingPart`` / ``buildingInstallation`` are ``consistsOfBuildingPart`` /
+``outerBuildingInstallation``, ``con:WallSurface`` ... the same thematic surfaces, and the
+openings of a wall (``con:fillingSurface`` holding ``con:WindowSurface`` / ``con:DoorSurface``,
+or ``con:filling`` holding ``con:Window`` / ``con:Door``) are 2.0's ``bldg:opening``; the
+semantic type is written as CityJSON spells it ("Window", "Door"). 3.0's ``gen:genericAttribute``
+``con:dateOfConstruction`` (its year, as ``yearOfConstruction``) and ``con:height`` (as
+``measuredHeight``) are read too.
+
+LoD3/4 interior detail is not envelope: the polygons of InteriorWallSurface / CeilingSurface /
+FloorSurface and the rooms, furniture, interior installations (and 3.0 constructive elements)
+are left out of the building's geometries and counted in ``provenance["interior_left_out"]``
+(kind -> polygons or objects).
+
+Each top-level city object (a ``bldg:Building`` with its BuildingParts and
 installations; bridges, tunnels, furniture, generic objects the same way) becomes one
 feature: it is converted into a CityJSON-like ``CityObjects`` / ``vertices`` dict and built
 by the CityJSON reader (:func:`lod2energy.io.cityjson.build_feature`), so the two readers
@@ -30,9 +44,10 @@ and AdV names become ``https://www.opengis.net/def/crs/EPSG/0/<code>``). The mod
 data are written back as ("2.0"); ``format`` is "CityGML".
 
 Bad input never raises: XML that is not well-formed is one file-level error 901 (the file is
-checked whole before any building is yielded), another root or CityGML 3.0 is 904, and a
+checked whole before any building is yielded), another root is 904, and a
 broken building (non-numeric coordinate, dangling xlink, coordinate count not a multiple of
-the dimension) is a :class:`~lod2energy.model.FeatureError` for that building alone.
+the dimension) is a :class:`~lod2energy.model.FeatureError` for that building alone. A
+CityGML version other than 1.0, 2.0 and 3.0 is 904.
 """
 from __future__ import annotations
 
@@ -59,14 +74,34 @@ TOP_LEVEL = {"Building": "Building", "Bridge": "Bridge", "Tunnel": "Tunnel",
 #: Properties that hold a child city object (the child's local name gives its type).
 CHILD_PROPERTIES = ("consistsOfBuildingPart", "outerBuildingInstallation", "consistsOfBridgePart",
                     "outerBridgeInstallation", "outerBridgeConstruction", "consistsOfTunnelPart",
-                    "outerTunnelInstallation")
+                    "outerTunnelInstallation",
+                    # CityGML 3.0 (an installation may be inside or outside: the envelope code decides)
+                    "buildingPart", "buildingInstallation", "bridgePart", "bridgeInstallation",
+                    "tunnelPart", "tunnelInstallation")
 _CHILD_TYPES = {"BridgeConstructionElement": "BridgeConstructiveElement"}
 _OBJECT_NAMES = set(TOP_LEVEL) | {"BuildingPart", "BuildingInstallation", "BridgePart",
                                   "BridgeInstallation", "BridgeConstructionElement", "TunnelPart",
                                   "TunnelInstallation"}
 
 THEMATIC = ("RoofSurface", "WallSurface", "GroundSurface", "ClosureSurface", "OuterCeilingSurface",
-            "OuterFloorSurface", "InteriorWallSurface", "CeilingSurface", "FloorSurface", "Window", "Door")
+            "OuterFloorSurface", "InteriorWallSurface", "CeilingSurface", "FloorSurface", "Window", "Door",
+            "WindowSurface", "DoorSurface")
+#: Properties of a thematic surface that hold its openings (2.0 ``opening``; 3.0 ``fillingSurface``
+#: with Window/DoorSurface, ``filling`` with Window/Door).
+OPENING_PROPERTIES = ("opening", "fillingSurface", "filling")
+#: Properties of a city object that hold its thematic surfaces (2.0 ``boundedBy``, 3.0 ``boundary``).
+BOUNDARY_PROPERTIES = ("boundedBy", "boundary")
+#: CityGML thematic surface -> CityJSON semantic surface type, where the names differ.
+SEMANTIC_TYPE = {"WindowSurface": "Window", "DoorSurface": "Door"}
+#: Thematic surfaces inside the building (LoD3/4 interior detail), not part of the envelope.
+INTERIOR_SURFACES = ("InteriorWallSurface", "CeilingSurface", "FloorSurface")
+#: Properties holding interior city objects (rooms, furniture, interior installations, 3.0's
+#: constructive elements and storeys): not read as envelope, counted.
+INTERIOR_PROPERTIES = ("interiorRoom", "interiorFurniture", "interiorBuildingInstallation",
+                       "buildingRoom", "buildingFurniture", "buildingConstructiveElement",
+                       "buildingSubdivision")
+#: CityGML versions read (another version is 904).
+VERSIONS = ("1.0", "2.0", "3.0")
 
 _GEOMETRY_PROPERTY = re.compile(r"^lod([0-4])(Solid|MultiSolid|MultiSurface|CompositeSurface|Geometry|"
                                 r"FootPrint|RoofEdge)$")
@@ -86,6 +121,9 @@ _TEXT_ATTRS = ("function", "usage", "class", "roofType", "storeyHeightsAboveGrou
                "storeyHeightsBelowGround")
 _GENERIC = {"stringAttribute": str, "intAttribute": int, "doubleAttribute": float,
             "measureAttribute": float, "dateAttribute": str, "uriAttribute": str}
+#: CityGML 3.0 generic attributes (inside ``gen:genericAttribute``; ``gen:name`` and ``gen:value``).
+_GENERIC3 = {"StringAttribute": str, "IntAttribute": int, "DoubleAttribute": float,
+             "MeasureAttribute": float, "DateAttribute": str, "UriAttribute": str, "CodeAttribute": str}
 
 
 def _local(tag: Any) -> str:
@@ -171,8 +209,8 @@ def read(path: str, **_) -> "tuple[CityModel | None, Iterator[Building | Feature
         root, crs, version = _scan(path)
         if root not in ROOTS:
             raise FormatNotSupportedError(f"{path}: XML root is {root!r}, not a CityGML CityModel")
-        if version.startswith("3"):
-            raise FormatNotSupportedError(f"{path}: CityGML {version} is not supported (1.0 and 2.0 are)")
+        if version and version not in VERSIONS:
+            raise FormatNotSupportedError(f"{path}: CityGML {version} is not supported (1.0, 2.0 and 3.0 are)")
     except InputError as e:
         return None, iter([FeatureError(None, e.code, str(e))])
     # CityJSON's spelling of the CRS (AdV names such as urn:adv:crs:ETRS89_UTM32*DE_DHHN2016_NH
@@ -232,6 +270,7 @@ class _Feature:
         self.vertices: list[tuple[float, float, float]] = []
         self.issues: list[tuple[int, str, str]] = []
         self.used: set[ET.Element] = set()
+        self.left_out: dict[str, int] = {}  # interior detail not read as envelope: kind -> count
 
     def _index(self, el: ET.Element, dim: int) -> None:
         """Ids of surfaces, the srsDimension of every coordinate list, thematic polygons."""
@@ -282,6 +321,8 @@ class _Feature:
         b = build_feature(self.oid, [o[0] for o in objects], cos, verts)
         errors = tuple(b.provenance.get("input_errors", ())) + tuple(self.issues)
         prov: dict[str, Any] = {"source_format": "CityGML"}
+        if self.left_out:
+            prov["interior_left_out"] = frozen_mapping(dict(sorted(self.left_out.items())))
         if errors:
             prov["input_errors"] = errors
         return b.with_provenance(**prov)
@@ -290,6 +331,9 @@ class _Feature:
         out.append((oid, otype, el, parent))
         k = 0
         for prop in el:
+            if _local(prop.tag) in INTERIOR_PROPERTIES:
+                for child in prop:
+                    self.left_out[_local(child.tag)] = self.left_out.get(_local(child.tag), 0) + 1
             if _local(prop.tag) not in CHILD_PROPERTIES:
                 continue
             for child in prop:
@@ -342,10 +386,14 @@ class _Feature:
         """One MultiSurface per LoD of the thematic-surface polygons no geometry used."""
         by_lod: dict[str, list[tuple[ET.Element, bool]]] = {}
         for prop in el:
-            if _local(prop.tag) != "boundedBy":
+            if _local(prop.tag) not in BOUNDARY_PROPERTIES:
                 continue
             for ts in prop:
                 if _local(ts.tag) not in THEMATIC:
+                    continue
+                if _local(ts.tag) in INTERIOR_SURFACES:  # interior detail: not envelope, counted
+                    n = sum(len(f) for _, f in self._theme_faces(ts, f"coid={oid}|{_local(ts.tag)}"))
+                    self.left_out[_local(ts.tag)] = self.left_out.get(_local(ts.tag), 0) + n
                     continue
                 for lod, faces in self._theme_faces(ts, f"coid={oid}|{_local(ts.tag)}"):
                     by_lod.setdefault(lod, []).extend(f for f in faces if f[0] not in self.used)
@@ -365,7 +413,7 @@ class _Feature:
                 g = self._target(prop, where)
                 if g is not None and _local(g.tag) in _SURFACE_KINDS:
                     yield m.group(1), self._surface(g, where)
-            elif name == "opening":
+            elif name in OPENING_PROPERTIES:
                 for op in prop:
                     if _local(op.tag) in THEMATIC:
                         yield from self._theme_faces(op, where)
@@ -433,7 +481,8 @@ class _Feature:
             if theme is not None and theme not in sem_index:
                 sem_index[theme] = len(surfaces)
                 tid = _gml_id(theme)
-                surfaces.append({"type": _local(theme.tag), **({"id": tid} if tid else {})})
+                kind = _local(theme.tag)
+                surfaces.append({"type": SEMANTIC_TYPE.get(kind, kind), **({"id": tid} if tid else {})})
             return self._polygon(poly, rev, loc), (sem_index[theme] if theme is not None else None)
 
         base = f"coid={oid}|geom={gi}"
@@ -564,6 +613,17 @@ def _attributes(el: ET.Element) -> dict[str, Any]:
             k, v = _generic(prop)
             if k:
                 attrs[k] = v
+        elif name == "genericAttribute":
+            for g in prop:
+                k, v = _generic3(g)
+                if k:
+                    attrs[k] = v
+        elif name == "dateOfConstruction" and re.match(r"^\d{4}", text):
+            standard.setdefault("yearOfConstruction", int(text[:4]))
+        elif name == "height":  # CityGML 3.0 con:height / con:Height: its value as measuredHeight
+            v = next((e for e in prop.iter() if _local(e.tag) == "value"), None)
+            if v is not None and (v.text or "").strip():
+                standard.setdefault("measuredHeight", _number(v.text.strip(), float))
         elif name in _INT_ATTRS and text:
             standard[name] = _number(text, int)
         elif name in _FLOAT_ATTRS and text:
@@ -588,3 +648,18 @@ def _generic(el: ET.Element) -> tuple[str | None, Any]:
     value = next((c for c in el if _local(c.tag) == "value"), None)
     text = (value.text or "").strip() if value is not None else ""
     return name, _number(text, _GENERIC[kind]) if text else text
+
+
+def _generic3(el: ET.Element) -> tuple[str | None, Any]:
+    """A CityGML 3.0 generic attribute: ``gen:XAttribute`` with ``gen:name`` and ``gen:value``."""
+    kind = _local(el.tag)
+    name = next(((c.text or "").strip() for c in el if _local(c.tag) == "name"), None)
+    if kind == "GenericAttributeSet":
+        members = dict(_generic3(c) for m in el if _local(m.tag) == "genericAttribute" for c in m)
+        members.pop(None, None)
+        return name, members
+    if kind not in _GENERIC3:
+        return None, None
+    value = next((c for c in el if _local(c.tag) == "value"), None)
+    text = (value.text or "").strip() if value is not None else ""
+    return name, _number(text, _GENERIC3[kind]) if text else text

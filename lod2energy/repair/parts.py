@@ -13,9 +13,9 @@ import numpy as np
 
 from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.model import Building, Geometry, Shell, Solid, Surface
-from lod2energy.polymesh import Face, PolyMesh, compact, merge_coplanar, triangulate_mesh
+from lod2energy.polymesh import Face, PolyMesh, compact, merge_coplanar, signed_volume, triangulate_mesh
 from lod2energy.repair.accept import is_repaired
-from lod2energy.repair.convert import mesh_of_geometry
+from lod2energy.repair.convert import geometry_of_mesh, mesh_of_geometry
 
 
 def _part_meshes(b: Building, lod):
@@ -176,3 +176,264 @@ def merge_parts(b: Building, ids, tol: Tolerances = DEFAULT, lod=None, into: str
     nb = replace(nb, objects=objs, vertices=np.vstack([b.vertices, merged.vertices]))
     done = sorted(set(b.provenance.get("merged_parts") or ()) | ids)
     return nb.with_provenance(merged_parts=done)
+
+
+# ----------------------------------------------------------------------------- repair keeps parts apart
+
+#: Largest move (m) of a repaired part's vertex back onto its neighbour's surface.
+SNAP_BACK = 0.25
+
+
+def overlap_pairs(b: Building, tol: Tolerances = DEFAULT) -> dict[tuple[str, str], float | None]:
+    """val3dity 601 pairs of ``b`` (at ``tol.overlap_tol``): ``{(id_a, id_b): shared m3}``.
+
+    The shared volume is manifold3d's intersection volume (None when a solid is rejected).
+    """
+    from lod2energy.validate.solid import check_parts_overlap
+    out: dict[tuple[str, str], float | None] = {}
+    for loc, _code, _info in check_parts_overlap(b, tol):
+        a, c = (s.split("|", 1)[0].removeprefix("coid=") for s in loc.split("&&", 1))
+        out[(a, c)] = None
+    if not out:
+        return out
+    lod = b.default_lod()
+    meshes = {o.id: m for o, _gi, _g, m in _part_meshes_all(b, lod)}
+    origin = np.vstack([m.vertices for m in meshes.values()]).mean(axis=0) if meshes else np.zeros(3)
+    mans = {k: _manifold(m, origin) for k, m in meshes.items()}
+    for (a, c) in out:
+        if mans.get(a) is not None and mans.get(c) is not None:
+            out[(a, c)] = float((mans[a] ^ mans[c]).volume())
+    return out
+
+
+def _part_meshes_all(b: Building, lod):
+    """``(object, geom index, geometry, PolyMesh)`` of the Solid of the Building and each part."""
+    out = []
+    for o in b.envelope_objects:
+        for gi, g in enumerate(o.geometries):
+            if g.is_polygonal and g.lod == lod and g.type == "Solid" and g.solids:
+                out.append((o, gi, g, mesh_of_geometry(b.vertices, g)))
+                break
+    return out
+
+
+def _snap_back(m: PolyMesh, other: PolyMesh, max_move: float = SNAP_BACK) -> PolyMesh | None:
+    """``m`` with its vertices inside (or on) ``other`` projected onto the nearest face plane of
+    ``other`` that faces a face of ``m`` (antiparallel normals within 10 degrees: the wall they
+    share); None when no vertex is inside or one would move farther than ``max_move``."""
+    from lod2energy.repair.metrics import _sqdist, winding_number
+    tris, _ = triangulate_mesh(other)
+    mt, _ = triangulate_mesh(m)
+    if not len(tris) or not len(mt):
+        return None
+
+    def normals(V, T):
+        N = np.cross(V[T[:, 1]] - V[T[:, 0]], V[T[:, 2]] - V[T[:, 0]])
+        return N / np.maximum(np.linalg.norm(N, axis=1), 1e-12)[:, None]
+
+    N, Nm = normals(other.vertices, tris), normals(m.vertices, mt)
+    facing = np.flatnonzero((N @ Nm.T).min(axis=1) < -0.985)
+    if not len(facing):
+        return None
+    A, B, C = (other.vertices[tris[facing, k]] for k in range(3))
+    N = N[facing]
+    inside = np.flatnonzero(winding_number(m.vertices, other.vertices, tris) > 0.1)
+    V = m.vertices.copy()
+    moved = False
+    for i in inside:
+        # the nearest face of the neighbour that the vertex is behind, its foot inside the face
+        off = np.einsum("ij,ij->i", V[i] - A, N)
+        d = np.sqrt(_sqdist(V[i][None, :], A, B, C))
+        ok = np.flatnonzero((off < -1e-9) & (d <= -off + 1e-6))
+        if not len(ok):
+            continue
+        k = int(ok[np.argmin(-off[ok])])
+        if -off[k] > max_move:
+            return None
+        V[i] = V[i] - off[k] * N[k]
+        moved = True
+    return m.with_faces(m.faces, V) if moved else None
+
+
+def _clip_by(m: PolyMesh, other: PolyMesh) -> PolyMesh | None:
+    """``m`` minus ``other`` (manifold3d), faces on ``m``'s faces keeping their semantic surface,
+    vertices within 0.1 mm of ``other``'s triangle planes put onto them."""
+    from lod2energy.repair.metrics import _sqdist
+    origin = np.vstack([m.vertices, other.vertices]).mean(axis=0)
+    a, b = _manifold(m, origin), _manifold(other, origin)
+    if a is None or b is None:
+        return None
+    mesh = (a - b).to_mesh()
+    V = np.asarray(mesh.vert_properties, dtype=np.float64)[:, :3] + origin
+    T = np.asarray(mesh.tri_verts, dtype=np.int64)
+    if not len(T):
+        return None
+    for src in (other, m):  # float32 booleans: back onto the exact planes
+        tris, _ = triangulate_mesh(src)
+        A, B, C = src.vertices[tris[:, 0]], src.vertices[tris[:, 1]], src.vertices[tris[:, 2]]
+        N = np.cross(B - A, C - A)
+        N /= np.maximum(np.linalg.norm(N, axis=1), 1e-12)[:, None]
+        for i in range(len(V)):
+            d = _sqdist(V[i][None, :], A, B, C)
+            k = int(np.argmin(d))
+            if d[k] <= 1e-8:
+                V[i] = V[i] - float((V[i] - A[k]) @ N[k]) * N[k]
+    tris, owner = triangulate_mesh(m)
+    A, B, C = m.vertices[tris[:, 0]], m.vertices[tris[:, 1]], m.vertices[tris[:, 2]]
+    tn = np.cross(B - A, C - A)
+    tn /= np.maximum(np.linalg.norm(tn, axis=1), 1e-12)[:, None]
+    faces = []
+    for t in T:
+        c = V[t].mean(axis=0)
+        n = np.cross(V[t[1]] - V[t[0]], V[t[2]] - V[t[0]])
+        n /= np.linalg.norm(n) or 1.0
+        hit = np.flatnonzero((_sqdist(c[None], A, B, C) < 1e-6) & (tn @ n > 0.999))
+        f = m.faces[int(owner[hit[0]])] if len(hit) else None
+        faces.append(Face((tuple(int(i) for i in t),), -1 if f is None else f.source,
+                          None if f is None else f.semantic))
+    return compact(merge_coplanar(PolyMesh(V, tuple(faces)), angle_tol=1e-6, dist_tol=1e-4))
+
+
+def _same_solid(m: PolyMesh, other: PolyMesh | None) -> bool:
+    """Same coordinates, same number of faces: a part the repair left as it was."""
+    if other is None or len(m.faces) != len(other.faces) or len(m.vertices) != len(other.vertices):
+        return False
+    return bool(np.array_equal(np.unique(m.vertices, axis=0), np.unique(other.vertices, axis=0)))
+
+
+def keep_parts_apart(before: Building, after: Building, tol: Tolerances = DEFAULT, lod=None
+                     ) -> tuple[Building, dict]:
+    """``after`` (the repair of ``before``) without the BuildingPart overlaps the repair made.
+
+    Parts closed one by one can cut into a neighbour by millimetres. For every pair that is a
+    val3dity 601 after the repair but not before, or whose shared volume grew, the repaired
+    part of the pair (then the other, when that fails) is first snapped back: its
+    vertices inside the neighbour go onto the neighbour's nearest face plane (at most
+    :data:`SNAP_BACK`), so the two keep one wall; else it is clipped by the neighbour
+    (manifold3d difference). A candidate is kept only if it is a valid solid and the pair is
+    no longer worse than in the input.
+
+    Returns
+    -------
+    building : Building
+    record : dict
+        ``{"created": [[a, b, m3], ...], "resolved": [[moved, neighbour, "snap"|"clip"], ...],
+        "left": [[a, b, m3], ...]}``; empty when the repair made no overlap.
+    """
+    lod = lod if lod is not None else after.default_lod()
+    if after is before or len(_part_meshes_all(after, lod)) < 2:
+        return after, {}
+    pb, pa = overlap_pairs(before, tol), overlap_pairs(after, tol)
+
+    def worse(pairs, key) -> bool:
+        """A 601 pair new after the repair, or sharing more volume than in the input (a pair
+        whose input volume is unknown - a solid manifold3d rejects - counts as kept)."""
+        if key not in pairs:
+            return False
+        if key not in pb:
+            return True
+        return pb[key] is not None and pairs[key] is not None and pairs[key] > pb[key] * 1.01 + 1e-6
+
+    bad = [k for k in pa if worse(pa, k)]
+    if not bad:
+        return after, {}
+    def vol(x):
+        return None if x is None else round(x, 6)
+
+    rec: dict = {"created": [[a, c, vol(pa[(a, c)])] for a, c in bad], "resolved": [], "left": []}
+    meshes_before = {o.id: m for o, _gi, _g, m in _part_meshes_all(before, lod)}
+    out = after
+    for a, c in bad:
+        cur = overlap_pairs(out, tol)
+        if not worse(cur, (a, c)):
+            continue
+        parts = {o.id: (o, gi, g, m) for o, gi, g, m in _part_meshes_all(out, lod)}
+        changed = [k for k in (a, c) if k in parts and not _same_solid(parts[k][3], meshes_before.get(k))]
+        done = False
+        # the repaired part moves first; the neighbour yields only when that fails
+        for mover in changed + [k for k in (a, c) if k not in changed]:
+            other = c if mover == a else a
+            o, gi, g, m = parts[mover]
+            for how, cand in (("snap", lambda: _snap_back(m, parts[other][3])),
+                              ("clip", lambda: _clip_by(m, parts[other][3]))):
+                res = cand()
+                if res is None or not is_repaired(res, lod, tol):
+                    continue
+                lookup = {(float(p[0]), float(p[1]), float(p[2])): i for i, p in enumerate(out.vertices)}
+                extra: list = []
+                ng = geometry_of_mesh(res, g, lookup, extra, len(out.vertices))
+                V = np.vstack([out.vertices, np.asarray(extra).reshape(-1, 3)]) if extra else out.vertices
+                trial = out.replace_geometry(o.id, gi, ng, vertices=V)
+                if not worse(overlap_pairs(trial, tol), (a, c)):
+                    out, done = trial, True
+                    rec["resolved"].append([mover, other, how])
+                    break
+            if done:
+                break
+        if not done:
+            rec["left"].append([a, c, vol(cur.get((a, c)))])
+    return out, rec
+
+
+# ----------------------------------------------------------------------------- energy model: no volume twice
+
+#: Shared volume (m3) from which two overlapping parts are clipped for the energy model; below
+#: it the overlap is numerical noise for the heat balance (10 litres).
+ENERGY_OVERLAP = 0.01
+
+
+def clip_overlapping_parts(b: Building, tol: Tolerances = DEFAULT, lod=None,
+                           min_volume: float = ENERGY_OVERLAP) -> tuple[Building, dict]:
+    """``b`` with no volume shared by two BuildingParts, for the energy model (zones).
+
+    For every 601 pair sharing more than ``min_volume`` m3 the smaller part is clipped by
+    the larger (manifold3d difference; then the larger by the smaller), the clipped solid
+    kept only if valid; a pair neither clip resolves is united into the larger part
+    (:func:`merge_parts` ``into``); else left and reported.
+
+    Returns
+    -------
+    building : Building
+    record : dict
+        ``{"clipped": [[clipped, by, m3], ...], "united": [[into, other, m3], ...],
+        "left": [[a, b, m3], ...]}``; empty when no part shares volume.
+    """
+    lod = lod if lod is not None else b.default_lod()
+    if len(_part_meshes_all(b, lod)) < 2:
+        return b, {}
+    pairs = {k: v for k, v in overlap_pairs(b, tol).items() if v is not None and v > min_volume}
+    if not pairs:
+        return b, {}
+    rec: dict = {"clipped": [], "united": [], "left": []}
+    out = b
+    for (a, c), v in sorted(pairs.items(), key=lambda kv: -kv[1]):
+        parts = {o.id: (o, gi, g, m) for o, gi, g, m in _part_meshes_all(out, lod)}
+        if a not in parts or c not in parts:
+            continue
+        origin = np.vstack([parts[a][3].vertices, parts[c][3].vertices]).mean(axis=0)
+        ma, mc = _manifold(parts[a][3], origin), _manifold(parts[c][3], origin)
+        if ma is None or mc is None or (ma ^ mc).volume() <= min_volume:
+            continue  # resolved by an earlier clip
+        small, big = sorted((a, c), key=lambda k: signed_volume(parts[k][3]))
+        done = False
+        for cut, by in ((small, big), (big, small)):
+            o, gi, g, m = parts[cut]
+            res = _clip_by(m, parts[by][3])
+            if res is None or not is_repaired(res, lod, tol):
+                continue
+            lookup = {(float(p[0]), float(p[1]), float(p[2])): i for i, p in enumerate(out.vertices)}
+            extra: list = []
+            ng = geometry_of_mesh(res, g, lookup, extra, len(out.vertices))
+            V = np.vstack([out.vertices, np.asarray(extra).reshape(-1, 3)]) if extra else out.vertices
+            out = out.replace_geometry(o.id, gi, ng, vertices=V)
+            rec["clipped"].append([cut, by, round(v, 6)])
+            done = True
+            break
+        if not done:
+            merged = merge_parts(out, {a, c}, tol, lod, into=big)
+            if merged is not out:
+                out = merged
+                rec["united"].append([big, small, round(v, 6)])
+            else:
+                rec["left"].append([a, c, round(v, 6)])
+    return out, rec

@@ -37,8 +37,8 @@ from lod2energy.repair.holefill import fill_holes
 from lod2energy.repair.hull import convex_hull
 from lod2energy.repair.metrics import fidelity
 from lod2energy.repair.orientation import orient
-from lod2energy.repair.parts import merge_overlapping_parts, overlapping_parts
-from lod2energy.repair.plausible import implausible
+from lod2energy.repair.parts import keep_parts_apart, merge_overlapping_parts, overlapping_parts
+from lod2energy.repair.plausible import closed_volume, implausible, not_hollow
 from lod2energy.repair.refill import close, refill
 from lod2energy.repair.roofs import ROOF_MODEL_MAX_DISPLACEMENT, roof_model
 from lod2energy.repair.unpinch import unpinch
@@ -53,6 +53,10 @@ DEFAULT_TIMEOUT = 30.0
 #: Seconds the alpha-shape search gets after the budget is spent (the time limit escalates
 #: to a bounded global reconstruction rather than straight to the convex hull).
 GLOBAL_MIN_SECONDS = 25.0
+
+
+def _valid_or_none(m: PolyMesh | None, lod, tol: Tolerances) -> PolyMesh | None:
+    return m if is_repaired(m, lod, tol) else None
 
 
 # ----------------------------------------------------------------------------- the ladder
@@ -319,6 +323,10 @@ def repair_building(b: Building, tol: Tolerances = DEFAULT, timeout: float = DEF
             log = ["timeout: jumped to the convex hull"]
         else:
             stage, res, log = ladder(m, g.lod, tol, deadline)
+            stage, res, log = not_hollow(  # a hollow result goes further up the ladder
+                m, stage, res, log, lambda: global_stages(cleanup(m, tol), g.lod, tol, deadline, []),
+                lambda: _valid_or_none(convex_hull(cleanup(m, tol)), g.lod, tol),
+                closed_volume(snap_vertices(m, tol.snap_tol)))
         entry["log"] = log
         if res is None:
             entry.update(stage="irreparable", n_faces_after=m.n_faces, iou=None,
@@ -362,11 +370,14 @@ def repair_building(b: Building, tol: Tolerances = DEFAULT, timeout: float = DEF
                                                   time.monotonic() - t0))
     V = np.vstack([b.vertices, np.asarray(extra).reshape(-1, 3)]) if extra else b.vertices
     nb = replace(b, objects=tuple(objs), vertices=V)
+    nb, parts_rec = keep_parts_apart(b, nb, tol, lod)  # no BuildingPart overlap made by the repair
     overlaps = overlapping_parts(nb, lod)
     if merge_parts and overlaps:
         nb = merge_overlapping_parts(nb, tol, lod)
     summary = _summary(nb, per_geom, sorted(defects_before), tol, time.monotonic() - t0)
     summary["overlapping_parts"] = [list(p) for p in overlaps]
+    if parts_rec:
+        summary["parts_overlap"] = parts_rec
     errors = [f"{e['object']}: {e['error']}" for e in per_geom if e.get("error")]
     if errors:
         summary["error"] = "; ".join(errors)

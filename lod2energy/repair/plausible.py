@@ -1,4 +1,5 @@
-"""Is a geometry's size believable for a building? Checked before the repair ladder runs.
+"""Is a geometry's size believable for a building? Checked before the repair ladder runs, and
+on its result (a hollow result goes further up the ladder).
 
 A geometry with non-finite coordinates, or spanning kilometres, has misplaced vertices (a
 no-data value such as ``-2**31`` in integer CityJSON coordinates, a wrong CRS or unit). No
@@ -6,12 +7,21 @@ repair can recover the intended shape from it, and the global stages would not e
 of CGAL's alpha wrap grows with the wrapped surface area (a building reaching 2,000 km down
 has some 10^8 m2 of walls), and it runs in C++ out of reach of the time budget. The ladder
 therefore leaves such a geometry as it is, stage "irreparable", with the reason.
+
+After the ladder, a result is *hollow* when its volume is under a quarter of the convex hull
+of the input (:data:`HOLLOW_FRACTION`) while the input is not itself thin (hull volume over
+hull area at least :data:`THIN`, m) and not a closed solid of about that volume itself: the
+repair wrapped a skin (walls modelled on both sides, an open shell) into a thin-walled body
+instead of closing the building. :func:`not_hollow` then takes the global stages' result,
+else the convex hull, and logs what it did.
 """
 from __future__ import annotations
 
+from typing import Callable
+
 import numpy as np
 
-from lod2energy.polymesh import PolyMesh
+from lod2energy.polymesh import PolyMesh, signed_volume, topology
 
 MAX_EXTENT = 5_000.0
 """Largest plausible bounding-box side of one Building/BuildingPart geometry, m.
@@ -58,4 +68,91 @@ def implausible(m: PolyMesh, max_extent: float = MAX_EXTENT) -> str | None:
             f"limit {_km(max_extent)}): coordinates implausible")
 
 
-__all__ = ["MAX_EXTENT", "implausible"]
+HOLLOW_FRACTION = 0.25
+"""A repaired volume under this fraction of the input's convex hull volume is hollow."""
+
+THIN = 0.1
+"""An input whose convex hull has volume / area under this (m) is thin (a wall, a slab: a
+slab of thickness t has about t / 2): a small repaired volume is then no sign of hollowness."""
+
+
+def _hull(m: PolyMesh) -> tuple[float, float]:
+    """Volume (m3) and area (m2) of the convex hull of the vertices ``m`` uses; (0, 0) if flat."""
+    from scipy.spatial import ConvexHull, QhullError
+    used = np.unique([i for f in m.faces for r in f.rings for i in r]).astype(np.int64)
+    if len(used) < 4:
+        return 0.0, 0.0
+    P = np.asarray(m.vertices, dtype=np.float64)[used]
+    try:
+        h = ConvexHull(P - P.mean(axis=0))
+    except (QhullError, ValueError):
+        return 0.0, 0.0
+    return float(h.volume), float(h.area)
+
+
+def hollow(m_in: PolyMesh, res: PolyMesh | None, input_volume: float | None = None,
+           fraction: float = HOLLOW_FRACTION, thin: float = THIN) -> str | None:
+    """Why the repair result ``res`` of ``m_in`` is hollow, or None when it is not.
+
+    Parameters
+    ----------
+    m_in : PolyMesh
+        The input shell.
+    res : PolyMesh or None
+        The repaired shell (closed, outward).
+    input_volume : float, m3, optional
+        The input's own volume when it is a closed shell: a result about as large (at least
+        90 %) is not hollow however concave the building is (courtyards, L-shapes).
+    """
+    if res is None or not res.faces:
+        return None
+    hv, ha = _hull(m_in)
+    if hv <= 0 or hv / ha < thin:
+        return None
+    v = signed_volume(res)
+    if v >= fraction * hv or (input_volume is not None and v >= 0.9 * input_volume):
+        return None
+    return (f"hollow result: {v:.2f} m3, under {fraction:g} of the input's convex hull "
+            f"({hv:.2f} m3)")
+
+
+def not_hollow(m_in: PolyMesh, stage: str, res: PolyMesh | None, log: list[str],
+               retry: Callable[[], tuple], hull: Callable[[], PolyMesh | None],
+               input_volume: float | None = None) -> tuple[str, PolyMesh | None, list[str]]:
+    """The ladder's result, or a higher stage's when it is :func:`hollow`.
+
+    Parameters
+    ----------
+    retry : callable
+        The global stages on the cleaned input: ``() -> (stage, result, log)``.
+    hull : callable
+        ``() -> convex hull result or None`` (valid or None), the last rung.
+
+    Returns
+    -------
+    stage, result, log
+        ``log`` extended with what was found and done.
+    """
+    why = hollow(m_in, res, input_volume)
+    if why is None:
+        return stage, res, log
+    log = list(log) + [f"{stage}: {why}"]
+    if stage not in ("roofs", "alphashape", "footprint", "hull"):
+        gstage, gres, glog = retry()
+        if gres is not None and hollow(m_in, gres, input_volume) is None:
+            return gstage, gres, log + list(glog) + [f"escalated to {gstage}"]
+    h = hull()
+    if h is not None:
+        return "hull", h, log + ["escalated to the convex hull"]
+    return stage, res, log + ["no higher stage closes it: kept, reported hollow"]
+
+
+def closed_volume(m: PolyMesh) -> float | None:
+    """Volume (m3) of ``m`` when it is a closed 2-manifold shell, else None."""
+    t = topology(m)
+    if t.boundary or t.nonmanifold or not m.faces:
+        return None
+    return abs(signed_volume(m))
+
+
+__all__ = ["HOLLOW_FRACTION", "MAX_EXTENT", "THIN", "closed_volume", "hollow", "implausible", "not_hollow"]

@@ -21,7 +21,7 @@ from lod2energy.model import Building, lod_key
 from lod2energy.validate.defect import Defect
 
 LABELS = ("RoofSurface", "WallSurface", "GroundSurface", "ClosureSurface",
-          "OuterCeilingSurface", "OuterFloorSurface")
+          "OuterCeilingSurface", "OuterFloorSurface", "Window", "Door")
 _CLOSED_CODES = {300, 301, 302, 303, 305}
 _ORIENT_CODES = {307, 405}
 _DEGENERATE_CODES = {101, 102, 104, 306}

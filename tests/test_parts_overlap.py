@@ -1,0 +1,133 @@
+"""Repair never creates or enlarges an overlap (val3dity 601) between BuildingParts."""
+from __future__ import annotations
+
+from dataclasses import replace
+
+import numpy as np
+import pytest
+
+from conftest import shared_path
+from factories import BOX_SEMANTICS, box_polygons
+from lod2energy.config import Tolerances
+from lod2energy.io import read
+from lod2energy.model import Building, CityObject, Geometry, Shell, Solid, Surface
+from lod2energy.repair.parts import keep_parts_apart, overlap_pairs
+from lod2energy.repair.pipeline import repair_building
+
+SEM = tuple({"type": t} for t in dict.fromkeys(BOX_SEMANTICS))
+SEM_INDEX = {t: i for i, t in enumerate(dict.fromkeys(BOX_SEMANTICS))}
+
+
+def two_parts(dx_b: float = 10.0, x_b: float = 10.0) -> Building:
+    """Parts ``a`` (x 0..10) and ``b`` (x ``x_b``..``x_b + dx_b``), 8 x 6 m, sharing the wall x = 10
+    when ``x_b`` is 10."""
+    verts, index, objs = [], {}, [CityObject("B", "Building", (), {}, (), ("a", "b"))]
+    for pid, origin, dx in (("a", (0, 0, 0), 10.0), ("b", (x_b, 0, 0), dx_b)):
+        surfs = []
+        for poly, st in zip(box_polygons(dx, 8, 6, origin), BOX_SEMANTICS):
+            ring = []
+            for p in poly[0]:
+                key = (pid, *(float(x) for x in p))          # vertices shared within a part
+                if key not in index:
+                    index[key] = len(verts)
+                    verts.append(key[1:])
+                ring.append(index[key])
+            surfs.append(Surface.from_lists([ring], SEM_INDEX[st]))
+        g = Geometry("Solid", "2", (Solid((Shell(tuple(surfs)),)),), SEM)
+        objs.append(CityObject(pid, "BuildingPart", (g,), {}, ("B",)))
+    return Building("B", "Building", np.array(verts), tuple(objs))
+
+
+def pushed(b: Building, part: str, dx: float) -> Building:
+    """``b`` with the west wall of ``part`` moved by ``dx`` (a repair that moved it)."""
+    V = b.vertices.copy()
+    o = b.object_index[part]
+    idx = sorted({i for *_, s in o.geometries[0].iter_surfaces() for r in s.rings for i in r})
+    xmin = V[idx, 0].min()
+    for i in idx:
+        if abs(V[i, 0] - xmin) < 1e-9:
+            V[i, 0] += dx
+    return replace(b, vertices=V)
+
+
+def test_parts_sharing_a_wall_do_not_overlap():
+    assert overlap_pairs(two_parts()) == {}
+
+
+def test_a_repaired_part_that_cuts_into_its_neighbour_is_snapped_back_onto_the_shared_wall():
+    before = two_parts()
+    after = pushed(before, "b", -0.005)                       # 5 mm into part a: 601
+    assert list(overlap_pairs(after)) == [("a", "b")]
+    fixed, rec = keep_parts_apart(before, after)
+    assert overlap_pairs(fixed) == {}
+    assert rec["resolved"] == [["b", "a", "snap"]] and rec["left"] == []
+    g = fixed.object_index["b"].geometries[0]
+    xs = fixed.vertices[sorted({i for *_, s in g.iter_surfaces() for r in s.rings for i in r}), 0]
+    assert xs.min() == pytest.approx(10.0, abs=1e-9)         # one wall again
+    assert after.vertices[0, 0] == 0.0 and overlap_pairs(after)  # input not mutated
+
+
+def test_a_part_pushed_further_than_the_snap_is_clipped_by_its_neighbour():
+    before = two_parts()
+    after = pushed(before, "b", -0.6)
+    fixed, rec = keep_parts_apart(before, after)
+    assert overlap_pairs(fixed) == {} and rec["resolved"] == [["b", "a", "clip"]]
+    from lod2energy.repair.pipeline import mesh_of_geometry
+    from lod2energy.repair._mesh import signed_volume
+    m = mesh_of_geometry(fixed.vertices, fixed.object_index["b"].geometries[0])
+    assert signed_volume(m) == pytest.approx(10 * 8 * 6, rel=1e-4)
+
+
+def test_overlaps_of_the_input_are_left_as_they_are():
+    before = two_parts(x_b=9.0)                               # the input overlaps by 1 m
+    after = pushed(before, "b", 0.0)
+    assert keep_parts_apart(before, after) == (after, {})
+    assert keep_parts_apart(before, before) == (before, {})
+
+
+def test_tolerance_decides_like_val3dity():
+    b = pushed(two_parts(), "b", -0.005)
+    assert overlap_pairs(b, Tolerances(overlap_tol=0.01)) == {}  # 5 mm deep: within a 1 cm tolerance
+    assert overlap_pairs(b, Tolerances(overlap_tol=0.001))
+
+
+@pytest.mark.parametrize("bid", ["GUID_957B7FE8-F71F-46B2-9956-DCAB6293A2AD"])
+def test_real_denhaag_building_has_no_new_overlap_after_repair(bid):
+    path = shared_path("denhaag", "DenHaag_01.city.json")
+    _, feats = read(str(path))
+    (b,) = [f for f in feats if isinstance(f, Building) and f.id == bid]
+    rb = repair_building(b)
+    assert rb is not b
+    assert len(overlap_pairs(rb)) <= len(overlap_pairs(b))
+    rec = rb.provenance["repair"].get("parts_overlap")
+    assert rec and rec["resolved"] and not rec["left"]
+
+
+def part_volume(b: Building, pid: str) -> float:
+    from lod2energy.repair._mesh import signed_volume
+    from lod2energy.repair.pipeline import mesh_of_geometry
+    return signed_volume(mesh_of_geometry(b.vertices, b.object_index[pid].geometries[0]))
+
+
+def test_input_overlap_is_counted_once_in_the_energy_model():
+    from lod2energy.repair.parts import clip_overlapping_parts
+    b = two_parts(dx_b=5.0, x_b=9.0)                         # b (5 m long) overlaps a by 1 m: 48 m3
+    assert overlap_pairs(b)[("a", "b")] == pytest.approx(48.0)
+    cb, rec = clip_overlapping_parts(b)
+    assert rec == {"clipped": [["b", "a", 48.0]], "united": [], "left": []}   # the smaller part yields
+    assert overlap_pairs(cb) == {}
+    assert part_volume(cb, "a") == pytest.approx(480.0) and part_volume(cb, "b") == pytest.approx(192.0)
+    assert clip_overlapping_parts(two_parts())[1] == {}        # parts sharing a wall: nothing to do
+
+
+def test_export_reports_what_was_done_with_overlapping_parts(tmp_path, capsys):
+    import json
+    from lod2energy.cli import main
+    path = shared_path("val3dity-tests", "test_geometry_specific", "601_1.json")
+    out = tmp_path / "o"
+    main(["export", str(path), "-o", str(out), "--idf", "-q"])
+    capsys.readouterr()
+    (r,) = json.loads((out / "report.json").read_text())["buildings"]
+    rec = r["repair"]["parts_energy"]
+    assert rec["clipped"] and not rec["left"]
+    assert r["energy"]["compliant"] and r["exports"]["idf"]["ok"]
