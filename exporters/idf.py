@@ -1413,7 +1413,7 @@ class ZoneInfo:
 
 
 def storey_zones(zone: ZoneShell, zi: int, pieces: list[Piece], n_below: int, storey_height: float,
-                 attic_mode: str) -> tuple[list[tuple[ZoneShell, list[Piece], bool]], str | None]:
+                 attic_mode: str, openings: Sequence[Opening] = ()) -> tuple[list[tuple[ZoneShell, list[Piece], bool]], str | None]:
     """One zone per storey of a zone's written pieces (:func:`lod2energy.zoning.split_storeys`).
 
     Parameters
@@ -1428,6 +1428,8 @@ def storey_zones(zone: ZoneShell, zi: int, pieces: list[Piece], n_below: int, st
         when it is lower than the building (a BuildingPart).
     storey_height : float, m
     attic_mode : {"unconditioned", "conditioned"}
+    openings : sequence of Opening
+        The zone's real windows and doors: no storey cut passes through one.
 
     Returns
     -------
@@ -1450,7 +1452,8 @@ def storey_zones(zone: ZoneShell, zi: int, pieces: list[Piece], n_below: int, st
     attic = pitched and ridge - eave >= ATTIC_MIN_HEIGHT
     allz = np.concatenate([p.points[:, 2] for p in pieces])
     horiz = [float(p.points[0, 2]) for p in pieces if np.ptp(p.points[:, 2]) <= 1e-6]
-    cuts, attic = zoning.storey_cuts(allz, ground, eave, ridge, n, attic, horiz)
+    spans = [(float(o.points[:, 2].min()), float(o.points[:, 2].max())) for o in openings]
+    cuts, attic = zoning.storey_cuts(allz, ground, eave, ridge, n, attic, horiz, spans)
     if not cuts:
         return single, None
     note = None
@@ -1554,7 +1557,7 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
             party = {k: v for k, v in party.items() if k[0] != zi}
             openings[zi] = ()  # a fallback envelope: the WWR rule
 
-    written_of, zone_notes, bstats = _written_zones(blist, zones, zones_of, pieces, options)
+    written_of, zone_notes, bstats = _written_zones(blist, zones, zones_of, pieces, options, openings)
 
     groups = [[bi] for bi in range(len(blist))] if options.mode == "building" else [list(range(len(blist)))]
     bboxes = np.array([_bbox(b) for b in blist])
@@ -1625,7 +1628,7 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
             return list(ex.map(finish, jobs))
     return [finish(j) for j in jobs]
 
-def _written_zones(blist, zones, zones_of, pieces, options):
+def _written_zones(blist, zones, zones_of, pieces, options, openings):
     """Per building: the zones to write ``[(ZoneShell, pieces, ZoneInfo, source zone index)]``, notes, stats."""
     from lod2energy.thermal.storeys import storeys
     from lod2energy.thermal.use import building_use
@@ -1638,7 +1641,8 @@ def _written_zones(blist, zones, zones_of, pieces, options):
         out = []
         for zi in zones_of[bi]:
             if options.zoning == "storey":
-                sz, note = storey_zones(zones[zi], zi, pieces[zi], st.below_eave, st.storey_height, options.attic)
+                sz, note = storey_zones(zones[zi], zi, pieces[zi], st.below_eave, st.storey_height, options.attic,
+                                        openings.get(zi, ()))
                 if note:
                     notes[bi].append(note)
             else:

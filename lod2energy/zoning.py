@@ -64,7 +64,8 @@ class Slab:
 
 
 def storey_cuts(z_values: np.ndarray, ground: float, eave: float, ridge: float, n_below: int,
-                attic: bool, horizontal_z: Sequence[float] = ()) -> tuple[list[float], bool]:
+                attic: bool, horizontal_z: Sequence[float] = (),
+                avoid: Sequence[tuple[float, float]] = ()) -> tuple[list[float], bool]:
     """Cut heights (m) for ``n_below`` storeys under the eave (plus the attic when ``attic``).
 
     Parameters
@@ -73,6 +74,9 @@ def storey_cuts(z_values: np.ndarray, ground: float, eave: float, ridge: float, 
         Heights of every vertex of the zone.
     horizontal_z : sequence of float
         Heights of its horizontal surfaces (no cut through them).
+    avoid : sequence of (lo, hi) float, m
+        Height spans no cut may pass through (the zone's real windows and doors: a storey
+        floor runs above or below an opening, as in the building), with :data:`CLEARANCE`.
 
     Returns
     -------
@@ -90,7 +94,8 @@ def storey_cuts(z_values: np.ndarray, ground: float, eave: float, ridge: float, 
     for i, t in enumerate(targets):
         is_attic = attic and i == len(targets) - 1
         near = z[np.abs(z - t) <= SNAP]
-        cands = sorted([float(t)] + [float(v) for v in near] + [t + d for d in SHIFTS[1:]],
+        clear = [b for lo, hi in avoid for b in (lo - 2 * CLEARANCE, hi + 2 * CLEARANCE)]
+        cands = sorted([float(t)] + [float(v) for v in near] + [t + d for d in SHIFTS[1:]] + clear,
                        key=lambda c: (abs(c - t), c))
         for c in cands:
             c = round(c, DECIMALS)
@@ -100,6 +105,8 @@ def storey_cuts(z_values: np.ndarray, ground: float, eave: float, ridge: float, 
             if np.any((d > ON_PLANE) & (d < CLEARANCE)):
                 continue
             if any(abs(h - c) < CLEARANCE for h in horizontal_z):
+                continue
+            if any(lo - CLEARANCE < c < hi + CLEARANCE for lo, hi in avoid):
                 continue
             if out and c - out[-1] < 1.0:
                 continue
