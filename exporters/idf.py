@@ -33,9 +33,11 @@ from .zone_fallback import FALLBACKS
 from .common import (
     COLLINEAR_TOL, MIN_PIECE_AREA, PLANAR_TOL, WELD_TOL, ExportResult, ZoneFace, ZoneShell, _is_convex_2d,
     _split_t_junctions, weld,
-    _short_hash, check_closed_outward, local_origin, merge_convex, newell_normal, output_path,
+    _short_hash, check_closed_outward, local_origin, merge_convex, newell_normal, not_written, output_path,
+    set_aside_failed,
     plane_basis, polygon_area3d, safe_stem, triangulate, unit, zone_shells,
 )
+from lod2energy import safe_write
 from lod2energy.errors import ExportError, ParameterError
 from lod2energy.model import BUILDING_TYPES, Building
 
@@ -1189,7 +1191,7 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
         zp = [split_pieces[i] if split_pieces is not None else zone_pieces(zones[i], i, party, False) for i in zi]
         text, stats, warns = render_idf([zones[i] for i in zi], zp, offset - origin, offset,
                                         options, [b.id for b in gb], shading, site, ground, crs)
-        path.write_text(text, encoding="ascii", errors="replace")
+        safe_write.write_text(path, text, root=out, encoding="ascii", errors="replace")
         return offset, stats, warns
 
     jobs = []
@@ -1200,8 +1202,14 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
 
     def finish(job):
         g, path = job
-        offset, stats, warns = render(g, path, pieces)
         ids = tuple(blist[i].id for i in g)
+        try:
+            return set_aside_failed(_finish(g, path, ids))
+        except OSError as e:  # a full disk, a link planted under the name: this file only
+            return ExportResult(ids, "", False, (not_written(e, "IDF"),), (0.0, 0.0, 0.0))
+
+    def _finish(g, path, ids):
+        offset, stats, warns = render(g, path, pieces)
         problems = self_check(path)
         if (any("not fully enclosed" in p for p in problems) and options.party_split
                 and stats.get("adiabatic_surfaces")):

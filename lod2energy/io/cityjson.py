@@ -669,24 +669,32 @@ def feature_document(b: Building, transform: Mapping, version: str, frame=None) 
             "vertices": _quantise(b.vertices, transform, frame)}
 
 
-def write(path: str, model: CityModel, buildings: Iterable[Building], version: str | None = None) -> None:
-    """Write CityJSON (``.json``) or CityJSONSeq (``.jsonl``), chosen by the suffix."""
+def write(path: str, model: CityModel, buildings: Iterable[Building], version: str | None = None, *,
+          root: str | None = None, inputs: Iterable[str] | None = None) -> None:
+    """Write CityJSON (``.json``) or CityJSONSeq (``.jsonl``), chosen by the suffix.
+
+    Written through :func:`lod2energy.safe_write.atomic_write`: inside ``root`` (default:
+    the target's folder), never over one of ``inputs`` (default: the model's source file)
+    or a link, and atomically (a full disk leaves no half file under ``path``).
+    """
+    from lod2energy import safe_write
+
     version = version or model.version
-    tmp = path + ".part"
-    if is_cityjsonseq(path):
-        buildings = list(buildings)
-        header = _header_json(model, version)
-        transform = _transform_for(model, buildings)
-        header["transform"] = transform
-        header["CityObjects"] = {}
-        header["vertices"] = []
-        with open(tmp, "w", encoding="utf-8") as f:
+    root = os.path.dirname(os.path.abspath(path)) if root is None else root
+    if inputs is None:
+        inputs = [model.source] if model.source and os.path.exists(str(model.source)) else []
+    with safe_write.atomic_write(path, "w", root=root, inputs=inputs) as f:
+        if is_cityjsonseq(path):
+            buildings = list(buildings)
+            header = _header_json(model, version)
+            transform = _transform_for(model, buildings)
+            header["transform"] = transform
+            header["CityObjects"] = {}
+            header["vertices"] = []
             f.write(json.dumps(header, separators=(",", ":"), ensure_ascii=False) + "\n")
             for b in buildings:
                 f.write(json.dumps(feature_document(b, transform, version, model.frame), separators=(",", ":"),
                                    ensure_ascii=False) + "\n")
-    else:
-        doc = to_document(model, buildings, version)
-        with open(tmp, "w", encoding="utf-8") as f:
+        else:
+            doc = to_document(model, buildings, version)
             json.dump(doc, f, separators=(",", ":"), ensure_ascii=False)
-    os.replace(tmp, path)
