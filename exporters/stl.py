@@ -399,10 +399,10 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: StlOptions
         stats = {"triangles": int(len(t)), "parts": len(meshes),
                  "volume_m3": round(signed_volume(v, t), 3) if len(t) else 0.0}
         try:  # the STL self-checked on its staged temporary: a failed one never gets the good name
+            safe_write.write_text(output_path(out, stem, ".json"), json.dumps(sidecar, indent=1), root=out)
             final, problems = safe_write.write_checked(
                 path, lambda f: (write_ascii if options.ascii else write_binary)(f, v, t, c), self_check,
                 "w" if options.ascii else "wb", root=out, **({"encoding": "ascii"} if options.ascii else {}))
-            safe_write.write_text(output_path(out, stem, ".json"), json.dumps(sidecar, indent=1), root=out)
         except OSError as e:  # a full disk, a link planted under the name: this file only
             results.append(ExportResult(tuple(b.id for b in g), "", False, (not_written(e, "STL"),),
                                         tuple(float(x) for x in offset), tuple(warnings), stats))
