@@ -233,11 +233,20 @@ def _energy_attributes(b: Building) -> dict[str, Any]:
         "+energyAreas": dict(th.get("areas") or {}),
         "+energyRepairStage": str(rep.get("stage", "none")),
     }
-    if rep:
-        a["+energyRepair"] = cjio._plain(rep)
+    if rep:  # without its timings: the file is byte-reproducible (they stay in report.json)
+        a["+energyRepair"] = _untimed(cjio._plain(rep))
     if energy is not None:
         a["+energyCompliance"] = cjio._plain(energy)
     return a
+
+
+def _untimed(x: Any) -> Any:
+    """``x`` without the members that measure time (``seconds``...), which differ run to run."""
+    if isinstance(x, dict):
+        return {k: _untimed(v) for k, v in x.items() if "seconds" not in str(k)}
+    if isinstance(x, list):
+        return [_untimed(v) for v in x]
+    return x
 
 
 def _strip_to_energy(b: Building, lod: str | None, keep_other_lods: bool) -> Building:
