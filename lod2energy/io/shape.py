@@ -273,6 +273,17 @@ def cityobject_problem(oid: Any, co: Any) -> str | None:
             surfs = sem.get("surfaces")
             if surfs is not None and not isinstance(surfs, list):
                 return f"geometry {gi}: semantic 'surfaces' must be an array, not {_kind(surfs)}"
+            vals = sem.get("values")
+            if vals is not None and not isinstance(vals, list):
+                return f"geometry {gi}: semantic 'values' must be an array, not {_kind(vals)}"
+            stack = list(vals or ())
+            while stack:
+                x = stack.pop()
+                if isinstance(x, list):
+                    stack.extend(x)
+                elif x is not None and (isinstance(x, bool) or not isinstance(x, int)
+                                        or not 0 <= x < len(surfs or ())):
+                    return f"geometry {gi}: semantic 'values' hold {_kind(x)}, not an index of 'surfaces'"
             for si, s in enumerate(surfs or ()):
                 if not isinstance(s, Mapping):
                     return f"geometry {gi}: semantic surface {si} is {_kind(s)}, not an object"
