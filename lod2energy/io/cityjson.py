@@ -463,11 +463,11 @@ def read(path: str) -> tuple[CityModel | None, Iterator[Building | FeatureError]
     return model, _features_of_document(doc, model.transform, path, keys=keys)
 
 
-def _header_of(doc: Mapping[str, Any], path: str, fmt: str) -> CityModel:
+def _header_of(doc: Mapping[str, Any], path: str, fmt: str, what: str | None = None) -> CityModel:
     """:func:`_header_from` after the shape check of the file-level members (InputError)."""
     problem = shape.header_problem(doc)
     if problem:
-        raise InputError(f"{path}: {problem}")
+        raise InputError(f"{what or path}: {problem}")
     return _header_from(doc, path, fmt)
 
 
@@ -493,7 +493,7 @@ def _read_seq(path: str):
         doc = _load_json_text(text, f"{path} line 1")
         if not isinstance(doc, Mapping) or doc.get("type") != "CityJSON":
             raise InputError(f"{path} line 1: the first line of a CityJSONSeq must be a 'CityJSON' object")
-        model = _header_of(doc, f"{path} line 1", "CityJSONSeq")
+        model = _header_of(doc, path, "CityJSONSeq", f"{path} line 1")
         if model.transform is None:
             raise InputError(f"{path} line 1: CityJSONSeq needs a 'transform' in its first line")
     except InputError as e:
