@@ -151,7 +151,7 @@ def test_timeout_bounds_the_repair_of_a_100000_face_building(tmp_path):
     inp = write_seq(tmp_path, [feat], "big.city.jsonl", header=h)
     t0 = time.monotonic()
     p = cli("repair", inp, "-o", tmp_path / "r.city.jsonl", "--report", tmp_path / "r.json", "--timeout", "5",
-            "-q", timeout=600)
+            "-q", timeout=300)
     elapsed = time.monotonic() - t0
     assert p.returncode in (0, 1)
     rep = json.loads((tmp_path / "r.json").read_text())
