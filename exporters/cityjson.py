@@ -29,6 +29,7 @@ listed in ``ExportResult.skipped`` when ``exclude_unready`` is True (default).
 """
 from __future__ import annotations
 
+import itertools
 import json
 import os
 from dataclasses import dataclass, replace
@@ -38,6 +39,7 @@ from typing import Any, Iterable, Mapping
 
 import numpy as np
 
+from lod2energy import safe_write
 from lod2energy.errors import Lod2EnergyError
 from lod2energy.io import cityjson as cjio
 from lod2energy.model import Building, CityModel, frozen_mapping
@@ -47,6 +49,7 @@ EXTENSION_NAME = "Energy"
 EXTENSION_FILE = "energy.ext.json"
 EXTENSION_VERSION = "1.0"
 INVALID_SUFFIX = ".invalid"
+_STAGED = itertools.count()
 _VDIR = {"1.0": "10", "1.1": "11", "2.0": "20"}
 _MAX_PROBLEMS = 50
 
@@ -283,11 +286,20 @@ def _energy_attributes(b: Building) -> dict[str, Any]:
         "+energyAreas": dict(th.get("areas") or {}),
         "+energyRepairStage": str(rep.get("stage", "none")),
     }
-    if rep:
-        a["+energyRepair"] = cjio._plain(rep)
+    if rep:  # without its timings: the file is byte-reproducible (they stay in report.json)
+        a["+energyRepair"] = _untimed(cjio._plain(rep))
     if energy is not None:
         a["+energyCompliance"] = cjio._plain(energy)
     return a
+
+
+def _untimed(x: Any) -> Any:
+    """``x`` without the members that measure time (``seconds``...), which differ run to run."""
+    if isinstance(x, dict):
+        return {k: _untimed(v) for k, v in x.items() if "seconds" not in str(k)}
+    if isinstance(x, list):
+        return [_untimed(v) for v in x]
+    return x
 
 
 def _strip_to_energy(b: Building, lod: str | None, keep_other_lods: bool) -> Building:
@@ -512,28 +524,35 @@ def write(path: str, model: CityModel, buildings: Iterable[Building], version: s
     folder = os.path.dirname(os.path.abspath(path))
     os.makedirs(folder, exist_ok=True)
     base = os.path.basename(path)
-    tmp = os.path.join(folder, f".{base}.{os.getpid()}.tmp" + (".jsonl" if cjio.is_cityjsonseq(path) else ".json"))
+    # staged under a name unique per process and call, with the suffix the self-check reads
+    tmp = os.path.join(folder, f".{base}.{os.getpid()}.{next(_STAGED)}.tmp"
+                       + (".jsonl" if cjio.is_cityjsonseq(path) else ".json"))
     ext_path = os.path.join(folder, EXTENSION_FILE)
+    inputs = [model.source] if model.source and os.path.exists(str(model.source)) else []
     try:
-        with open(ext_path, "w", encoding="utf-8") as f:
-            json.dump(extension_schema(version), f, indent=1)
+        safe_write.write_json(ext_path, extension_schema(version), root=folder, inputs=inputs)
         if cjio.is_cityjsonseq(path):
-            cjio.write(tmp, m, out, version)
+            cjio.write(tmp, m, out, version, root=folder, inputs=inputs)
         else:
             doc = _fix_document(cjio.to_document(m, out, version), version)
-            with open(tmp, "w", encoding="utf-8") as f:
+            with safe_write.atomic_write(tmp, "w", root=folder, inputs=inputs) as f:
                 json.dump(doc, f, separators=(",", ":"), ensure_ascii=False)
     except (OSError, ValueError, TypeError, Lod2EnergyError) as e:
         _remove(tmp)
-        return ExportResult(path, False, (f"cannot write {path}: {e}",), version, ids, tuple(skipped))
-    problems = self_check(tmp, extension=extension_schema(version))
+        why = e.strerror if isinstance(e, OSError) and e.strerror else e
+        return ExportResult(path, False, (f"cannot write {path}: {why}",), version, ids, tuple(skipped))
+    try:
+        problems = self_check(tmp, extension=extension_schema(version))
+        target = path + INVALID_SUFFIX if problems else path
+        safe_write.check_target(target, folder, inputs)
+        os.replace(tmp, target)
+        _remove(path if problems else path + INVALID_SUFFIX)  # never leave an older file that looks like this run's
+    except OSError as e:
+        _remove(tmp)
+        return ExportResult(path, False, (f"cannot write {path}: {e.strerror or e}",), version, ids, tuple(skipped))
     if problems:
-        bad = path + INVALID_SUFFIX
-        os.replace(tmp, bad)
-        _remove(path)  # never leave an older file that looks like this run's output
-        return ExportResult(bad, False, tuple(problems), version, ids, tuple(skipped), ext_path, tuple(notes))
-    os.replace(tmp, path)
-    _remove(path + INVALID_SUFFIX)
+        return ExportResult(target, False, tuple(problems) + (f"failed its self-check: kept as {base}{INVALID_SUFFIX}",),
+                            version, ids, tuple(skipped), ext_path, tuple(notes))
     return ExportResult(path, True, (), version, ids, tuple(skipped), ext_path, tuple(notes))
 
 

@@ -128,12 +128,37 @@ def safe_stem(text: str, used: set[str] | None = None, max_len: int = 80) -> str
 
 
 def output_path(outdir: str | Path, stem: str, suffix: str) -> Path:
-    """``outdir/stem+suffix``, refusing any path that would leave ``outdir``."""
+    """``outdir/stem+suffix``, refusing any name that would leave ``outdir``.
+
+    The name itself is not resolved: a link planted under it is refused when the file is
+    written (:func:`lod2energy.safe_write.check_target`), for that file only.
+    """
     root = Path(outdir).resolve()
-    p = (root / f"{stem}{suffix}").resolve()
-    if p.parent != root:
+    name = f"{stem}{suffix}"
+    if "/" in name or "\\" in name or name in (".", "..") or "\0" in name:
         raise ExportError(f"refusing to write outside {root}: {stem!r}")
-    return p
+    return root / name
+
+
+def not_written(e: OSError, what: str) -> str:
+    """One line for a file that could not be written (full disk, refused link ...)."""
+    return f"{what} not written: {e.strerror or e}" + (f" ({e.filename})" if e.filename else "")
+
+
+def set_aside_failed(res: ExportResult) -> ExportResult:
+    """``res`` with its file moved to ``<name>.invalid`` when it failed its self-check.
+
+    A file that did not pass is never left under the name of a good one: the result's
+    ``path`` becomes the ``.invalid`` name and a problem line says so.
+    """
+    from lod2energy.safe_write import set_aside
+
+    if res.ok or not res.path or not Path(res.path).exists():
+        return res
+    bad = set_aside(res.path)
+    note = f"failed its self-check: kept as {Path(bad).name}" if bad else "failed its self-check: removed"
+    return ExportResult(res.building_ids, bad, False, tuple(res.problems) + (note,), res.offset, res.warnings,
+                        res.stats, res.heating_kwh, res.cooling_kwh, res.severe_errors, res.not_enclosed)
 
 
 # --------------------------------------------------------------------------- local origin

@@ -33,9 +33,11 @@ from .zone_fallback import FALLBACKS
 from .common import (
     COLLINEAR_TOL, MIN_PIECE_AREA, PLANAR_TOL, WELD_TOL, ExportResult, ZoneFace, ZoneShell, _is_convex_2d,
     _split_t_junctions, weld,
-    _short_hash, check_closed_outward, local_origin, merge_convex, newell_normal, output_path,
+    _short_hash, check_closed_outward, local_origin, merge_convex, newell_normal, not_written, output_path,
+    set_aside_failed,
     plane_basis, polygon_area3d, safe_stem, triangulate, unit, zone_shells,
 )
+from lod2energy import safe_write
 from lod2energy.errors import ExportError, ParameterError
 from lod2energy.model import BUILDING_TYPES, Building
 
@@ -1586,7 +1588,7 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
         warns = list(warns) + g_warn + [n for j in g for n in zone_notes[j]]
         if weather and ground is None:
             warns.append("the weather file has no GROUND TEMPERATURES: 10 C under the ground floor all year")
-        path.write_text(text, encoding="ascii", errors="replace")
+        safe_write.write_text(path, text, root=out, encoding="ascii", errors="replace")
         return offset, stats, warns
 
     jobs = []
@@ -1597,8 +1599,14 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
 
     def finish(job):
         g, path = job
-        offset, stats, warns = render(g, path, pieces)
         ids = tuple(blist[i].id for i in g)
+        try:
+            return set_aside_failed(_finish(g, path, ids))
+        except OSError as e:  # a full disk, a link planted under the name: this file only
+            return ExportResult(ids, "", False, (not_written(e, "IDF"),), (0.0, 0.0, 0.0))
+
+    def _finish(g, path, ids):
+        offset, stats, warns = render(g, path, pieces)
         problems = self_check(path)
         if (any("not fully enclosed" in p for p in problems) and options.party_split
                 and stats.get("adiabatic_surfaces")):

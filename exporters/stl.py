@@ -20,12 +20,13 @@ from typing import Iterable
 
 import numpy as np
 
+from lod2energy import safe_write
 from lod2energy.errors import ParameterError
 from lod2energy.geometry import collapse_short_edges  # noqa: F401 - re-exported, used below
 from lod2energy.geometry import triangle_areas, triangle_normals
 from lod2energy.model import BUILDING_TYPES, Building
 
-from .common import ExportResult, ZoneShell, local_origin, weld, output_path, safe_stem, signed_volume, zone_shells
+from .common import ExportResult, ZoneShell, local_origin, weld, not_written, output_path, safe_stem, signed_volume, zone_shells
 
 #: Edge-collapse tolerance (m) after the union: removes sliver triangles.
 SIMPLIFY_TOL = 1e-3
@@ -302,26 +303,34 @@ def _facet_normals(v: np.ndarray, t: np.ndarray) -> np.ndarray:
     return triangle_normals(v, t)
 
 
-def write_ascii(path: Path, v: np.ndarray, t: np.ndarray, codes: np.ndarray) -> None:
-    """ASCII STL with one ``solid <class>`` per patch."""
+def write_ascii(path, v: np.ndarray, t: np.ndarray, codes: np.ndarray, root=None) -> None:
+    """ASCII STL with one ``solid <class>`` per patch, to ``path`` (atomically, inside ``root``:
+    :mod:`lod2energy.safe_write`) or into an open text file."""
+    if not hasattr(path, "write"):
+        with safe_write.atomic_write(path, "w", root=root, encoding="ascii") as f:
+            return write_ascii(f, v, t, codes)
+    f = path
     n = _facet_normals(v, t)
-    with open(path, "w", encoding="ascii") as f:
-        for ci, name in enumerate(PATCHES):
-            sel = np.nonzero(codes == ci)[0]
-            if len(sel) == 0:
-                continue
-            f.write(f"solid {name}\n")
-            for k in sel:
-                a, b, c = v[t[k]]
-                f.write(f"  facet normal {n[k, 0]:.6e} {n[k, 1]:.6e} {n[k, 2]:.6e}\n    outer loop\n"
-                        f"      vertex {a[0]:.6f} {a[1]:.6f} {a[2]:.6f}\n"
-                        f"      vertex {b[0]:.6f} {b[1]:.6f} {b[2]:.6f}\n"
-                        f"      vertex {c[0]:.6f} {c[1]:.6f} {c[2]:.6f}\n    endloop\n  endfacet\n")
-            f.write(f"endsolid {name}\n")
+    for ci, name in enumerate(PATCHES):
+        sel = np.nonzero(codes == ci)[0]
+        if len(sel) == 0:
+            continue
+        f.write(f"solid {name}\n")
+        for k in sel:
+            a, b, c = v[t[k]]
+            f.write(f"  facet normal {n[k, 0]:.6e} {n[k, 1]:.6e} {n[k, 2]:.6e}\n    outer loop\n"
+                    f"      vertex {a[0]:.6f} {a[1]:.6f} {a[2]:.6f}\n"
+                    f"      vertex {b[0]:.6f} {b[1]:.6f} {b[2]:.6f}\n"
+                    f"      vertex {c[0]:.6f} {c[1]:.6f} {c[2]:.6f}\n    endloop\n  endfacet\n")
+        f.write(f"endsolid {name}\n")
 
 
-def write_binary(path: Path, v: np.ndarray, t: np.ndarray, codes: np.ndarray) -> None:
-    """Binary STL; the attribute word of each triangle is its patch index."""
+def write_binary(path, v: np.ndarray, t: np.ndarray, codes: np.ndarray, root=None) -> None:
+    """Binary STL; the attribute word of each triangle is its patch index; to ``path``
+    (atomically, inside ``root``) or into an open binary file."""
+    if not hasattr(path, "write"):
+        with safe_write.atomic_write(path, "wb", root=root) as f:
+            return write_binary(f, v, t, codes)
     order = np.argsort(codes, kind="stable")
     t, codes = t[order], codes[order]
     rec = np.zeros(len(t), dtype=[("n", "<f4", 3), ("v", "<f4", (3, 3)), ("a", "<u2")])
@@ -329,10 +338,9 @@ def write_binary(path: Path, v: np.ndarray, t: np.ndarray, codes: np.ndarray) ->
     rec["v"] = v[t]
     rec["a"] = codes
     header = b"lod2energy STL; patches: " + ",".join(PATCHES).encode()
-    with open(path, "wb") as f:
-        f.write(header.ljust(80, b" ")[:80])
-        f.write(struct.pack("<I", len(t)))
-        f.write(rec.tobytes())
+    path.write(header.ljust(80, b" ")[:80])
+    path.write(struct.pack("<I", len(t)))
+    path.write(rec.tobytes())
 
 
 def write(buildings: Iterable[Building], outdir: str | Path, options: StlOptions | None = None,
@@ -377,7 +385,6 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: StlOptions
         warnings.extend(w)
         stem = safe_stem(g[0].id if len(g) == 1 else "dataset", used)
         path = output_path(out, stem, ".stl")
-        (write_ascii if options.ascii else write_binary)(path, v, t, c)
         sidecar = {
             "building_ids": [b.id for b in g],
             "offset": [float(x) for x in offset],
@@ -388,11 +395,21 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: StlOptions
             "patch_index": {p: i for i, p in enumerate(PATCHES)},
             "merged": bool(options.union and not w),
         }
-        output_path(out, stem, ".json").write_text(json.dumps(sidecar, indent=1), encoding="utf-8")
-        problems = self_check(path)
         stats = {"triangles": int(len(t)), "parts": len(meshes),
                  "volume_m3": round(signed_volume(v, t), 3) if len(t) else 0.0}
-        results.append(ExportResult(tuple(b.id for b in g), str(path), not problems, tuple(problems),
+        try:  # the STL self-checked on its staged temporary: a failed one never gets the good name
+            safe_write.write_text(output_path(out, stem, ".json"), json.dumps(sidecar, indent=1), root=out)
+            final, problems = safe_write.write_checked(
+                path, lambda f: (write_ascii if options.ascii else write_binary)(f, v, t, c), self_check,
+                "w" if options.ascii else "wb", root=out, **({"encoding": "ascii"} if options.ascii else {}))
+        except OSError as e:  # a full disk, a link planted under the name: this file only
+            results.append(ExportResult(tuple(b.id for b in g), "", False, (not_written(e, "STL"),),
+                                        tuple(float(x) for x in offset), tuple(warnings), stats))
+            continue
+        if problems:
+            problems = list(problems) + [f"failed its self-check: kept as {Path(final).name}" if final
+                                         else "failed its self-check: removed"]
+        results.append(ExportResult(tuple(b.id for b in g), final, not problems, tuple(problems),
                                     tuple(float(x) for x in offset), tuple(warnings), stats))
     return results
 

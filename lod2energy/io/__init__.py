@@ -30,6 +30,12 @@ def read(path: str, **options) -> "tuple[CityModel | None, Iterator[Building | F
     Options (mesh formats only): ``primitive`` ("Solid", "CompositeSurface",
     "MultiSurface"), ``inner_shells`` (list of POLY paths).
     """
+    from lod2energy.errors import InputError
+    from lod2energy.io.shape import check_input_file
+    try:  # the input-shape check starts here: a regular file of bounded size
+        check_input_file(str(path))
+    except InputError as e:
+        return None, iter([FeatureError(None, e.code, str(e))])
     p = path.lower()
     for s in sorted(_READERS, key=len, reverse=True):
         if p.endswith(s):

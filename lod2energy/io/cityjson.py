@@ -19,6 +19,7 @@ import numpy as np
 
 from lod2energy.crs import cityjson_reference_system
 from lod2energy.errors import FormatNotSupportedError, InputError
+from lod2energy.io import shape
 from lod2energy.model import (
     MULTISOLID_TYPES, SOLID_TYPES, SURFACE_TYPES, Building, CityModel, CityObject, FeatureError,
     Geometry, Shell, Solid, Surface, frozen_mapping,
@@ -44,18 +45,11 @@ def normalise_version(v: Any) -> str:
 
 
 def _load_json_text(text: str, what: str) -> Any:
-    try:
-        return json.loads(text)
-    except json.JSONDecodeError as e:
-        raise InputError(f"{what} is not valid JSON: {e.msg} at line {e.lineno} column {e.colno}") from None
+    return shape.parse_json(text, what)[0]
 
 
 def _read_text(path: str) -> str:
-    try:
-        with open(path, "rb") as f:
-            data = f.read()
-    except OSError as e:
-        raise InputError(f"cannot read {path}: {e.strerror}") from None
+    data = shape.read_bounded(path)
     try:
         return data.decode("utf-8-sig")
     except UnicodeDecodeError as e:
@@ -75,19 +69,35 @@ def _transform_vertices(verts: Any, transform: Mapping | None, what: str) -> np.
     if len(verts) == 0:
         return np.zeros((0, 3))
     try:
-        v = np.array(verts, dtype=np.float64)
-    except (ValueError, TypeError):
-        raise InputError(f"{what}: 'vertices' must be an array of [x, y, z] numbers") from None
-    if v.ndim != 2 or v.shape[1] != 3:
-        raise InputError(f"{what}: 'vertices' must be an array of [x, y, z] numbers")
+        v = np.array(verts)
+    except (ValueError, TypeError, OverflowError):
+        v = None
+    if v is None or v.dtype.kind not in "iuf" or v.ndim != 2 or v.shape[1] != 3:
+        v = _vertices_row_by_row(verts, what)
+    v = v.astype(np.float64)
     if transform:
         try:
             scale = np.asarray(transform["scale"], dtype=np.float64).reshape(3)
             translate = np.asarray(transform["translate"], dtype=np.float64).reshape(3)
-        except (KeyError, ValueError, TypeError):
+        except (KeyError, ValueError, TypeError, OverflowError):
             raise InputError(f"{what}: 'transform' needs 'scale' and 'translate' of 3 numbers") from None
-        v = v * scale + translate
+        with np.errstate(over="ignore", invalid="ignore"):
+            v = v * scale + translate
     return v
+
+
+def _vertices_row_by_row(verts: list, what: str) -> np.ndarray:
+    """Vertices read one by one: a row that is not three finite numbers becomes NaN, so that
+    only the buildings using it get an error (the others are read)."""
+    def num(x):
+        if isinstance(x, bool) or not isinstance(x, (int, float)):
+            return math.nan
+        try:
+            return float(x)
+        except OverflowError:
+            return math.nan
+    rows = [[num(c) for c in r] if isinstance(r, list) and len(r) == 3 else [math.nan] * 3 for r in verts]
+    return np.array(rows, dtype=np.float64).reshape(-1, 3)
 
 
 def _lod_string(lod: Any) -> str | None:
@@ -232,29 +242,67 @@ def _remap_nested(x: Any, lut: np.ndarray) -> Any:
     return int(lut[x])
 
 
+def _links(co: Any, key: str) -> list[str]:
+    """The ids of ``co[key]`` ("parents" / "children"), empty when it is not an array of strings."""
+    v = co.get(key) if isinstance(co, Mapping) else None
+    return [x for x in v if isinstance(x, str)] if isinstance(v, list) else []
+
+
 def _feature_ids(cos: Mapping[str, Any]) -> list[list[str]]:
-    """Group CityObject ids into features: each first-level object with its descendants."""
+    """Group CityObject ids into features: each first-level object with its descendants.
+
+    An object that is no first-level object's descendant (its ``parents``/``children``
+    form a cycle or disagree) is in no group: see :func:`_orphan_errors`.
+    """
     groups = []
     for oid, co in cos.items():
-        if not isinstance(co, Mapping):
-            continue
-        parents = co.get("parents") or []
+        parents = _links(co, "parents")
         if parents and any(p in cos for p in parents):
             continue
         members = [oid]
         seen = {oid}
         stack = [oid]
         while stack:
-            cur = cos.get(stack.pop())
-            if not isinstance(cur, Mapping):
-                continue
-            for ch in cur.get("children") or []:
+            for ch in _links(cos.get(stack.pop()), "children"):
                 if ch in cos and ch not in seen:
                     seen.add(ch)
                     members.append(ch)
                     stack.append(ch)
         groups.append(members)
     return groups
+
+
+def _orphan_errors(cos: Mapping[str, Any], groups: list[list[str]], what: str) -> Iterator[FeatureError]:
+    """One FeatureError per set of linked CityObjects that no feature holds (nothing vanishes)."""
+    placed = {oid for g in groups for oid in g}
+    left = [oid for oid in cos if oid not in placed]
+    done: set[str] = set()
+    for oid in left:
+        if oid in done:
+            continue
+        comp, stack = [], [oid]  # the orphans linked to this one
+        done.add(oid)
+        while stack:
+            cur = stack.pop()
+            comp.append(cur)
+            for nb in _links(cos.get(cur), "parents") + _links(cos.get(cur), "children"):
+                if nb in cos and nb not in placed and nb not in done:
+                    done.add(nb)
+                    stack.append(nb)
+        path, cur = [], oid  # follow the parents until one repeats
+        while cur is not None and cur not in path:
+            path.append(cur)
+            cur = next((p for p in _links(cos.get(cur), "parents") if p in cos), None)
+        if cur is not None and cur in path:
+            cyc = path[path.index(cur):] + [cur]
+            why = f"its 'parents' form a cycle ({' -> '.join(cyc)})"
+        else:
+            why = f"its parent {path[1] if len(path) > 1 else '?'} does not list it among its 'children'"
+        others = f"; with {', '.join(c for c in comp if c != oid)}" if len(comp) > 1 else ""
+        co = cos.get(oid)
+        rtype = co.get("type") if isinstance(co, Mapping) and isinstance(co.get("type"), str) else ""
+        yield FeatureError(oid, 901, f"coid={oid}: {why}, so it belongs to no first-level CityObject and is "
+                                     f"not read{others}", rtype)
 
 
 def build_feature(root_id: str, ids: list[str], cos: Mapping[str, Any], vertices: np.ndarray) -> Building:
@@ -287,7 +335,7 @@ def build_feature(root_id: str, ids: list[str], cos: Mapping[str, Any], vertices
     local = vertices[used] if len(used) else np.zeros((0, 3))
     if local.size and not np.isfinite(local).all():
         bad = used[~np.isfinite(local).all(axis=1)][:3].tolist()
-        raise InputError(f"coid={root_id}: non-finite (NaN/inf) coordinates at vertex {bad}")
+        raise InputError(f"coid={root_id}: non-finite (NaN/inf) or non-numeric coordinates at vertex {bad}")
     if local.size and np.abs(local).max() > MAX_COORDINATE:
         raise InputError(f"coid={root_id}: coordinates beyond {MAX_COORDINATE:.0e} m "
                          f"(max |c| = {np.abs(local).max():.3g}); is the CRS projected and metric?")
@@ -316,10 +364,11 @@ def _header_from(doc: Mapping[str, Any], path: str, fmt: str) -> CityModel:
 
 
 def _features_of_document(doc: Mapping[str, Any], transform: Mapping | None,
-                          what: str, templates: Any = None) -> Iterator[Building | FeatureError]:
+                          what: str, templates: Any = None, keys: Any = None,
+                          seen: dict | None = None) -> Iterator[Building | FeatureError]:
     if templates is None:
         templates = doc.get("geometry-templates")
-    for item in _features_of_document_raw(doc, transform, what):
+    for item in _features_of_document_raw(doc, transform, what, keys, seen):
         if isinstance(templates, Mapping) and isinstance(item, Building) and any(
                 g.type == "GeometryInstance" for o in item.objects for g in o.geometries):
             # instances are validated on their template (lod2energy.validate.checks.check_instance)
@@ -327,24 +376,61 @@ def _features_of_document(doc: Mapping[str, Any], transform: Mapping | None,
         yield item
 
 
+def _duplicate_id(oid: str, seen: dict) -> str:
+    """A report id for a second CityObject ``oid`` that cannot collide with the first."""
+    n = seen.setdefault(("dup", oid), 0) + 1
+    seen[("dup", oid)] = n
+    return f"{oid} (duplicate)" if n == 1 else f"{oid} (duplicate {n})"
+
+
 def _features_of_document_raw(doc: Mapping[str, Any], transform: Mapping | None,
-                              what: str) -> Iterator[Building | FeatureError]:
+                              what: str, keys: Any = None,
+                              seen: dict | None = None) -> Iterator[Building | FeatureError]:
+    """The features of one CityJSON document or CityJSONFeature.
+
+    ``keys`` (from :func:`lod2energy.io.shape.parse_json`) tells the ids the document
+    repeated; ``seen`` maps the ids of earlier lines of a CityJSONSeq to where they were, so
+    that a second CityObject with an id already read is reported, not read over the first.
+    """
     cos = doc.get("CityObjects")
     if not isinstance(cos, Mapping):
         yield FeatureError(None, 901, f"{what} has no 'CityObjects' object")
         return
+    seen = {} if seen is None else seen
+    for oid in (keys.of(cos) if keys is not None else ()):
+        yield FeatureError(_duplicate_id(oid, seen), 901,
+                           f"coid={oid}: {what} has more than one CityObject with this id; the first is read, "
+                           f"the others are not")
     try:
         verts = _transform_vertices(doc.get("vertices"), transform, what)
     except InputError as e:
         yield FeatureError(None, 901, str(e))
         return
-    for ids in _feature_ids(cos):
+    groups = _feature_ids(cos)
+    for ids in groups:
         root = ids[0]
         rtype = cos[root].get("type", "") if isinstance(cos[root], Mapping) else ""
+        rtype = rtype if isinstance(rtype, str) else ""
+        again = next((oid for oid in ids if oid in seen), None)
+        if again is not None:
+            yield FeatureError(_duplicate_id(root, seen), 901,
+                               f"coid={again}: this id was already read ({seen[again]}); the first is kept, "
+                               f"this one ({what}) is not read", rtype)
+            continue
+        for oid in ids:
+            seen[oid] = what
+        bad = next(((oid, p) for oid in ids if (p := shape.cityobject_problem(oid, cos[oid]))), None)
+        if bad is not None:
+            yield FeatureError(root, 901, f"coid={bad[0]}: {bad[1]}", rtype)
+            continue
         try:
             yield build_feature(root, ids, cos, verts)
         except InputError as e:
-            yield FeatureError(root, e.code, str(e), str(rtype))
+            yield FeatureError(root, e.code, str(e), rtype)
+        except (TypeError, ValueError, KeyError, IndexError, OverflowError, RecursionError) as e:
+            yield FeatureError(root, 901, f"coid={root}: unusable value ({type(e).__name__}: "
+                                          f"{str(e).splitlines()[0][:120] if str(e) else ''})", rtype)
+    yield from _orphan_errors(cos, groups, what)
 
 
 def is_cityjsonseq(path: str) -> bool:
@@ -366,24 +452,38 @@ def read(path: str) -> tuple[CityModel | None, Iterator[Building | FeatureError]
     if is_cityjsonseq(path):
         return _read_seq(path)
     try:
-        doc = _load_json_text(_read_text(path), path)
+        doc, keys = shape.parse_json(_read_text(path), path)
         if not isinstance(doc, Mapping):
             raise InputError(f"{path}: the JSON root is not an object")
         if doc.get("type") != "CityJSON":
-            raise FormatNotSupportedError(f"{path}: 'type' is {doc.get('type')!r}, not 'CityJSON'")
-        model = _header_from(doc, path, "CityJSON")
+            raise FormatNotSupportedError(f"{path}: 'type' is {str(doc.get('type'))[:40]!r}, not 'CityJSON'")
+        model = _header_of(doc, path, "CityJSON")
     except InputError as e:
         return None, iter([FeatureError(None, e.code, str(e))])
-    return model, _features_of_document(doc, model.transform, path)
+    return model, _features_of_document(doc, model.transform, path, keys=keys)
+
+
+def _header_of(doc: Mapping[str, Any], path: str, fmt: str, what: str | None = None) -> CityModel:
+    """:func:`_header_from` after the shape check of the file-level members (InputError)."""
+    problem = shape.header_problem(doc)
+    if problem:
+        raise InputError(f"{what or path}: {problem}")
+    return _header_from(doc, path, fmt)
 
 
 def _read_seq(path: str):
     try:
+        shape.check_input_file(path)
         f = open(path, "rb")
+    except InputError as e:
+        return None, iter([FeatureError(None, 901, str(e))])
     except OSError as e:
         return None, iter([FeatureError(None, 901, f"cannot read {path}: {e.strerror}")])
-    first = f.readline()
+    lines = shape.iter_lines_bounded(f)
+    first = next(lines, b"")
     try:
+        if isinstance(first, InputError):
+            raise InputError(f"{path} line 1: {first}")
         try:
             text = first.decode("utf-8-sig")
         except UnicodeDecodeError:
@@ -393,7 +493,7 @@ def _read_seq(path: str):
         doc = _load_json_text(text, f"{path} line 1")
         if not isinstance(doc, Mapping) or doc.get("type") != "CityJSON":
             raise InputError(f"{path} line 1: the first line of a CityJSONSeq must be a 'CityJSON' object")
-        model = _header_from(doc, path, "CityJSONSeq")
+        model = _header_of(doc, path, "CityJSONSeq", f"{path} line 1")
         if model.transform is None:
             raise InputError(f"{path} line 1: CityJSONSeq needs a 'transform' in its first line")
     except InputError as e:
@@ -401,20 +501,27 @@ def _read_seq(path: str):
         return None, iter([FeatureError(None, e.code, str(e))])
 
     def gen():
+        seen: dict = {}
         with f:
-            for lineno, raw in enumerate(f, start=2):
+            for lineno, raw in enumerate(lines, start=2):
+                if isinstance(raw, InputError):
+                    yield FeatureError(f"line {lineno}", 901, f"{path} line {lineno}: {raw}")
+                    continue
                 if not raw.strip():
                     continue
                 try:
-                    line = _load_json_text(raw.decode("utf-8"), f"{path} line {lineno}")
-                except (InputError, UnicodeDecodeError) as e:
+                    line, keys = shape.parse_json(raw.decode("utf-8"), f"{path} line {lineno}")
+                except UnicodeDecodeError as e:
+                    yield FeatureError(f"line {lineno}", 901, f"{path} line {lineno} is not UTF-8 text (byte {e.start})")
+                    continue
+                except InputError as e:
                     yield FeatureError(f"line {lineno}", 901, str(e))
                     continue
                 if not isinstance(line, Mapping) or line.get("type") != "CityJSONFeature":
                     yield FeatureError(f"line {lineno}", 901, f"{path} line {lineno}: not a CityJSONFeature")
                     continue
                 yield from _features_of_document(line, model.transform, f"{path} line {lineno}",
-                                                 model.geometry_templates)
+                                                 model.geometry_templates, keys, seen)
     return model, gen()
 
 
@@ -562,24 +669,32 @@ def feature_document(b: Building, transform: Mapping, version: str, frame=None) 
             "vertices": _quantise(b.vertices, transform, frame)}
 
 
-def write(path: str, model: CityModel, buildings: Iterable[Building], version: str | None = None) -> None:
-    """Write CityJSON (``.json``) or CityJSONSeq (``.jsonl``), chosen by the suffix."""
+def write(path: str, model: CityModel, buildings: Iterable[Building], version: str | None = None, *,
+          root: str | None = None, inputs: Iterable[str] | None = None) -> None:
+    """Write CityJSON (``.json``) or CityJSONSeq (``.jsonl``), chosen by the suffix.
+
+    Written through :func:`lod2energy.safe_write.atomic_write`: inside ``root`` (default:
+    the target's folder), never over one of ``inputs`` (default: the model's source file)
+    or a link, and atomically (a full disk leaves no half file under ``path``).
+    """
+    from lod2energy import safe_write
+
     version = version or model.version
-    tmp = path + ".part"
-    if is_cityjsonseq(path):
-        buildings = list(buildings)
-        header = _header_json(model, version)
-        transform = _transform_for(model, buildings)
-        header["transform"] = transform
-        header["CityObjects"] = {}
-        header["vertices"] = []
-        with open(tmp, "w", encoding="utf-8") as f:
+    root = os.path.dirname(os.path.abspath(path)) if root is None else root
+    if inputs is None:
+        inputs = [model.source] if model.source and os.path.exists(str(model.source)) else []
+    with safe_write.atomic_write(path, "w", root=root, inputs=inputs) as f:
+        if is_cityjsonseq(path):
+            buildings = list(buildings)
+            header = _header_json(model, version)
+            transform = _transform_for(model, buildings)
+            header["transform"] = transform
+            header["CityObjects"] = {}
+            header["vertices"] = []
             f.write(json.dumps(header, separators=(",", ":"), ensure_ascii=False) + "\n")
             for b in buildings:
                 f.write(json.dumps(feature_document(b, transform, version, model.frame), separators=(",", ":"),
                                    ensure_ascii=False) + "\n")
-    else:
-        doc = to_document(model, buildings, version)
-        with open(tmp, "w", encoding="utf-8") as f:
+        else:
+            doc = to_document(model, buildings, version)
             json.dump(doc, f, separators=(",", ":"), ensure_ascii=False)
-    os.replace(tmp, path)

@@ -25,6 +25,20 @@ LABELS = ("RoofSurface", "WallSurface", "GroundSurface", "ClosureSurface",
 _CLOSED_CODES = {300, 301, 302, 303, 305}
 _ORIENT_CODES = {307, 405}
 _DEGENERATE_CODES = {101, 102, 104, 306}
+#: An envelope smaller than this in every direction (m) or enclosing less than
+#: :data:`MIN_VOLUME` (m3) is no building: input collapsed to centimetres (a wrong scale or
+#: CRS) must not be reported compliant, however closed and clean it is.
+MIN_EXTENT = 0.5
+MIN_VOLUME = 0.1
+
+
+def envelope_extent(b: Building, lod: str | None) -> float:
+    """Largest side (m) of the bounding box of the envelope's vertices at ``lod`` (0 without any)."""
+    idx = [r for ref in b.shells(lod) for s in ref.shell.surfaces for r in s.rings]
+    if not idx or not len(b.vertices):
+        return 0.0
+    p = b.vertices[np.unique(np.concatenate(idx))]
+    return float((p.max(axis=0) - p.min(axis=0)).max())
 
 
 def _energy_locations(b: Building, lod: str | None) -> set[str]:
@@ -99,6 +113,12 @@ def energy_compliance(b: Building, defects: Iterable[Defect], graph: FaceGraph |
     clean = has_faces and n_degen == 0 and not (codes & _DEGENERATE_CODES)
     if has_faces and not clean and not flat_lod:
         reasons.append(f"degenerate, sliver or self-intersecting faces ({n_degen} degenerate/sliver)")
+    volume = float(vols.sum()) if len(vols) else 0.0
+    extent = envelope_extent(b, lod) if has_faces and not flat_lod else 0.0
+    sized = has_faces and not flat_lod and extent >= MIN_EXTENT and volume >= MIN_VOLUME
+    if has_faces and not flat_lod and not sized:
+        reasons.append(f"envelope collapsed to {extent:.3g} m across, {volume:.3g} m3 "
+                       f"(a building is at least {MIN_EXTENT} m and {MIN_VOLUME} m3: wrong scale or CRS?)")
     labelled = labels_complete(b, lod) if assess_labels else None
     if labelled is False:
         reasons.append("faces without a Roof/Wall/Ground label")
@@ -108,7 +128,7 @@ def energy_compliance(b: Building, defects: Iterable[Defect], graph: FaceGraph |
     if labelled is None or uvals is None:
         reasons.append("labels and U-values not assessed yet" if labelled is None and uvals is None
                        else ("labels not assessed yet" if labelled is None else "U-values not assessed yet"))
-    compliant = bool(closed and outward and clean and labelled is True and uvals is True)
+    compliant = bool(closed and outward and clean and sized and labelled is True and uvals is True)
     return {
         "lod": lod,
         "closed_2manifold": bool(closed),
@@ -117,10 +137,11 @@ def energy_compliance(b: Building, defects: Iterable[Defect], graph: FaceGraph |
         "labelled": labelled,
         "u_values": uvals,
         "compliant": compliant,
-        "geometry_ready": bool(closed and outward and clean),
+        "plausible_size": bool(sized),
+        "geometry_ready": bool(closed and outward and clean and sized),
         "N_b": graph.n_boundary,
         "N_nm": graph.n_nonmanifold,
         "status": graph.status,
-        "volume": float(vols.sum()) if len(vols) else 0.0,
+        "volume": volume,
         "reasons": reasons,
     }
