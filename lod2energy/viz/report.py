@@ -201,6 +201,15 @@ def write_report_html(report: dict, path, *, inputs: dict | None = None, outputs
     return write_text(path, html, root=root, inputs=list(input_files))
 
 
+def keep(features, into: dict):
+    """Pass a feature stream through unchanged, storing its Buildings in ``into`` by id (for
+    ``repair --html`` / ``validate --html``, whose streams are consumed by the command)."""
+    for f in features:
+        if isinstance(f, Building):
+            into[f.id] = f
+        yield f
+
+
 def read_buildings(path: str) -> dict[str, Building]:
     """Buildings of a file by id (unreadable features left out)."""
     from lod2energy.io import read
