@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from lod2energy.viz.data import STATUS_COLOURS
+from lod2energy.viz.data import GLOBAL, STATUS_COLOURS
 
 BAR = "#4a7fb5"
 AFTER = "#1a9850"
@@ -54,7 +54,7 @@ def plot_stages(stages: dict) -> str:
     ax = fig.add_subplot()
     names, vals = list(stages), list(stages.values())
     cols = [STATUS_COLOURS["valid"] if s == "valid" else STATUS_COLOURS["irreparable"] if s == "irreparable"
-            else STATUS_COLOURS["repaired globally"] if s in ("roofs", "alphashape", "footprint", "hull")
+            else STATUS_COLOURS["repaired globally"] if s in GLOBAL
             else STATUS_COLOURS["repaired locally"] for s in names]
     bars = ax.bar(names, vals, color=cols)
     _label_bars(ax, bars, vals)

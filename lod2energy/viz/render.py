@@ -13,7 +13,6 @@ import base64
 import hashlib
 import io
 import re
-from functools import lru_cache
 
 import numpy as np
 

@@ -160,7 +160,7 @@ def render_report_html(report: dict, *, inputs: dict | None = None, outputs: dic
                       src=src, src_name=os.path.basename(src), fd=fd, plots=plots, plan=plan, plan_info=plan_info, panels=panels,
                       left_out=left_out, cap=cap, n=len(rs), statuses=D.STATUSES, colours=D.STATUS_COLOURS,
                       graph_colours=R.GRAPH_COLOURS, data_json=blob, conditions=D.CONDITIONS,
-                      has_geometry=bool(inputs or outputs), report=report)
+                      has_geometry=bool(inputs or outputs))
 
 
 def _json_default(o):
