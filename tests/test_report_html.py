@@ -169,7 +169,10 @@ def test_validation_and_repair_reports_render(tmp_path):
     from lod2energy.validate.report import feature_report
     val = {"type": "val3dity_report", "input_file": "x.city.json",
            "features": [{k: v for k, v in feature_report(b).items() if k != "_primitives"}]}
-    html = render_report_html(val, inputs={"hole": b})
+    from lod2energy.viz import keep
+    store = {}
+    assert list(keep([b], store)) == [b] and store == {"hole": b}
+    html = render_report_html(val, inputs=store)
     d = page_data(html)
     assert d["kind"] == "validate" and d["figures"]["validity_by_code"] == {
         str(c): [1, 0] for c in sorted({e["code"] for e in val["features"][0]["errors"]})}

@@ -3,8 +3,10 @@
 :func:`write_report_html` writes the page for a report of ``export``, ``repair --report`` or
 ``validate --report``; :func:`view` writes (and opens) the panel of one building of a file.
 """
-from lod2energy.viz.report import DEFAULT_CAP, render_report_html, write_report_for, write_report_html  # noqa: F401
+from lod2energy.viz.report import (  # noqa: F401
+    DEFAULT_CAP, keep, render_report_html, write_report_for, write_report_html,
+)
 from lod2energy.viz.view import add_view_parser, cmd_view, view  # noqa: F401
 
-__all__ = ["DEFAULT_CAP", "render_report_html", "write_report_html", "write_report_for", "view",
+__all__ = ["DEFAULT_CAP", "keep", "render_report_html", "write_report_html", "write_report_for", "view",
            "add_view_parser", "cmd_view"]

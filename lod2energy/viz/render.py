@@ -13,7 +13,6 @@ import base64
 import hashlib
 import io
 import re
-from functools import lru_cache
 
 import numpy as np
 
@@ -334,7 +333,8 @@ def panel_image(before: Building | None, after: Building | None, pic: dict) -> s
         elif fs:
             draw_building(cv, fs, origin)
         else:
-            fig.text(k / 3 + 1 / 6, 0.45, "no geometry", ha="center", va="center")
+            fig.text(k / 3 + 1 / 6, 0.45, "not repaired" if k == 1 and f_in else "no geometry",
+                     ha="center", va="center")
     url = png_data_url(fig, dpi=72, compress_level=1)
     if len(_CACHE) > 2048:
         _CACHE.clear()

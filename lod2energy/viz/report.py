@@ -160,7 +160,7 @@ def render_report_html(report: dict, *, inputs: dict | None = None, outputs: dic
                       src=src, src_name=os.path.basename(src), fd=fd, plots=plots, plan=plan, plan_info=plan_info, panels=panels,
                       left_out=left_out, cap=cap, n=len(rs), statuses=D.STATUSES, colours=D.STATUS_COLOURS,
                       graph_colours=R.GRAPH_COLOURS, data_json=blob, conditions=D.CONDITIONS,
-                      has_geometry=bool(inputs or outputs), report=report)
+                      has_geometry=bool(inputs or outputs))
 
 
 def _json_default(o):
@@ -199,6 +199,15 @@ def write_report_html(report: dict, path, *, inputs: dict | None = None, outputs
     html = render_report_html(report, inputs=inputs, outputs=outputs, cap=cap, tol=tol)
     root = root if root is not None else os.path.dirname(os.path.abspath(path))
     return write_text(path, html, root=root, inputs=list(input_files))
+
+
+def keep(features, into: dict):
+    """Pass a feature stream through unchanged, storing its Buildings in ``into`` by id (for
+    ``repair --html`` / ``validate --html``, whose streams are consumed by the command)."""
+    for f in features:
+        if isinstance(f, Building):
+            into[f.id] = f
+        yield f
 
 
 def read_buildings(path: str) -> dict[str, Building]:

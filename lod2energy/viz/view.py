@@ -20,7 +20,8 @@ class ViewError(InputError):
     """The file cannot be read, or has no such building."""
 
 
-def _pick(path: str, building_id: str | None) -> Building:
+def _pick(path: str, building_id: str | None):
+    """``(model, building)``: the building ``building_id`` (or the first) of the file."""
     from lod2energy.io import read
     model, feats = read(path)
     if model is None:
@@ -30,9 +31,9 @@ def _pick(path: str, building_id: str | None) -> Building:
         if not isinstance(f, Building):
             continue
         if building_id is None and f.is_building:
-            return f
+            return model, f
         if building_id is not None and (f.id == building_id or building_id in {o.id for o in f.objects}):
-            return f
+            return model, f
     if building_id is None:
         raise ViewError(f"{path}: no building in this file")
     raise ViewError(f"{path}: no building with id {building_id!r}")
@@ -70,9 +71,9 @@ def view(path, building_id: str | None = None, outdir=".", *, tol: Tolerances = 
     from lod2energy.viz.render import slug
     from lod2energy.viz.report import write_report_html
     path = os.fspath(path)
-    b = _pick(path, building_id)
+    model, b = _pick(path, building_id)
     a = options or SimpleNamespace(lod=None, timeout=30.0, merge_parts=False)
-    pb, rec = prepare(b, tol, a)
+    pb, rec = prepare(b, tol, a, model)
     row = {**rec.row(), "repair": rec.repair, "energy": rec.energy, "thermal": rec.thermal, "exports": {}}
     report = {"input_file": path, "buildings": [row]}
     os.makedirs(outdir, exist_ok=True)
