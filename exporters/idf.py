@@ -1396,6 +1396,7 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
                                         options, [b.id for b in gb], shading, g_site, ground, crs,
                                         zone_info=[w[2] for w in wl])
         stats.update(g_stats)
+        stats["building_info"] = {blist[j].id: bstats[j] for j in g}
         if len(g) == 1:
             stats.update(bstats[g[0]])
         warns = list(warns) + g_warn + [n for j in g for n in zone_notes[j]]
