@@ -38,7 +38,7 @@ def _prepared(tile: Path, n: int):
     from lod2energy import io
     from lod2energy.model import Building
     from lod2energy.semantics import label_building
-    from lod2energy.thermal import assign_u_values
+    from lod2energy.thermal import ThermalOptions, assign_u_values
 
     model, feats = io.read(str(tile))
     model, feats = io.to_local_frame(model, feats)
@@ -47,7 +47,7 @@ def _prepared(tile: Path, n: int):
         if not isinstance(b, Building) or b.type != "Building" or not b.energy_objects():
             continue
         try:
-            out.append(assign_u_values(label_building(b)))
+            out.append(assign_u_values(label_building(b), ThermalOptions(crs=model.crs if model else None)))
         except Exception as e:  # noqa: BLE001 - a building the stages reject is reported and skipped
             print(f"{tile.name}: {b.id}: skipped ({type(e).__name__}: {e})", file=sys.stderr)
         if len(out) >= n:

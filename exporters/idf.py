@@ -1583,6 +1583,7 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
                                         zone_info=[w[2] for w in wl],
                                         openings=[openings.get(w[3], ()) for w in wl])
         stats.update(g_stats)
+        stats["building_info"] = {blist[j].id: bstats[j] for j in g}
         if len(g) == 1:
             stats.update(bstats[g[0]])
         warns = list(warns) + g_warn + [n for j in g for n in zone_notes[j]]
