@@ -1121,7 +1121,8 @@ def _bbox(b: Building) -> np.ndarray:
 
 
 def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions | None = None,
-          weather: str | Path | None = None, crs: str | None = None) -> list[ExportResult]:
+          weather: str | Path | None = None, crs: str | None = None,
+          context: Iterable[Building] = ()) -> list[ExportResult]:
     """Write IDF files for energy-ready buildings and self-check them.
 
     Parameters
@@ -1134,6 +1135,9 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
         EPW file (overrides ``options.weather``).
     crs : str, optional
         Written in the header comment.
+    context : iterable of Building, optional
+        Neighbours of ``buildings``: they make party walls and ``shading`` as they would in
+        one call with all of them, but get no file of their own.
 
     Returns
     -------
@@ -1157,6 +1161,9 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
     blist = [b for b in buildings if b.type in BUILDING_TYPES and b.energy_objects(options.lod)]
     if not blist:
         return []
+    n_own = len(blist)
+    own_ids = {b.id for b in blist}
+    blist += [b for b in context if b.id not in own_ids and b.type in BUILDING_TYPES and b.energy_objects(options.lod)]
     merge_notes: dict[int, list[str]] = {}
     for bi, b in enumerate(blist):
         blist[bi], merge_notes[bi] = merge_floorless_parts(b, options.lod)
@@ -1175,7 +1182,7 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
             zones[zi], pieces[zi] = simpler
             party = {k: v for k, v in party.items() if k[0] != zi}
 
-    groups = [[bi] for bi in range(len(blist))] if options.mode == "building" else [list(range(len(blist)))]
+    groups = [[bi] for bi in range(n_own)] if options.mode == "building" else [list(range(n_own))]
     bboxes = np.array([_bbox(b) for b in blist])
     used: set[str] = set()
 
