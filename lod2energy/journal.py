@@ -51,7 +51,7 @@ def header(input_path: str, options: dict) -> dict:
 
 
 def _dumps(obj: Any) -> str:
-    return json.dumps(obj, ensure_ascii=False, sort_keys=True, default=json_default, allow_nan=True)
+    return json.dumps(obj, ensure_ascii=False, default=json_default, allow_nan=True)
 
 
 class Journal:
@@ -109,6 +109,7 @@ class Journal:
 def _same_header(a: dict, b: dict) -> bool:
     keys = ("format", "input", "input_size", "input_sha256", "options")
     return json.loads(_dumps({k: a.get(k) for k in keys})) == json.loads(_dumps({k: b.get(k) for k in keys}))
+
 
 
 def read_lines(path: str | os.PathLike) -> Iterator[dict]:

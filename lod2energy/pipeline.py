@@ -31,7 +31,7 @@ from typing import Any, Iterable, Iterator
 from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.errors import Lod2EnergyError, ParameterError
 from lod2energy.model import Building, CityModel, FeatureError, frozen_mapping
-from lod2energy.records import (CSV_FIELDS, BuildingRecord, ComplianceRecord, ExportRecord, RepairRecord,
+from lod2energy.records import (CSV_FIELDS, _untimed, BuildingRecord, ComplianceRecord, ExportRecord, RepairRecord,
                                 ThermalRecord)
 from lod2energy.safe_write import UnsafeWriteError, atomic_write, check_target, write_bytes, write_json
 from lod2energy.validate import checks as _checks
@@ -232,6 +232,9 @@ def prepare_building(b: Building, options: PrepareOptions = PrepareOptions(), se
     tol, lod = options.tol, options.lod
     before = _checks.validate_building(b, tol)
     rb = repair_one(b, tol, options.timeout, options.merge_parts, lod)
+    if rb.provenance.get("repair") is not None:
+        # the ladder's timings would make the files (``+energyRepair``) differ run to run
+        rb = rb.with_provenance(repair=frozen_mapping(_untimed(rb.provenance["repair"])))
     repair = RepairRecord.from_info(repair_info(rb))
     lb = label_building(rb, lod=lod, source=b)
     thermal_opts = options.thermal
