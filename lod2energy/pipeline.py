@@ -171,10 +171,30 @@ def repair_one(b: Building, tol: Tolerances, timeout: float = 30.0, merge_parts:
     return repair_building(b, tol=tol, timeout=timeout, merge_parts=merge_parts, lod=lod)
 
 
-def _geometry_key(b: Building) -> tuple:
-    """Identity of the geometry state of ``b`` (vertices and polygon structure, not labels)."""
-    return (id(b.vertices), tuple((o.id, o.type, tuple((g.type, g.lod, id(g.solids)) for g in o.geometries))
-                                  for o in b.objects), tuple(b.provenance.get("input_errors", ()) or ()))
+def _geometry_key(b: Building) -> bytes:
+    """Digest of the geometry state of ``b``: vertices and polygon structure, not labels
+    (what :func:`lod2energy.validate.checks.validate_building` looks at)."""
+    import hashlib
+
+    import numpy as np
+    h = hashlib.blake2b(digest_size=16)
+    h.update(np.ascontiguousarray(b.vertices, dtype=float).tobytes())
+    h.update(repr(tuple(b.provenance.get("input_errors", ()) or ())).encode())
+    for o in b.objects:
+        h.update(f"|o{o.id}|{o.type}".encode("utf-8", "surrogatepass"))
+        for g in o.geometries:
+            h.update(f"|g{g.type}|{g.lod}".encode())
+            if g.raw is not None:
+                h.update(repr(g.raw).encode("utf-8", "surrogatepass"))
+            for so in g.solids:
+                h.update(b"|S")
+                for sh in so.shells:
+                    h.update(b"|H")
+                    for sf in sh.surfaces:
+                        h.update(b"|F")
+                        for r in sf.rings:
+                            h.update(np.ascontiguousarray(r, dtype=np.int64).tobytes() + b";")
+    return h.digest()
 
 
 def final_check(b: Building, defects, lod: str | None, tol: Tolerances = DEFAULT) -> str | None:
@@ -582,6 +602,8 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
     from lod2energy.journal import JOURNAL_NAME, Journal, header
 
     inputs = (input_path,)
+    refuse_overwriting_inputs([os.path.join(outdir, n) for n in ("report.json", "report.csv", "report.jsonl")],
+                              inputs)
     if os.path.exists(outdir) and not os.path.isdir(outdir):
         refuse_overwriting_inputs([outdir], inputs)
         raise ParameterError(f"-o {outdir}: exists and is not a folder")
