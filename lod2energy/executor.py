@@ -65,14 +65,14 @@ class Executor:
             ) -> Iterator[tuple[Any, Any]]:
         raise NotImplementedError
 
-    def close(self) -> None:
-        """Stop every worker (idempotent)."""
+    def close(self, kill: bool = False) -> None:
+        """Stop every worker (idempotent); ``kill``: at once, without letting a job finish."""
 
     def __enter__(self):
         return self
 
     def __exit__(self, *exc):
-        self.close()
+        self.close(kill=exc[0] is not None)
         return False
 
 
@@ -257,9 +257,9 @@ class ProcessPoolExecutor(Executor):
                         done[idx] = Overrun(round(now - t0, 1))
                         idle.append(self._spawn())
 
-    def close(self) -> None:
+    def close(self, kill: bool = False) -> None:
         for w in list(self._workers):
-            self._retire(w, kill=False)
+            self._retire(w, kill=kill)
 
 
 # ----------------------------------------------------------------------------- Dask
@@ -327,7 +327,7 @@ class DaskExecutor(Executor):
             except Exception as e:  # noqa: BLE001 - the task raised on the worker
                 yield arg, Failure(_one_line(e))
 
-    def close(self) -> None:
+    def close(self, kill: bool = False) -> None:
         if self._own:
             try:
                 self.client.close()

@@ -196,3 +196,37 @@ def test_every_input_object_is_a_row_with_its_problem(tmp_path, capsys):
     rows = json.loads((out / "report.json").read_text())["buildings"]
     assert [r["id"] for r in rows] == ["b1", "line 3", "b2"]
     assert rows[1]["outcome"] == "unreadable" and rows[1]["input_errors"] == "901" and rows[1]["message"]
+
+
+# ----------------------------------------------------------------------------- the journal
+
+def test_journal_skips_a_torn_line_and_starts_anew_for_other_options(tmp_path):
+    from lod2energy.journal import Journal, header, read_lines
+    src = write(tmp_path, box_doc())
+    out = tmp_path / "o"
+    out.mkdir()
+    j = Journal(out / "report.jsonl", out, [src], header(src, {"a": 1}))
+    j.append({"kind": "building", "seq": 0})
+    j.close()
+    with open(out / "report.jsonl", "a") as f:
+        f.write('{"kind": "build')  # a crash while appending
+    again = Journal(out / "report.jsonl", out, [src], header(src, {"a": 1}), resume=True)
+    assert again.resumed and again.previous() == [{"kind": "building", "seq": 0}]
+    again.close()
+    other = Journal(out / "report.jsonl", out, [src], header(src, {"a": 2}), resume=True)
+    assert not other.resumed and other.previous() == []
+    other.close()
+    assert [ln["kind"] for ln in read_lines(out / "report.jsonl")] == ["header"]
+
+
+def test_journal_never_follows_a_link_out_of_outdir(tmp_path):
+    from lod2energy.journal import Journal, header
+    from lod2energy.safe_write import UnsafeWriteError
+    victim = tmp_path / "victim.txt"
+    victim.write_text("keep")
+    out = tmp_path / "o"
+    out.mkdir()
+    (out / "report.jsonl").symlink_to(victim)
+    with pytest.raises(UnsafeWriteError):
+        Journal(out / "report.jsonl", out, [], header(str(victim), {}))
+    assert victim.read_text() == "keep"
