@@ -272,8 +272,13 @@ def main(argv: list[str] | None = None) -> int:
         parser.print_help(sys.stderr)
         return EXIT_UNUSABLE
     t0 = time.perf_counter()
+    from lod2energy.pipeline import Interrupted, _Signals
     try:
-        rc = {"validate": cmd_validate, "repair": cmd_repair, "export": cmd_export}[a.command](a)
+        with _Signals():  # SIGTERM ends every command as ^C does: one line, exit 143
+            rc = {"validate": cmd_validate, "repair": cmd_repair, "export": cmd_export}[a.command](a)
+    except Interrupted as e:
+        _err(f"interrupted by {e.name}")
+        return e.code
     except _UsageError as e:
         _err(str(e))
         return EXIT_UNUSABLE
