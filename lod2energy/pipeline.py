@@ -669,7 +669,8 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
                     seq, kind, payload = task[0], task[1], task[2]
                     tick()
                     if kind == "other":
-                        others.append(seq)
+                        if not isinstance(res, (Overrun, Failure)):
+                            others.append(seq)  # spooled: written with the CityJSON
                         continue
                     if isinstance(res, (Overrun, Failure)):
                         b = payload
