@@ -6,9 +6,12 @@ function to a stream of arguments and yields ``(argument, result)`` **in input o
 pipeline writes the same files and reports in the same order. A result is the function's
 return value, or
 
-- :class:`Overrun` when the job ran past its time budget (``timeout``, s): the process pool
-  kills the worker and starts a fresh one; in-process a ``SIGALRM`` guard interrupts it; on
-  Dask the task is cancelled (a Dask worker thread cannot be killed: it runs to its own end);
+- :class:`Overrun` when the job ran past its time budget (``timeout``, s, of CPU time - so that
+  a loaded machine does not time out jobs that only waited for a core - or ``WALL_FACTOR``
+  times that of wall time, for jobs that block): the process pool kills the worker and starts a
+  fresh one; in-process a ``SIGPROF`` / ``SIGALRM`` guard interrupts it; on Dask the task is
+  cancelled after ``timeout`` of wall time (a Dask worker thread cannot be killed: it runs to
+  its own end);
 - :class:`Failure` when the function raised (the message, one line) or its worker died.
 
 At most ``window`` jobs are in flight or buffered, so memory stays bounded however long the
@@ -41,6 +44,20 @@ class Failure:
     """The job raised (``message``: ``"Type: text"``) or its worker process died."""
 
     message: str
+
+
+#: A job is stopped after ``timeout`` s of CPU time or ``WALL_FACTOR * timeout`` s of wall time.
+WALL_FACTOR = 10.0
+
+
+def _cpu_seconds(pid: int) -> float:
+    """User + system CPU time (s) of process ``pid`` (0 when it cannot be read)."""
+    try:
+        with open(f"/proc/{pid}/stat", "rb") as f:
+            fields = f.read().rsplit(b")", 1)[1].split()
+        return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
+    except (OSError, ValueError, IndexError):
+        return 0.0
 
 
 class BuildingTimeout(BaseException):
@@ -106,19 +123,23 @@ class InProcessExecutor(Executor):
             raise BuildingTimeout()
 
         old = signal.signal(signal.SIGALRM, alarm)
+        old_prof = signal.signal(signal.SIGPROF, alarm)
         t0 = time.monotonic()
         try:
-            signal.setitimer(signal.ITIMER_REAL, float(timeout))
+            signal.setitimer(signal.ITIMER_PROF, float(timeout))  # CPU time of this process
+            signal.setitimer(signal.ITIMER_REAL, float(timeout) * WALL_FACTOR)
             try:
                 return fn(arg)
             finally:
                 signal.setitimer(signal.ITIMER_REAL, 0)
+                signal.setitimer(signal.ITIMER_PROF, 0)
         except BuildingTimeout:
             return Overrun(round(time.monotonic() - t0, 1))
         except Exception as e:  # noqa: BLE001
             return Failure(_one_line(e))
         finally:
             signal.signal(signal.SIGALRM, old)
+            signal.signal(signal.SIGPROF, old_prof)
 
 
 # ----------------------------------------------------------------------------- process pool
@@ -201,7 +222,7 @@ class ProcessPoolExecutor(Executor):
         idle: deque[_Worker] = deque(w for w in self._workers)
         while len(idle) < self.jobs:
             idle.append(self._spawn())
-        busy: dict[_Worker, tuple[int, float]] = {}
+        busy: dict[_Worker, tuple[int, float, float]] = {}  # index, wall and CPU clock at start
         held: dict[int, Any] = {}  # index -> argument, until yielded
         done: dict[int, Any] = {}
         nxt = 0
@@ -217,7 +238,7 @@ class ProcessPoolExecutor(Executor):
                 held[sent] = arg
                 try:
                     w.conn.send((sent, fn, arg))
-                    busy[w] = (sent, time.monotonic())
+                    busy[w] = (sent, time.monotonic(), _cpu_seconds(w.proc.pid))
                 except Exception as e:  # noqa: BLE001 - an argument that does not pickle
                     done[sent] = Failure(f"job not sendable: {_one_line(e)}")
                     idle.append(w)
@@ -232,12 +253,13 @@ class ProcessPoolExecutor(Executor):
             wait_for = None
             if timeout is not None and timeout > 0:
                 now = time.monotonic()
-                wait_for = max(0.0, min(t0 + timeout - now for _, t0 in busy.values()))
+                # CPU time is polled: at most every 0.25 s, at least by the wall deadline
+                wait_for = max(0.0, min(0.25, min(t0 + timeout * WALL_FACTOR - now for _, t0, _ in busy.values())))
             ready = wait([w.conn for w in busy], timeout=wait_for)
             by_conn = {w.conn: w for w in busy}
             for c in ready:
                 w = by_conn[c]
-                idx, _ = busy.pop(w)
+                idx = busy.pop(w)[0]
                 try:
                     ridx, ok, res = c.recv()
                     done[idx] = res if ok else Failure(res)
@@ -250,8 +272,8 @@ class ProcessPoolExecutor(Executor):
                     idle.append(self._spawn())
             if timeout is not None and timeout > 0:
                 now = time.monotonic()
-                for w, (idx, t0) in list(busy.items()):
-                    if now - t0 >= timeout:
+                for w, (idx, t0, c0) in list(busy.items()):
+                    if now - t0 >= timeout * WALL_FACTOR or _cpu_seconds(w.proc.pid) - c0 >= timeout:
                         busy.pop(w)
                         self._retire(w, kill=True)
                         done[idx] = Overrun(round(now - t0, 1))

@@ -104,9 +104,9 @@ class ExportOptions:
     stl : StlOptions
     cityjson : CityJsonOptions
     hard_timeout : float or None, s
-        Wall-clock limit of one building's first-pass job, enforced by the executor (the
-        worker is killed and replaced; the building is reported ``timeout``). Default:
-        the repair budget plus a grace of ``max(2, 20 %)``.
+        Limit of one building's first-pass job, enforced by the executor (CPU time of the
+        worker, or ten times that of wall time; the worker is killed and replaced, the
+        building reported ``timeout``). Default: the repair budget plus ``max(2 s, 20 %)``.
     """
 
     formats: tuple[str, ...] = ()
