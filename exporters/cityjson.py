@@ -473,7 +473,8 @@ def _fix_document(doc: dict, version: str) -> dict:
 # ----------------------------------------------------------------------------- writing
 
 def write(path: str, model: CityModel, buildings: Iterable[Building], version: str | None = None, *,
-          lod: str | None = None, keep_other_lods: bool = False, exclude_unready: bool = True) -> ExportResult:
+          lod: str | None = None, keep_other_lods: bool = False, exclude_unready: bool = True,
+          tol=None) -> ExportResult:
     """Write an Energy-ADE-style CityJSON (``.json``) or CityJSONSeq (``.jsonl``) file.
 
     Parameters
@@ -493,6 +494,8 @@ def write(path: str, model: CityModel, buildings: Iterable[Building], version: s
     exclude_unready : bool
         Leave out (and list in ``skipped``) buildings without thermal data or whose energy
         geometry is not closed / labelled; otherwise they are written and fail the check.
+    tol : Tolerances, optional
+        The user's tolerances, for the acceptance check and the self-check (default: val3dity's).
 
     Returns
     -------
@@ -515,7 +518,7 @@ def write(path: str, model: CityModel, buildings: Iterable[Building], version: s
         # checked as it will be read back: coordinates on the file's grid (a repaired vertex
         # off the grid moves by up to scale/2, which can tip a face over a tolerance)
         b = on_grid(b, transform, m.frame)
-        why = _ready_problem(b, blod, keep_other_lods) if exclude_unready else None
+        why = _ready_problem(b, blod, keep_other_lods, tol) if exclude_unready else None
         if why is not None:
             skipped.append((b.id, why))
             continue
@@ -542,7 +545,7 @@ def write(path: str, model: CityModel, buildings: Iterable[Building], version: s
         why = e.strerror if isinstance(e, OSError) and e.strerror else e
         return ExportResult(path, False, (f"cannot write {path}: {why}",), version, ids, tuple(skipped))
     try:
-        problems = self_check(tmp, extension=extension_schema(version))
+        problems = self_check(tmp, extension=extension_schema(version), tol=tol)
         target = path + INVALID_SUFFIX if problems else path
         safe_write.check_target(target, folder, inputs)
         os.replace(tmp, target)

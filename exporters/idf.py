@@ -1484,7 +1484,8 @@ def storey_zones(zone: ZoneShell, zi: int, pieces: list[Piece], n_below: int, st
 
 
 def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions | None = None,
-          weather: str | Path | None = None, crs: str | None = None, frame=None) -> list[ExportResult]:
+          weather: str | Path | None = None, crs: str | None = None, frame=None,
+          context: Iterable[Building] = ()) -> list[ExportResult]:
     """Write IDF files for energy-ready buildings and self-check them.
 
     Parameters
@@ -1500,6 +1501,9 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
         for ``Site:Location`` (:func:`lod2energy.site.site_of`).
     frame : lod2energy.geodesy.LocalFrame, optional
         The local frame of a file in a geographic CRS (``CityModel.frame``).
+    context : iterable of Building, optional
+        Neighbours of ``buildings``: they make party walls and ``shading`` as they would in
+        one call with all of them, but get no file of their own.
 
     Returns
     -------
@@ -1534,6 +1538,9 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
     blist = [b for b in buildings if b.type in BUILDING_TYPES and b.energy_objects(options.lod)]
     if not blist:
         return []
+    n_own = len(blist)
+    own_ids = {b.id for b in blist}
+    blist += [b for b in context if b.id not in own_ids and b.type in BUILDING_TYPES and b.energy_objects(options.lod)]
     merge_notes: dict[int, list[str]] = {}
     for bi, b in enumerate(blist):
         blist[bi], merge_notes[bi] = merge_floorless_parts(b, options.lod)
@@ -1559,9 +1566,9 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
             party = {k: v for k, v in party.items() if k[0] != zi}
             openings[zi] = ()  # a fallback envelope: the WWR rule
 
-    written_of, zone_notes, bstats = _written_zones(blist, zones, zones_of, pieces, options, openings)
+    written_of, zone_notes, bstats = _written_zones(blist[:n_own], zones, zones_of, pieces, options, openings)
 
-    groups = [[bi] for bi in range(len(blist))] if options.mode == "building" else [list(range(len(blist)))]
+    groups = [[bi] for bi in range(n_own)] if options.mode == "building" else [list(range(n_own))]
     bboxes = np.array([_bbox(b) for b in blist])
     used: set[str] = set()
 

@@ -8,7 +8,6 @@ Exit codes (all commands):
 from __future__ import annotations
 
 import argparse
-import json
 import os
 import sys
 import time
@@ -17,6 +16,7 @@ from collections import Counter
 from lod2energy import __version__
 from lod2energy.config import Tolerances
 from lod2energy.errors import Lod2EnergyError
+from lod2energy.safe_write import UnsafeWriteError
 
 EXIT_OK, EXIT_INVALID, EXIT_UNUSABLE = 0, 1, 2
 
@@ -73,7 +73,14 @@ def build_parser() -> argparse.ArgumentParser:
                 epilog=EXIT_HELP, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--version", action="version", version=f"lod2energy {__version__}")
     sub = p.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
+    add_validate_parser(sub)
+    add_repair_parser(sub)
+    add_export_parser(sub)
+    return p
 
+
+def add_validate_parser(sub) -> argparse.ArgumentParser:
+    """``lod2energy validate`` and its options."""
     v = sub.add_parser("validate", help="validate files (val3dity error codes + energy compliance)",
                        description="Validate CityJSON / CityJSONSeq / CityGML / OBJ / OFF / POLY files with val3dity's "
                        "error codes, build each building's face-adjacency graph and assess energy compliance.",
@@ -83,7 +90,11 @@ def build_parser() -> argparse.ArgumentParser:
     v.add_argument("-q", "--quiet", action="store_true", help="no progress bar and no table")
     _add_tolerances(v)
     _add_mesh_options(v)
+    return v
 
+
+def add_repair_parser(sub) -> argparse.ArgumentParser:
+    """``lod2energy repair`` and its options."""
     r = sub.add_parser("repair", help="repair buildings into closed, outward-oriented solids",
                        description="Repair every building by the ladder (clean-up, orientation, hole fill, "
                        "remove-and-refill, alpha shape, footprint extrusion, convex hull) and write CityJSON "
@@ -97,10 +108,15 @@ def build_parser() -> argparse.ArgumentParser:
     r.add_argument("--merge-parts", action="store_true", help="merge overlapping BuildingParts (601) into one solid")
     r.add_argument("-q", "--quiet", action="store_true")
     _add_tolerances(r)
+    return r
 
+
+def add_export_parser(sub) -> argparse.ArgumentParser:
+    """``lod2energy export`` and its options (groups: formats, thermal, run)."""
     e = sub.add_parser("export", help="validate, repair, label, assign U-values and export",
                        description="Run the whole pipeline and write the chosen formats into OUTDIR, with a "
-                       "dataset report (report.json, report.csv). Every file is re-read and self-checked.",
+                       "dataset report (report.json, report.csv, the journal report.jsonl). Every file is "
+                       "re-read and self-checked.",
                        epilog=EXIT_HELP, formatter_class=argparse.RawDescriptionHelpFormatter)
     e.add_argument("input", metavar="IN")
     e.add_argument("-o", "--output", required=True, metavar="OUTDIR")
@@ -120,11 +136,26 @@ def build_parser() -> argparse.ArgumentParser:
     e.add_argument("--u-table", metavar="FILE", default=None, help="CSV of U-values replacing the built-in tables")
     for c in ("wall", "roof", "ground", "window"):
         e.add_argument(f"--u-{c}", type=float, default=None, metavar="U", help=f"override the {c} U-value, W/(m2 K)")
-    e.add_argument("--timeout", type=float, default=30.0, metavar="S", help="repair time budget per building")
+    e.add_argument("--timeout", type=float, default=30.0, metavar="S",
+                   help="time budget per building (default 30 s): the repair escalates when it is spent, "
+                   "and a building still running a little later is stopped and reported 'timeout'")
     e.add_argument("--merge-parts", action="store_true")
     e.add_argument("-q", "--quiet", action="store_true")
+    add_run_options(e)
     _add_tolerances(e)
-    return p
+    return e
+
+
+def add_run_options(p: argparse.ArgumentParser) -> None:
+    """``--jobs``, ``--dask``, ``--resume``: how a command runs (never what it writes)."""
+    g = p.add_argument_group("city scale (the outputs are the same whatever runs them)")
+    g.add_argument("-j", "--jobs", type=int, default=None, metavar="N",
+                   help="worker processes (default: all cores; 1: in this process)")
+    g.add_argument("--dask", metavar="tcp://HOST:8786", default=None,
+                   help="run the per-building jobs on this Dask scheduler (workers must see OUTDIR)")
+    g.add_argument("--resume", action="store_true",
+                   help="continue an interrupted run in OUTDIR: skip buildings whose outputs are complete, "
+                   "self-checked and unchanged (report.jsonl)")
 
 
 def _err(msg: str) -> None:
@@ -156,6 +187,9 @@ def cmd_validate(a) -> int:
     from lod2energy.validate.report import validate_features
 
     tol = _tolerances(a)
+    if a.report:
+        from lod2energy.safe_write import check_target
+        check_target(a.report, None, a.files)  # never over an input (exit 2)
     reports, rows = [], []
     worst = EXIT_OK
     for path in a.files:
@@ -184,17 +218,9 @@ def cmd_validate(a) -> int:
         _print_validate_table(rows)
     if a.report:
         out = reports[0] if len(reports) == 1 else {"type": "lod2energy_reports", "reports": reports}
-        _write_json(a.report, out)
+        from lod2energy.safe_write import write_json
+        write_json(a.report, out, inputs=a.files)
     return worst
-
-
-def _write_json(path: str, obj) -> None:
-    d = os.path.dirname(os.path.abspath(path))
-    os.makedirs(d, exist_ok=True)
-    tmp = path + ".part"
-    with open(tmp, "w", encoding="utf-8") as f:
-        json.dump(obj, f, indent=1, ensure_ascii=False, default=str)
-    os.replace(tmp, path)
 
 
 def cmd_repair(a) -> int:
@@ -202,8 +228,24 @@ def cmd_repair(a) -> int:
     return repair_file(a, _tolerances(a))
 
 
+def export_options(a) -> "ExportOptions":
+    """:class:`lod2energy.pipeline.ExportOptions` from the parsed ``export`` arguments."""
+    from lod2energy.exporters.idf import IdfOptions
+    from lod2energy.exporters.registry import CityJsonOptions
+    from lod2energy.exporters.stl import StlOptions
+    from lod2energy.pipeline import FORMATS, ExportOptions, prepare_options
+
+    formats = tuple(f for f in FORMATS if getattr(a, f))
+    idf = IdfOptions(**{k: v for k, v in dict(
+        mode=a.idf_mode, version=a.energyplus_version, shading=a.shading, run=a.run, weather=a.weather,
+        lod=a.lod, wwr=a.wwr).items() if v is not None})
+    return ExportOptions(formats, prepare_options(a, _tolerances(a)), idf,
+                         StlOptions(mode=a.stl_mode, ascii=a.stl_ascii, lod=a.lod),
+                         CityJsonOptions(a.cityjson_version))
+
+
 def cmd_export(a) -> int:
-    from lod2energy.pipeline import export_file
+    from lod2energy.pipeline import RunOptions, export, print_export_summary
     if not (a.idf or a.stl or a.cityjson):
         raise _UsageError("choose at least one of --idf, --stl, --cityjson")
     if a.wwr is not None and not (0.0 <= a.wwr < 1.0):
@@ -212,7 +254,15 @@ def cmd_export(a) -> int:
         v = getattr(a, f"u_{c}")
         if v is not None and not (v > 0 and v < 100):
             raise _UsageError(f"--u-{c} must be a positive U-value in W/(m2 K)")
-    return export_file(a, _tolerances(a))
+    if a.jobs is not None and a.jobs < 0:
+        raise _UsageError("--jobs must be >= 0 (0: all cores)")
+    if not (a.timeout > 0) or a.timeout != a.timeout:
+        raise _UsageError("--timeout must be a positive number of seconds")
+    opts = export_options(a)
+    res = export(a.input, a.output, opts, RunOptions(a.jobs, a.dask, a.resume, a.quiet))
+    if not a.quiet and res.records and res.exit_code in (EXIT_OK, EXIT_INVALID):
+        print_export_summary(res.records, opts.formats, a.output)
+    return res.exit_code
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -222,9 +272,17 @@ def main(argv: list[str] | None = None) -> int:
         parser.print_help(sys.stderr)
         return EXIT_UNUSABLE
     t0 = time.perf_counter()
+    from lod2energy.pipeline import Interrupted, _Signals
     try:
-        rc = {"validate": cmd_validate, "repair": cmd_repair, "export": cmd_export}[a.command](a)
+        with _Signals():  # SIGTERM ends every command as ^C does: one line, exit 143
+            rc = {"validate": cmd_validate, "repair": cmd_repair, "export": cmd_export}[a.command](a)
+    except Interrupted as e:
+        _err(f"interrupted by {e.name}")
+        return e.code
     except _UsageError as e:
+        _err(str(e))
+        return EXIT_UNUSABLE
+    except UnsafeWriteError as e:  # an output that is an input, a link, outside OUTDIR
         _err(str(e))
         return EXIT_UNUSABLE
     except Lod2EnergyError as e:

@@ -1,0 +1,186 @@
+"""Writer registry: every export format the pipeline can write, found by its name.
+
+As the reader registry of :mod:`lod2energy.io` maps suffixes to readers, this maps a format
+name ("idf", "stl", "cityjson") to its writer and self-check. The pipeline iterates the
+registry; a new format is one :func:`register_writer` call.
+
+Each writer keeps its module's call shape ``write(buildings, outdir, options, ..., crs=...)``;
+the registry wraps it in one uniform adapter::
+
+    write(buildings, outdir, options, *, crs=None, context=(), model=None, stem="out", tol=None)
+        -> list of (building ids, ExportRecord)
+
+and says in which pass of the pipeline it runs (:attr:`Writer.scope`):
+
+- ``"building"``: one building at a time, nothing else needed (STL in building mode);
+- ``"context"``: one building at a time with its neighbours (IDF in building mode: party walls
+  and ``--shading``);
+- ``"dataset"``: one file for all buildings (IDF / STL in dataset mode, CityJSON).
+"""
+from __future__ import annotations
+
+import os
+from dataclasses import dataclass
+from typing import Any, Callable, Iterable, Sequence
+
+from lod2energy.records import ExportRecord, FileRecord
+
+
+@dataclass(frozen=True)
+class Writer:
+    """One registered export format.
+
+    Parameters
+    ----------
+    name : str
+        Format name, the CLI flag without dashes ("idf").
+    write : callable
+        The uniform adapter (see the module docstring).
+    self_check : callable(path) -> list of str
+        The format's self-check (empty list: the file is good).
+    scope : callable(options) -> {"building", "context", "dataset"}
+        The pass the writer runs in, for its options.
+    halo : callable(options) -> float, m
+        How far around a building its neighbours matter (``"context"`` scope).
+    """
+
+    name: str
+    write: Callable[..., list]
+    self_check: Callable[..., list]
+    scope: Callable[[Any], str]
+    halo: Callable[[Any], float] = lambda options: 0.0
+
+
+_WRITERS: dict[str, Writer] = {}
+
+
+def register_writer(name: str, write: Callable[..., list], self_check: Callable[..., list], *,
+                    scope: Callable[[Any], str] | str = "building",
+                    halo: Callable[[Any], float] | float = 0.0) -> Writer:
+    """Register (or replace) the writer of format ``name``; returns it."""
+    sc = scope if callable(scope) else (lambda options, _s=scope: _s)
+    ha = halo if callable(halo) else (lambda options, _h=float(halo): _h)
+    w = Writer(name, write, self_check, sc, ha)
+    _WRITERS[name] = w
+    return w
+
+
+def writer(name: str) -> Writer:
+    """The registered writer of ``name`` (KeyError when there is none)."""
+    return _WRITERS[name]
+
+
+def writers(names: Iterable[str] | None = None) -> list[Writer]:
+    """Registered writers, in registration order (only ``names`` when given)."""
+    if names is None:
+        return list(_WRITERS.values())
+    wanted = set(names)
+    return [w for n, w in _WRITERS.items() if n in wanted]
+
+
+# ----------------------------------------------------------------------------- adapters
+
+_RESULT_EXTRA = ("offset", "heating_kwh", "cooling_kwh", "severe_errors", "not_enclosed", "warnings")
+
+
+def _files(*paths: str) -> tuple[FileRecord, ...]:
+    out = []
+    for p in paths:
+        if p and os.path.isfile(p):
+            fr = FileRecord.of(p)
+            if fr is not None:
+                out.append(fr)
+    return tuple(out)
+
+
+def _records(fmt: str, results: Sequence, sidecars: Callable[[str], Sequence[str]] = lambda p: ()) -> list:
+    out = []
+    for res in results:
+        extra = {}
+        for k in _RESULT_EXTRA:
+            v = getattr(res, k, None)
+            if v is not None and v != ():
+                extra[k] = list(v) if isinstance(v, tuple) else v
+        path = str(res.path)
+        files = _files(path, *sidecars(path)) if res.ok else ()
+        er = ExportRecord(fmt, bool(res.ok), path, tuple(getattr(res, "problems", ()) or ()), extra, files)
+        out.append((tuple(getattr(res, "building_ids", ()) or ()), er))
+    return WriteResults(out)
+
+
+def _idf_scope(options) -> str:
+    return "dataset" if getattr(options, "mode", "building") == "dataset" else "context"
+
+
+def _idf_halo(options) -> float:
+    # party walls are faces within a few cm of each other; shading reaches shading_radius
+    return float(options.shading_radius) if getattr(options, "shading", False) else 1.0
+
+
+def _write_idf(buildings, outdir, options, *, crs=None, context=(), model=None, stem="out", tol=None):
+    from lod2energy.exporters import idf
+    return _records("idf", idf.write(buildings, outdir, options, crs=crs, context=context))
+
+
+def _stl_sidecar(path: str) -> list[str]:
+    return [path[:-4] + ".json"] if path.endswith(".stl") else []
+
+
+def _write_stl(buildings, outdir, options, *, crs=None, context=(), model=None, stem="out", tol=None):
+    from lod2energy.exporters import stl
+    return _records("stl", stl.write(buildings, outdir, options, crs=crs), _stl_sidecar)
+
+
+def _write_cityjson(buildings, outdir, options, *, crs=None, context=(), model=None, stem="out", tol=None):
+    """One Energy-ADE CityJSON for all ``buildings``: a record for each, ok or left out."""
+    from lod2energy.exporters import cityjson
+    buildings = list(buildings)
+    path = os.path.join(str(outdir), f"{stem}.energy.city.json")
+    res = cityjson.write(path, model, buildings, version=getattr(options, "version", None), tol=tol)
+    ok = bool(getattr(res, "ok", False))
+    skipped = dict(getattr(res, "skipped", ()) or ())
+    files = _files(str(res.path), getattr(res, "extension_path", "") or "") if ok else ()
+    out = []
+    for b in buildings:
+        if b.id in skipped:
+            out.append(((b.id,), ExportRecord("cityjson", False, path, (f"left out: {skipped[b.id]}",))))
+        else:
+            out.append(((b.id,), ExportRecord("cityjson", ok, str(res.path),
+                                              tuple(getattr(res, "problems", ()) or ())[:3], {}, files)))
+    return WriteResults(out, tuple(getattr(res, "notes", ()) or ()))
+
+
+class WriteResults(list):
+    """The ``(building ids, ExportRecord)`` pairs of one write, with the writer's notes for the user."""
+
+    def __init__(self, items=(), notes: tuple[str, ...] = ()):
+        super().__init__(items)
+        self.notes = notes
+
+
+@dataclass(frozen=True)
+class CityJsonOptions:
+    """Options of the CityJSON writer (``version``: "1.0", "1.1", "2.0" or None for the input's)."""
+
+    version: str | None = None
+
+
+def _cityjson_check(path: str, tol=None) -> list[str]:
+    from lod2energy.exporters import cityjson
+    return cityjson.self_check(path, tol=tol)
+
+
+def _idf_check(path: str) -> list[str]:
+    from lod2energy.exporters import idf
+    return idf.self_check(path)
+
+
+def _stl_check(path: str) -> list[str]:
+    from lod2energy.exporters import stl
+    return stl.self_check(path)
+
+
+register_writer("cityjson", _write_cityjson, _cityjson_check, scope="dataset")
+register_writer("idf", _write_idf, _idf_check, scope=_idf_scope, halo=_idf_halo)
+register_writer("stl", _write_stl, _stl_check,
+                scope=lambda options: "dataset" if getattr(options, "mode", "building") == "dataset" else "building")

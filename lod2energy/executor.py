@@ -1,0 +1,367 @@
+"""Executors: where the per-building job runs (in this process, a process pool, a Dask cluster).
+
+Every executor has one method, :meth:`Executor.map`, that applies a picklable module-level
+function to a stream of arguments and yields ``(argument, result)`` **in input order**
+(results that finish early wait in a bounded buffer), so that whatever runs the jobs the
+pipeline writes the same files and reports in the same order. A result is the function's
+return value, or
+
+- :class:`Overrun` when the job ran past its time budget (``timeout``, s, of CPU time - so that
+  a loaded machine does not time out jobs that only waited for a core - or ``WALL_FACTOR``
+  times that of wall time, for jobs that block): the process pool kills the worker and starts a
+  fresh one; in-process a ``SIGPROF`` / ``SIGALRM`` guard interrupts it; on Dask the task is
+  cancelled after ``timeout`` of wall time (a Dask worker thread cannot be killed: it runs to
+  its own end);
+- :class:`Failure` when the function raised (the message, one line) or its worker died.
+
+At most ``window`` jobs are in flight or buffered, so memory stays bounded however long the
+input stream is.
+"""
+from __future__ import annotations
+
+import multiprocessing as mp
+import os
+import signal
+import threading
+import time
+from collections import deque
+from dataclasses import dataclass
+from multiprocessing.connection import wait
+from typing import Any, Callable, Iterable, Iterator
+
+import lod2energy.records  # noqa: F401 - makes Building picklable in every process
+
+
+@dataclass(frozen=True)
+class Overrun:
+    """The job did not finish within its budget (``seconds``, s)."""
+
+    seconds: float
+
+
+@dataclass(frozen=True)
+class Failure:
+    """The job raised (``message``: ``"Type: text"``) or its worker process died."""
+
+    message: str
+
+
+#: A job is stopped after ``timeout`` s of CPU time or ``WALL_FACTOR * timeout`` s of wall time.
+WALL_FACTOR = 10.0
+
+
+def _cpu_seconds(pid: int) -> float:
+    """User + system CPU time (s) of process ``pid`` (0 when it cannot be read)."""
+    try:
+        with open(f"/proc/{pid}/stat", "rb") as f:
+            fields = f.read().rsplit(b")", 1)[1].split()
+        return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
+    except (OSError, ValueError, IndexError):
+        return 0.0
+
+
+class BuildingTimeout(BaseException):
+    """Raised inside an in-process job by the ``SIGALRM`` guard (a BaseException, so that no
+    ``except Exception`` of the job swallows it)."""
+
+
+def default_jobs() -> int:
+    """All cores this process may use."""
+    try:
+        return max(1, len(os.sched_getaffinity(0)))
+    except (AttributeError, OSError):  # pragma: no cover - not Linux
+        return max(1, os.cpu_count() or 1)
+
+
+class Executor:
+    """Base class: runs ``fn(arg)`` for each ``arg`` and yields ``(arg, result)`` in order."""
+
+    jobs: int = 1
+
+    def map(self, fn: Callable[[Any], Any], args: Iterable[Any], timeout: float | None = None
+            ) -> Iterator[tuple[Any, Any]]:
+        raise NotImplementedError
+
+    def close(self, kill: bool = False) -> None:
+        """Stop every worker (idempotent); ``kill``: at once, without letting a job finish."""
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close(kill=exc[0] is not None)
+        return False
+
+
+def _one_line(e: BaseException) -> str:
+    return f"{type(e).__name__}: {e}".splitlines()[0] if str(e) else type(e).__name__
+
+
+# ----------------------------------------------------------------------------- in-process
+
+class InProcessExecutor(Executor):
+    """Runs each job here, one after the other; ``timeout`` enforced by ``SIGALRM``
+    (main thread only; elsewhere the job's own deadline is the only bound)."""
+
+    jobs = 1
+
+    def map(self, fn, args, timeout=None):
+        for arg in args:
+            yield arg, self._run(fn, arg, timeout)
+
+    @staticmethod
+    def _run(fn, arg, timeout):
+        guard = (timeout is not None and timeout > 0 and hasattr(signal, "setitimer")
+                 and threading.current_thread() is threading.main_thread())
+        if not guard:
+            try:
+                return fn(arg)
+            except Exception as e:  # noqa: BLE001 - one job's failure never stops the batch
+                return Failure(_one_line(e))
+
+        def alarm(signum, frame):
+            raise BuildingTimeout()
+
+        old = signal.signal(signal.SIGALRM, alarm)
+        old_prof = signal.signal(signal.SIGPROF, alarm)
+        t0 = time.monotonic()
+        try:
+            signal.setitimer(signal.ITIMER_PROF, float(timeout))  # CPU time of this process
+            signal.setitimer(signal.ITIMER_REAL, float(timeout) * WALL_FACTOR)
+            try:
+                return fn(arg)
+            finally:
+                signal.setitimer(signal.ITIMER_REAL, 0)
+                signal.setitimer(signal.ITIMER_PROF, 0)
+        except BuildingTimeout:
+            return Overrun(round(time.monotonic() - t0, 1))
+        except Exception as e:  # noqa: BLE001
+            return Failure(_one_line(e))
+        finally:
+            signal.signal(signal.SIGALRM, old)
+            signal.signal(signal.SIGPROF, old_prof)
+
+
+# ----------------------------------------------------------------------------- process pool
+
+def _worker_loop(conn) -> None:
+    """A pool worker: receive ``(index, fn, arg)``, send back ``(index, ok, result)``."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)  # the parent handles ^C and stops us
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)
+    while True:
+        try:
+            msg = conn.recv()
+        except (EOFError, OSError):
+            return
+        if msg is None:
+            return
+        idx, fn, arg = msg
+        try:
+            out = (idx, True, fn(arg))
+        except BaseException as e:  # noqa: BLE001 - reported to the parent as this job's failure
+            out = (idx, False, _one_line(e))
+        try:
+            conn.send(out)
+        except Exception as e:  # noqa: BLE001 - an unpicklable result
+            conn.send((idx, False, f"result not sendable: {_one_line(e)}"))
+
+
+class _Worker:
+    def __init__(self, ctx):
+        self.conn, child = ctx.Pipe()
+        self.proc = ctx.Process(target=_worker_loop, args=(child,), daemon=True)
+        self.proc.start()
+        child.close()
+
+    def stop(self, kill: bool = False) -> None:
+        try:
+            if kill:
+                self.proc.kill()
+            else:
+                self.conn.send(None)
+        except (OSError, ValueError, BrokenPipeError):
+            pass
+        self.proc.join(timeout=None if kill else 5)
+        if self.proc.is_alive():
+            self.proc.kill()
+            self.proc.join()
+        self.conn.close()
+
+
+class ProcessPoolExecutor(Executor):
+    """``jobs`` worker processes; a job past its ``timeout`` has its worker killed and replaced.
+
+    Parameters
+    ----------
+    jobs : int
+        Worker processes (default: all cores).
+    window : int, optional
+        Jobs in flight or waiting to be yielded in order (default ``4 * jobs``).
+    """
+
+    def __init__(self, jobs: int | None = None, window: int | None = None):
+        self.jobs = max(1, int(jobs or default_jobs()))
+        self.window = max(self.jobs, int(window or 4 * self.jobs))
+        method = "fork" if "fork" in mp.get_all_start_methods() else "spawn"
+        self._ctx = mp.get_context(method)
+        self._workers: list[_Worker] = []
+
+    def _spawn(self) -> _Worker:
+        w = _Worker(self._ctx)
+        self._workers.append(w)
+        return w
+
+    def _retire(self, w: _Worker, kill: bool) -> None:
+        if w in self._workers:
+            self._workers.remove(w)
+        w.stop(kill=kill)
+
+    def map(self, fn, args, timeout=None):
+        it = iter(args)
+        exhausted = False
+        idle: deque[_Worker] = deque(w for w in self._workers)
+        while len(idle) < self.jobs:
+            idle.append(self._spawn())
+        busy: dict[_Worker, tuple[int, float, float]] = {}  # index, wall and CPU clock at start
+        held: dict[int, Any] = {}  # index -> argument, until yielded
+        done: dict[int, Any] = {}
+        nxt = 0
+        sent = 0
+        while True:
+            while idle and not exhausted and len(held) < self.window:
+                try:
+                    arg = next(it)
+                except StopIteration:
+                    exhausted = True
+                    break
+                w = idle.popleft()
+                held[sent] = arg
+                try:
+                    w.conn.send((sent, fn, arg))
+                    busy[w] = (sent, time.monotonic(), _cpu_seconds(w.proc.pid))
+                except Exception as e:  # noqa: BLE001 - an argument that does not pickle
+                    done[sent] = Failure(f"job not sendable: {_one_line(e)}")
+                    idle.append(w)
+                sent += 1
+            while nxt in done:
+                yield held.pop(nxt), done.pop(nxt)
+                nxt += 1
+            if not busy:
+                if exhausted and not held:
+                    return
+                continue
+            wait_for = None
+            if timeout is not None and timeout > 0:
+                now = time.monotonic()
+                # CPU time is polled: at most every 0.25 s, at least by the wall deadline
+                wait_for = max(0.0, min(0.25, min(t0 + timeout * WALL_FACTOR - now for _, t0, _ in busy.values())))
+            ready = wait([w.conn for w in busy], timeout=wait_for)
+            by_conn = {w.conn: w for w in busy}
+            for c in ready:
+                w = by_conn[c]
+                idx = busy.pop(w)[0]
+                try:
+                    ridx, ok, res = c.recv()
+                    done[idx] = res if ok else Failure(res)
+                    idle.append(w)
+                except (EOFError, OSError) as e:  # the worker died (e.g. out of memory)
+                    code = w.proc.exitcode
+                    done[idx] = Failure(f"worker process died (exit code {code})" if code is not None
+                                        else f"worker process lost: {_one_line(e)}")
+                    self._retire(w, kill=True)
+                    idle.append(self._spawn())
+            if timeout is not None and timeout > 0:
+                now = time.monotonic()
+                for w, (idx, t0, c0) in list(busy.items()):
+                    if now - t0 >= timeout * WALL_FACTOR or _cpu_seconds(w.proc.pid) - c0 >= timeout:
+                        busy.pop(w)
+                        self._retire(w, kill=True)
+                        done[idx] = Overrun(round(now - t0, 1))
+                        idle.append(self._spawn())
+
+    def close(self, kill: bool = False) -> None:
+        for w in list(self._workers):
+            self._retire(w, kill=kill)
+
+
+# ----------------------------------------------------------------------------- Dask
+
+class DaskExecutor(Executor):
+    """Jobs as tasks of a ``dask.distributed`` cluster.
+
+    Parameters
+    ----------
+    client : dask.distributed.Client or str
+        A client, or the scheduler address (``tcp://host:8786``) to connect to.
+    window : int, optional
+        Tasks in flight (default ``4 *`` the cluster's threads).
+
+    Notes
+    -----
+    The workers must see the same file system as this process (they write the output files
+    and the spool); ``lod2energy`` must be importable on them. A task past ``timeout`` is
+    cancelled and reported :class:`Overrun`, but a Dask worker thread cannot be killed: it runs
+    to the end of the repair's own deadline.
+    """
+
+    def __init__(self, client, window: int | None = None):
+        try:
+            from dask.distributed import Client
+        except ImportError as e:  # pragma: no cover - the dask extra missing
+            from lod2energy.errors import ParameterError
+            raise ParameterError("--dask needs dask.distributed: pip install 'lod2energy[dask]'") from e
+        self._own = isinstance(client, str)
+        self.client = Client(client) if self._own else client
+        try:
+            threads = sum(self.client.nthreads().values())
+        except Exception:  # noqa: BLE001
+            threads = 1
+        self.jobs = max(1, threads)
+        self.window = int(window or 4 * self.jobs)
+
+    def map(self, fn, args, timeout=None):
+        from dask.distributed import wait as dwait
+        it = iter(args)
+        queue: deque = deque()  # (arg, future, submitted at)
+        exhausted = False
+        while True:
+            while not exhausted and len(queue) < self.window:
+                try:
+                    arg = next(it)
+                except StopIteration:
+                    exhausted = True
+                    break
+                queue.append((arg, self.client.submit(fn, arg, pure=False), time.monotonic()))
+            if not queue:
+                return
+            arg, fut, t0 = queue.popleft()
+            left = None if not timeout or timeout <= 0 else max(0.0, t0 + timeout - time.monotonic())
+            try:
+                dwait(fut, timeout=left)
+            except Exception:  # noqa: BLE001 - dask's TimeoutError
+                pass
+            if not fut.done():
+                self.client.cancel(fut)
+                yield arg, Overrun(round(time.monotonic() - t0, 1))
+                continue
+            try:
+                yield arg, fut.result()
+            except Exception as e:  # noqa: BLE001 - the task raised on the worker
+                yield arg, Failure(_one_line(e))
+
+    def close(self, kill: bool = False) -> None:
+        if self._own:
+            try:
+                self.client.close()
+            except Exception:  # noqa: BLE001
+                pass
+            self._own = False
+
+
+def make_executor(jobs: int | None = None, dask=None) -> Executor:
+    """The executor for ``--jobs`` / ``--dask``: Dask when ``dask`` (a Client or an address)
+    is given, in-process for ``jobs == 1``, else a process pool of ``jobs`` (None: all cores)."""
+    if dask is not None:
+        return DaskExecutor(dask)
+    n = default_jobs() if jobs is None or jobs <= 0 else int(jobs)
+    return InProcessExecutor() if n == 1 else ProcessPoolExecutor(n)

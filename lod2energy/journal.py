@@ -1,0 +1,127 @@
+"""The run journal: one JSON line per finished step of an export (OUTDIR/report.jsonl).
+
+The journal is what a run has done so far, appended (and fsync'ed) as each building
+finishes, so that an interrupted run leaves a truthful account and ``--resume`` can continue
+from it. ``report.json`` and ``report.csv`` are assembled from it at the end.
+
+Lines (each a JSON object with a ``kind``):
+
+- ``{"kind": "header", "format": 1, "input": PATH, "input_size": N, "input_sha256": H,
+  "options": {...}}`` - first line; a resume only trusts a journal whose header matches;
+- ``{"kind": "building", ...}`` - a :meth:`BuildingRecord.to_json` after the first pass
+  (validate ... per-building writers), for every input object in input order;
+- ``{"kind": "context", "seq": I, "exports": [...]}`` - the writers that needed the
+  building's neighbours (IDF party walls, shading, ``--run``), for building ``seq``;
+- ``{"kind": "dataset_error", "code": C, "message": M}`` - a file-level problem;
+- ``{"kind": "end", "interrupted": null | "SIGINT" | "SIGTERM"}`` - the run's last line.
+
+A later line for the same ``seq`` and kind replaces an earlier one (a resumed run appends).
+"""
+from __future__ import annotations
+
+import hashlib
+import json
+import os
+from pathlib import Path
+from typing import Any, Iterator
+
+from lod2energy.safe_write import atomic_write, check_target, json_default
+
+FORMAT = 1
+JOURNAL_NAME = "report.jsonl"
+
+
+def file_digest(path: str) -> tuple[int, str]:
+    """Size (bytes) and SHA-256 of a file."""
+    h = hashlib.sha256()
+    with open(path, "rb") as f:
+        for chunk in iter(lambda: f.read(1 << 20), b""):
+            h.update(chunk)
+    return os.path.getsize(path), h.hexdigest()
+
+
+def header(input_path: str, options: dict) -> dict:
+    """The header line of a run on ``input_path`` with ``options`` (JSON-ready)."""
+    try:
+        size, sha = file_digest(input_path)
+    except OSError:
+        size, sha = -1, ""
+    return {"kind": "header", "format": FORMAT, "input": os.path.abspath(input_path), "input_size": size,
+            "input_sha256": sha, "options": options}
+
+
+def _dumps(obj: Any) -> str:
+    return json.dumps(obj, ensure_ascii=False, default=json_default, allow_nan=True)
+
+
+class Journal:
+    """Appends lines to OUTDIR/report.jsonl through the safe-write checks.
+
+    Parameters
+    ----------
+    path : path
+        The journal file.
+    root : path
+        OUTDIR (the journal must stay inside it).
+    inputs : sequence of path
+        The command's inputs (never written).
+    head : dict
+        The header line.
+    resume : bool
+        Keep the existing journal when its header equals ``head`` (its lines are then
+        available from :meth:`previous`); otherwise the journal starts anew.
+    """
+
+    def __init__(self, path: str | os.PathLike, root, inputs, head: dict, resume: bool = False):
+        self.path = Path(path)
+        self.root, self.inputs = root, tuple(inputs)
+        self._previous: list[dict] = []
+        self.resumed = False
+        if resume and self.path.is_file():
+            lines = list(read_lines(self.path))
+            if lines and lines[0].get("kind") == "header" and _same_header(lines[0], head):
+                self._previous = [ln for ln in lines[1:] if ln.get("kind") != "end"]
+                self.resumed = True
+        if not self.resumed:
+            with atomic_write(self.path, "w", root=root, inputs=inputs) as f:
+                f.write(_dumps(head) + "\n")
+        check_target(self.path, root, inputs)
+        flags = os.O_WRONLY | os.O_APPEND | getattr(os, "O_NOFOLLOW", 0) | getattr(os, "O_CLOEXEC", 0)
+        self._fd = os.open(self.path, flags)
+
+    def previous(self) -> list[dict]:
+        """The lines of the journal this run resumes (empty for a new run)."""
+        return self._previous
+
+    def append(self, entry: dict, sync: bool = True) -> None:
+        """One line, written whole (one ``write`` call on an ``O_APPEND`` file) and fsync'ed."""
+        data = (_dumps(entry) + "\n").encode("utf-8")
+        os.write(self._fd, data)
+        if sync:
+            os.fsync(self._fd)
+
+    def close(self) -> None:
+        if self._fd is not None:
+            os.close(self._fd)
+            self._fd = None
+
+
+def _same_header(a: dict, b: dict) -> bool:
+    keys = ("format", "input", "input_size", "input_sha256", "options")
+    return json.loads(_dumps({k: a.get(k) for k in keys})) == json.loads(_dumps({k: b.get(k) for k in keys}))
+
+
+
+def read_lines(path: str | os.PathLike) -> Iterator[dict]:
+    """The journal's lines; a torn last line (a crash while appending) is skipped."""
+    with open(path, "r", encoding="utf-8") as f:
+        for ln in f:
+            ln = ln.strip()
+            if not ln:
+                continue
+            try:
+                d = json.loads(ln)
+            except json.JSONDecodeError:
+                continue
+            if isinstance(d, dict):
+                yield d

@@ -1,0 +1,207 @@
+"""Executors: every executor writes the same bytes; timeouts, SIGTERM and --resume."""
+from __future__ import annotations
+
+import json
+import os
+import shutil
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+
+from lod2energy.cli import main
+from lod2energy.executor import Failure, InProcessExecutor, Overrun, ProcessPoolExecutor
+
+from conftest import shared_path
+from spine_inputs import huge_building_line, row_of_boxes_seq, terraced_subset, tree_bytes
+
+REPO = Path(__file__).resolve().parents[1]
+DELFT = REPO / "examples" / "delft_subset.city.jsonl"
+
+
+# ----------------------------------------------------------------------------- executors alone
+
+def _square(x):
+    return x * x
+
+
+def _sleepy(x):
+    time.sleep(x)
+    return x
+
+
+def _boom(x):
+    raise ValueError(f"bad {x}")
+
+
+@pytest.mark.parametrize("make", [InProcessExecutor, lambda: ProcessPoolExecutor(2, window=3)])
+def test_results_come_in_input_order_with_failures_and_overruns(make):
+    with make() as ex:
+        got = list(ex.map(_square, range(7)))
+        assert got == [(i, i * i) for i in range(7)]
+        (arg, res), = list(ex.map(_boom, [3]))
+        assert isinstance(res, Failure) and "ValueError: bad 3" in res.message
+        out = list(ex.map(_sleepy, [0.0, 30.0, 0.0], timeout=1.0))
+        assert [a for a, _ in out] == [0.0, 30.0, 0.0]
+        assert out[0][1] == 0.0 and isinstance(out[1][1], Overrun) and out[2][1] == 0.0
+
+
+def test_pool_replaces_a_killed_worker_and_goes_on():
+    with ProcessPoolExecutor(2) as ex:
+        out = list(ex.map(_sleepy, [30.0, 30.0, 0.0, 0.0], timeout=0.5))
+        assert [type(r) for _, r in out[:2]] == [Overrun, Overrun]
+        assert [r for _, r in out[2:]] == [0.0, 0.0]
+        assert len(ex._workers) == 2 and all(w.proc.is_alive() for w in ex._workers)
+
+
+# ----------------------------------------------------------------------------- byte-identical outputs
+
+def _export(args, out: Path, capsys=None) -> int:
+    rc = main(["export", *args, "-o", str(out), "-q"])
+    if capsys is not None:
+        o, e = capsys.readouterr()
+        assert "Traceback" not in o + e
+    return rc
+
+
+def _runs_agree(src: str, fmt_args: list[str], variants: list[list[str]], tmp_path: Path, capsys) -> dict:
+    """Export ``src`` once per variant into the same OUTDIR; every tree must be byte-identical."""
+    out = tmp_path / "out"
+    trees = []
+    for extra in variants:
+        if out.exists():
+            shutil.rmtree(out)
+        rc = _export([src, *fmt_args, *extra], out, capsys)
+        assert rc in (0, 1)
+        trees.append(tree_bytes(out))
+    first = trees[0]
+    assert any(k.endswith(".idf") for k in first) or "--idf" not in fmt_args
+    for t in trees[1:]:
+        assert sorted(t) == sorted(first)
+        for k in first:
+            assert t[k] == first[k], f"{k} differs between executors"
+    return first
+
+
+ALL = ["--idf", "--stl", "--cityjson"]
+
+
+def test_jobs_2_writes_the_same_bytes_as_jobs_1_on_delft(tmp_path, capsys):
+    tree = _runs_agree(str(DELFT), ALL, [["-j", "1"], ["-j", "2"]], tmp_path, capsys)
+    rep = json.loads(tree["report.json"])
+    assert len(rep["buildings"]) == 10 and "seconds" not in rep
+    assert sum(k.endswith(".stl") for k in tree) == 10 and "report.jsonl" in tree
+
+
+def test_party_walls_and_shading_agree_across_executors_on_a_row_of_boxes(tmp_path, capsys):
+    src = row_of_boxes_seq(tmp_path / "row.city.jsonl", n=5)
+    tree = _runs_agree(src, ALL + ["--shading"], [["-j", "1"], ["-j", "2"]], tmp_path, capsys)
+    idf = tree["b2.idf"].decode()
+    # the middle box shares two walls: adiabatic, and its neighbours shade it
+    assert idf.count("Adiabatic") >= 2 and "Shading:Building:Detailed" in idf
+
+
+def test_terraced_3dbag_subset_with_shading_agrees_across_executors(tmp_path, capsys):
+    tile = shared_path("3dbag", "tile901_trimmed.city.jsonl")
+    if not tile.exists():
+        pytest.skip("3dbag/tile901_trimmed.city.jsonl missing")
+    src = terraced_subset(tile, tmp_path / "terraced.city.jsonl", k=5)
+    assert src is not None
+    tree = _runs_agree(src, ALL + ["--shading"], [["-j", "1"], ["-j", "2"]], tmp_path, capsys)
+    idfs = [v.decode() for k, v in tree.items() if k.endswith(".idf")]
+    assert idfs and any("Adiabatic" in t for t in idfs)
+
+
+def test_dask_local_cluster_writes_the_same_bytes_as_jobs_1(tmp_path, capsys):
+    distributed = pytest.importorskip("dask.distributed")
+    from lod2energy.cli import export_options, build_parser
+    from lod2energy.executor import DaskExecutor
+    from lod2energy.pipeline import RunOptions, export
+
+    src = row_of_boxes_seq(tmp_path / "row.city.jsonl", n=4)
+    out = tmp_path / "out"
+    assert _export([src, *ALL, "--shading", "-j", "1"], out, capsys) in (0, 1)
+    ref = tree_bytes(out)
+    shutil.rmtree(out)
+    a = build_parser().parse_args(["export", src, "-o", str(out), *ALL, "--shading"])
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
+                                  dashboard_address=None) as cluster, distributed.Client(cluster) as client:
+        res = export(src, str(out), export_options(a), RunOptions(quiet=True), executor=DaskExecutor(client))
+    assert res.exit_code in (0, 1)
+    got = tree_bytes(out)
+    assert sorted(got) == sorted(ref)
+    for k in ref:
+        assert got[k] == ref[k], f"{k} differs between Dask and --jobs 1"
+
+
+# ----------------------------------------------------------------------------- time budget
+
+@pytest.mark.parametrize("jobs", ["2", "1"])
+def test_a_100000_face_building_is_reported_timeout_and_the_others_exported(tmp_path, capsys, jobs):
+    src = row_of_boxes_seq(tmp_path / "with_huge.city.jsonl", n=2, touching=False,
+                           extra_lines=[huge_building_line(129)])
+    out = tmp_path / "out"
+    rc = main(["export", src, "-o", str(out), "--stl", "--cityjson", "--timeout", "5", "-j", jobs, "-q"])
+    o, e = capsys.readouterr()
+    assert "Traceback" not in o + e and rc == 1
+    rows = {b["id"]: b for b in json.loads((out / "report.json").read_text())["buildings"]}
+    assert rows["huge"]["outcome"] == "timeout" and "timeout" in rows["huge"]["message"]
+    for bid in ("b0", "b1"):
+        assert rows[bid]["outcome"] == "done" and rows[bid]["stl_ok"] and rows[bid]["cityjson_ok"]
+    assert "huge: timeout" in e or "timeout" in e
+
+
+# ----------------------------------------------------------------------------- SIGTERM and --resume
+
+def _journal_buildings(out: Path) -> int:
+    p = out / "report.jsonl"
+    if not p.exists():
+        return 0
+    return sum('"kind": "building"' in ln for ln in p.read_text().splitlines())
+
+
+def test_sigterm_then_resume_ends_with_the_files_of_an_uninterrupted_run(tmp_path):
+    src = row_of_boxes_seq(tmp_path / "row.city.jsonl", n=12)
+    out = tmp_path / "out"
+    cmd = [sys.executable, "-m", "lod2energy", "export", src, "-o", str(out), *ALL, "-j", "1", "-q"]
+    env = {**os.environ, "PYTHONUNBUFFERED": "1"}
+    assert subprocess.run(cmd, env=env, capture_output=True).returncode == 0
+    ref = tree_bytes(out, skip=(".lod2energy", "report.jsonl"))
+    shutil.rmtree(out)
+
+    p = subprocess.Popen(cmd, env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    t0 = time.monotonic()
+    while _journal_buildings(out) < 3 and time.monotonic() - t0 < 120 and p.poll() is None:
+        time.sleep(0.05)
+    assert p.poll() is None, "the run ended before it could be interrupted"
+    p.send_signal(signal.SIGTERM)
+    _, err = p.communicate(timeout=120)
+    assert p.returncode == 143, err
+    assert "Traceback" not in err and "interrupted by SIGTERM" in err
+    part = json.loads((out / "report.json").read_text())
+    assert part["interrupted"] == "SIGTERM" and 3 <= len(part["buildings"]) < 12
+    done_before = _journal_buildings(out)
+
+    r = subprocess.run(cmd + ["--resume"], env=env, capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    got = tree_bytes(out, skip=(".lod2energy", "report.jsonl"))
+    assert sorted(got) == sorted(ref)
+    for k in ref:
+        assert got[k] == ref[k], f"{k} differs after --resume"
+    # the resumed run re-used the buildings the first one had finished
+    lines = [json.loads(ln) for ln in (out / "report.jsonl").read_text().splitlines()]
+    assert sum(ln["kind"] == "building" for ln in lines) == done_before + 12
+
+
+def test_resume_redoes_a_building_whose_file_changed(tmp_path, capsys):
+    src = row_of_boxes_seq(tmp_path / "row.city.jsonl", n=3, touching=False)
+    out = tmp_path / "out"
+    assert _export([src, "--stl"], out, capsys) == 0
+    stl = out / "b1.stl"
+    good = stl.read_bytes()
+    stl.write_bytes(good[:-10])
+    assert _export([src, "--stl", "--resume"], out, capsys) == 0
+    assert stl.read_bytes() == good
