@@ -192,12 +192,25 @@ def _compiled(version: str) -> tuple[Any, Any]:
             fastjsonschema.compile(feat, handlers=handlers, **_COMPILE) if feat else None)
 
 
+#: Compiling a schema version costs about 2 s once per process, as much as interpreting the
+#: schema on some 25 CityObjects: smaller files are left to the interpreted validators unless
+#: the compiled ones are already built.
+COMPILE_MIN_OBJECTS = 25
+_COMPILED_VERSIONS: set[str] = set()
+
+
+def _worth_compiling(version: str, n_objects: int) -> bool:
+    """Use the compiled validator: a large file, or one already built for ``version``."""
+    return n_objects >= COMPILE_MIN_OBJECTS or version in _COMPILED_VERSIONS
+
+
 def _schema_valid_fast(version: str, doc: Any, feature: bool = False) -> bool:
     """True when the compiled validator accepts ``doc``. Only a shortcut for valid files:
     False (or no compiled validator) sends the document to the interpreted validators of
     :func:`_schema_errors`, which give the messages and the final verdict."""
     import fastjsonschema
 
+    _COMPILED_VERSIONS.add(version)
     v = _compiled(version)[1 if feature else 0]
     if v is None:
         return False
@@ -706,13 +719,15 @@ def self_check(path: str, extension: Mapping | None = None, tol=None) -> list[st
     schemas = _validators(version)
     # a document the compiled validator accepts has no schema error: the interpreted
     # validators (slow, with the messages) only see the documents it rejects
-    if not _schema_valid_fast(version, head):
+    n_objects = sum(len(d.get("CityObjects") or {}) for _, d in docs if isinstance(d, Mapping))
+    fast = _worth_compiling(version, n_objects)
+    if not (fast and _schema_valid_fast(version, head)):
         problems += _schema_errors(schemas, head, docs[0][0])
     for what, d in docs[1:]:
         if schemas.feature is None:
             problems.append(f"{what}: CityJSONFeature needs CityJSON 1.1 or later")
             break
-        if not _schema_valid_fast(version, d, feature=True):
+        if not (fast and _schema_valid_fast(version, d, feature=True)):
             problems += _schema_errors(schemas, d, what, feature=True)
         if len(problems) > _MAX_PROBLEMS:
             break

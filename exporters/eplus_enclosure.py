@@ -89,17 +89,30 @@ def eplus_collinear(points: np.ndarray) -> list[int]:
     return [int(i) for i in np.nonzero(seen & (np.abs(np.sin(turn)) < TURN_THRESHOLD))[0]]
 
 
+def _drop_coincident(points: np.ndarray, floor: int) -> np.ndarray:
+    """``GetVertices``' coincident test: a vertex closer than :data:`COINCIDENT` to the
+    previous kept one is dropped, then the last ones while closer than that to the first and
+    more than ``floor`` remain. (k, 3) -> (k', 3), a new array."""
+    P = np.asarray(points, dtype=np.float64).reshape(-1, 3)
+    if len(P) > 1 and np.all(np.linalg.norm(P[1:] - P[:-1], axis=1) >= COINCIDENT):
+        keep = P.copy()      # no vertex dropped: each one's previous kept vertex is its predecessor
+    else:                    # sequential: whether a vertex stays depends on the one kept before it
+        rows = [P[0]] if len(P) else []
+        for p in P[1:]:
+            if np.linalg.norm(p - rows[-1]) >= COINCIDENT:
+                rows.append(p)
+        keep = np.asarray(rows, dtype=np.float64).reshape(-1, 3)
+    n = len(keep)
+    while n > floor and np.linalg.norm(keep[0] - keep[n - 1]) < COINCIDENT:
+        n -= 1
+    return keep[:n]
+
+
 def eplus_degenerate(points: np.ndarray) -> bool:
     """Would EnergyPlus call the surface degenerate (fewer than 3 sides once coincident and
     collinear vertices are removed: a severe error)?"""
-    pts = [np.asarray(p, dtype=np.float64) for p in points]
-    keep = [pts[0]] if pts else []
-    for p in pts[1:]:
-        if np.linalg.norm(p - keep[-1]) >= COINCIDENT:
-            keep.append(p)
-    while len(keep) > 1 and np.linalg.norm(keep[0] - keep[-1]) < COINCIDENT:
-        keep.pop()
-    return len(keep) - len(eplus_collinear(np.asarray(keep).reshape(-1, 3))) < 3
+    keep = _drop_coincident(points, 1)
+    return len(keep) - len(eplus_collinear(keep)) < 3
 
 
 def eplus_vertices(points: np.ndarray) -> np.ndarray:
@@ -109,14 +122,7 @@ def eplus_vertices(points: np.ndarray) -> np.ndarray:
     (``GetVertices``), then the vertices :func:`eplus_collinear` finds, while at least three
     remain (``CheckConvexity``).
     """
-    pts = [np.asarray(p, dtype=np.float64) for p in points]
-    keep = [pts[0]] if pts else []
-    for p in pts[1:]:
-        if np.linalg.norm(p - keep[-1]) >= COINCIDENT:
-            keep.append(p)
-    while len(keep) > 3 and np.linalg.norm(keep[0] - keep[-1]) < COINCIDENT:
-        keep.pop()
-    q = np.asarray(keep, dtype=np.float64).reshape(-1, 3)
+    q = _drop_coincident(points, 3)
     drop = eplus_collinear(q)
     if drop and len(q) - len(drop) >= 3:
         q = np.delete(q, drop, axis=0)

@@ -10,7 +10,33 @@ from typing import Sequence
 
 import numpy as np
 
-from lod2energy.exporters.eplus_enclosure import BadEdge, POINT_TOL, eplus_vertices
+from lod2energy.exporters.eplus_enclosure import COINCIDENT, BadEdge, POINT_TOL, eplus_collinear
+
+
+def reference_eplus_degenerate(points: np.ndarray) -> bool:
+    pts = [np.asarray(p, dtype=np.float64) for p in points]
+    keep = [pts[0]] if pts else []
+    for p in pts[1:]:
+        if np.linalg.norm(p - keep[-1]) >= COINCIDENT:
+            keep.append(p)
+    while len(keep) > 1 and np.linalg.norm(keep[0] - keep[-1]) < COINCIDENT:
+        keep.pop()
+    return len(keep) - len(eplus_collinear(np.asarray(keep).reshape(-1, 3))) < 3
+
+
+def reference_eplus_vertices(points: np.ndarray) -> np.ndarray:
+    pts = [np.asarray(p, dtype=np.float64) for p in points]
+    keep = [pts[0]] if pts else []
+    for p in pts[1:]:
+        if np.linalg.norm(p - keep[-1]) >= COINCIDENT:
+            keep.append(p)
+    while len(keep) > 3 and np.linalg.norm(keep[0] - keep[-1]) < COINCIDENT:
+        keep.pop()
+    q = np.asarray(keep, dtype=np.float64).reshape(-1, 3)
+    drop = eplus_collinear(q)
+    if drop and len(q) - len(drop) >= 3:
+        q = np.delete(q, drop, axis=0)
+    return q
 
 
 class _Grid:
@@ -146,7 +172,7 @@ def reference_enclosure_defects(surfaces: Sequence[np.ndarray], tol: float = POI
         both counts (what EnergyPlus lists in its warning) or, when none fails both, those
         that fail the second count.
     """
-    faces = [eplus_vertices(np.asarray(s, dtype=np.float64)) for s in surfaces]
+    faces = [reference_eplus_vertices(np.asarray(s, dtype=np.float64)) for s in surfaces]
     first = reference_edges_not_two(faces, tol)
     if not first:
         return []

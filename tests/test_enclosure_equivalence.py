@@ -9,7 +9,8 @@ from lod2energy.exporters import eplus_enclosure as ee
 from lod2energy.exporters import idf
 
 from _enclosure_reference import (reference_edges_not_two, reference_enclosure_defects,
-                                  reference_eplus_merge, reference_insert_collinear,
+                                  reference_eplus_degenerate, reference_eplus_merge,
+                                  reference_eplus_vertices, reference_insert_collinear,
                                   reference_unique_vertices)
 from export_helpers import DATA, energy_ready, real_buildings
 
@@ -31,6 +32,9 @@ def _same_defects(a, b) -> bool:
 def assert_agree(surfaces) -> None:
     """Every step of the emulation gives what the reference gives, bit for bit."""
     faces = [ee.eplus_vertices(np.asarray(s, dtype=np.float64)) for s in surfaces]
+    for s, f in zip(surfaces, faces):
+        assert np.array_equal(f, reference_eplus_vertices(s))
+        assert ee.eplus_degenerate(s) == reference_eplus_degenerate(s)
     allp = np.concatenate(faces)
     u_new, i_new = ee.eplus_merge(allp)
     u_ref, i_ref = reference_eplus_merge(allp)
@@ -122,3 +126,14 @@ def test_real_zones_agree(tmp_path, monkeypatch, rel, n):
     assert seen
     for surfaces in seen:
         assert_agree(surfaces)
+
+
+def test_near_degenerate_surfaces_agree():
+    """Surfaces at EnergyPlus's coincident/collinear limits (tests/test_eplus_degenerate.py)."""
+    from test_eplus_degenerate import near_degenerate
+    rng = np.random.default_rng(5)
+    for _ in range(400):
+        P = near_degenerate(rng)
+        assert np.array_equal(ee.eplus_vertices(P), reference_eplus_vertices(P))
+        assert ee.eplus_degenerate(P) == reference_eplus_degenerate(P)
+        assert ee.eplus_degenerate(P[:2]) == reference_eplus_degenerate(P[:2])
