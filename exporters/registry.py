@@ -117,21 +117,22 @@ def _idf_halo(options) -> float:
     return float(options.shading_radius) if getattr(options, "shading", False) else 1.0
 
 
-def _write_idf(buildings, outdir, options, *, crs=None, context=(), model=None, stem="out", tol=None):
+def _write_idf(buildings, outdir, options, *, crs=None, context=(), model=None, stem="out", tol=None, frame=None):
     from lod2energy.exporters import idf
-    return _records("idf", idf.write(buildings, outdir, options, crs=crs, context=context))
+    return _records("idf", idf.write(buildings, outdir, options, crs=crs, context=context, frame=frame))
 
 
 def _stl_sidecar(path: str) -> list[str]:
     return [path[:-4] + ".json"] if path.endswith(".stl") else []
 
 
-def _write_stl(buildings, outdir, options, *, crs=None, context=(), model=None, stem="out", tol=None):
+def _write_stl(buildings, outdir, options, *, crs=None, context=(), model=None, stem="out", tol=None, frame=None):
     from lod2energy.exporters import stl
     return _records("stl", stl.write(buildings, outdir, options, crs=crs), _stl_sidecar)
 
 
-def _write_cityjson(buildings, outdir, options, *, crs=None, context=(), model=None, stem="out", tol=None):
+def _write_cityjson(buildings, outdir, options, *, crs=None, context=(), model=None, stem="out", tol=None,
+                    frame=None):
     """One Energy-ADE CityJSON for all ``buildings``: a record for each, ok or left out."""
     from lod2energy.exporters import cityjson
     buildings = list(buildings)
@@ -180,7 +181,22 @@ def _stl_check(path: str) -> list[str]:
     return stl.self_check(path)
 
 
+def _write_cfd(buildings, outdir, options, *, crs=None, context=(), model=None, stem="out", tol=None, frame=None):
+    """The OpenFOAM case ``OUTDIR/cfd`` of the region's buildings (:func:`lod2energy.cfd.export_case`):
+    one record for every building in the case; ``buildings`` may hold a TINRelief (the ground)."""
+    from lod2energy.cfd import export_case
+    res = export_case(list(buildings), model, outdir, options)
+    rec = ExportRecord("cfd", bool(res.ok), str(res.path), tuple(res.problems), {"cfd": dict(res.stats)})
+    return WriteResults([(tuple(res.building_ids), rec)])
+
+
+def _cfd_check(path: str) -> list[str]:
+    from lod2energy import openfoam
+    return [] if openfoam.surface_check_binary() is None else []  # the case checks itself (surfaceCheck, checkMesh)
+
+
 register_writer("cityjson", _write_cityjson, _cityjson_check, scope="dataset")
 register_writer("idf", _write_idf, _idf_check, scope=_idf_scope, halo=_idf_halo)
 register_writer("stl", _write_stl, _stl_check,
                 scope=lambda options: "dataset" if getattr(options, "mode", "building") == "dataset" else "building")
+register_writer("cfd", _write_cfd, _cfd_check, scope="dataset")

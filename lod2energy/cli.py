@@ -76,6 +76,8 @@ def build_parser() -> argparse.ArgumentParser:
     add_validate_parser(sub)
     add_repair_parser(sub)
     add_export_parser(sub)
+    from lod2energy.viz.view import add_view_parser
+    add_view_parser(sub)
     return p
 
 
@@ -87,6 +89,8 @@ def add_validate_parser(sub) -> argparse.ArgumentParser:
                        epilog=EXIT_HELP, formatter_class=argparse.RawDescriptionHelpFormatter)
     v.add_argument("files", nargs="+", metavar="FILE")
     v.add_argument("--report", metavar="OUT.json", help="write the JSON report (val3dity's shape + energy blocks)")
+    v.add_argument("--html", metavar="OUT.html", default=None,
+                   help="write a self-contained HTML report (summary, plots, plan view, per-building panels)")
     v.add_argument("-q", "--quiet", action="store_true", help="no progress bar and no table")
     _add_tolerances(v)
     _add_mesh_options(v)
@@ -103,6 +107,8 @@ def add_repair_parser(sub) -> argparse.ArgumentParser:
     r.add_argument("input", metavar="IN")
     r.add_argument("-o", "--output", required=True, metavar="OUT")
     r.add_argument("--report", metavar="R.json", help="write the per-building repair report")
+    r.add_argument("--html", metavar="R.html", default=None,
+                   help="write a self-contained HTML report (input and repaired buildings side by side)")
     r.add_argument("--timeout", type=float, default=30.0, metavar="S",
                    help="time budget per building in seconds before escalating/giving up (default 30)")
     r.add_argument("--merge-parts", action="store_true", help="merge overlapping BuildingParts (601) into one solid")
@@ -140,7 +146,18 @@ def add_export_parser(sub) -> argparse.ArgumentParser:
                    help="time budget per building (default 30 s): the repair escalates when it is spent, "
                    "and a building still running a little later is stopped and reported 'timeout'")
     e.add_argument("--merge-parts", action="store_true")
+    e.add_argument("--no-html", action="store_true", help="do not write OUTDIR/report.html")
     e.add_argument("-q", "--quiet", action="store_true")
+    from lod2energy.thermal.use import USE_TYPES
+    g = e.add_argument_group("energy model (IDF)")
+    g.add_argument("--zoning", choices=("storey", "building"), default="storey",
+                   help="one thermal zone per storey (default) or per Building/BuildingPart")
+    g.add_argument("--attic", choices=("conditioned", "unconditioned"), default="unconditioned",
+                   help="the space under a pitched roof: heated/cooled with loads, or not (default)")
+    g.add_argument("--use", choices=USE_TYPES, default=None,
+                   help="use type for every building (default: from function/usage/gebruiksdoel/building attributes)")
+    from lod2energy.cfd import add_cli_arguments
+    add_cli_arguments(e.add_argument_group("CFD case (OpenFOAM v1912)"))
     add_run_options(e)
     _add_tolerances(e)
     return e
@@ -190,10 +207,17 @@ def cmd_validate(a) -> int:
     if a.report:
         from lod2energy.safe_write import check_target
         check_target(a.report, None, a.files)  # never over an input (exit 2)
+    if getattr(a, "html", None):
+        from lod2energy.safe_write import check_target
+        check_target(a.html, None, a.files)
     reports, rows = [], []
+    html_inputs: dict = {}
     worst = EXIT_OK
     for path in a.files:
         model, feats = read(path, primitive=a.primitive, inner_shells=a.inner_shell)
+        if getattr(a, "html", None):
+            from lod2energy.viz.report import keep
+            feats = keep(feats, html_inputs)
         note_frame(path, model)
         tick, close = _progress(a.quiet, os.path.basename(path))
         try:
@@ -220,6 +244,14 @@ def cmd_validate(a) -> int:
         out = reports[0] if len(reports) == 1 else {"type": "lod2energy_reports", "reports": reports}
         from lod2energy.safe_write import write_json
         write_json(a.report, out, inputs=a.files)
+    if getattr(a, "html", None):
+        from lod2energy.pipeline import json_ready
+        try:
+            from lod2energy.viz.report import write_report_html
+            out = reports[0] if len(reports) == 1 else {"type": "lod2energy_reports", "reports": reports}
+            write_report_html(json_ready(out), a.html, inputs=html_inputs, tol=tol, input_files=a.files)
+        except Exception as e:  # noqa: BLE001 - the page is a view of the report
+            _err(f"{a.html} not written: {type(e).__name__}: {e}")
     return worst
 
 
@@ -238,16 +270,21 @@ def export_options(a) -> "ExportOptions":
     formats = tuple(f for f in FORMATS if getattr(a, f))
     idf = IdfOptions(**{k: v for k, v in dict(
         mode=a.idf_mode, version=a.energyplus_version, shading=a.shading, run=a.run, weather=a.weather,
-        lod=a.lod, wwr=a.wwr).items() if v is not None})
+        lod=a.lod, wwr=a.wwr, zoning=getattr(a, "zoning", None), attic=getattr(a, "attic", None),
+        use=getattr(a, "use", None)).items() if v is not None})
+    cfd = None
+    if getattr(a, "cfd", False):
+        from lod2energy.cfd import options_from_args
+        cfd = options_from_args(a)
     return ExportOptions(formats, prepare_options(a, _tolerances(a)), idf,
                          StlOptions(mode=a.stl_mode, ascii=a.stl_ascii, lod=a.lod),
-                         CityJsonOptions(a.cityjson_version))
+                         CityJsonOptions(a.cityjson_version), cfd=cfd, html=not getattr(a, "no_html", False))
 
 
 def cmd_export(a) -> int:
     from lod2energy.pipeline import RunOptions, export, print_export_summary
-    if not (a.idf or a.stl or a.cityjson):
-        raise _UsageError("choose at least one of --idf, --stl, --cityjson")
+    if not (a.idf or a.stl or a.cityjson or getattr(a, "cfd", False)):
+        raise _UsageError("choose at least one of --idf, --stl, --cityjson, --cfd")
     if a.wwr is not None and not (0.0 <= a.wwr < 1.0):
         raise _UsageError("--wwr must be in [0, 1)")
     for c in ("wall", "roof", "ground", "window"):
@@ -265,6 +302,11 @@ def cmd_export(a) -> int:
     return res.exit_code
 
 
+def _commands() -> dict:
+    from lod2energy.viz.view import cmd_view
+    return {"validate": cmd_validate, "repair": cmd_repair, "export": cmd_export, "view": cmd_view}
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = build_parser()
     a = parser.parse_args(argv)
@@ -275,7 +317,7 @@ def main(argv: list[str] | None = None) -> int:
     from lod2energy.pipeline import Interrupted, _Signals
     try:
         with _Signals():  # SIGTERM ends every command as ^C does: one line, exit 143
-            rc = {"validate": cmd_validate, "repair": cmd_repair, "export": cmd_export}[a.command](a)
+            rc = _commands()[a.command](a)
     except Interrupted as e:
         _err(f"interrupted by {e.name}")
         return e.code

@@ -41,7 +41,7 @@ EXIT_OK, EXIT_INVALID, EXIT_UNUSABLE = 0, 1, 2
 EXIT_SIGINT, EXIT_SIGTERM = 130, 143
 
 #: Writers in the order they run and appear in the options.
-FORMATS = ("cityjson", "idf", "stl")
+FORMATS = ("cityjson", "idf", "stl", "cfd")
 
 
 # ============================================================================ options
@@ -103,6 +103,10 @@ class ExportOptions:
     idf : IdfOptions
     stl : StlOptions
     cityjson : CityJsonOptions
+    cfd : lod2energy.cfd.CfdOptions or None
+        The OpenFOAM case (``--cfd``).
+    html : bool
+        Write ``report.html`` (the method's pictures) beside ``report.json``.
     hard_timeout : float or None, s
         Limit of one building's first-pass job, enforced by the executor (CPU time of the
         worker, or ten times that of wall time; the worker is killed and replaced, the
@@ -115,9 +119,11 @@ class ExportOptions:
     stl: Any = field(default_factory=_stl_default)
     cityjson: Any = field(default_factory=_cityjson_default)
     hard_timeout: float | None = None
+    cfd: Any = None
+    html: bool = True
 
     def writer_options(self, name: str):
-        return {"idf": self.idf, "stl": self.stl, "cityjson": self.cityjson}[name]
+        return {"idf": self.idf, "stl": self.stl, "cityjson": self.cityjson, "cfd": self.cfd}[name]
 
     @property
     def job_timeout(self) -> float | None:
@@ -330,7 +336,7 @@ def _attach(rec: BuildingRecord, fmt: str, pairs) -> BuildingRecord:
 
 
 def process_building(b: Building, options: ExportOptions, outdir: str, seq: int = 0,
-                     crs: str | None = None) -> tuple[Building, BuildingRecord]:
+                     crs: str | None = None, frame=None) -> tuple[Building, BuildingRecord]:
     """The whole job of one building: :func:`prepare_building`, then the chosen writers that
     need no other building (their self-checks included). Pure but for the files it writes
     into ``outdir``; picklable (a module-level function of picklable arguments)."""
@@ -343,7 +349,7 @@ def process_building(b: Building, options: ExportOptions, outdir: str, seq: int 
         if w.scope(wopts) != "building":
             continue
         try:
-            pairs = w.write([pb], outdir, wopts, crs=crs, tol=options.prepare.tol)
+            pairs = w.write([pb], outdir, wopts, crs=crs, tol=options.prepare.tol, frame=frame)
         except Exception as e:  # noqa: BLE001 - a geometry the writer cannot take
             pairs = [((pb.id,), ExportRecord(w.name, False, "", (f"{w.name.upper()} not written: "
                                                                  f"{type(e).__name__}: {e}",)))]
@@ -361,6 +367,7 @@ class Job:
     outdir: str
     spool: str
     crs: str | None = None
+    frame: Any = None
 
 
 def spool_path(spool: str, seq: int) -> str:
@@ -389,7 +396,7 @@ def first_pass(task: tuple) -> BuildingRecord | None:
     if kind == "other":
         _spool(job, seq, payload)
         return None
-    pb, rec = process_building(payload, job.options, job.outdir, seq, job.crs)
+    pb, rec = process_building(payload, job.options, job.outdir, seq, job.crs, job.frame)
     _spool(job, seq, pb)
     return rec
 
@@ -407,7 +414,8 @@ def context_pass(task: tuple) -> list[ExportRecord]:
         if w.scope(wopts) != "context":
             continue
         try:
-            pairs = w.write([b], job.outdir, wopts, crs=job.crs, context=context, tol=job.options.prepare.tol)
+            pairs = w.write([b], job.outdir, wopts, crs=job.crs, context=context, tol=job.options.prepare.tol,
+                            frame=job.frame)
         except Exception as e:  # noqa: BLE001 - reported for this building, the rest goes on
             pairs = [((b.id,), ExportRecord(w.name, False, "", (f"{w.name.upper()} not written: "
                                                                 f"{type(e).__name__}: {e}",)))]
@@ -630,7 +638,7 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
     out = os.path.abspath(outdir)
     spool = os.path.join(out, ".lod2energy", "spool")
     os.makedirs(spool, exist_ok=True)
-    job = Job(options, out, spool, model.crs)
+    job = Job(options, out, spool, model.crs, getattr(model, "frame", None))
     chosen = writers(options.formats)
     scope = {w.name: w.scope(options.writer_options(w.name)) for w in chosen}
     per_building = [n for n, s in scope.items() if s == "building"]
@@ -759,6 +767,8 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
         close_bar()
     rows = [records[s] for s in sorted(records)]
     report = _write_reports(out, input_path, model, rows, dataset_errors, interrupted, inputs)
+    if options.html:
+        write_html_report(report, input_path, records, job.spool, out, options.prepare.tol, inputs)
     journal.append({"kind": "end", "interrupted": interrupted[0] if interrupted else None})
     journal.close()
     if interrupted:
@@ -807,9 +817,11 @@ def _dataset_pass(w, options: ExportOptions, job: Job, records: dict, others: li
     else:
         seqs = [s for s, r in sorted(records.items()) if r.outcome == "done" and r.energy.geometry_ready]
         bs = [load_spooled(job.spool, s) for s in seqs]
+        if w.name == "cfd":  # the file's terrain (TINRelief) is the case's ground
+            bs += [load_spooled(job.spool, s) for s in sorted(others)]
     try:
         pairs = w.write(bs, job.outdir, wopts, crs=job.crs, model=model, stem=stem_of(input_path),
-                        tol=options.prepare.tol)
+                        tol=options.prepare.tol, frame=job.frame)
     except Exception as e:  # noqa: BLE001 - reported for every building of the file
         pairs = [((records[s].id,), ExportRecord(w.name, False, "", (f"{w.name.upper()} not written: "
                                                                       f"{type(e).__name__}: {e}",)))
@@ -849,6 +861,38 @@ def _write_reports(out: str, input_path: str, model, rows: list[BuildingRecord],
         for r in rows:
             w.writerow(r.row())
     return path
+
+
+def json_ready(doc):
+    """``doc`` as it reads back from JSON (numpy values, tuples and mappings made plain)."""
+    import json
+    from lod2energy.safe_write import json_default
+    return json.loads(json.dumps(doc, default=json_default))
+
+
+def write_html_report(report_path: str, input_path: str, records: dict, spool: str, out: str,
+                      tol: Tolerances = DEFAULT, inputs=()) -> str:
+    """``OUTDIR/report.html`` (:mod:`lod2energy.viz`) from the report, the input buildings and the
+    prepared ones of the spool; a page that cannot be written costs one line, never the export."""
+    import json
+    try:
+        from lod2energy.viz.report import panel_ids, read_buildings, write_report_html
+        from lod2energy.viz import data as viz_data
+        with open(report_path, encoding="utf-8") as f:
+            doc = json.load(f)
+        src = read_buildings(input_path) if os.path.isfile(input_path) else {}
+        ids, _ = panel_ids(viz_data.rows(doc))
+        wanted = set(ids)
+        outputs = {}
+        for s, r in sorted(records.items()):
+            if r.id in wanted and r.outcome == "done" and os.path.exists(spool_path(spool, s)):
+                outputs[r.id] = load_spooled(spool, s)
+        path = os.path.join(out, "report.html")
+        write_report_html(doc, path, inputs=src, outputs=outputs, tol=tol, root=out, input_files=list(inputs))
+        return path
+    except Exception as e:  # noqa: BLE001 - the page is a view of the report, not an output to check
+        _err(f"report.html not written: {type(e).__name__}: {e}")
+        return ""
 
 
 def print_export_summary(records: Iterable[BuildingRecord], formats: Iterable[str], outdir: str) -> None:
@@ -901,6 +945,11 @@ def repair_file(a, tol: Tolerances) -> int:
     out_b: list[Building] = []
     records: list[dict] = []
     lost: list[dict] = []
+    html_inputs: dict = {}
+    if getattr(a, "html", None):
+        from lod2energy.viz.report import keep
+        check_target(a.html, None, [a.input, a.output])
+        feats = keep(feats, html_inputs)
     tick, close = _progress(a.quiet, os.path.basename(a.input))
     worst = EXIT_OK
     try:
@@ -929,10 +978,17 @@ def repair_file(a, tol: Tolerances) -> int:
     check_target(a.output, None, [a.input])
     cityjson.write(a.output, model, out_b)
     table = dataset_table(out_b)
+    doc = {"input_file": a.input, "output_file": a.output, **frame_entry(model),
+           "summary": table, "buildings": records, "unreadable": lost}
     if a.report:
-        write_json(a.report, {"input_file": a.input, "output_file": a.output, **frame_entry(model),
-                              "summary": table, "buildings": records, "unreadable": lost},
-                   inputs=[a.input, a.output])
+        write_json(a.report, doc, inputs=[a.input, a.output])
+    if getattr(a, "html", None):
+        try:
+            from lod2energy.viz.report import write_report_html
+            write_report_html(json_ready(doc), a.html, inputs=html_inputs, outputs={b.id: b for b in out_b},
+                              tol=tol, input_files=[a.input, a.output])
+        except Exception as e:  # noqa: BLE001 - the page is a view of the report
+            _err(f"{a.html} not written: {type(e).__name__}: {e}")
     if not a.quiet:
         _print_repair_summary(table)
     return worst

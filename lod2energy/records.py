@@ -249,7 +249,7 @@ class ExportRecord:
 #: Columns of report.csv, in order (the report's flat row; extended, never reduced).
 CSV_FIELDS = ["id", "type", "input_errors", "output_errors", "repair_stage", "iou", "mean_displacement_m",
               "compliant", "status", "typology", "construction_period", "roof_m2", "wall_m2", "ground_m2",
-              "A_env_m2", "volume_m3", "UA_W_per_K", "cityjson_ok", "idf_ok", "stl_ok", "heating_kwh",
+              "A_env_m2", "volume_m3", "UA_W_per_K", "cityjson_ok", "idf_ok", "stl_ok", "cfd_ok", "heating_kwh",
               "cooling_kwh", "message", "outcome"]
 
 
