@@ -326,6 +326,21 @@ def _strip_to_energy(b: Building, lod: str | None, keep_other_lods: bool) -> Bui
     return replace(b, objects=tuple(objs))
 
 
+def acceptance_problem(b: Building, lod: str | None) -> str | None:
+    """The checks of an energy building besides its val3dity validity: a Building with thermal
+    data and an envelope at ``lod`` that is closed, outward, labelled and has U-values; the first
+    problem, or None. The pipeline's final check and this writer's both start with it."""
+    if b.type != "Building":
+        return f"not a Building (type {b.type!r})"
+    if "thermal" not in b.provenance:
+        return "no thermal data (labels / U-values not assigned)"
+    energy = envelope_objects(b, lod)
+    if not energy:
+        return "no polygonal geometry at the energy LoD"
+    probs = _envelope_problems(b, energy)
+    return probs[0] if probs else None
+
+
 def _ready_problem(b: Building, lod: str | None, keep_other_lods: bool = False, tol=None) -> str | None:
     """Why ``b`` cannot be exported as an energy building (None when it can).
 
@@ -335,16 +350,9 @@ def _ready_problem(b: Building, lod: str | None, keep_other_lods: bool = False, 
     from lod2energy.config import DEFAULT
     from lod2energy.validate.checks import validate_building
 
-    if b.type != "Building":
-        return f"not a Building (type {b.type!r})"
-    if "thermal" not in b.provenance:
-        return "no thermal data (labels / U-values not assigned)"
-    energy = envelope_objects(b, lod)
-    if not energy:
-        return "no polygonal geometry at the energy LoD"
-    probs = _envelope_problems(b, energy)
-    if probs:
-        return probs[0]
+    why = acceptance_problem(b, lod)
+    if why is not None:
+        return why
     defects = [d for d in validate_building(_strip_to_energy(b, lod, keep_other_lods), tol or DEFAULT)
                if d.code not in TOLERATED_CODES]
     if defects:

@@ -999,34 +999,17 @@ def opening_polygon(op: Opening, piece: np.ndarray) -> np.ndarray | None:
 # --------------------------------------------------------------------------- weather
 
 def read_epw_header(path: str | Path) -> tuple[dict, list[float] | None]:
-    """``Site:Location`` fields and 12 monthly ground temperatures (C, ~2 m depth) from an EPW."""
+    """``Site:Location`` fields and 12 monthly ground temperatures (C, ~2 m depth) from an EPW
+    (read by :func:`lod2energy.site.read_weather_header`; the Heino site when it has no LOCATION)."""
+    from lod2energy.site import read_weather_header
+
     site = dict(DEFAULT_SITE)
-    ground = None
-    try:
-        with open(path, encoding="latin-1") as f:
-            lines = [next(f) for _ in range(8)]
-    except (OSError, StopIteration):
+    h = read_weather_header(path)
+    if h is None:
         return site, None
-    loc = lines[0].strip().split(",")
-    if loc[0].upper() == "LOCATION" and len(loc) >= 10:
-        try:
-            site = {"name": sanitize_name("_".join(x for x in loc[1:4] if x), 60),
-                    "latitude": float(loc[6]), "longitude": float(loc[7]),
-                    "time_zone": float(loc[8]), "elevation": float(loc[9])}
-        except ValueError:
-            pass
-    for line in lines:
-        parts = line.strip().split(",")
-        if parts[0].upper() == "GROUND TEMPERATURES" and len(parts) > 2:
-            try:
-                k = int(parts[1])
-                blocks = [parts[2 + i * 16: 2 + (i + 1) * 16] for i in range(k)]
-                depths = [float(b[0]) for b in blocks]
-                best = int(np.argmin([abs(d - 2.0) for d in depths]))
-                ground = [float(x) for x in blocks[best][4:16]]
-            except (ValueError, IndexError):
-                ground = None
-    return site, ground
+    site = {"name": sanitize_name(h.name, 60), "latitude": h.latitude, "longitude": h.longitude,
+            "time_zone": h.time_zone, "elevation": h.elevation}
+    return site, (list(h.ground_temperatures) if h.ground_temperatures is not None else None)
 
 
 # --------------------------------------------------------------------------- writing

@@ -210,19 +210,13 @@ def final_check(b: Building, defects, lod: str | None, tol: Tolerances = DEFAULT
     envelope closed, outward, labelled, with U-values, val3dity-valid at the energy LoD),
     on the already computed ``defects`` of the final geometry at the user's tolerances.
     """
-    from lod2energy.exporters.cityjson import TOLERATED_CODES, _envelope_problems
+    from lod2energy.exporters.cityjson import TOLERATED_CODES, acceptance_problem
     from lod2energy.semantics import envelope_objects
 
-    if b.type != "Building":
-        return f"not a Building (type {b.type!r})"
-    if "thermal" not in b.provenance:
-        return "no thermal data (labels / U-values not assigned)"
+    why = acceptance_problem(b, lod)
+    if why is not None:
+        return why
     energy = envelope_objects(b, lod)
-    if not energy:
-        return "no polygonal geometry at the energy LoD"
-    probs = _envelope_problems(b, energy)
-    if probs:
-        return probs[0]
     heads = {f"coid={o.id}|geom={gi}" for o, gi, _ in energy}
     ids = {o.id for o, _, _ in energy}
     bad = []

@@ -45,14 +45,9 @@ def _untimed(obj: Any) -> Any:
         return {str(k): _untimed(v) for k, v in obj.items() if k not in TIMING_KEYS}
     if isinstance(obj, (list, tuple)):
         return [_untimed(v) for v in obj]
-    try:
-        import numpy as np
-        if isinstance(obj, np.generic):
-            return obj.item()
-        if isinstance(obj, np.ndarray):
-            return obj.tolist()
-    except ImportError:  # pragma: no cover
-        pass
+    if type(obj).__module__ == "numpy":
+        from lod2energy.safe_write import json_default
+        return json_default(obj)
     return obj
 
 
