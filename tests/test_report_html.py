@@ -15,7 +15,8 @@ from lod2energy.pipeline import prepare
 from lod2energy.validate.checks import validate_building
 from lod2energy.viz import data as D
 from lod2energy.viz import render as R
-from lod2energy.viz.report import panel_ids, render_report_html, write_report_for, write_report_html
+from lod2energy.viz.report import panel_ids, render_report_html, write_report_html
+from lod2energy.viz.view import write_report_for
 
 from conftest import shared_path
 from factories import BOX_SEMANTICS, box, box_polygons, building_from_polygons, open_box

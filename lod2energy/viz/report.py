@@ -13,7 +13,6 @@ from __future__ import annotations
 
 import json
 import os
-import time
 from pathlib import Path
 
 import numpy as np
@@ -130,7 +129,6 @@ def render_report_html(report: dict, *, inputs: dict | None = None, outputs: dic
                        cap: int = DEFAULT_CAP, tol: Tolerances = DEFAULT, title: str | None = None) -> str:
     """The page as a string (see :func:`write_report_html`)."""
     import jinja2
-    t0, c0 = time.perf_counter(), time.process_time()
     inputs, outputs = dict(inputs or {}), dict(outputs or {})
     rs = D.rows(report)
     fd = D.figure_data(rs)
@@ -153,8 +151,6 @@ def render_report_html(report: dict, *, inputs: dict | None = None, outputs: dic
                              lstrip_blocks=True)
     env.filters["num"] = lambda v, f=".3f": "-" if v is None else format(v, f)
     tpl = env.get_template("report.html.j2")
-    page_data["render_seconds"] = round(time.perf_counter() - t0, 3)
-    page_data["render_cpu_seconds"] = round(time.process_time() - c0, 3)
     blob = json.dumps(page_data, default=_json_default, ensure_ascii=False).replace("</", "<\\/")
     return tpl.render(title=title or f"lod2energy report: {os.path.basename(src) or 'file'}", kind=kind,
                       src=src, src_name=os.path.basename(src), fd=fd, plots=plots, plan=plan, plan_info=plan_info, panels=panels,
@@ -217,44 +213,3 @@ def read_buildings(path: str) -> dict[str, Building]:
     if model is None:
         return {}
     return {f.id: f for f in feats if isinstance(f, Building)}
-
-
-def prepare_outputs(ids, inputs: dict[str, Building], tol: Tolerances = DEFAULT, options=None) -> dict:
-    """Repaired, labelled buildings for ``ids`` by :func:`lod2energy.pipeline.prepare`."""
-    from types import SimpleNamespace
-
-    from lod2energy.pipeline import prepare
-    a = options or SimpleNamespace(lod=None, timeout=30.0, merge_parts=False)
-    out = {}
-    for i in ids:
-        b = inputs.get(i)
-        if b is not None and b.is_building:
-            try:
-                out[i] = prepare(b, tol, a)[0]
-            except Exception:  # noqa: BLE001 - its panel shows the input only
-                pass
-    return out
-
-
-def write_report_for(report_json, html_path=None, input_path: str | None = None, cap: int = DEFAULT_CAP,
-                     tol: Tolerances = DEFAULT) -> tuple[Path, dict]:
-    """``report.html`` next to an existing ``report.json``: reads the input file the report names
-    (or ``input_path``), re-prepares only the buildings that get a panel, writes the page.
-
-    Returns the page's path and timings (s): ``read``, ``prepare``, ``html`` (wall clock) and
-    ``html_cpu`` (CPU time of this process writing the page: what an export would add).
-    """
-    rep = json.loads(Path(report_json).read_text(encoding="utf-8"))
-    src = input_path or rep.get("input_file") or ""
-    t0, c0 = time.perf_counter(), time.process_time()
-    inputs = read_buildings(src) if src and os.path.isfile(src) else {}
-    t1, c1 = time.perf_counter(), time.process_time()
-    ids, _ = panel_ids(D.rows(rep), cap)
-    outputs = prepare_outputs(ids, inputs, tol)
-    t2, c2 = time.perf_counter(), time.process_time()
-    html_path = html_path or Path(report_json).with_name("report.html")
-    out = write_report_html(rep, html_path, inputs=inputs, outputs=outputs, cap=cap, tol=tol,
-                            input_files=[src] if src else [])
-    t3, c3 = time.perf_counter(), time.process_time()
-    return out, {"read": round(t1 - t0, 3), "prepare": round(t2 - t1, 3), "html": round(t3 - t2, 3),
-                 "html_cpu": round(c3 - c2, 3)}
