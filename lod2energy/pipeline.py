@@ -781,19 +781,6 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
     return ExportOutcome(worst, tuple(rows), None, report, tuple(dataset_errors))
 
 
-def export_file(a, tol: Tolerances | None = None) -> int:
-    """``lod2energy export`` from a parsed argparse namespace (the CLI's options); exit code."""
-    from lod2energy.cli import export_options
-    opts = export_options(a)
-    if tol is not None:
-        opts = replace(opts, prepare=replace(opts.prepare, tol=tol))
-    res = export(a.input, a.output, opts, RunOptions(getattr(a, "jobs", None), getattr(a, "dask", None),
-                                                     getattr(a, "resume", False), getattr(a, "quiet", False)))
-    if not getattr(a, "quiet", False) and res.records and res.exit_code in (EXIT_OK, EXIT_INVALID):
-        print_export_summary(res.records, opts.formats, a.output)
-    return res.exit_code
-
-
 def _context_or_record(task):
     if task[0] == "record":
         return task[2]
