@@ -182,6 +182,11 @@ def parse_json(text: str, what: str) -> tuple[Any, _Keys]:
         raise InputError(f"{what}: too large to be parsed in the memory available") from None
 
 
+def one_line(msg: str) -> str:
+    """``msg`` with every non-printable character (newline, control) escaped: one line."""
+    return "".join(c if c.isprintable() else repr(c)[1:-1] for c in msg)
+
+
 def _kind(x: Any) -> str:
     if x is None:
         return "null"
