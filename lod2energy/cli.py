@@ -112,6 +112,8 @@ def add_repair_parser(sub) -> argparse.ArgumentParser:
     r.add_argument("--timeout", type=float, default=30.0, metavar="S",
                    help="time budget per building in seconds before escalating/giving up (default 30)")
     r.add_argument("--merge-parts", action="store_true", help="merge overlapping BuildingParts (601) into one solid")
+    r.add_argument("-j", "--jobs", type=int, default=1, metavar="N",
+                   help="worker processes (default 1: in this process; 0: all cores)")
     r.add_argument("-q", "--quiet", action="store_true")
     _add_tolerances(r)
     return r

@@ -897,6 +897,33 @@ def print_export_summary(records: Iterable[BuildingRecord], formats: Iterable[st
 REPAIR_SUFFIXES = (".json", ".jsonl", ".cjseq")
 
 
+def _repair_job(task):
+    b, tol, timeout, merge_parts, lod = task
+    return next(iter(repair_features([b], tol, timeout, merge_parts, lod)))
+
+
+def _repaired(feats, tol: Tolerances, timeout: float, merge_parts: bool, lod, jobs: int | None):
+    """``repair_features`` on an executor that holds each building to its time budget: a building
+    still running ``max(2 s, 20 %)`` past ``timeout`` is stopped and kept as read, reported
+    ``timeout`` (the ladder's own deadline is cooperative and cannot interrupt one long step)."""
+    from lod2energy.executor import Failure, Overrun, make_executor
+
+    limit = None if not timeout or timeout <= 0 else timeout + max(2.0, 0.2 * timeout)
+    with make_executor(1 if jobs is None else jobs, None) as ex:
+        def tasks():
+            for f in feats:
+                yield (f, tol, timeout, merge_parts, lod)
+        for task, res in ex.map(_repair_job, tasks(), limit):
+            b = task[0]
+            if isinstance(res, (Overrun, Failure)):
+                why = f"timeout after {res.seconds:.0f} s" if isinstance(res, Overrun) else res.message
+                stage = "timeout" if isinstance(res, Overrun) else "irreparable"
+                res = b.with_provenance(repair={"stage": stage, "error": f"{stage}: {why}; kept as read",
+                                                "iou": None, "mean_displacement": None, "hausdorff": None,
+                                                "defects_before": [], "defects_after": [999]})
+            yield res
+
+
 def _print_repair_summary(table: dict) -> None:
     keys = ("total", "valid_before", "valid_after", "compliant_before", "compliant_after", "local_repairs",
             "global_repairs", "left", "miou", "map_v")
@@ -934,7 +961,7 @@ def repair_file(a, tol: Tolerances) -> int:
     tick, close = _progress(a.quiet, os.path.basename(a.input))
     worst = EXIT_OK
     try:
-        for item in repair_features(feats, tol, a.timeout, a.merge_parts, a.lod):
+        for item in _repaired(feats, tol, a.timeout, a.merge_parts, a.lod, getattr(a, "jobs", None)):
             tick()
             if isinstance(item, FeatureError):
                 _err(f"{a.input}: {item.message}")

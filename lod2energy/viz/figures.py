@@ -36,7 +36,7 @@ def _url(fig) -> str:
     from matplotlib import rc_context
     buf = io.BytesIO()
     with rc_context({"svg.fonttype": "none", "svg.hashsalt": "lod2energy"}):
-        fig.savefig(buf, format="svg")
+        fig.savefig(buf, format="svg", metadata={"Date": None})  # no timestamp: same bytes every run
     return "data:image/svg+xml;base64," + base64.b64encode(buf.getvalue()).decode("ascii")
 
 

@@ -71,9 +71,21 @@ def _plan(rs: list[D.Row], inputs: dict, outputs: dict, panels: set[str]) -> tup
                  "drawn": sum(1 for it in items if len(it["footprint"]))}
 
 
+#: A building with more faces gets a panel of text only: drawing (and re-validating) it would
+#: cost more than the rest of the page (a 100,000-face mesh that timed out, say).
+MAX_PANEL_FACES = 5000
+
+
+def _n_faces(b: Building | None) -> int:
+    return 0 if b is None else sum(g.n_surfaces for o in b.objects for g in o.geometries if g.is_polygonal)
+
+
 def _panel(r: D.Row, before: Building | None, after: Building | None, tol: Tolerances) -> dict:
     from lod2energy.validate.checks import validate_building
     defects = []
+    too_big = max(_n_faces(before), _n_faces(after)) > MAX_PANEL_FACES
+    if too_big:
+        before = after = None
     if before is not None:
         try:
             defects = validate_building(before, tol)
@@ -113,6 +125,8 @@ def _panel(r: D.Row, before: Building | None, after: Building | None, tol: Toler
         except Exception as e:  # noqa: BLE001 - one bad render never stops the page
             img = ""
             pic = {"error": f"{type(e).__name__}: {e}", "counts": {}}
+    if too_big:
+        pic = {"error": f"not drawn: more than {MAX_PANEL_FACES} faces", "counts": {}}
     return {"id": r.id, "anchor": R.slug(r.id), "row": r, "status": r.status, "colour": D.STATUS_COLOURS[r.status],
             "defects": rows, "geometries": geoms, "image": img,
             "graph": {"status": (pic or {}).get("status"), "counts": (pic or {}).get("counts", {}),
