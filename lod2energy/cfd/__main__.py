@@ -29,7 +29,8 @@ def main(argv: list[str] | None = None) -> int:
     from lod2energy.config import DEFAULT
     from lod2energy.errors import Lod2EnergyError
     from lod2energy.model import FeatureError
-    from lod2energy.pipeline import _open_input, prepare
+    from lod2energy.io import read
+    from lod2energy.pipeline import prepare
     from lod2energy.safe_write import write_json
 
     try:
@@ -37,10 +38,11 @@ def main(argv: list[str] | None = None) -> int:
     except Lod2EnergyError as e:
         print(f"lod2energy: error: {e}", file=sys.stderr)
         return 2
-    opened = _open_input(a.input)
-    if opened is None:
+    model, feats = read(a.input)
+    if model is None:
+        for fe in feats:
+            print(f"lod2energy: error: {fe.message}", file=sys.stderr)
         return 2
-    model, feats = opened
     t0 = time.perf_counter()
     prepared, others, errors = [], [], []
     region_filter = _prefilter(opts)
