@@ -369,7 +369,8 @@ def _features_of_document(doc: Mapping[str, Any], transform: Mapping | None,
     if templates is None:
         templates = doc.get("geometry-templates")
     for item in _features_of_document_raw(doc, transform, what, keys, seen):
-        if isinstance(item, FeatureError) and not item.message.isprintable():
+        if isinstance(item, FeatureError) and (not item.message.isprintable()
+                                               or len(item.message) > shape.MAX_MESSAGE):
             # one line, whatever the ids hold (a newline, a control character)
             item = FeatureError(item.id, item.code, shape.one_line(item.message), item.type)
         if isinstance(templates, Mapping) and isinstance(item, Building) and any(

@@ -182,9 +182,17 @@ def parse_json(text: str, what: str) -> tuple[Any, _Keys]:
         raise InputError(f"{what}: too large to be parsed in the memory available") from None
 
 
-def one_line(msg: str) -> str:
-    """``msg`` with every non-printable character (newline, control) escaped: one line."""
-    return "".join(c if c.isprintable() else repr(c)[1:-1] for c in msg)
+#: Longest message of a reader's error (characters); long ids are cut in the middle.
+MAX_MESSAGE = 400
+
+
+def one_line(msg: str, limit: int = MAX_MESSAGE) -> str:
+    """``msg`` with every non-printable character (newline, control) escaped, at most ``limit`` long."""
+    if not msg.isprintable():
+        msg = "".join(c if c.isprintable() else repr(c)[1:-1] for c in msg)
+    if len(msg) > limit:
+        msg = msg[: limit * 2 // 3] + " ... " + msg[-(limit // 3 - 5):]
+    return msg
 
 
 def _kind(x: Any) -> str:
