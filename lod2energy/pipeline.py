@@ -696,7 +696,9 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
                         _spool(job, seq, b)
                     else:
                         rec = res
-                    if rec.outcome != "done":
+                    if rec.outcome == "unreadable":  # the reader's message names the object itself
+                        _err(f"{input_path}: {rec.message}")
+                    elif rec.outcome != "done":
                         _err(f"{input_path}: {rec.type} {rec.id}: {rec.message}")
                     elif rec.repair.error:
                         _err(f"{input_path}: {rec.type} {rec.id}: {rec.repair.error}")
@@ -748,9 +750,10 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
                 if own:
                     ex.close()
 
-            # ---- pass 3: one file for all buildings
+            # ---- pass 3: one file for all buildings (none for a file that could not be read)
+            unusable = bool(dataset_errors) and not any(r.outcome == "done" for r in records.values())
             for w in chosen:
-                if scope[w.name] != "dataset":
+                if scope[w.name] != "dataset" or unusable:
                     continue
                 _dataset_pass(w, options, job, records, others, model, input_path, run.quiet)
     except KeyboardInterrupt:
@@ -766,7 +769,7 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
     journal.append({"kind": "end", "interrupted": interrupted[0] if interrupted else None})
     journal.close()
     if interrupted:
-        print(f"lod2energy: interrupted by {interrupted[0]}: report.json has the {len(rows)} objects done so far; "
+        print(f"lod2energy: error: interrupted by {interrupted[0]}: report.json has the {len(rows)} objects done so far; "
               f"run again with --resume to continue", file=sys.stderr)
         return ExportOutcome(interrupted[1], tuple(rows), interrupted[0], report, tuple(dataset_errors))
     for m in dataset_errors:
