@@ -246,7 +246,6 @@ def prepare_building(b: Building, options: PrepareOptions = PrepareOptions(), se
     """
     from lod2energy.io.interior import without_interior
     from lod2energy.repair import repair_info
-    from lod2energy.repair.parts import clip_overlapping_parts
     from lod2energy.semantics import label_building
     from lod2energy.thermal import assign_u_values
     from lod2energy.validate.compliance import energy_compliance
@@ -261,10 +260,10 @@ def prepare_building(b: Building, options: PrepareOptions = PrepareOptions(), se
     extra = {}
     if b.provenance.get("interior_left_out"):
         extra["interior_left_out"] = dict(b.provenance["interior_left_out"])
-    if not options.merge_parts and rb.is_building:  # the energy model counts no volume twice
-        rb, parts_energy = clip_overlapping_parts(rb, tol, lod)
-        if parts_energy:
-            extra["parts_energy"] = parts_energy
+    # BuildingParts that overlap in the input stay as they are (reported by the repair as
+    # ``overlapping_parts``): clipping them for the energy model (repair.parts.clip_overlapping_parts)
+    # left hairline faces that 13 of Den Haag's 844 buildings' STL/CityJSON self-checks refused,
+    # so it is not applied until the clipped shells pass every writer
     repair = RepairRecord.from_info({**repair_info(rb), **extra})
     lb = label_building(rb, lod=lod, source=b)
     thermal_opts = options.thermal
@@ -901,6 +900,7 @@ REPAIR_SUFFIXES = (".json", ".jsonl", ".cjseq")
 
 
 def _repair_job(task):
+    from lod2energy.repair import repair_features
     b, tol, timeout, merge_parts, lod = task
     return next(iter(repair_features([b], tol, timeout, merge_parts, lod)))
 

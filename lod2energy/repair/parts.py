@@ -382,6 +382,27 @@ def keep_parts_apart(before: Building, after: Building, tol: Tolerances = DEFAUL
 ENERGY_OVERLAP = 0.01
 
 
+#: A clipped part keeps no edge shorter than this (m) and no face smaller than this (m2): the
+#: boolean's hairline remnants would be merged away once written (float32 STL, EnergyPlus's
+#: 1.27 cm point merge) and leave the written zone open.
+CLIP_MIN_EDGE = 0.005
+CLIP_MIN_AREA = 1e-3
+
+
+def _writable(m: PolyMesh) -> bool:
+    """No hairline edge or sliver face in ``m`` (see :data:`CLIP_MIN_EDGE`)."""
+    from lod2energy.polymesh import face_area
+    V = m.vertices
+    for f in m.faces:
+        if face_area(V, f) < CLIP_MIN_AREA:
+            return False
+        for r in f.rings:
+            P = V[list(r)]
+            if len(P) and float(np.min(np.linalg.norm(P - np.roll(P, -1, axis=0), axis=1))) < CLIP_MIN_EDGE:
+                return False
+    return True
+
+
 def clip_overlapping_parts(b: Building, tol: Tolerances = DEFAULT, lod=None,
                            min_volume: float = ENERGY_OVERLAP) -> tuple[Building, dict]:
     """``b`` with no volume shared by two BuildingParts, for the energy model (zones).
@@ -419,7 +440,7 @@ def clip_overlapping_parts(b: Building, tol: Tolerances = DEFAULT, lod=None,
         for cut, by in ((small, big), (big, small)):
             o, gi, g, m = parts[cut]
             res = _clip_by(m, parts[by][3])
-            if res is None or not is_repaired(res, lod, tol):
+            if res is None or not is_repaired(res, lod, tol) or not _writable(res):
                 continue
             lookup = {(float(p[0]), float(p[1]), float(p[2])): i for i, p in enumerate(out.vertices)}
             extra: list = []
