@@ -143,6 +143,8 @@ def _write_cityjson(buildings, outdir, options, *, crs=None, context=(), model=N
     files = _files(str(res.path), getattr(res, "extension_path", "") or "") if ok else ()
     out = []
     for b in buildings:
+        if b.id in skipped and b.type != "Building":
+            continue  # terrain, vegetation ...: not part of the energy model, never a failure
         if b.id in skipped:
             out.append(((b.id,), ExportRecord("cityjson", False, path, (f"left out: {skipped[b.id]}",))))
         else:
