@@ -309,20 +309,26 @@ def write_ascii(path, v: np.ndarray, t: np.ndarray, codes: np.ndarray, root=None
     if not hasattr(path, "write"):
         with safe_write.atomic_write(path, "w", root=root, encoding="ascii") as f:
             return write_ascii(f, v, t, codes)
-    f = path
+    for chunk in ascii_solids(v, t, codes):
+        path.write(chunk)
+
+
+def ascii_solids(v: np.ndarray, t: np.ndarray, codes: np.ndarray, names: tuple[str, ...] = PATCHES):
+    """The text of an ASCII STL, chunk by chunk: one ``solid <name>`` per code present
+    (``names[code]``), vertices ``v (n, 3) float`` m, triangles ``t (k, 3) int``, ``codes (k,) int``."""
     n = _facet_normals(v, t)
-    for ci, name in enumerate(PATCHES):
+    for ci, name in enumerate(names):
         sel = np.nonzero(codes == ci)[0]
         if len(sel) == 0:
             continue
-        f.write(f"solid {name}\n")
+        yield f"solid {name}\n"
         for k in sel:
             a, b, c = v[t[k]]
-            f.write(f"  facet normal {n[k, 0]:.6e} {n[k, 1]:.6e} {n[k, 2]:.6e}\n    outer loop\n"
-                    f"      vertex {a[0]:.6f} {a[1]:.6f} {a[2]:.6f}\n"
-                    f"      vertex {b[0]:.6f} {b[1]:.6f} {b[2]:.6f}\n"
-                    f"      vertex {c[0]:.6f} {c[1]:.6f} {c[2]:.6f}\n    endloop\n  endfacet\n")
-        f.write(f"endsolid {name}\n")
+            yield (f"  facet normal {n[k, 0]:.6e} {n[k, 1]:.6e} {n[k, 2]:.6e}\n    outer loop\n"
+                   f"      vertex {a[0]:.6f} {a[1]:.6f} {a[2]:.6f}\n"
+                   f"      vertex {b[0]:.6f} {b[1]:.6f} {b[2]:.6f}\n"
+                   f"      vertex {c[0]:.6f} {c[1]:.6f} {c[2]:.6f}\n    endloop\n  endfacet\n")
+        yield f"endsolid {name}\n"
 
 
 def write_binary(path, v: np.ndarray, t: np.ndarray, codes: np.ndarray, root=None) -> None:

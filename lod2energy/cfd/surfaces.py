@@ -244,24 +244,9 @@ def unite(bodies: list[BuildingBody], ground: float, min_gap: float = 0.0,
 
 
 def stl_text(v: np.ndarray, t: np.ndarray, codes: np.ndarray, names: tuple[str, ...]) -> str:
-    """ASCII STL with one ``solid <name>`` per code present."""
-    n = np.cross(v[t[:, 1]] - v[t[:, 0]], v[t[:, 2]] - v[t[:, 0]])
-    L = np.linalg.norm(n, axis=1)
-    n = n / np.where(L > 0, L, 1.0)[:, None]
-    out = []
-    for ci, name in enumerate(names):
-        sel = np.nonzero(codes == ci)[0]
-        if len(sel) == 0:
-            continue
-        out.append(f"solid {name}\n")
-        for k in sel:
-            a, b, c = v[t[k]]
-            out.append(f" facet normal {n[k, 0]:.6e} {n[k, 1]:.6e} {n[k, 2]:.6e}\n  outer loop\n"
-                       f"   vertex {a[0]:.6f} {a[1]:.6f} {a[2]:.6f}\n"
-                       f"   vertex {b[0]:.6f} {b[1]:.6f} {b[2]:.6f}\n"
-                       f"   vertex {c[0]:.6f} {c[1]:.6f} {c[2]:.6f}\n  endloop\n endfacet\n")
-        out.append(f"endsolid {name}\n")
-    return "".join(out)
+    """ASCII STL with one ``solid <name>`` per code present (the STL exporter's format)."""
+    from lod2energy.exporters.stl import ascii_solids
+    return "".join(ascii_solids(v, t, codes, names))
 
 
 def flat_ground(corners: np.ndarray, margin: float = 0.0) -> tuple[np.ndarray, np.ndarray]:
