@@ -629,6 +629,8 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
     options = resolve(options, model)
     os.makedirs(outdir, exist_ok=True)
     out = os.path.abspath(outdir)
+    from lod2energy.safe_write import sweep_stale
+    sweep_stale(out)  # temporaries of a run that was killed mid-write
     spool = os.path.join(out, ".lod2energy", "spool")
     os.makedirs(spool, exist_ok=True)
     job = Job(options, out, spool, model.crs, getattr(model, "frame", None))

@@ -23,6 +23,7 @@ import contextlib
 import itertools
 import json
 import os
+import re
 from pathlib import Path
 from typing import IO, Any, Callable, Iterable, Iterator
 
@@ -85,6 +86,41 @@ def _temp_for(p: Path) -> tuple[Path, int]:
             return tmp, os.open(tmp, flags, 0o644)
         except FileExistsError:  # left by a killed process with a recycled pid
             continue
+        except BaseException:  # a signal between the open and the return: the name is ours alone
+            with contextlib.suppress(OSError):
+                os.unlink(tmp)
+            raise
+
+
+_TEMP_NAME = re.compile(r"^\..+\.(\d+)\.\d+\.(part|staged|tmp\.json|tmp\.jsonl)$")
+
+
+def sweep_stale(folder: str | os.PathLike) -> list[str]:
+    """Remove the temporaries (``.<name>.<pid>.<n>.part`` / ``.staged``) that processes no longer
+    running left in ``folder`` (a run killed mid-write); returns their names. Never follows a link."""
+    removed = []
+    try:
+        entries = list(os.scandir(folder))
+    except OSError:
+        return removed
+    for e in entries:
+        m = _TEMP_NAME.match(e.name)
+        if not m or e.is_symlink() or not e.is_file(follow_symlinks=False):
+            continue
+        pid = int(m.group(1))
+        if pid == os.getpid():
+            continue
+        try:
+            os.kill(pid, 0)
+            continue  # still running: its own file
+        except ProcessLookupError:
+            pass
+        except PermissionError:
+            continue
+        with contextlib.suppress(OSError):
+            os.unlink(e.path)
+            removed.append(e.name)
+    return removed
 
 
 @contextlib.contextmanager
