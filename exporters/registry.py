@@ -193,8 +193,8 @@ def _write_cfd(buildings, outdir, options, *, crs=None, context=(), model=None, 
 
 
 def _cfd_check(path: str) -> list[str]:
-    from lod2energy import openfoam
-    return [] if openfoam.surface_check_binary() is None else []  # the case checks itself (surfaceCheck, checkMesh)
+    """Nothing to add: :func:`lod2energy.cfd.export_case` runs surfaceCheck (and checkMesh) itself."""
+    return []
 
 
 register_writer("cityjson", _write_cityjson, _cityjson_check, scope="dataset")

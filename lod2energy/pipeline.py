@@ -129,8 +129,7 @@ class ExportOptions:
     def job_timeout(self) -> float | None:
         if self.hard_timeout is not None:
             return self.hard_timeout if self.hard_timeout > 0 else None
-        t = self.prepare.timeout
-        return None if t is None or t <= 0 else t + max(2.0, 0.2 * t)
+        return hard_budget(self.prepare.timeout)
 
     def fingerprint(self) -> dict:
         """JSON-ready summary of everything that changes the outputs (the journal header)."""
@@ -163,6 +162,12 @@ class RunOptions:
 
 
 # ============================================================================ one building
+
+def hard_budget(timeout: float | None) -> float | None:
+    """The executor's limit for one building's job (s): the repair's ``timeout`` plus
+    ``max(2 s, 20 %)`` for the stages after it; None without a budget."""
+    return None if not timeout or timeout <= 0 else timeout + max(2.0, 0.2 * timeout)
+
 
 def _codes(defects) -> list[int]:
     return sorted({d.code for d in defects})
@@ -913,7 +918,7 @@ def _repaired(feats, tol: Tolerances, timeout: float, merge_parts: bool, lod, jo
     ``timeout`` (the ladder's own deadline is cooperative and cannot interrupt one long step)."""
     from lod2energy.executor import Failure, Overrun, make_executor
 
-    limit = None if not timeout or timeout <= 0 else timeout + max(2.0, 0.2 * timeout)
+    limit = hard_budget(timeout)
     with make_executor(1 if jobs is None else jobs, None) as ex:
         def tasks():
             for f in feats:

@@ -359,11 +359,7 @@ def keep_parts_apart(before: Building, after: Building, tol: Tolerances = DEFAUL
                 res = cand()
                 if res is None or not is_repaired(res, lod, tol):
                     continue
-                lookup = {(float(p[0]), float(p[1]), float(p[2])): i for i, p in enumerate(out.vertices)}
-                extra: list = []
-                ng = geometry_of_mesh(res, g, lookup, extra, len(out.vertices))
-                V = np.vstack([out.vertices, np.asarray(extra).reshape(-1, 3)]) if extra else out.vertices
-                trial = out.replace_geometry(o.id, gi, ng, vertices=V)
+                trial = _with_part(out, o.id, gi, g, res)
                 if not worse(overlap_pairs(trial, tol), (a, c)):
                     out, done = trial, True
                     rec["resolved"].append([mover, other, how])
@@ -380,6 +376,15 @@ def keep_parts_apart(before: Building, after: Building, tol: Tolerances = DEFAUL
 #: Shared volume (m3) from which two overlapping parts are clipped for the energy model; below
 #: it the overlap is numerical noise for the heat balance (10 litres).
 ENERGY_OVERLAP = 0.01
+
+
+def _with_part(b: Building, object_id: str, gi: int, g: Geometry, m: PolyMesh) -> Building:
+    """``b`` with geometry ``gi`` of ``object_id`` replaced by the mesh ``m`` (new vertices appended)."""
+    lookup = {(float(p[0]), float(p[1]), float(p[2])): i for i, p in enumerate(b.vertices)}
+    extra: list = []
+    ng = geometry_of_mesh(m, g, lookup, extra, len(b.vertices))
+    V = np.vstack([b.vertices, np.asarray(extra).reshape(-1, 3)]) if extra else b.vertices
+    return b.replace_geometry(object_id, gi, ng, vertices=V)
 
 
 #: A clipped part keeps no edge shorter than this (m) and no face smaller than this (m2): the
@@ -442,11 +447,7 @@ def clip_overlapping_parts(b: Building, tol: Tolerances = DEFAULT, lod=None,
             res = _clip_by(m, parts[by][3])
             if res is None or not is_repaired(res, lod, tol) or not _writable(res):
                 continue
-            lookup = {(float(p[0]), float(p[1]), float(p[2])): i for i, p in enumerate(out.vertices)}
-            extra: list = []
-            ng = geometry_of_mesh(res, g, lookup, extra, len(out.vertices))
-            V = np.vstack([out.vertices, np.asarray(extra).reshape(-1, 3)]) if extra else out.vertices
-            out = out.replace_geometry(o.id, gi, ng, vertices=V)
+            out = _with_part(out, o.id, gi, g, res)
             rec["clipped"].append([cut, by, round(v, 6)])
             done = True
             break
