@@ -61,13 +61,13 @@ def _row(b) -> tuple:
 
 
 def measure(tiles, n: int, tmp: Path) -> list[dict]:
-    from lod2energy.exporters import idf
+    from lod2energy.exporters import energyplus
 
     rows = []
     for t in tiles:
         model, bs = _prepared(Path(t), n)
         for b in bs:
-            res = idf.write([b], tmp / b.id.replace("/", "_"), idf.IdfOptions(run=True, weather=str(EPW),
+            res = energyplus.writer.write([b], tmp / b.id.replace("/", "_"), energyplus.options.IdfOptions(run=True, weather=str(EPW),
                                                                                timesteps_per_hour=2),
                             crs=model.crs, frame=getattr(model, "frame", None))
             for r in res:

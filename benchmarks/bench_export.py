@@ -114,16 +114,18 @@ class Timers:
 def stage_table(tile: str) -> dict:
     """Run the export on ``tile`` with every stage timed."""
     from lod2energy import cli, pipeline
-    from lod2energy.exporters import cityjson, idf, stl
+    from lod2energy.exporters import cityjson, energyplus, stl
 
     t = Timers()
     t.wrap(pipeline, "prepare", "validate+repair+label")
-    for mod, name in ((idf, "idf"), (stl, "stl"), (cityjson, "cityjson")):
+    # each name where its callers look it up: the IDF writer calls its self-check from writer.py
+    for mod, name in ((energyplus.writer, "idf"), (stl, "stl"), (cityjson, "cityjson")):
         t.wrap(mod, "self_check", f"{name} self-check")
         t.wrap(mod, "write", f"{name} writer (with self-check)")
-    t.wrap(idf, "read_checked_idf", "idf self-check: IDD parse+check")
-    t.wrap(idf, "_eppy_idf", "idf self-check: eppy re-parse")
-    t.wrap(idf, "enclosure_defects", "idf enclosure emulation (writer + self-check)")
+    t.wrap(energyplus.check, "read_checked_idf", "idf self-check: IDD parse+check")
+    t.wrap(energyplus.check, "_eppy_idf", "idf self-check: eppy re-parse")
+    for mod in (energyplus.conform, energyplus.zones, energyplus.check):
+        t.wrap(mod, "enclosure_defects", "idf enclosure emulation (writer + self-check)")
     t.wrap(cityjson, "_schema_errors", "cityjson self-check: jsonschema")
     t.wrap(cityjson, "_schema_valid_fast", "cityjson self-check: compiled schema")
     with tempfile.TemporaryDirectory() as tmp:
@@ -152,8 +154,8 @@ def markdown(res: dict) -> str:
 
 
 def writer_throughput(a) -> dict:
-    from lod2energy import energyplus, openfoam
-    from lod2energy.exporters import idf, stl
+    from lod2energy import openfoam
+    from lod2energy.exporters import energyplus, stl
     from lod2energy.io import read
     from lod2energy.model import Building
 
@@ -165,7 +167,7 @@ def writer_throughput(a) -> dict:
     out: dict = {"tile": Path(a.tile).name, "buildings": len(bs), "label_seconds": round(t_label, 2)}
     with tempfile.TemporaryDirectory() as tmp:
         t0 = time.perf_counter()
-        res = idf.write(bs, Path(tmp) / "idf", idf.IdfOptions())
+        res = energyplus.writer.write(bs, Path(tmp) / "idf", energyplus.options.IdfOptions())
         dt = time.perf_counter() - t0
         out["idf"] = {"seconds": round(dt, 2), "buildings_per_s": round(len(bs) / dt, 2),
                       "files": len(res), "self_check_ok": sum(r.ok for r in res),
@@ -180,10 +182,10 @@ def writer_throughput(a) -> dict:
             ok = sum(openfoam.surface_check(r.path).ok for r in res_s)
             out["stl"]["surfaceCheck_ok"] = ok
             out["stl"]["surfaceCheck_seconds_per_file"] = round((time.perf_counter() - t0) / max(len(res_s), 1), 3)
-        if a.eplus and energyplus.binary() and Path(a.weather).is_file():
+        if a.eplus and energyplus.run.binary() and Path(a.weather).is_file():
             sample = bs[: a.eplus]
             t0 = time.perf_counter()
-            rr = idf.write(sample, Path(tmp) / "run", idf.IdfOptions(run=True, timesteps_per_hour=a.timesteps),
+            rr = energyplus.writer.write(sample, Path(tmp) / "run", energyplus.options.IdfOptions(run=True, timesteps_per_hour=a.timesteps),
                            weather=a.weather)
             secs = [r.stats.get("energyplus_seconds", 0.0) for r in rr]
             out["energyplus"] = {

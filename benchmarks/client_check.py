@@ -91,12 +91,12 @@ def check_tile(tile: Path, a, tmp: Path) -> dict:
         row["idf"] = len(idfs)
         row["idf_ok"] = sum(r.get("idf_ok") == "True" for r in rows)
         if a.run is not None:
-            from lod2energy import energyplus
+            from lod2energy.exporters import energyplus
             sel = idfs if a.run == 0 else idfs[: a.run]
             for f in sel:
                 if a.days:
                     f = shortened(f, a.days, tmp / "short" / out.name)
-                res = energyplus.run(f, weather=str(DATA / "weather" / "NLD_OV_Heino.062780_TMYx.2007-2021.epw"),
+                res = energyplus.run.run(f, weather=str(DATA / "weather" / "NLD_OV_Heino.062780_TMYx.2007-2021.epw"),
                                      outdir=tmp / "eplus" / out.name / f.stem)
                 row["eplus"] += 1
                 if res.ok:

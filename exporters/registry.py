@@ -118,8 +118,8 @@ def _idf_halo(options) -> float:
 
 
 def _write_idf(buildings, outdir, options, *, crs=None, context=(), model=None, stem="out", tol=None, frame=None):
-    from lod2energy.exporters import idf
-    return _records("idf", idf.write(buildings, outdir, options, crs=crs, context=context, frame=frame))
+    from lod2energy.exporters.energyplus.writer import write
+    return _records("idf", write(buildings, outdir, options, crs=crs, context=context, frame=frame))
 
 
 def _stl_sidecar(path: str) -> list[str]:
@@ -174,8 +174,8 @@ def _cityjson_check(path: str, tol=None) -> list[str]:
 
 
 def _idf_check(path: str) -> list[str]:
-    from lod2energy.exporters import idf
-    return idf.self_check(path)
+    from lod2energy.exporters.energyplus.check import self_check
+    return self_check(path)
 
 
 def _stl_check(path: str) -> list[str]:

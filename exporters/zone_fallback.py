@@ -2,7 +2,7 @@
 
 A repaired LoD2 shell is a closed 2-manifold, but EnergyPlus's enclosure test merges points
 within 1.27 cm per axis and inserts points within 1.27 cm of an edge
-(:mod:`exporters.eplus_enclosure`); a shell with many centimetre-scale features (alpha wraps
+(:mod:`exporters.energyplus.enclosure`); a shell with many centimetre-scale features (alpha wraps
 of buildings with crossing walls) can fail it however its pieces are cut. Such a zone is
 written as a simpler envelope of the same building, least change first:
 
@@ -167,7 +167,7 @@ def separated_zone(zone: ZoneShell) -> ZoneShell | None:
     from lod2energy.repair.unpinch import unpinch
 
     from .common import _clean_ring
-    from .eplus_enclosure import eplus_merge
+    from .energyplus.enclosure import eplus_merge
 
     V, idx = eplus_merge(zone.vertices)
     if len(V) == len(zone.vertices):

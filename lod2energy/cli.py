@@ -264,7 +264,7 @@ def cmd_repair(a) -> int:
 
 def export_options(a) -> "ExportOptions":
     """:class:`lod2energy.pipeline.ExportOptions` from the parsed ``export`` arguments."""
-    from lod2energy.exporters.idf import IdfOptions
+    from lod2energy.exporters.energyplus.options import IdfOptions
     from lod2energy.exporters.registry import CityJsonOptions
     from lod2energy.exporters.stl import StlOptions
     from lod2energy.pipeline import FORMATS, ExportOptions, prepare_options

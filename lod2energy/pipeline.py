@@ -77,7 +77,7 @@ class PrepareOptions:
 
 
 def _idf_default():
-    from lod2energy.exporters.idf import IdfOptions
+    from lod2energy.exporters.energyplus.options import IdfOptions
     return IdfOptions()
 
 

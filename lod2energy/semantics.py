@@ -38,7 +38,7 @@ from lod2energy.validate.defect import Defect
 ROOF, WALL, GROUND, CLOSURE = "RoofSurface", "WallSurface", "GroundSurface", "ClosureSurface"
 OUTER_CEILING, OUTER_FLOOR = "OuterCeilingSurface", "OuterFloorSurface"
 #: LoD3 openings: input labels kept as such; they close the envelope through their wall's hole
-#: and become real windows / doors in the IDF (``exporters.idf.split_openings``).
+#: and become real windows / doors in the IDF (``exporters.energyplus.openings.split_openings``).
 WINDOW, DOOR = "Window", "Door"
 OPENING_TYPES = (WINDOW, DOOR)
 ENVELOPE_TYPES = (ROOF, WALL, GROUND, CLOSURE, OUTER_CEILING, OUTER_FLOOR) + OPENING_TYPES

@@ -63,7 +63,7 @@ class Site:
     source: str
 
     def as_idf(self) -> dict:
-        """The fields :func:`exporters.idf.render_idf` writes."""
+        """The fields :func:`exporters.energyplus.render.render_idf` writes."""
         return {"name": self.name, "latitude": self.latitude, "longitude": self.longitude,
                 "time_zone": self.time_zone, "elevation": self.elevation}
 

@@ -1,6 +1,6 @@
 """The pure-Python enclosure emulation as it was before vectorisation (reference only).
 
-Kept verbatim from ``exporters/eplus_enclosure.py`` (commit a7d11fd) so that
+Kept verbatim from ``exporters/eplus_enclosure.py`` (commit a7d11fd; now ``exporters/energyplus/enclosure.py``) so that
 ``tests/test_enclosure_equivalence.py`` can show the vectorised implementation gives the
 same results. Not used by the package.
 """
@@ -10,7 +10,7 @@ from typing import Sequence
 
 import numpy as np
 
-from lod2energy.exporters.eplus_enclosure import COINCIDENT, BadEdge, POINT_TOL, eplus_collinear
+from lod2energy.exporters.energyplus.enclosure import COINCIDENT, BadEdge, POINT_TOL, eplus_collinear
 
 
 def reference_eplus_degenerate(points: np.ndarray) -> bool:

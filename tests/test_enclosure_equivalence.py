@@ -1,12 +1,12 @@
-"""The vectorised enclosure emulation (exporters.eplus_enclosure) agrees with the pure-Python
+"""The vectorised enclosure emulation (exporters.energyplus.enclosure) agrees with the pure-Python
 one it replaced (tests/_enclosure_reference.py) on random and on real zones."""
 from __future__ import annotations
 
 import numpy as np
 import pytest
 
-from lod2energy.exporters import eplus_enclosure as ee
-from lod2energy.exporters import idf
+from lod2energy.exporters.energyplus import enclosure as ee
+from lod2energy.exporters import energyplus
 
 from _enclosure_reference import (reference_edges_not_two, reference_enclosure_defects,
                                   reference_eplus_degenerate, reference_eplus_merge,
@@ -114,15 +114,16 @@ def test_real_zones_agree(tmp_path, monkeypatch, rel, n):
     if not (DATA / rel).exists():
         pytest.skip(f"shared data not available: {rel}")
     seen = []
-    real = idf.enclosure_defects
+    real = energyplus.enclosure.enclosure_defects
 
     def recording(surfaces, *a, **k):
         seen.append([np.array(s, dtype=np.float64) for s in surfaces])
         return real(surfaces, *a, **k)
 
-    monkeypatch.setattr(idf, "enclosure_defects", recording)
+    for mod in (energyplus.conform, energyplus.zones, energyplus.check):  # every caller in the writer
+        monkeypatch.setattr(mod, "enclosure_defects", recording)
     bs = [energy_ready(b) for b in real_buildings(rel, n=n)]
-    idf.write(bs, tmp_path)
+    energyplus.writer.write(bs, tmp_path)
     assert seen
     for surfaces in seen:
         assert_agree(surfaces)

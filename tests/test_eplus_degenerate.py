@@ -18,11 +18,10 @@ import pytest
 
 from export_helpers import EPW, energy_ready
 from factories import box
-from lod2energy import energyplus
-from lod2energy.exporters import idf
-from lod2energy.exporters.eplus_enclosure import eplus_degenerate
+from lod2energy.exporters import energyplus
+from lod2energy.exporters.energyplus.enclosure import eplus_degenerate
 
-pytestmark = pytest.mark.skipif(energyplus.binary() is None or not EPW.exists(),
+pytestmark = pytest.mark.skipif(energyplus.run.binary() is None or not EPW.exists(),
                                 reason="EnergyPlus or the shared EPW weather file not available")
 
 
@@ -68,7 +67,7 @@ def _eplus_degenerate_names(err: str) -> set[str]:
 
 
 def test_self_check_flags_every_surface_energyplus_calls_degenerate(tmp_path):
-    base = idf.write([energy_ready(box())], tmp_path / "base", idf.IdfOptions())[0]
+    base = energyplus.writer.write([energy_ready(box())], tmp_path / "base", energyplus.options.IdfOptions())[0]
     assert base.ok, base.problems
     text = Path(base.path).read_text()
     zone = re.search(r"^Zone, ([^,]+),", text, re.M).group(1)
@@ -80,13 +79,13 @@ def test_self_check_flags_every_surface_energyplus_calls_degenerate(tmp_path):
              for n, P in enumerate(cands)]
     path = tmp_path / "near_degenerate.idf"
     path.write_text(text + "\n" + "\n".join(extra) + "\n")
-    rr = energyplus.run(path, str(EPW), tmp_path / "out", timeout=600)
+    rr = energyplus.run.run(path, str(EPW), tmp_path / "out", timeout=600)
     err = (tmp_path / "out" / "eplusout.err").read_text(errors="replace")
     theirs = _eplus_degenerate_names(err)
     m = re.search(r"There are (\d+) degenerate surfaces", err)
     assert m and int(m.group(1)) == len(theirs) > 0      # the constructions reach EnergyPlus's limit
     flagged = {re.match(r"surface (\S+): degenerate", p).group(1).upper()
-               for p in idf.self_check(path) if re.match(r"surface \S+: degenerate", p)}
+               for p in energyplus.check.self_check(path) if re.match(r"surface \S+: degenerate", p)}
     assert theirs <= flagged, sorted(theirs - flagged)
     # and the self-check does not call many more degenerate than EnergyPlus does
     assert len(flagged - theirs) <= max(3, len(theirs) // 2), sorted(flagged - theirs)
@@ -96,14 +95,14 @@ def test_self_check_flags_every_surface_energyplus_calls_degenerate(tmp_path):
 def test_a_sliver_triangle_8_mm_wide_is_degenerate_for_both(tmp_path):
     tri = np.array([[10, 0.008, 0.0], [10, 0, 0], [0, 0, 0]])
     assert eplus_degenerate(tri)
-    base = idf.write([energy_ready(box())], tmp_path / "base", idf.IdfOptions())[0]
+    base = energyplus.writer.write([energy_ready(box())], tmp_path / "base", energyplus.options.IdfOptions())[0]
     text = Path(base.path).read_text()
     zone = re.search(r"^Zone, ([^,]+),", text, re.M).group(1)
     cons = re.search(r"(Wall_Outdoors_[A-Za-z0-9_]+),\s+!- Construction Name", text).group(1)
     path = tmp_path / "sliver.idf"
     path.write_text(text + f"\nBuildingSurface:Detailed, SLIVER, Floor, {cons}, {zone}, , Outdoors, , NoSun, NoWind, "
                     "autocalculate, 3, " + ", ".join(f"{x:.4f}" for x in tri.ravel()) + ";\n")
-    energyplus.run(path, str(EPW), tmp_path / "out", timeout=600)
+    energyplus.run.run(path, str(EPW), tmp_path / "out", timeout=600)
     err = (tmp_path / "out" / "eplusout.err").read_text(errors="replace")
     assert _eplus_degenerate_names(err) == {"SLIVER"}
-    assert any(p.startswith("surface SLIVER: degenerate") for p in idf.self_check(path))
+    assert any(p.startswith("surface SLIVER: degenerate") for p in energyplus.check.self_check(path))

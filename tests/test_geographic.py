@@ -111,8 +111,8 @@ def test_export_writes_degrees_back_and_metres_to_the_simulation_files(tmp_path,
     for p in want:                                               # every input corner is written back
         assert np.abs(got - p).max(axis=1).min() < 2e-9          # degrees (~0.2 mm)
     idf_text = (out / "b1.idf").read_text()
-    from lod2energy.exporters import idf
-    assert idf.self_check(out / "b1.idf") == []
+    from lod2energy.exporters import energyplus
+    assert energyplus.check.self_check(out / "b1.idf") == []
     assert "BuildingSurface:Detailed" in idf_text
     report = json.loads((out / "report.json").read_text())
     areas = {r["id"]: r["A_env_m2"] for r in report["buildings"]}

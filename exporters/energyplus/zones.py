@@ -1,0 +1,236 @@
+"""Zones: one per Building/BuildingPart or per storey, floors, floorless parts and simpler envelopes."""
+from __future__ import annotations
+
+from dataclasses import dataclass, replace
+from typing import Sequence
+
+import numpy as np
+
+from lod2energy.model import Building
+from ..common import check_closed_outward, newell_normal, unit, ZoneShell
+from ..zone_fallback import FALLBACKS
+from .enclosure import enclosure_defects
+from .openings import Opening
+from .pieces import Piece, _pieces_from_points
+from .surfaces import zone_pieces
+
+
+#: EnergyPlus puts a zone's interior solar gains on its floors, and counts a surface as one
+#: only when it faces down more than 30 degrees past vertical (tilt > 120 degrees): outward
+#: n_z below this. A zone without one stops with a severe error.
+FLOOR_NZ = -0.5
+
+
+def floorless_parts(b: Building, lod: str | None = None) -> list[str]:
+    """BuildingParts of ``b`` without a face EnergyPlus can take as a floor (n_z < -0.5).
+
+    Typically a dormer or roof superstructure modelled as its own part, whose underside
+    follows a roof steeper than 60 degrees.
+    """
+    out = []
+    for o, _, g in b.energy_objects(lod):
+        nz = [unit(newell_normal(b.vertices[list(s.rings[0])]))[2] for *_, s in g.iter_surfaces()]
+        if o.type == "BuildingPart" and nz and not min(nz) < FLOOR_NZ:
+            out.append(o.id)
+    return out
+
+
+def merge_floorless_parts(b: Building, lod: str | None = None) -> tuple[Building, list[str]]:
+    """``b`` with no floorless part (:func:`floorless_parts`) left as a zone of its own.
+
+    A dormer is no separately conditioned zone, and EnergyPlus cannot distribute solar gains
+    in a zone without a floor. Its solid is united with the part it sits on when the union
+    is a valid solid (the repair ladder's criterion); otherwise it is left out of the IDF
+    (such parts are small: their underside follows a roof steeper than 60 degrees), and the
+    roof under it is then written as an outdoor roof. A union keeps its host's floor, so one
+    pass over the floorless parts suffices.
+
+    Returns
+    -------
+    building : Building
+        For the IDF only; the other exports keep the parts.
+    warnings : list of str
+    """
+    from lod2energy.repair.parts import merge_parts, touching_part, without_geometry
+
+    lod = lod if lod is not None else b.default_lod()
+    warnings: list[str] = []
+    for pid in floorless_parts(b, lod):
+        host = touching_part(b, pid, lod)
+        merged = merge_parts(b, {pid, host}, lod=lod, into=host) if host else b
+        if merged is not b:
+            b = merged
+            warnings.append(f"part {pid} has no surface EnergyPlus can take as a floor: united with {host} "
+                            "into one zone")
+        else:
+            b = without_geometry(b, {pid}, lod)
+            warnings.append(f"part {pid} has no surface EnergyPlus can take as a floor (none faces down more "
+                            "than 30 degrees past vertical) and no valid union with the part it sits on: left "
+                            "out of the IDF")
+    return b, warnings
+
+
+def with_floor(pieces: list[Piece], tilt_band: float = 0.05) -> tuple[list[Piece], int]:
+    """Pieces of a zone with at least one Floor: EnergyPlus needs one in every zone.
+
+    A zone without ground or floor surfaces (a roof superstructure whose underside sits on
+    the main roof) has EnergyPlus guess its floor. Its most downward-facing pieces (outward
+    ``n_z`` within ``tilt_band`` of the lowest, and under ``FLOOR_NZ``) are written as
+    Floor, boundary condition unchanged.
+
+    Returns
+    -------
+    pieces : list of Piece
+    changed : int
+        How many pieces became Floor (0 when the zone had a floor).
+    """
+    if not pieces or any(p.kind in ("ground", "floor") for p in pieces):
+        return pieces, 0
+    nz = np.array([unit(newell_normal(p.points))[2] for p in pieces])
+    low = float(nz.min())
+    if not low < FLOOR_NZ:  # EnergyPlus would not take it as a floor either
+        return pieces, 0
+    pick = (nz <= low + tilt_band) & (nz < FLOOR_NZ)
+    out = [replace(p, kind="floor") if k else p for p, k in zip(pieces, pick)]
+    return out, int(pick.sum())
+
+
+@dataclass(frozen=True)
+class ZoneInfo:
+    """What a written zone is: its storey, use and whether it is conditioned.
+
+    Attributes
+    ----------
+    building_id : str
+    storey : int or None
+        1 for the ground storey; None for a whole-building zone.
+    attic : bool
+    conditioned : bool
+    use : str
+        Use type (:data:`lod2energy.thermal.use.USE_TYPES`).
+    """
+
+    building_id: str
+    storey: int | None
+    attic: bool
+    conditioned: bool
+    use: str
+
+
+def storey_zones(zone: ZoneShell, zi: int, pieces: list[Piece], n_below: int, storey_height: float,
+                 attic_mode: str, openings: Sequence[Opening] = ()) -> tuple[list[tuple[ZoneShell, list[Piece], bool]], str | None]:
+    """One zone per storey of a zone's written pieces (:func:`lod2energy.zoning.split_storeys`).
+
+    Parameters
+    ----------
+    zone : ZoneShell
+    zi : int
+        Its index (keys the interzone pairs).
+    pieces : list of Piece
+        Its final pieces (closed, as written).
+    n_below : int
+        Storeys under the eave of the building; this zone gets ``round(height / storey_height)``
+        when it is lower than the building (a BuildingPart).
+    storey_height : float, m
+    attic_mode : {"unconditioned", "conditioned"}
+    openings : sequence of Opening
+        The zone's real windows and doors: no storey cut passes through one.
+
+    Returns
+    -------
+    zones : list of (ZoneShell, pieces, attic)
+        The storey zones, lowest first; ``[(zone, pieces, False)]`` when it stays one zone.
+    note : str or None
+        Why it stayed one zone (a cut that would not close, a storey EnergyPlus would find not
+        enclosed), when it did.
+    """
+    from lod2energy import zoning
+    from lod2energy.thermal.storeys import ATTIC_MIN_HEIGHT, MIN_STOREY_HEIGHT
+
+    single = [(zone, pieces, False)]
+    if not pieces:
+        return single, None
+    ground, eave, ridge, pitched = zoning.zone_levels([(p.points, p.kind) for p in pieces])
+    n = max(1, int(round((eave - ground) / storey_height))) if storey_height > 0 else 1
+    n = min(n, max(n_below, 1)) if n_below else n
+    n = max(1, min(n, int((eave - ground) / MIN_STOREY_HEIGHT)))
+    attic = pitched and ridge - eave >= ATTIC_MIN_HEIGHT
+    allz = np.concatenate([p.points[:, 2] for p in pieces])
+    horiz = [float(p.points[0, 2]) for p in pieces if np.ptp(p.points[:, 2]) <= 1e-6]
+    spans = [(float(o.points[:, 2].min()), float(o.points[:, 2].max())) for o in openings]
+    cuts, attic = zoning.storey_cuts(allz, ground, eave, ridge, n, attic, horiz, spans)
+    if not cuts:
+        return single, None
+    note = None
+    for cs, with_attic in zoning.cut_variants(cuts, attic, allz, horiz):
+        slabs = zoning.split_storeys([(p.points, p) for p in pieces], cs, _pieces_from_points, with_attic)
+        if slabs is None:
+            note = f"zone {zone.object_id}: kept as one zone (no storey section closes)"
+            continue
+        out = []
+        for k, sl in enumerate(slabs):
+            zp = [replace(tag, points=q) for q, tag in sl.polygons]
+            zp += [Piece(q, "floor", "Surface", 0.0, -1, f"{zi}.{k - 1}.{i}:f") for i, q in enumerate(sl.floor)]
+            zp += [Piece(q, "ceiling", "Surface", 0.0, -1, f"{zi}.{k}.{i}:c") for i, q in enumerate(sl.ceiling)]
+            pts = [p.points for p in zp]
+            if check_closed_outward(pts) or enclosure_defects(pts):
+                note = (f"zone {zone.object_id}: kept as one zone (no storey cut gives zones EnergyPlus "
+                        "would find enclosed)")
+                out = None
+                break
+            name = f"{zone.object_id}_Attic" if sl.attic else f"{zone.object_id}_S{k + 1}"
+            wwr = zone.wwr if (not sl.attic or attic_mode == "conditioned") else 0.0
+            out.append((replace(zone, object_id=name, wwr=wwr), zp, sl.attic))
+        if out:
+            return out, None
+    return single, note
+
+
+def _written_zones(blist, zones, zones_of, pieces, options, openings):
+    """Per building: the zones to write ``[(ZoneShell, pieces, ZoneInfo, source zone index)]``, notes, stats."""
+    from lod2energy.thermal.storeys import storeys
+    from lod2energy.thermal.use import building_use
+
+    written_of, notes, bstats = {}, {}, {}
+    for bi, b in enumerate(blist):
+        use = building_use(b, options.use)
+        st = storeys(b, use.type, options.lod)
+        notes[bi] = []
+        out = []
+        for zi in zones_of[bi]:
+            if options.zoning == "storey":
+                sz, note = storey_zones(zones[zi], zi, pieces[zi], st.below_eave, st.storey_height, options.attic,
+                                        openings.get(zi, ()))
+                if note:
+                    notes[bi].append(note)
+            else:
+                sz = [(zones[zi], pieces[zi], False)]
+            for k, (z, zp, attic) in enumerate(sz):
+                info = ZoneInfo(b.id, (k + 1 if not attic else None) if len(sz) > 1 else None, attic,
+                                not attic or options.attic == "conditioned", use.type)
+                out.append((z, zp, info, zi))  # zi: the source zone (its real openings)
+        written_of[bi] = out
+        bstats[bi] = {"use": use.type, "use_source": use.source, "storeys": st.count,
+                      "storeys_source": st.source, "storey_height_m": round(st.storey_height, 3),
+                      "attic": st.attic}
+    return written_of, notes, bstats
+
+
+def enclosable(zone: ZoneShell, zi: int, pieces: list[Piece]) -> tuple[ZoneShell, list[Piece]] | None:
+    """A simpler envelope for a zone whose pieces EnergyPlus would call not fully enclosed.
+
+    Returns None when the pieces pass (:func:`enclosure.enclosure_defects`) or no
+    fallback of :mod:`exporters.zone_fallback` (2.5D model, then LoD1 block) passes either;
+    else the first fallback zone that does, with its pieces (party walls not split).
+    """
+    if not pieces or not enclosure_defects([p.points for p in pieces]):
+        return None
+    for make in FALLBACKS:
+        nz = make(zone)
+        if nz is None:
+            continue
+        np_ = zone_pieces(nz, zi, {}, False)
+        pts = [p.points for p in np_]
+        if np_ and not check_closed_outward(pts) and not enclosure_defects(pts):
+            return nz, np_
+    return None
