@@ -42,3 +42,35 @@ def test_report_json_has_zones_and_csv_the_building_columns():
     assert "zones" not in CSV_FIELDS
     back = BuildingRecord.from_json(rec.to_json())  # the journal keeps the zones
     assert back.report_entry()["zones"] == entry["zones"]
+
+
+import json  # noqa: E402
+import csv  # noqa: E402
+
+import pytest  # noqa: E402
+
+
+@pytest.mark.external
+def test_cli_run_puts_zone_figures_in_report_and_geojson(tmp_path):
+    from conftest import shared_path
+    from export_helpers import EPW
+    from lod2energy import energyplus
+    from lod2energy.cli import main
+    if energyplus.binary() is None:
+        pytest.skip("EnergyPlus not installed")
+    lines = shared_path("3dbag", "delft_subset.city.jsonl").read_text().splitlines()
+    one = [ln for ln in lines[1:] if "0503100000005156" in ln][:1]  # b3_bouwlagen 3: three storey zones
+    src = tmp_path / "one.city.jsonl"
+    src.write_text("\n".join([lines[0]] + one) + "\n")
+    out = tmp_path / "out"
+    rc = main(["export", str(src), "-o", str(out), "--idf", "--run", "--weather", str(EPW), "--geojson",
+               "--no-html", "-q", "-j", "1"])
+    assert rc in (0, 1)
+    b = json.loads((out / "report.json").read_text())["buildings"][0]
+    assert len(b["zones"]) >= 2
+    assert sum(z["heating_kwh"] for z in b["zones"]) == pytest.approx(b["exports"]["idf"]["heating_kwh"], rel=1e-3)
+    assert b["heating_kwh_m2"] > 0 and b["heating_peak_w"] > 0 and b["conditioned_floor_area_m2"] > 0
+    row = next(csv.DictReader((out / "report.csv").open()))
+    assert float(row["heating_kwh_m2"]) == pytest.approx(b["heating_kwh_m2"])
+    props = json.loads(next(out.glob("*.footprints.geojson")).read_text())["features"][0]["properties"]
+    assert props["heating_kwh_m2"] == pytest.approx(b["heating_kwh_m2"]) and props["heating_peak_w"] > 0
