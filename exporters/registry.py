@@ -42,6 +42,9 @@ class Writer:
         The pass the writer runs in, for its options.
     halo : callable(options) -> float, m
         How far around a building its neighbours matter (``"context"`` scope).
+    records : bool
+        The writer also takes ``records=`` (the buildings' :class:`BuildingRecord` s, with
+        the other writers' results) in the ``"dataset"`` pass.
     """
 
     name: str
@@ -49,6 +52,7 @@ class Writer:
     self_check: Callable[..., list]
     scope: Callable[[Any], str]
     halo: Callable[[Any], float] = lambda options: 0.0
+    records: bool = False
 
 
 _WRITERS: dict[str, Writer] = {}
@@ -56,11 +60,11 @@ _WRITERS: dict[str, Writer] = {}
 
 def register_writer(name: str, write: Callable[..., list], self_check: Callable[..., list], *,
                     scope: Callable[[Any], str] | str = "building",
-                    halo: Callable[[Any], float] | float = 0.0) -> Writer:
+                    halo: Callable[[Any], float] | float = 0.0, records: bool = False) -> Writer:
     """Register (or replace) the writer of format ``name``; returns it."""
     sc = scope if callable(scope) else (lambda options, _s=scope: _s)
     ha = halo if callable(halo) else (lambda options, _h=float(halo): _h)
-    w = Writer(name, write, self_check, sc, ha)
+    w = Writer(name, write, self_check, sc, ha, bool(records))
     _WRITERS[name] = w
     return w
 
@@ -93,6 +97,28 @@ def _files(*paths: str) -> tuple[FileRecord, ...]:
     return tuple(out)
 
 
+#: Per-building figures of an EnergyPlus run (``stats["building_results"]``) kept in the report.
+_RUN_FIGURES = ("heating_kwh_m2", "cooling_kwh_m2", "heating_peak_w", "cooling_peak_w")
+
+
+def _run_figures(res) -> dict[str, dict]:
+    """``{building id: report figures}`` of a run: the building's annual need per m2, peaks,
+    conditioned floor area (m2) and ``zones``, one entry per conditioned zone."""
+    stats = getattr(res, "stats", None) or {}
+    br = stats.get("building_results") or {}
+    if not br:
+        return {}
+    zb = stats.get("zone_building") or {}
+    out = {}
+    for bid, d in br.items():
+        fig = {k: d.get(k) for k in _RUN_FIGURES}
+        fig["conditioned_floor_area_m2"] = d.get("floor_area_m2")
+        fig["zones"] = [{"zone": z, **dict(zd)} for z, zd in (stats.get("zone_results") or {}).items()
+                        if zb.get(z) == bid]
+        out[str(bid)] = {"totals": (d.get("heating_kwh"), d.get("cooling_kwh")), **fig}
+    return out
+
+
 def _records(fmt: str, results: Sequence, sidecars: Callable[[str], Sequence[str]] = lambda p: ()) -> list:
     out = []
     for res in results:
@@ -103,8 +129,21 @@ def _records(fmt: str, results: Sequence, sidecars: Callable[[str], Sequence[str
                 extra[k] = list(v) if isinstance(v, tuple) else v
         path = str(res.path)
         files = _files(path, *sidecars(path)) if res.ok else ()
-        er = ExportRecord(fmt, bool(res.ok), path, tuple(getattr(res, "problems", ()) or ()), extra, files)
-        out.append((tuple(getattr(res, "building_ids", ()) or ()), er))
+        ids = tuple(getattr(res, "building_ids", ()) or ())
+        problems = tuple(getattr(res, "problems", ()) or ())
+        figures = _run_figures(res)
+        if len(ids) > 1 and figures:  # one file of many buildings: each gets its own figures
+            for bid in ids:
+                fig = dict(figures.get(str(bid)) or {})
+                heat, cool = fig.pop("totals", (None, None))
+                own = {**extra, "heating_kwh": heat, "cooling_kwh": cool, **fig}
+                out.append(((bid,), ExportRecord(fmt, bool(res.ok), path, problems, own, files)))
+            continue
+        if len(ids) == 1 and str(ids[0]) in figures:
+            fig = dict(figures[str(ids[0])])
+            fig.pop("totals", None)
+            extra.update(fig)
+        out.append((ids, ExportRecord(fmt, bool(res.ok), path, problems, extra, files)))
     return WriteResults(out)
 
 
@@ -202,3 +241,32 @@ register_writer("idf", _write_idf, _idf_check, scope=_idf_scope, halo=_idf_halo)
 register_writer("stl", _write_stl, _stl_check,
                 scope=lambda options: "dataset" if getattr(options, "mode", "building") == "dataset" else "building")
 register_writer("cfd", _write_cfd, _cfd_check, scope="dataset")
+
+
+def _write_geojson(buildings, outdir, options, *, crs=None, context=(), model=None, stem="out", tol=None,
+                   frame=None, records=None):
+    """``OUTDIR/<stem>.footprints.geojson``: the footprints (WGS84) with the buildings' records;
+    ``options`` are the IDF options (``use``, ``lod``, ``run``: the figures of the energy model)."""
+    from lod2energy.exporters import geojson
+    buildings = [b for b in buildings if b.is_building]
+    path = os.path.join(str(outdir), f"{stem}{geojson.SUFFIX}")
+    res = geojson.write(buildings, path, crs=crs, frame=frame, records=records, use=getattr(options, "use", None),
+                        lod=getattr(options, "lod", None), run=bool(getattr(options, "run", False)), root=outdir)
+    files = _files(res.path) if res.ok else ()
+    out = []
+    left = dict(res.left_out or {})
+    for b in buildings:
+        if b.id in left:
+            out.append(((b.id,), ExportRecord("geojson", False, res.path, (f"left out: {left[b.id]}",))))
+        else:
+            out.append(((b.id,), ExportRecord("geojson", res.ok, res.path, tuple(res.problems)[:3], {}, files)))
+    return WriteResults(out)
+
+
+def _geojson_check(path: str) -> list[str]:
+    from lod2energy.exporters import geojson
+    return geojson.self_check(path)
+
+
+# after "idf": the footprints carry the run figures of the IDF pass
+register_writer("geojson", _write_geojson, _geojson_check, scope="dataset", records=True)

@@ -131,6 +131,9 @@ def add_export_parser(sub) -> argparse.ArgumentParser:
     e.add_argument("--idf", action="store_true", help="EnergyPlus IDF thermal zones")
     e.add_argument("--stl", action="store_true", help="CFD-ready STL (one solid per semantic class)")
     e.add_argument("--cityjson", action="store_true", help="CityJSON with Energy-ADE-style attributes")
+    e.add_argument("--geojson", action="store_true",
+                   help="GeoJSON of the building footprints in WGS84 with repair, compliance, storeys, use "
+                   "and (with --run) the heating/cooling figures")
     e.add_argument("--idf-mode", choices=("building", "dataset"), default="building")
     e.add_argument("--stl-mode", choices=("building", "dataset"), default="building")
     e.add_argument("--stl-ascii", action="store_true", help="ASCII STL (default binary)")
@@ -269,7 +272,7 @@ def export_options(a) -> "ExportOptions":
     from lod2energy.exporters.stl import StlOptions
     from lod2energy.pipeline import FORMATS, ExportOptions, prepare_options
 
-    formats = tuple(f for f in FORMATS if getattr(a, f))
+    formats = tuple(f for f in FORMATS if getattr(a, f, False))
     idf = IdfOptions(**{k: v for k, v in dict(
         mode=a.idf_mode, version=a.energyplus_version, shading=a.shading, run=a.run, weather=a.weather,
         lod=a.lod, wwr=a.wwr, zoning=getattr(a, "zoning", None), attic=getattr(a, "attic", None),
@@ -285,8 +288,8 @@ def export_options(a) -> "ExportOptions":
 
 def cmd_export(a) -> int:
     from lod2energy.pipeline import RunOptions, export, print_export_summary
-    if not (a.idf or a.stl or a.cityjson or getattr(a, "cfd", False)):
-        raise _UsageError("choose at least one of --idf, --stl, --cityjson, --cfd")
+    if not (a.idf or a.stl or a.cityjson or getattr(a, "cfd", False) or getattr(a, "geojson", False)):
+        raise _UsageError("choose at least one of --idf, --stl, --cityjson, --cfd, --geojson")
     if a.wwr is not None and not (0.0 <= a.wwr < 1.0):
         raise _UsageError("--wwr must be in [0, 1)")
     for c in ("wall", "roof", "ground", "window"):

@@ -41,7 +41,7 @@ EXIT_OK, EXIT_INVALID, EXIT_UNUSABLE = 0, 1, 2
 EXIT_SIGINT, EXIT_SIGTERM = 130, 143
 
 #: Writers in the order they run and appear in the options.
-FORMATS = ("cityjson", "idf", "stl", "cfd")
+FORMATS = ("cityjson", "idf", "stl", "cfd", "geojson")
 
 
 # ============================================================================ options
@@ -123,7 +123,9 @@ class ExportOptions:
     html: bool = True
 
     def writer_options(self, name: str):
-        return {"idf": self.idf, "stl": self.stl, "cityjson": self.cityjson, "cfd": self.cfd}[name]
+        # the footprints (geojson) carry the energy model's figures: they take its options
+        return {"idf": self.idf, "stl": self.stl, "cityjson": self.cityjson, "cfd": self.cfd,
+                "geojson": self.idf}[name]
 
     @property
     def job_timeout(self) -> float | None:
@@ -809,9 +811,10 @@ def _dataset_pass(w, options: ExportOptions, job: Job, records: dict, others: li
         bs = [load_spooled(job.spool, s) for s in seqs]
         if w.name == "cfd":  # the file's terrain (TINRelief) is the case's ground
             bs += [load_spooled(job.spool, s) for s in sorted(others)]
+    kw = {"records": [records[s] for s in seqs]} if getattr(w, "records", False) else {}
     try:
         pairs = w.write(bs, job.outdir, wopts, crs=job.crs, model=model, stem=stem_of(input_path),
-                        tol=options.prepare.tol, frame=job.frame)
+                        tol=options.prepare.tol, frame=job.frame, **kw)
     except Exception as e:  # noqa: BLE001 - reported for every building of the file
         pairs = [((records[s].id,), ExportRecord(w.name, False, "", (f"{w.name.upper()} not written: "
                                                                       f"{type(e).__name__}: {e}",)))

@@ -245,7 +245,11 @@ class ExportRecord:
 CSV_FIELDS = ["id", "type", "input_errors", "output_errors", "repair_stage", "iou", "mean_displacement_m",
               "compliant", "status", "typology", "construction_period", "roof_m2", "wall_m2", "ground_m2",
               "A_env_m2", "volume_m3", "UA_W_per_K", "cityjson_ok", "idf_ok", "stl_ok", "cfd_ok", "heating_kwh",
-              "cooling_kwh", "message", "outcome"]
+              "cooling_kwh", "heating_kwh_m2", "cooling_kwh_m2", "heating_peak_w", "cooling_peak_w",
+              "conditioned_floor_area_m2", "geojson_ok", "message", "outcome"]
+#: Per-building figures of an EnergyPlus run (the IDF export's), in report.csv and report.json.
+RUN_FIELDS = ("heating_kwh", "cooling_kwh", "heating_kwh_m2", "cooling_kwh_m2", "heating_peak_w", "cooling_peak_w",
+              "conditioned_floor_area_m2")
 
 
 @dataclass(frozen=True)
@@ -318,7 +322,7 @@ class BuildingRecord:
              "UA_W_per_K": th.detail.get("UA", "")}
         for e in sorted(self.exports, key=lambda e: e.format):
             r[f"{e.format}_ok"] = e.ok
-            for k in ("heating_kwh", "cooling_kwh"):
+            for k in RUN_FIELDS:
                 if k in e.extra:
                     r[k] = e.extra[k]
         r["message"] = self.message
@@ -327,9 +331,10 @@ class BuildingRecord:
 
     def report_entry(self) -> dict:
         """The building's entry of report.json."""
-        return {**self.row(), "repair": self.repair.to_json(), "energy": self.energy.to_json(),
-                "thermal": self.thermal.to_json(),
-                "exports": {e.format: e.to_json() for e in sorted(self.exports, key=lambda e: e.format)}}
+        exports = {e.format: e.to_json() for e in sorted(self.exports, key=lambda e: e.format)}
+        zones = exports.get("idf", {}).pop("zones", None)  # per zone figures of a run: the building's own key
+        return {**self.row(), **({"zones": zones} if zones is not None else {}), "repair": self.repair.to_json(),
+                "energy": self.energy.to_json(), "thermal": self.thermal.to_json(), "exports": exports}
 
     # -- the journal
     def to_json(self) -> dict:
