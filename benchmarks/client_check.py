@@ -54,8 +54,6 @@ import numpy as np
 
 REPO = Path(__file__).resolve().parents[1]
 DATA = REPO.parent / "shared" / "data"
-if str(REPO) not in sys.path:
-    sys.path.insert(0, str(REPO))
 SKIP_DIRS = {"val3dity-tests", "citygml-qie-3dvalidation", "typology-teaser", "weather"}
 WEATHER = DATA / "weather" / "NLD_OV_Heino.062780_TMYx.2007-2021.epw"
 VOL_TOL = 0.005
@@ -151,7 +149,7 @@ def eio_volumes(path: Path) -> dict[str, float]:
 
 def stl_volume(path: Path) -> float | None:
     """Signed volume (m3) of the triangles of an STL (all its solids)."""
-    from exporters.stl import read_stl
+    from lod2energy.exporters.stl import read_stl
 
     if not path.is_file():
         return None
