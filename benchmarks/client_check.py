@@ -1,29 +1,47 @@
 """Acceptance by the real clients: OpenFOAM surfaceCheck on every exported STL, EnergyPlus on IDFs.
 
-Runs the user's main job (``lod2energy export``: validate, repair, labels, U-values, export)
-on real tiles and hands every STL to ``surfaceCheck`` (closed, one orientation zone per part,
-no illegal triangle). With ``--idf`` the IDFs are also written and, with ``--run N``, the
-first N buildings of each tile are simulated by EnergyPlus (``--run 0``: all of them) and
-their severe errors / "not fully enclosed" warnings counted from the ``.err`` files. With
-``--days D`` each IDF is simulated over its first D days only (a copy with the RunPeriod
-shortened): EnergyPlus reads and checks the whole input (geometry, enclosure, constructions)
-before the first day, so a one-day run checks every building of a tile in ~1 s each instead
-of ~40 s for the year.
+Runs the user's main job (``lod2energy export``: validate, repair, labels, U-values, export;
+the IDF with the default ``--zoning storey``) on real tiles and hands every STL to
+``surfaceCheck`` (closed, one orientation zone per part, no illegal triangle). With ``--idf``
+the IDFs are also written and, with ``--run N``, the first N IDFs of each tile are simulated
+by EnergyPlus (``--run 0``: all of them). Per IDF the check reads back:
+
+- from ``eplusout.err``: the severe / fatal errors and every zone "not fully enclosed";
+- the zones of the IDF (``Zone`` objects) and their volumes as EnergyPlus uses them (the
+  ``Zone Information`` rows of ``eplusout.eio``), and each zone's volume rebuilt from its
+  own ``BuildingSurface:Detailed`` vertices (divergence theorem);
+- the volume of the exported shell: the building's STL (the same repaired envelope, written
+  for CFD), by the signed volume of its triangles.
+
+An IDF passes when EnergyPlus completes with 0 severe errors, every zone is enclosed and
+the zone volumes EnergyPlus reports sum to the STL's volume within ``--vol-tol`` (0.5%).
+An EnergyPlus severe error on an IDF whose own self-check passed (``idf_ok`` in the
+report) is flagged: the self-check must catch every surface EnergyPlus calls degenerate.
+
+With ``--days D`` each IDF is simulated over its first D days only (a copy with the
+RunPeriod shortened): EnergyPlus reads and checks the whole input (geometry, enclosure,
+constructions) before the first day, so a one-day run checks every building in ~1 s.
 
 Usage (from the repository root)::
 
     python benchmarks/client_check.py [TILE ...] [--idf] [--run N] [--days D] [--jobs 2]
-                                      [--out FILE.md] [--keep DIR]
+                                      [--out FILE.md] [--jsonl FILE] [--keep DIR]
+                                      [--keep-failures DIR]
+    python benchmarks/client_check.py --table ROWS.jsonl [...] --out FILE.md
 
 Without TILE: every real CityJSON / CityJSONSeq file under ../shared/data and the real
 CityGML tiles of ``citygml-real`` (not the val3dity / QIE conformance files, but the
-Delfshaven tile kept among them). Prints a markdown table; exit code 1 when any file failed its client.
+Delfshaven tile kept among them). ``--jsonl`` appends one row per tile (with every IDF's
+figures) so that tiles checked by separate runs make one table with ``--table``. Prints a
+markdown table; exit code 1 when any file failed its client.
 """
 from __future__ import annotations
 
 import argparse
 import csv
+import json
 import re
+import resource
 import shutil
 import subprocess
 import sys
@@ -32,9 +50,13 @@ import time
 from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
+import numpy as np
+
 REPO = Path(__file__).resolve().parents[1]
 DATA = REPO.parent / "shared" / "data"
 SKIP_DIRS = {"val3dity-tests", "citygml-qie-3dvalidation", "typology-teaser", "weather"}
+WEATHER = DATA / "weather" / "NLD_OV_Heino.062780_TMYx.2007-2021.epw"
+VOL_TOL = 0.005
 
 
 def default_tiles() -> list[Path]:
@@ -63,6 +85,136 @@ def shortened(idf: Path, days: int, dest: Path) -> Path:
     return out
 
 
+# --------------------------------------------------------------------------- reading back
+
+def idf_objects(text: str) -> list[list[str]]:
+    """The objects of an IDF text as lists of fields (class name first; comments dropped)."""
+    body = "\n".join(line.split("!", 1)[0] for line in text.splitlines())
+    return [[f.strip() for f in obj.split(",")] for obj in body.split(";") if obj.strip()]
+
+
+def polygons_volume(polys) -> float:
+    """Enclosed volume (m3) of closed outward polygons (divergence theorem)."""
+    v = 0.0
+    for q in polys:
+        for k in range(1, len(q) - 1):
+            v += float(np.dot(q[0], np.cross(q[k], q[k + 1]))) / 6.0
+    return v
+
+
+def idf_zones(path: Path) -> dict[str, dict]:
+    """``{zone name (upper): {"volume_field": m3 or None, "volume_geometry": m3, "surfaces": n}}``
+    from the IDF's ``Zone`` and ``BuildingSurface:Detailed`` objects."""
+    zones: dict[str, dict] = {}
+    polys: dict[str, list] = {}
+    for o in idf_objects(path.read_text(encoding="utf-8", errors="replace")):
+        cls = o[0].upper()
+        if cls == "ZONE":
+            vol = o[9] if len(o) > 9 else ""
+            try:
+                v = float(vol)
+            except ValueError:
+                v = None
+            zones[o[1].upper()] = {"volume_field": v, "volume_geometry": 0.0, "surfaces": 0}
+        elif cls == "BUILDINGSURFACE:DETAILED":
+            try:
+                n = int(o[11]) if o[11] else (len(o) - 12) // 3
+                pts = np.array([float(x) for x in o[12:12 + 3 * n]]).reshape(n, 3)
+            except (ValueError, IndexError):
+                continue
+            polys.setdefault(o[4].upper(), []).append(pts)
+    for z, ps in polys.items():
+        d = zones.setdefault(z, {"volume_field": None, "volume_geometry": 0.0, "surfaces": 0})
+        d["volume_geometry"] = polygons_volume(ps)
+        d["surfaces"] = len(ps)
+    return zones
+
+
+def eio_volumes(path: Path) -> dict[str, float]:
+    """``{zone name (upper): volume m3}`` from the ``Zone Information`` rows of ``eplusout.eio``."""
+    if not path.is_file():
+        return {}
+    col, out = None, {}
+    for line in path.read_text(errors="replace").splitlines():
+        f = [x.strip() for x in line.split(",")]
+        if f[0] == "! <Zone Information>":
+            col = next((i for i, x in enumerate(f) if x.startswith("Volume")), None)
+        elif f[0] == "Zone Information" and col is not None and len(f) > col:
+            try:
+                out[f[1].upper()] = float(f[col])
+            except ValueError:
+                pass
+    return out
+
+
+def stl_volume(path: Path) -> float | None:
+    """Signed volume (m3) of the triangles of an STL (all its solids)."""
+    from lod2energy.exporters.stl import read_stl
+
+    if not path.is_file():
+        return None
+    tris, _, _ = read_stl(path)
+    if not len(tris):
+        return None
+    t = tris - tris.reshape(-1, 3).mean(axis=0)
+    return float(np.einsum("ij,ij->i", t[:, 0], np.cross(t[:, 1], t[:, 2])).sum() / 6.0)
+
+
+def check_idf(f: Path, a, tmp: Path, out: Path, idf_ok: bool | None) -> dict:
+    """Run EnergyPlus on one IDF and compare its zones with the exported shell."""
+    from lod2energy.exporters import energyplus
+
+    zones = idf_zones(f)
+    run_f = shortened(f, a.days, tmp / "short" / out.name) if a.days else f
+    res = energyplus.run.run(run_f, weather=str(WEATHER), outdir=tmp / "eplus" / out.name / f.stem)
+    eio = eio_volumes(Path(res.outdir) / "eplusout.eio")
+    shell = stl_volume(out / (f.stem + ".stl"))
+    not_enc = set(z.upper() for z in res.err.not_enclosed)
+    n_unknown = sum(1 for z in res.err.not_enclosed if z == "?")
+    enclosed = max(0, len(zones) - len(not_enc - {"?"}) - n_unknown) if res.err.completed else 0
+    vol_eplus = sum(eio.get(z, 0.0) for z in zones) if eio else None
+    vol_geom = sum(d["volume_geometry"] for d in zones.values())
+    rec = {"id": f.stem, "zones": len(zones), "enclosed": enclosed,
+           "severe": len(res.err.severe), "fatal": res.err.fatal, "completed": res.err.completed,
+           "first_severe": res.err.severe[0][:240] if res.err.severe else "",
+           "not_enclosed": sorted(res.err.not_enclosed), "vol_eplus": vol_eplus, "vol_geometry": vol_geom,
+           "vol_shell": shell, "idf_ok": idf_ok, "eplus_s": round(res.seconds, 2)}
+    ref = shell if shell else None
+    rec["vol_err"] = (None if ref is None or vol_eplus is None else abs(vol_eplus - ref) / ref)
+    rec["vol_ok"] = rec["vol_err"] is not None and rec["vol_err"] <= a.vol_tol
+    rec["clean"] = res.ok
+    reasons = []
+    if not res.err.completed or res.err.fatal:
+        reasons.append(f"EnergyPlus did not complete (rc {res.returncode})")
+    if res.err.severe:
+        reasons.append(f"{len(res.err.severe)} severe: {res.err.severe[0][:160]}")
+        if idf_ok:
+            reasons.append("the self-check passed it (issue 19 item 5)")
+    if res.err.not_enclosed:
+        reasons.append(f"not enclosed: {', '.join(res.err.not_enclosed)[:160]}")
+    if not rec["vol_ok"]:
+        if ref is None:
+            reasons.append("no STL volume to compare")
+        elif vol_eplus is None:
+            reasons.append("no Zone Information volumes in eplusout.eio")
+        else:
+            reasons.append(f"zone volumes {vol_eplus:.2f} m3 (geometry {vol_geom:.2f}) vs shell "
+                           f"{ref:.2f} m3: {100 * rec['vol_err']:.2f}%")
+    rec["reasons"] = reasons
+    rec["ok"] = not reasons
+    if reasons and a.keep_failures:
+        dest = Path(a.keep_failures) / out.name
+        dest.mkdir(parents=True, exist_ok=True)
+        shutil.copy2(f, dest / f.name)
+        stl = out / (f.stem + ".stl")
+        if stl.is_file():
+            shutil.copy2(stl, dest / stl.name)
+        err = Path(res.outdir) / "eplusout.err"
+        if err.is_file():
+            shutil.copy2(err, dest / (f.stem + ".err"))
+    return rec
+
+
 def check_tile(tile: Path, a, tmp: Path) -> dict:
     from lod2energy import openfoam
 
@@ -74,8 +226,7 @@ def check_tile(tile: Path, a, tmp: Path) -> dict:
     proc = subprocess.run(cmd, capture_output=True, text=True)
     dt = time.perf_counter() - t0
     row = {"tile": f"{tile.parent.name}/{tile.name}", "rc": proc.returncode, "seconds": round(dt, 1),
-           "stl": 0, "stl_pass": 0, "stl_fail": [], "idf": 0, "idf_ok": 0, "eplus": 0, "eplus_ok": 0,
-           "eplus_fail": []}
+           "stl": 0, "stl_pass": 0, "stl_fail": [], "idf": 0, "idf_ok": 0, "idfs": []}
     report = out / "report.csv"
     rows = list(csv.DictReader(report.open())) if report.exists() else []
     row["buildings"] = len(rows)
@@ -89,23 +240,46 @@ def check_tile(tile: Path, a, tmp: Path) -> dict:
     if a.idf:
         idfs = sorted(out.glob("*.idf"))
         row["idf"] = len(idfs)
-        row["idf_ok"] = sum(r.get("idf_ok") == "True" for r in rows)
+        ok_ids = {r["id"] for r in rows if r.get("idf_ok") == "True"}
+        row["idf_ok"] = len(ok_ids)
         if a.run is not None:
-            from lod2energy.exporters import energyplus
             sel = idfs if a.run == 0 else idfs[: a.run]
             for f in sel:
-                if a.days:
-                    f = shortened(f, a.days, tmp / "short" / out.name)
-                res = energyplus.run.run(f, weather=str(DATA / "weather" / "NLD_OV_Heino.062780_TMYx.2007-2021.epw"),
-                                     outdir=tmp / "eplus" / out.name / f.stem)
-                row["eplus"] += 1
-                if res.ok:
-                    row["eplus_ok"] += 1
-                else:
-                    row["eplus_fail"].append(f"{f.stem}: {'; '.join(res.problems())}")
+                row["idfs"].append(check_idf(f, a, tmp, out, f.stem in ok_ids))
     if a.keep:
         shutil.copytree(out, Path(a.keep) / out.name, dirs_exist_ok=True)
+    shutil.rmtree(out, ignore_errors=True)
+    shutil.rmtree(tmp / "eplus" / out.name, ignore_errors=True)
     return row
+
+
+def table(rows: list[dict], run: bool) -> tuple[str, bool]:
+    """The markdown table of the tile rows and whether any tile failed."""
+    lines = ["| tile | buildings | export rc | s | STL surfaceCheck | IDF self-check | IDFs run | "
+             "E+ clean (0 severe) | zones | zones enclosed | volume within 0.5% |",
+             "|---|---|---|---|---|---|---|---|---|---|---|"]
+    bad = False
+    tot = dict.fromkeys(("b", "stl", "stlp", "idf", "idfok", "run", "clean", "z", "ze", "v"), 0)
+    for r in rows:
+        ii = r.get("idfs", [])
+        n, clean = len(ii), sum(1 for x in ii if x["severe"] == 0 and x["completed"] and not x["fatal"])
+        z, ze, v = sum(x["zones"] for x in ii), sum(x["enclosed"] for x in ii), sum(x["vol_ok"] for x in ii)
+        lines.append(f"| {r['tile']} | {r['buildings']} | {r['rc']} | {r['seconds']} | {r['stl_pass']}/{r['stl']} | "
+                     f"{r['idf_ok']}/{r['idf']} | {n} | {clean}/{n} | {z} | {ze}/{z} | {v}/{n} |")
+        bad |= r["stl_pass"] != r["stl"] or any(not x["ok"] for x in ii) or (run and n != r["idf"])
+        for k, val in zip(tot, (r["buildings"], r["stl"], r["stl_pass"], r["idf"], r["idf_ok"], n, clean, z, ze, v)):
+            tot[k] += val
+    lines.append(f"| **all** | {tot['b']} | | | {tot['stlp']}/{tot['stl']} | {tot['idfok']}/{tot['idf']} | "
+                 f"{tot['run']} | {tot['clean']}/{tot['run']} | {tot['z']} | {tot['ze']}/{tot['z']} | "
+                 f"{tot['v']}/{tot['run']} |")
+    fails = [f"- {r['tile']}: STL {x}" for r in rows for x in r["stl_fail"]]
+    fails += [f"- {r['tile']}: `{x['id']}` ({x['zones']} zones): {'; '.join(x['reasons'])}"
+              for r in rows for x in r.get("idfs", []) if not x["ok"]]
+    errs = [x["vol_err"] for r in rows for x in r.get("idfs", []) if x["vol_err"] is not None]
+    if errs:
+        lines += ["", f"Zone volumes (EnergyPlus eio) against the STL shell: max deviation "
+                      f"{100 * max(errs):.3f}%, mean {100 * float(np.mean(errs)):.4f}% over {len(errs)} IDFs."]
+    return "\n".join(lines + ([""] + ["Failures:", ""] + fails if fails else [])) + "\n", bad
 
 
 def main(argv=None) -> int:
@@ -115,28 +289,35 @@ def main(argv=None) -> int:
     ap.add_argument("--run", type=int, default=None, help="simulate the first N IDFs per tile (0: all)")
     ap.add_argument("--days", type=int, default=None,
                     help="simulate only the first D days of the year (input checks are the same)")
-    ap.add_argument("--jobs", type=int, default=2)
+    ap.add_argument("--jobs", type=int, default=2, help="tiles checked at once")
+    ap.add_argument("--vol-tol", type=float, default=VOL_TOL, help="relative volume tolerance (0.005)")
     ap.add_argument("--keep", default=None, help="copy each tile's export folder here")
+    ap.add_argument("--keep-failures", default=None, help="copy each failing IDF, its STL and .err here")
+    ap.add_argument("--jsonl", default=None, help="append one JSON row per tile here")
+    ap.add_argument("--table", nargs="*", default=None, help="only build the table from these --jsonl files")
     ap.add_argument("--out", default=None, help="write the markdown table here too")
     a = ap.parse_args(argv)
-    tiles = [Path(t) for t in a.tiles] or default_tiles()
-    with tempfile.TemporaryDirectory(prefix="client_check_") as tmp:
-        with ThreadPoolExecutor(a.jobs) as ex:
-            rows = list(ex.map(lambda t: check_tile(t, a, Path(tmp)), tiles))
-    lines = ["| tile | buildings | export rc | s | STL surfaceCheck pass | IDF self-check | EnergyPlus clean |",
-             "|---|---|---|---|---|---|---|"]
-    bad = False
-    for r in rows:
-        eplus = f"{r['eplus_ok']}/{r['eplus']}" if r["eplus"] else "-"
-        idf = f"{r['idf_ok']}/{r['idf']}" if a.idf else "-"
-        lines.append(f"| {r['tile']} | {r['buildings']} | {r['rc']} | {r['seconds']} | "
-                     f"{r['stl_pass']}/{r['stl']} | {idf} | {eplus} |")
-        bad |= r["stl_pass"] != r["stl"] or r["eplus_ok"] != r["eplus"]
-    tot = sum(r["stl"] for r in rows), sum(r["stl_pass"] for r in rows)
-    lines.append(f"| **all** | {sum(r['buildings'] for r in rows)} | | | {tot[1]}/{tot[0]} | | "
-                 f"{sum(r['eplus_ok'] for r in rows)}/{sum(r['eplus'] for r in rows)} |")
-    fails = [f"- {r['tile']}: {x}" for r in rows for x in r["stl_fail"] + r["eplus_fail"]]
-    text = "\n".join(lines + ([""] + fails if fails else [])) + "\n"
+    if a.table is not None:
+        rows = [json.loads(line) for f in a.table for line in Path(f).read_text().splitlines() if line.strip()]
+        wall = cpu = None
+    else:
+        tiles = [Path(t) for t in a.tiles] or default_tiles()
+        t0 = time.perf_counter()
+        with tempfile.TemporaryDirectory(prefix="client_check_") as tmp:
+            def one(t):
+                r = check_tile(t, a, Path(tmp))
+                if a.jsonl:
+                    with open(a.jsonl, "a", encoding="utf-8") as fh:
+                        fh.write(json.dumps(r) + "\n")
+                return r
+            with ThreadPoolExecutor(a.jobs) as ex:
+                rows = list(ex.map(one, tiles))
+        wall = time.perf_counter() - t0
+        ru = resource.getrusage(resource.RUSAGE_CHILDREN)
+        cpu = ru.ru_utime + ru.ru_stime
+    text, bad = table(rows, a.run is not None or a.table is not None)
+    if wall is not None:
+        text += f"\nWall {wall:.0f} s, CPU {cpu:.0f} s (children: export + surfaceCheck + EnergyPlus).\n"
     print(text)
     if a.out:
         Path(a.out).write_text(text, encoding="utf-8")
