@@ -333,8 +333,10 @@ def _input(row: dict, tmp: Path, run_sample: int) -> Path:
 
 def _revision() -> str:
     try:
-        return subprocess.run(["git", "-C", str(REPO), "rev-parse", "--short", "HEAD"], capture_output=True,
-                              text=True, check=True).stdout.strip()
+        # the last commit that changed the code measured (not the benchmarks)
+        return subprocess.run(["git", "-C", str(REPO), "log", "-1", "--format=%h", "--", "lod2energy", "exporters",
+                               "templates", "pyproject.toml"], capture_output=True,
+                              text=True, check=True).stdout.strip() or "?"
     except (OSError, subprocess.CalledProcessError):
         return "?"
 
