@@ -1,26 +1,51 @@
-"""City scale: buildings/s per core, speed-up from 1 to 2 workers and peak memory of the process tree.
+"""City scale: buildings per CPU-second, speed-up from 1 to 2 workers and peak memory of the process tree.
 
-Usage (from the repository root)::
+Usage (from the repository root; every part can be run on its own)::
 
     python benchmarks/bench_scale.py [--sizes 845,3380,13520] [--jobs 1,2]
-                                     [--commands validate,export-stl,export-all,export-run]
-                                     [--run-sample 5] [--dask] [--out benchmarks/results/scale.md]
+        [--commands validate,repair,export-all,export-run] [--all-max 3380] [--run-sample 10]
+        [--tiles denhaag,delfshaven,tile5908,berlin|none] [--tile-commands validate,export-all]
+        [--dask] [--plan]
 
 Builds CityJSONSeq files by tiling translated copies of
 ``../shared/data/denhaag/DenHaag_01.city.json`` (845 objects a copy: 844 Buildings with their
-BuildingParts and one TINRelief; 4 copies = 3,380, 16 = 13,520) side by side with a 50 m gap,
-then runs each command as a subprocess (``lod2energy validate`` / ``lod2energy export ... -j N``)
-and samples the resident memory of the whole process tree (the command and its workers,
-psutil, every 0.1 s). ``buildings/s per core`` is objects / wall time / workers. ``export-run``
-runs EnergyPlus (``--run``) on the first ``--run-sample`` buildings only. ``--dask`` adds a
-row on a ``dask.distributed`` LocalCluster of 2 worker processes (through the Python API).
-Timings depend on the machine's load: the table says what ran beside it.
+BuildingParts and one TINRelief; 4 copies = 3,380 objects, 16 = 13,520) side by side with a 50 m
+gap, then runs each command as a subprocess of this script:
+
+- ``validate`` (``lod2energy validate``; it has no ``--jobs``: one worker only),
+- ``repair`` (``lod2energy repair -j N``),
+- ``export-all`` (``lod2energy export --idf --stl --cityjson -j N``). The three-format export of
+  13,520 buildings costs more than an hour of CPU on current main, so above ``--all-max`` objects
+  (default 3,380) ``export-all`` is replaced by ``export-stl`` (``export --stl``) and the row says so,
+- ``export-stl`` when asked for explicitly, at every size,
+- ``export-run`` (``export --idf --run``, EnergyPlus) on the first ``--run-sample`` buildings
+  (default 10) of Den Haag, once.
+
+``--tiles`` adds rows for real tiles (Den Haag, Delfshaven, the 3DBAG tile5908 subset, a Berlin
+CityGML tile) with ``--tile-commands`` and ``--tile-jobs``. ``--dask`` adds a row for the first
+size on a ``dask.distributed`` LocalCluster of 2 worker processes through the Python API
+(``--dask-command``, default ``export-stl``).
+
+Measured per row: wall s; CPU s of the whole process tree (the larger of
+``getrusage(RUSAGE_CHILDREN)`` around the subprocess and the sum of the per-process CPU times
+psutil last saw while sampling every 0.2 s; for the Dask row, psutil only, over this process and
+the cluster's); peak RSS of the process tree (sum over the live processes, sampled every 0.2 s);
+``os.getloadavg()`` at start and end; the exit code and the outcome counts of the command's own
+report. ``buildings/CPU-s`` is the per-core rate and the figure to compare on a loaded machine;
+the 1 -> 2 worker speed-up is of wall time and means little when the load average exceeds the
+cores.
+
+Raw rows are appended to ``--rows`` (JSON Lines, default ``benchmarks/results/scale.jsonl``); the
+table between the ``<!-- table -->`` markers of ``--out`` (default ``benchmarks/results/scale.md``)
+is rebuilt from all of them, the prose around it is kept.
 """
 from __future__ import annotations
 
 import argparse
+import datetime
 import json
 import os
+import resource
 import shutil
 import subprocess
 import sys
@@ -32,13 +57,23 @@ from pathlib import Path
 REPO = Path(__file__).resolve().parents[1]
 DATA = REPO.parent / "shared" / "data"
 SOURCE = DATA / "denhaag" / "DenHaag_01.city.json"
-
+EPW = DATA / "weather" / "NLD_OV_Heino.062780_TMYx.2007-2021.epw"
+TILES = {
+    "denhaag": "denhaag/DenHaag_01.city.json",
+    "delfshaven": "val3dity-tests/rotterdam/3-20-DELFSHAVEN.city.json",
+    "tile5908": "3dbag/tile5908_subset_ext.city.jsonl",
+    "berlin": "citygml-real/berlin/3920_5818.gml",
+}
+ALL3 = ["--idf", "--stl", "--cityjson"]
 COMMANDS = {
-    "validate": ["validate", "{src}", "-q"],
+    "validate": ["validate", "{src}", "-q", "--report", "{out}/validate.json"],
+    "repair": ["repair", "{src}", "-o", "{out}/repaired.city.jsonl", "--report", "{out}/repair.json",
+               "-q", "-j", "{jobs}"],
+    "export-all": ["export", "{src}", "-o", "{out}", *ALL3, "-q", "-j", "{jobs}"],
     "export-stl": ["export", "{src}", "-o", "{out}", "--stl", "-q", "-j", "{jobs}"],
-    "export-all": ["export", "{src}", "-o", "{out}", "--idf", "--stl", "--cityjson", "-q", "-j", "{jobs}"],
     "export-run": ["export", "{src}", "-o", "{out}", "--idf", "--run", "-q", "-j", "{jobs}"],
 }
+SAMPLE_S = 0.2
 
 
 # ----------------------------------------------------------------------------- input
@@ -122,51 +157,86 @@ def sample_seq(src: Path, n: int, path: Path) -> None:
 
 # ----------------------------------------------------------------------------- measuring
 
-def _tree_rss(p) -> int:
-    import psutil
-    total = 0
-    try:
-        procs = [p] + p.children(recursive=True)
-    except psutil.Error:
-        return 0
-    for q in procs:
+class TreeSampler:
+    """Every 0.2 s: RSS summed over a process tree (peak kept) and each process's last CPU time.
+
+    Parameters
+    ----------
+    pid : int
+        Root of the tree.
+    exclude_cpu_of : float
+        CPU seconds of the root already spent before the measurement (subtracted).
+    """
+
+    def __init__(self, pid: int, exclude_cpu_of: float = 0.0):
+        import psutil
+        self.root = psutil.Process(pid)
+        self.peak = 0
+        self.cpu: dict[tuple[int, float], float] = {}
+        self.base = exclude_cpu_of
+        self._stop = threading.Event()
+        self._th = threading.Thread(target=self._loop, daemon=True)
+
+    def _once(self) -> None:
+        import psutil
         try:
-            total += q.memory_info().rss
+            procs = [self.root] + self.root.children(recursive=True)
         except psutil.Error:
-            pass
-    return total
+            return
+        rss = 0
+        for q in procs:
+            try:
+                with q.oneshot():
+                    rss += q.memory_info().rss
+                    t = q.cpu_times()
+                    self.cpu[(q.pid, q.create_time())] = t.user + t.system
+            except psutil.Error:
+                pass
+        self.peak = max(self.peak, rss)
+
+    def _loop(self) -> None:
+        while not self._stop.is_set():
+            self._once()
+            self._stop.wait(SAMPLE_S)
+
+    def __enter__(self):
+        self._once()
+        self._th.start()
+        return self
+
+    def __exit__(self, *exc):
+        self._stop.set()
+        self._th.join()
+
+    @property
+    def cpu_seconds(self) -> float:
+        """Sum of the last CPU time seen of every process of the tree, s."""
+        return sum(self.cpu.values()) - self.base
+
+    @property
+    def peak_mb(self) -> float:
+        return self.peak / 2 ** 20
 
 
 def measure(cmd: list[str]) -> dict:
-    """Wall time (s), exit code and peak RSS (MB) of the process tree of ``cmd``."""
-    import psutil
-    import resource
+    """Wall s, CPU s and peak RSS MB of the process tree of ``cmd``, its exit code and last stderr line."""
+    load0 = os.getloadavg()[0]
     ru0 = resource.getrusage(resource.RUSAGE_CHILDREN)
     t0 = time.perf_counter()
     proc = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
-    ps = psutil.Process(proc.pid)
-    peak = 0
-    stop = threading.Event()
-
-    def sample():
-        nonlocal peak
-        while not stop.is_set():
-            peak = max(peak, _tree_rss(ps))
-            time.sleep(0.1)
-
-    th = threading.Thread(target=sample, daemon=True)
-    th.start()
-    _, err = proc.communicate()
-    stop.set()
-    th.join()
+    with TreeSampler(proc.pid) as s:
+        _, err = proc.communicate()
+    wall = time.perf_counter() - t0
     ru1 = resource.getrusage(resource.RUSAGE_CHILDREN)
-    cpu = (ru1.ru_utime - ru0.ru_utime) + (ru1.ru_stime - ru0.ru_stime)
-    return {"seconds": time.perf_counter() - t0, "cpu_s": cpu, "rc": proc.returncode, "peak_mb": peak / 2**20,
-            "stderr": err.strip().splitlines()[-1:] if err.strip() else []}
+    ru_cpu = (ru1.ru_utime - ru0.ru_utime) + (ru1.ru_stime - ru0.ru_stime)
+    lines = err.strip().splitlines()
+    return {"wall_s": wall, "cpu_s": max(ru_cpu, s.cpu_seconds), "cpu_rusage_s": ru_cpu,
+            "cpu_psutil_s": s.cpu_seconds, "peak_mb": s.peak_mb, "rc": proc.returncode,
+            "load": [load0, os.getloadavg()[0]], "stderr": lines[-1:] if lines else []}
 
 
-def measure_dask(src: Path, out: Path, fmt: list[str]) -> dict:
-    """``export`` through the Python API on a LocalCluster of 2 worker processes."""
+def measure_dask(src: Path, out: Path, fmt: list[str], workers: int = 2) -> dict:
+    """``export`` through the Python API on a LocalCluster of ``workers`` worker processes."""
     import psutil
     from dask.distributed import Client, LocalCluster
 
@@ -175,98 +245,195 @@ def measure_dask(src: Path, out: Path, fmt: list[str]) -> dict:
     from lod2energy.pipeline import RunOptions, export
 
     a = build_parser().parse_args(["export", str(src), "-o", str(out), *fmt])
-    with LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cluster, \
-            Client(cluster) as client:
-        me = psutil.Process()
-        peak = 0
-        stop = threading.Event()
+    load0 = os.getloadavg()[0]
+    me = psutil.Process()
+    t = me.cpu_times()
+    t0 = time.perf_counter()
+    with TreeSampler(me.pid, exclude_cpu_of=t.user + t.system) as s:
+        with LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
+                          dashboard_address=None) as cluster, Client(cluster) as client:
+            res = export(str(src), str(out), export_options(a), RunOptions(quiet=True),
+                         executor=DaskExecutor(client))
+            s._once()  # the workers' CPU before the cluster shuts down
+    wall = time.perf_counter() - t0
+    return {"wall_s": wall, "cpu_s": s.cpu_seconds, "cpu_rusage_s": None, "cpu_psutil_s": s.cpu_seconds,
+            "peak_mb": s.peak_mb, "rc": res.exit_code, "load": [load0, os.getloadavg()[0]], "stderr": []}
 
-        def sample():
-            nonlocal peak
-            while not stop.is_set():
-                peak = max(peak, _tree_rss(me))
-                time.sleep(0.1)
 
-        th = threading.Thread(target=sample, daemon=True)
-        th.start()
-        t0 = time.perf_counter()
-        res = export(str(src), str(out), export_options(a), RunOptions(quiet=True), executor=DaskExecutor(client))
-        dt = time.perf_counter() - t0
-        stop.set()
-        th.join()
-    return {"seconds": dt, "cpu_s": None, "rc": res.exit_code, "peak_mb": peak / 2**20, "stderr": []}
+def outcomes(command: str, out: Path) -> dict:
+    """Building count and outcome counts from the command's own report in ``out``."""
+    from collections import Counter
+    try:
+        if command == "validate":
+            d = json.loads((out / "validate.json").read_text(encoding="utf-8"))
+            fo = {f["type"]: f for f in d.get("features_overview", [])}.get("Building", {})
+            n, ok = int(fo.get("total", 0)), int(fo.get("valid", 0))
+            return {"buildings": n, "outcomes": {"valid": ok, "invalid": n - ok}}
+        if command == "repair":
+            d = json.loads((out / "repair.json").read_text(encoding="utf-8"))
+            c = Counter(b.get("stage", "?") for b in d.get("buildings", []))
+            return {"buildings": len(d.get("buildings", [])), "outcomes": dict(c)}
+        d = json.loads((out / "report.json").read_text(encoding="utf-8"))
+        c = Counter(b.get("outcome", "?") for b in d.get("buildings", []))
+        return {"buildings": len(d.get("buildings", [])), "outcomes": dict(c)}
+    except (OSError, ValueError, KeyError):
+        return {"buildings": 0, "outcomes": {}}
+
+
+# ----------------------------------------------------------------------------- the plan
+
+def plan(a) -> list[dict]:
+    """The rows to measure, in order: dicts of input, command, workers and a note."""
+    jobs = [int(j) for j in a.jobs.split(",") if j]
+    cmds = [c for c in a.commands.split(",") if c and c != "none"]
+    rows = []
+    sizes = [int(s) for s in a.sizes.split(",") if s and s != "none"]
+    for size in sizes:
+        for c in cmds:
+            if c == "export-run":
+                continue
+            note = ""
+            if c == "export-all" and size > a.all_max:
+                c, note = "export-stl", f"export-all skipped above {a.all_max:,} objects (cost); STL only"
+            for j in ([1] if c == "validate" else jobs):
+                rows.append({"set": "tiled", "input": f"denhaag_x{size}", "size": size, "command": c,
+                             "workers": j, "note": note})
+        if a.dask and size == sizes[0]:
+            rows.append({"set": "tiled", "input": f"denhaag_x{size}", "size": size, "command": a.dask_command,
+                         "workers": 2, "note": "Dask LocalCluster, 2 worker processes (Python API)",
+                         "dask": True})
+    if "export-run" in cmds:
+        for j in jobs:
+            rows.append({"set": "sample", "input": f"denhaag_first{a.run_sample}", "size": 0,
+                         "command": "export-run", "workers": j, "note": "EnergyPlus on each IDF"})
+    tiles = [t for t in a.tiles.split(",") if t and t != "none"]
+    for t in tiles:
+        for c in a.tile_commands.split(","):
+            for j in ([1] if c == "validate" else [int(x) for x in a.tile_jobs.split(",")]):
+                rows.append({"set": "tile", "input": t, "size": 0, "command": c, "workers": j, "note": ""})
+    return rows
+
+
+def _input(row: dict, tmp: Path, run_sample: int) -> Path:
+    if row["set"] == "tile":
+        return DATA / TILES[row["input"]]
+    if row["set"] == "sample":
+        p = tmp / f"{row['input']}.city.jsonl"
+        if not p.exists():
+            src = tmp / "denhaag_x845.city.jsonl"
+            if not src.exists():
+                tiled_seq(1, src)
+            sample_seq(src, run_sample, p)
+        return p
+    p = tmp / f"{row['input']}.city.jsonl"
+    if not p.exists():
+        tiled_seq(max(1, round(row["size"] / 845)), p)
+    return p
+
+
+def _revision() -> str:
+    try:
+        # the last commit that changed the code measured (not the benchmarks)
+        return subprocess.run(["git", "-C", str(REPO), "log", "-1", "--format=%h", "--", "lod2energy", "exporters",
+                               "templates", "pyproject.toml"], capture_output=True,
+                              text=True, check=True).stdout.strip() or "?"
+    except (OSError, subprocess.CalledProcessError):
+        return "?"
 
 
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--sizes", default="845", help="objects per file, multiples of 845 (default 845)")
-    ap.add_argument("--jobs", default="1,2")
-    ap.add_argument("--commands", default="validate,export-stl,export-all")
-    ap.add_argument("--run-sample", type=int, default=5, help="buildings for export-run (EnergyPlus)")
-    ap.add_argument("--all-sample", type=int, default=0,
-                    help="export-all on the first N objects only (0: the whole file)")
-    ap.add_argument("--dask", action="store_true", help="add a Dask LocalCluster row (export-stl)")
+    ap.add_argument("--sizes", default="845,3380,13520", help="objects per tiled file, multiples of 845 ('none')")
+    ap.add_argument("--jobs", default="1,2", help="worker counts for repair and export")
+    ap.add_argument("--commands", default="validate,repair,export-all,export-run",
+                    help="of: " + ", ".join(COMMANDS) + " ('none')")
+    ap.add_argument("--all-max", type=int, default=3380, help="largest size for export-all; above: export-stl")
+    ap.add_argument("--run-sample", type=int, default=10, help="buildings for export-run (EnergyPlus)")
+    ap.add_argument("--tiles", default="denhaag,delfshaven,tile5908,berlin",
+                    help="real tiles, of: " + ", ".join(TILES) + " ('none')")
+    ap.add_argument("--tile-commands", default="validate,export-all")
+    ap.add_argument("--tile-jobs", default="1")
+    ap.add_argument("--dask", action="store_true", help="a Dask LocalCluster row at the first size")
+    ap.add_argument("--dask-command", default="export-stl", choices=["export-stl", "export-all"])
+    ap.add_argument("--plan", action="store_true", help="print the rows that would run, run nothing")
+    ap.add_argument("--rows", default=str(REPO / "benchmarks" / "results" / "scale.jsonl"))
     ap.add_argument("--out", default=str(REPO / "benchmarks" / "results" / "scale.md"))
     a = ap.parse_args(argv)
+    todo = plan(a)
+    if a.plan:
+        for r in todo:
+            print(json.dumps(r))
+        return 0
     if not SOURCE.exists():
         print(f"missing {SOURCE}", file=sys.stderr)
         return 2
     exe = [sys.executable, "-m", "lod2energy"]
-    sizes = [int(s) for s in a.sizes.split(",")]
-    jobs = [int(j) for j in a.jobs.split(",")]
-    rows = []
+    rev, day = _revision(), datetime.date.today().isoformat()
     with tempfile.TemporaryDirectory(prefix="bench_scale_") as tmp:
         tmp = Path(tmp)
-        for size in sizes:
-            src = tmp / f"denhaag_x{size}.city.jsonl"
-            n = tiled_seq(max(1, round(size / 845)), src)
-            for cmd_name in a.commands.split(","):
-                cmd_src, n_cmd = src, n
-                sample = a.run_sample if cmd_name == "export-run" else (
-                    a.all_sample if cmd_name == "export-all" else 0)
-                if sample:
-                    cmd_src = tmp / f"sample_{sample}.city.jsonl"
-                    sample_seq(src, sample, cmd_src)
-                    n_cmd = sample
-                for j in (jobs if cmd_name.startswith("export") else [1]):
-                    out = tmp / "out"
-                    shutil.rmtree(out, ignore_errors=True)
-                    cmd = exe + [x.format(src=cmd_src, out=out, jobs=j) for x in COMMANDS[cmd_name]]
-                    r = measure(cmd)
-                    rows.append({"objects": n_cmd, "command": cmd_name, "workers": j, **r})
-                    print(json.dumps(rows[-1]), flush=True)
-            if a.dask:
-                out = tmp / "out"
-                shutil.rmtree(out, ignore_errors=True)
-                r = measure_dask(src, out, ["--stl", "-q"])
-                rows.append({"objects": n, "command": "export-stl (Dask LocalCluster)", "workers": 2, **r})
-                print(json.dumps(rows[-1]), flush=True)
-    write_table(rows, Path(a.out))
+        for row in todo:
+            src = _input(row, tmp, a.run_sample)
+            if not src.exists():
+                print(f"missing {src}", file=sys.stderr)
+                continue
+            out = tmp / "out"
+            shutil.rmtree(out, ignore_errors=True)
+            out.mkdir()
+            if row.get("dask"):
+                fmt = ALL3 if row["command"] == "export-all" else ["--stl"]
+                r = measure_dask(src, out, fmt + ["-q"])
+            else:
+                args = [x.format(src=src, out=out, jobs=row["workers"]) for x in COMMANDS[row["command"]]]
+                if row["command"] == "export-run" and EPW.exists():
+                    args += ["--weather", str(EPW)]
+                r = measure(exe + args)
+            rec = {**row, **r, **outcomes(row["command"], out), "revision": rev, "date": day,
+                   "cores": os.cpu_count()}
+            rec.pop("dask", None)
+            print(json.dumps(rec), flush=True)
+            with open(a.rows, "a", encoding="utf-8") as f:
+                f.write(json.dumps(rec) + "\n")
+            write_table(Path(a.rows), Path(a.out))
     return 0
 
 
-def write_table(rows: list[dict], path: Path) -> None:
-    base = {(r["objects"], r["command"]): r["seconds"] for r in rows if r["workers"] == 1}
-    lines = ["# City scale (`benchmarks/bench_scale.py`)", "",
-             f"Tiled copies of `../shared/data/denhaag/DenHaag_01.city.json` as CityJSONSeq; "
-             f"{os.cpu_count()} cores, shared with other work while it ran (figures are lower bounds).", "",
-             "`objects/CPU-s` is objects per CPU-second of the whole process tree (the fair per-core "
-             "rate on a loaded machine); `objects/s per worker` is objects / wall time / workers.", "",
-             "| objects | command | workers | wall s | CPU s | objects/CPU-s | objects/s per worker | "
-             "speed-up vs 1 (wall) | peak RSS MB (tree) | exit |",
-             "|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|"]
+# ----------------------------------------------------------------------------- the table
+
+def table(rows: list[dict]) -> list[str]:
+    """Markdown table of measured rows (the latest measurement of each row key wins)."""
+    last: dict[tuple, dict] = {}
     for r in rows:
-        rate = r["objects"] / r["seconds"] / r["workers"] if r["seconds"] else 0.0
-        cpu = r.get("cpu_s")
-        per_cpu = f"{r['objects'] / cpu:.1f}" if cpu else ""
-        b = base.get((r["objects"], r["command"].split(" (")[0]))
-        sp = f"{b / r['seconds']:.2f}x" if b and r["workers"] > 1 else ""
-        lines.append(f"| {r['objects']:,} | {r['command']} | {r['workers']} | {r['seconds']:.1f} | "
-                     f"{'' if cpu is None else f'{cpu:.1f}'} | {per_cpu} | {rate:.1f} | "
-                     f"{sp} | {r['peak_mb']:.0f} | {r['rc']} |")
-    path.parent.mkdir(parents=True, exist_ok=True)
-    path.write_text("\n".join(lines) + "\n", encoding="utf-8")
-    print(f"table: {path}")
+        last[(r["revision"], r["set"], r["input"], r["command"], r["workers"], r["note"].startswith("Dask"))] = r
+    base = {(k[0], k[1], k[2], k[3]): r["wall_s"] for k, r in last.items() if r["workers"] == 1 and not k[5]}
+    out = ["| code | input | buildings | command | workers | wall s | CPU s | buildings/CPU-s | "
+           "buildings/s per worker (wall) | speed-up 1->2 (wall) | peak RSS MB (tree) | load avg | exit | "
+           "outcomes | note |",
+           "|---|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---|---:|---|---|"]
+    for k, r in last.items():
+        n = r.get("buildings") or 0
+        cpu = r.get("cpu_s") or 0.0
+        b = base.get(k[:4])
+        sp = f"{b / r['wall_s']:.2f}x" if b and r["workers"] > 1 else ""
+        oc = ", ".join(f"{v} {k2}" for k2, v in sorted(r.get("outcomes", {}).items()))
+        out.append(f"| {r['revision']} | {r['input']} | {n:,} | {r['command']} | {r['workers']} | "
+                   f"{r['wall_s']:.1f} | {cpu:.1f} | {n / cpu if cpu else 0:.1f} | "
+                   f"{n / r['wall_s'] / r['workers']:.1f} | {sp} | {r['peak_mb']:.0f} | "
+                   f"{r['load'][0]:.1f} -> {r['load'][1]:.1f} | {r['rc']} | {oc} | {r['note']} |")
+    return out
+
+
+def write_table(rows_path: Path, md: Path) -> None:
+    rows = [json.loads(ln) for ln in rows_path.read_text(encoding="utf-8").splitlines() if ln.strip()]
+    body = "\n".join(["<!-- table -->", *table(rows), "<!-- /table -->"])
+    text = md.read_text(encoding="utf-8") if md.exists() else "# City scale (`benchmarks/bench_scale.py`)\n\n"
+    if "<!-- table -->" in text and "<!-- /table -->" in text:
+        pre, rest = text.split("<!-- table -->", 1)
+        post = rest.split("<!-- /table -->", 1)[1]
+        text = pre + body + post
+    else:
+        text = text.rstrip("\n") + "\n\n" + body + "\n"
+    md.parent.mkdir(parents=True, exist_ok=True)
+    md.write_text(text, encoding="utf-8")
 
 
 if __name__ == "__main__":
