@@ -462,32 +462,43 @@ def _ring_edges(ring_ends) -> set[tuple[int, int]]:
 
 
 def _delaunay_if_conforming(pts: np.ndarray, ring_ends) -> np.ndarray | None:
-    """Inside triangles of the Delaunay triangulation when it contains all ring edges, else None."""
-    if len(np.unique(pts, axis=0)) != len(pts):
-        return None  # a ring touching another at a vertex: leave it to the general path
+    """Inside triangles of the Delaunay triangulation when it contains all ring edges, else None.
+
+    Duplicate points are found by a lexicographic sort, the ring edges looked up in an
+    (n, n) incidence table (small n), the same answers as ``np.unique`` / ``np.isin``.
+    """
+    n = len(pts)
+    if n > 1:
+        o = np.lexsort((pts[:, 1], pts[:, 0]))
+        s = pts[o]
+        if ((s[1:, 0] == s[:-1, 0]) & (s[1:, 1] == s[:-1, 1])).any():
+            return None  # a ring touching another at a vertex: leave it to the general path
     try:
         dt = Delaunay(pts)
     except Exception:  # Qhull refuses degenerate input
         return None
-    n = len(pts)
-    simp = np.sort(dt.simplices, axis=1)
-    have = np.concatenate([simp[:, 0] * n + simp[:, 1], simp[:, 1] * n + simp[:, 2], simp[:, 0] * n + simp[:, 2]])
+    tri = dt.simplices
     ends = np.asarray(ring_ends, dtype=np.intp)
-    sizes = np.diff(np.concatenate([[0], ends]))
+    sizes = np.diff(ends, prepend=0)
     i = np.arange(n)
     j = i + 1
     j[ends - 1] = ends - sizes
-    need = np.minimum(i, j) * n + np.maximum(i, j)
-    if not np.isin(need, have).all():
-        return None
-    tri = dt.simplices
+    if n <= _EDGE_TABLE_MAX:
+        tab = np.zeros((n, n), dtype=bool)
+        a, b, c = tri[:, 0], tri[:, 1], tri[:, 2]
+        for u, v in ((a, b), (b, c), (a, c)):
+            tab[u, v] = True
+            tab[v, u] = True
+        if not tab[i, j].all():
+            return None
+    else:
+        simp = np.sort(tri, axis=1)
+        have = np.concatenate([simp[:, 0] * n + simp[:, 1], simp[:, 1] * n + simp[:, 2], simp[:, 0] * n + simp[:, 2]])
+        if not np.isin(np.minimum(i, j) * n + np.maximum(i, j), have).all():
+            return None
     c = pts[tri].mean(axis=1)
-    start = 0
-    rings = []
-    for end in np.asarray(ring_ends).tolist():
-        rings.append(pts[start:end])
-        start = end
-    poly = shapely.Polygon(rings[0], rings[1:])
+    bounds = [0] + ends.tolist()
+    poly = shapely.Polygon(pts[:bounds[1]], [pts[bounds[k]:bounds[k + 1]] for k in range(1, len(bounds) - 1)])
     inside = shapely.contains_xy(poly, c[:, 0], c[:, 1])
     tri = tri[inside].astype(np.intp)
     a, b, cc = pts[tri[:, 0]], pts[tri[:, 1]], pts[tri[:, 2]]
@@ -496,55 +507,86 @@ def _delaunay_if_conforming(pts: np.ndarray, ring_ends) -> np.ndarray | None:
     return tri
 
 
+_EDGE_TABLE_MAX = 2048
+"""Up to this many points the Delaunay edges go in a dense (n, n) table."""
+
+
 def lawson_cdt(pts: np.ndarray, ring_ends, max_flips: int | None = None) -> np.ndarray:
-    """CDT by ear clipping then constrained Lawson flips (general, slower path)."""
+    """CDT by ear clipping then constrained Lawson flips (general, slower path).
+
+    The flip test is :func:`_incircle` and :func:`_orient` written out inline (same
+    arithmetic, same order, so the same flips).
+    """
     tri = ear_triangles(pts, ring_ends)
     n = len(pts)
     if len(tri) < 2:
         return tri
     constrained = _ring_edges(ring_ends)
-    tris = [list(t) for t in tri.tolist()]
-    edge_tris: dict[tuple[int, int], list[int]] = {}
+    tris = tri.tolist()
+    edge_tris = {}
     for ti, (a, b, c) in enumerate(tris):
         for u, v in ((a, b), (b, c), (c, a)):
-            edge_tris.setdefault((min(u, v), max(u, v)), []).append(ti)
+            k = (u, v) if u < v else (v, u)
+            lst = edge_tris.get(k)
+            if lst is None:
+                edge_tris[k] = [ti]
+            else:
+                lst.append(ti)
     stack = [e for e, ts in edge_tris.items() if len(ts) == 2 and e not in constrained]
-    P = pts.tolist()
+    X = pts[:, 0].tolist()
+    Y = pts[:, 1].tolist()
     budget = max_flips if max_flips is not None else 10 * n * n + 10
+    get = edge_tris.get
     while stack and budget > 0:
         e = stack.pop()
-        ts = edge_tris.get(e)
+        ts = get(e)
         if ts is None or len(ts) != 2:
             continue
         t1, t2 = ts
         a, b = e
-        # orient t1 so that it holds a -> b
         A, B, C = tris[t1]
-        rot = {(A, B): (A, B, C), (B, C): (B, C, A), (C, A): (C, A, B)}
-        if (a, b) in rot:
-            a, b, c = rot[(a, b)]
+        if (a == A and b == B) or (b == A and a == B):
+            a, b, c = A, B, C
+        elif (a == B and b == C) or (b == B and a == C):
+            a, b, c = B, C, A
         else:
-            a, b, c = rot[(b, a)]
-        D = [v for v in tris[t2] if v != a and v != b]
+            a, b, c = C, A, B
+        T2 = tris[t2]
+        D = [v for v in T2 if v != a and v != b]
         if len(D) != 1:
             continue
         d = D[0]
-        if _incircle(P[a], P[b], P[c], P[d]) <= 0.0:
+        xd, yd = X[d], Y[d]
+        adx, ady = X[a] - xd, Y[a] - yd
+        bdx, bdy = X[b] - xd, Y[b] - yd
+        cdx, cdy = X[c] - xd, Y[c] - yd
+        ad = adx * adx + ady * ady
+        bd = bdx * bdx + bdy * bdy
+        cd = cdx * cdx + cdy * cdy
+        det = adx * (bdy * cd - bd * cdy) - ady * (bdx * cd - bd * cdx) + ad * (bdx * cdy - bdy * cdx)
+        perm = ((abs(bdx * cdy) + abs(bdy * cdx)) * ad + (abs(cdx * ady) + abs(cdy * adx)) * bd
+                + (abs(adx * bdy) + abs(ady * bdx)) * cd)
+        if not (abs(det) > 1e-14 * perm) or det <= 0.0:
             continue
-        if _orient(P[a], P[d], P[c]) <= 0 or _orient(P[d], P[b], P[c]) <= 0:
+        xa, ya, xc, yc = X[a], Y[a], X[c], Y[c]
+        if (xd - xa) * (yc - ya) - (yd - ya) * (xc - xa) <= 0:
+            continue
+        xb, yb = X[b], Y[b]
+        if (xb - xd) * (yc - yd) - (yb - yd) * (xc - xd) <= 0:
             continue
         budget -= 1
         tris[t1] = [a, d, c]
         tris[t2] = [d, b, c]
-        del edge_tris[(min(a, b), max(a, b))]
-        edge_tris[(min(c, d), max(c, d))] = [t1, t2]
-        # edge (b, d) moved from t2 to t2 (unchanged); (a, c) stays in t1; (b, c) moved t1 -> t2;
-        # (a, d) moved t2 -> t1
-        for (u, v), old, new in (((b, c), t1, t2), ((a, d), t2, t1)):
-            lst = edge_tris[(min(u, v), max(u, v))]
-            lst[lst.index(old)] = new
+        del edge_tris[(a, b) if a < b else (b, a)]
+        edge_tris[(c, d) if c < d else (d, c)] = [t1, t2]
+        lst = edge_tris[(b, c) if b < c else (c, b)]
+        lst[lst.index(t1)] = t2
+        lst = edge_tris[(a, d) if a < d else (d, a)]
+        lst[lst.index(t2)] = t1
         for u, v in ((a, c), (c, b), (b, d), (d, a)):
-            k = (min(u, v), max(u, v))
-            if k not in constrained and len(edge_tris.get(k, ())) == 2:
-                stack.append(k)
+            k = (u, v) if u < v else (v, u)
+            if k not in constrained:
+                lk = get(k)
+                if lk is not None and len(lk) == 2:
+                    stack.append(k)
     return np.asarray(tris, dtype=np.intp).reshape(-1, 3)
