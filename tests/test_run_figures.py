@@ -54,9 +54,9 @@ import pytest  # noqa: E402
 def test_cli_run_puts_zone_figures_in_report_and_geojson(tmp_path):
     from conftest import shared_path
     from export_helpers import EPW
-    from lod2energy import energyplus
+    from lod2energy.exporters import energyplus
     from lod2energy.cli import main
-    if energyplus.binary() is None:
+    if energyplus.run.binary() is None:
         pytest.skip("EnergyPlus not installed")
     lines = shared_path("3dbag", "delft_subset.city.jsonl").read_text().splitlines()
     one = [ln for ln in lines[1:] if "0503100000005156" in ln][:1]  # b3_bouwlagen 3: three storey zones
