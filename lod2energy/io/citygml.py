@@ -34,6 +34,9 @@ Geometry, per object:
 - a polygon's semantic surface is the thematic surface that holds it, also when a Solid
   refers to it by xlink (one semantic surface per thematic surface, ``id`` its gml:id).
 
+The GML geometry itself (surfaces, xlinks, rings, coordinates) is read by
+:mod:`lod2energy.io.gml`, the attributes by :mod:`lod2energy.io.citygml_attributes`.
+
 Rings: ``gml:posList`` (``srsDimension`` on it or an enclosing geometry, default 3),
 ``gml:pos`` lists or ``gml:coordinates``; the repeated closing point is dropped, a ring that
 is not closed is kept as given and reported as 103 (RING_NOT_CLOSED).
@@ -60,10 +63,12 @@ import numpy as np
 
 from lod2energy.errors import FormatNotSupportedError, InputError
 from lod2energy.io.cityjson import build_feature
+from lod2energy.io.citygml_attributes import attributes as _attributes
+from lod2energy.io.gml import (SOLID_MEMBERS as _SOLID_MEMBERS, SURFACE_KINDS as _SURFACE_KINDS, XLINK_HREF,
+                               GmlGeometry, gml_id as _gml_id, local_name as _local)
 from lod2energy.crs import cityjson_reference_system
 from lod2energy.model import Building, CityModel, FeatureError, frozen_mapping
 
-XLINK_HREF = "{http://www.w3.org/1999/xlink}href"
 ROOTS = ("CityModel", "FeatureCollection")  # a CityGML file, or a WFS answer holding city objects
 
 #: Top-level city objects read as features (CityGML local name -> CityJSON type).
@@ -106,35 +111,6 @@ VERSIONS = ("1.0", "2.0", "3.0")
 _GEOMETRY_PROPERTY = re.compile(r"^lod([0-4])(Solid|MultiSolid|MultiSurface|CompositeSurface|Geometry|"
                                 r"FootPrint|RoofEdge)$")
 _THEMATIC_GEOMETRY = re.compile(r"^lod([0-4])(MultiSurface|Geometry)$")
-_POLYGONS = ("Polygon", "Triangle", "Rectangle", "PolygonPatch")
-_SURFACE_SETS = ("MultiSurface", "CompositeSurface", "Shell", "Surface", "TriangulatedSurface", "Tin",
-                 "PolyhedralSurface")
-_SURFACE_MEMBERS = ("surfaceMember", "surfaceMembers", "patches", "trianglePatches", "polygonPatches",
-                    "baseSurface")
-_SURFACE_KINDS = _POLYGONS + _SURFACE_SETS + ("OrientableSurface",)
-_SOLID_MEMBERS = ("solidMember", "solidMembers")
-
-#: Attributes read from the object's own properties (local name -> parser).
-_INT_ATTRS = ("yearOfConstruction", "yearOfDemolition", "storeysAboveGround", "storeysBelowGround")
-_FLOAT_ATTRS = ("measuredHeight",)
-_TEXT_ATTRS = ("function", "usage", "class", "roofType", "storeyHeightsAboveGround",
-               "storeyHeightsBelowGround")
-_GENERIC = {"stringAttribute": str, "intAttribute": int, "doubleAttribute": float,
-            "measureAttribute": float, "dateAttribute": str, "uriAttribute": str}
-#: CityGML 3.0 generic attributes (inside ``gen:genericAttribute``; ``gen:name`` and ``gen:value``).
-_GENERIC3 = {"StringAttribute": str, "IntAttribute": int, "DoubleAttribute": float,
-             "MeasureAttribute": float, "DateAttribute": str, "UriAttribute": str, "CodeAttribute": str}
-
-
-def _local(tag: Any) -> str:
-    return tag.rsplit("}", 1)[-1] if isinstance(tag, str) else ""
-
-
-def _gml_id(el: ET.Element) -> str | None:
-    for k, v in el.attrib.items():
-        if _local(k) == "id":
-            return v
-    return None
 
 
 # ----------------------------------------------------------------------------- the file
@@ -255,20 +231,16 @@ def _feature_or_error(el: ET.Element, ctype: str, n: int) -> Building | FeatureE
 
 # ----------------------------------------------------------------------------- one feature
 
-class _Feature:
+class _Feature(GmlGeometry):
     """One top-level city object and its children, turned into CityJSON-like dicts."""
 
     def __init__(self, el: ET.Element, ctype: str, oid: str):
+        super().__init__()
         self.el = el
         self.ctype = ctype
         self.oid = oid
-        self.surfaces: dict[str, ET.Element] = {}  # gml:id -> surface element (for xlinks)
-        self.dims: dict[ET.Element, int] = {}  # coordinate element -> srsDimension in force
         self.semantic_of: dict[ET.Element, ET.Element] = {}  # polygon -> its thematic surface
         self._index(el, 3)
-        self.vertex_ids: dict[tuple[float, float, float], int] = {}
-        self.vertices: list[tuple[float, float, float]] = []
-        self.issues: list[tuple[int, str, str]] = []
         self.used: set[ET.Element] = set()
         self.left_out: dict[str, int] = {}  # interior detail not read as envelope: kind -> count
 
@@ -356,7 +328,7 @@ class _Feature:
     def _target(self, prop: ET.Element, where: str) -> ET.Element | None:
         href = prop.get(XLINK_HREF)
         if href is not None:
-            return self._resolve(href, where)
+            return self.resolve(href, where)
         return next(iter(prop), None)
 
     def _explicit(self, oid: str, prop: ET.Element, lod: str) -> dict | None:
@@ -366,16 +338,16 @@ class _Feature:
             return None
         name = _local(g.tag)
         if name == "Solid":
-            out = {"type": "Solid", "lod": lod, "_shells": self._solid(g, where)}
+            out = {"type": "Solid", "lod": lod, "_shells": self.solid(g, where)}
             faces = [f for sh in out["_shells"] for f in sh]
         elif name in ("MultiSolid", "CompositeSolid"):
             out = {"type": name, "lod": lod,
-                   "_solids": [self._solid(s, where) for s in self._members(g, _SOLID_MEMBERS, where)]}
+                   "_solids": [self.solid(s, where) for s in self.members(g, _SOLID_MEMBERS, where)]}
             faces = [f for so in out["_solids"] for sh in so for f in sh]
         elif name in _SURFACE_KINDS:
             gtype = name if name in ("MultiSurface", "CompositeSurface") else (
                 "CompositeSurface" if name == "Shell" else "MultiSurface")
-            out = {"type": gtype, "lod": lod, "_faces": self._surface(g, where)}
+            out = {"type": gtype, "lod": lod, "_faces": self.surface(g, where)}
             faces = out["_faces"]
         else:
             return None  # points, curves, implicit geometry: nothing to validate as a surface
@@ -412,64 +384,11 @@ class _Feature:
             if m:
                 g = self._target(prop, where)
                 if g is not None and _local(g.tag) in _SURFACE_KINDS:
-                    yield m.group(1), self._surface(g, where)
+                    yield m.group(1), self.surface(g, where)
             elif name in OPENING_PROPERTIES:
                 for op in prop:
                     if _local(op.tag) in THEMATIC:
                         yield from self._theme_faces(op, where)
-
-    # -- GML geometry
-
-    def _resolve(self, href: str, where: str) -> ET.Element:
-        key = href.rsplit("#", 1)[-1].strip()
-        target = self.surfaces.get(key)
-        if target is None:
-            raise InputError(f"{where}: xlink:href {href!r} points to no surface of this building")
-        return target
-
-    def _members(self, el: ET.Element, names: tuple[str, ...], where: str) -> list[ET.Element]:
-        out = []
-        for m in el:
-            if _local(m.tag) not in names:
-                continue
-            href = m.get(XLINK_HREF)
-            if href is not None:
-                out.append(self._resolve(href, where))
-            else:
-                out.extend(m)
-        return out
-
-    def _solid(self, solid: ET.Element, where: str) -> list[list[tuple[ET.Element, bool]]]:
-        shells = []
-        for part in solid:
-            if _local(part.tag) in ("exterior", "interior"):
-                href = part.get(XLINK_HREF)
-                surf = [self._resolve(href, where)] if href is not None else list(part)
-                faces = []
-                for s in surf:
-                    faces.extend(self._surface(s, where))
-                if _local(part.tag) == "exterior":
-                    shells.insert(0, faces)
-                else:
-                    shells.append(faces)
-        return shells
-
-    def _surface(self, el: ET.Element, where: str, reverse: bool = False,
-                 depth: int = 0) -> list[tuple[ET.Element, bool]]:
-        """The polygons of a surface element: ``[(polygon element, reversed), ...]``."""
-        if depth > 50:
-            raise InputError(f"{where}: surfaces nested more than 50 deep (an xlink cycle?)")
-        name = _local(el.tag)
-        if name in _POLYGONS:
-            return [(el, reverse)]
-        if name == "OrientableSurface":
-            reverse = reverse ^ (el.get("orientation", "+").strip() == "-")
-        elif name not in _SURFACE_SETS:
-            raise InputError(f"{where}: unsupported surface type gml:{name}")
-        out = []
-        for m in self._members(el, _SURFACE_MEMBERS, where):
-            out.extend(self._surface(m, where, reverse, depth + 1))
-        return out
 
     def _finish(self, oid: str, gi: int, g: dict) -> dict:
         """Rings -> vertex indices; semantics from the thematic surfaces."""
@@ -483,7 +402,7 @@ class _Feature:
                 tid = _gml_id(theme)
                 kind = _local(theme.tag)
                 surfaces.append({"type": SEMANTIC_TYPE.get(kind, kind), **({"id": tid} if tid else {})})
-            return self._polygon(poly, rev, loc), (sem_index[theme] if theme is not None else None)
+            return self.polygon(poly, rev, loc), (sem_index[theme] if theme is not None else None)
 
         base = f"coid={oid}|geom={gi}"
         out: dict[str, Any] = {"type": g["type"], "lod": g["lod"]}
@@ -504,162 +423,3 @@ class _Feature:
         if surfaces:
             out["semantics"] = {"surfaces": surfaces, "values": values}
         return out
-
-    def _polygon(self, poly: ET.Element, reverse: bool, loc: str) -> list[list[int]]:
-        rings = []
-        for part in poly:
-            name = _local(part.tag)
-            if name not in ("exterior", "interior", "outerBoundaryIs", "innerBoundaryIs"):
-                continue
-            for ring in part:
-                r = self._ring(ring, loc)
-                if reverse:
-                    r = r[:1] + r[1:][::-1]
-                if name in ("exterior", "outerBoundaryIs"):
-                    rings.insert(0, r)
-                else:
-                    rings.append(r)
-        if not rings:
-            raise InputError(f"{loc}: polygon without rings")
-        return rings
-
-    def _ring(self, ring: ET.Element, loc: str) -> list[int]:
-        if _local(ring.tag) != "LinearRing":
-            raise InputError(f"{loc}: unsupported ring type gml:{_local(ring.tag)} (LinearRing expected)")
-        pts = self._points(ring, loc)
-        if len(pts) >= 2 and pts[0] == pts[-1]:
-            pts = pts[:-1]
-        else:
-            self.issues.append((103, loc, "first and last points of a GML ring must be the same"))
-        out = []
-        for p in pts:
-            i = self.vertex_ids.get(p)
-            if i is None:
-                i = self.vertex_ids[p] = len(self.vertices)
-                self.vertices.append(p)
-            out.append(i)
-        return out
-
-    def _points(self, ring: ET.Element, loc: str) -> list[tuple[float, float, float]]:
-        pos_list = [e for e in ring if _local(e.tag) == "posList"]
-        if pos_list:
-            values: list[str] = []
-            dim = self.dims.get(pos_list[0], 3)
-            for e in pos_list:
-                values.extend((e.text or "").split())
-            return _xyz(values, dim, loc)
-        pos = [e for e in ring.iter() if _local(e.tag) == "pos"]
-        if pos:
-            pts = []
-            for e in pos:
-                pts.extend(_xyz((e.text or "").split(), self.dims.get(e, 3), loc))
-            return pts
-        coords = [e for e in ring if _local(e.tag) == "coordinates"]
-        if coords:
-            e = coords[0]
-            cs, ts = e.get("cs", ","), e.get("ts", " ")
-            text = (e.text or "").replace(ts, " ") if ts.strip() else (e.text or "")
-            pts = []
-            for t in text.split():
-                pts.extend(_xyz(t.split(cs), len(t.split(cs)), loc))
-            return pts
-        raise InputError(f"{loc}: ring has no gml:posList, gml:pos or gml:coordinates")
-
-
-def _xyz(values: list[str], dim: int, loc: str) -> list[tuple[float, float, float]]:
-    if dim != 3:
-        raise InputError(f"{loc}: srsDimension {dim}: a 3D building needs x y z coordinates")
-    if len(values) % 3:
-        raise InputError(f"{loc}: {len(values)} coordinates do not make x y z triples")
-    try:
-        f = [float(v) for v in values]
-    except ValueError:
-        bad = next(v for v in values if not _is_float(v))
-        raise InputError(f"{loc}: non-numeric coordinate {bad[:40]!r}") from None
-    return [(f[i], f[i + 1], f[i + 2]) for i in range(0, len(f), 3)]
-
-
-def _is_float(v: str) -> bool:
-    try:
-        float(v)
-    except ValueError:
-        return False
-    return True
-
-
-# ----------------------------------------------------------------------------- attributes
-
-def _number(text: str, kind):
-    try:
-        return kind(text)
-    except ValueError:
-        if kind is int:
-            try:
-                x = float(text)
-                return int(x) if x.is_integer() else x
-            except ValueError:
-                pass
-        return text
-
-
-def _attributes(el: ET.Element) -> dict[str, Any]:
-    """Standard building attributes and generic attributes of ``el`` (its own properties)."""
-    attrs: dict[str, Any] = {}
-    standard: dict[str, Any] = {}
-    for prop in el:
-        name = _local(prop.tag)
-        text = (prop.text or "").strip()
-        if name in _GENERIC or name == "genericAttributeSet":
-            k, v = _generic(prop)
-            if k:
-                attrs[k] = v
-        elif name == "genericAttribute":
-            for g in prop:
-                k, v = _generic3(g)
-                if k:
-                    attrs[k] = v
-        elif name == "dateOfConstruction" and re.match(r"^\d{4}", text):
-            standard.setdefault("yearOfConstruction", int(text[:4]))
-        elif name == "height":  # CityGML 3.0 con:height / con:Height: its value as measuredHeight
-            v = next((e for e in prop.iter() if _local(e.tag) == "value"), None)
-            if v is not None and (v.text or "").strip():
-                standard.setdefault("measuredHeight", _number(v.text.strip(), float))
-        elif name in _INT_ATTRS and text:
-            standard[name] = _number(text, int)
-        elif name in _FLOAT_ATTRS and text:
-            standard[name] = _number(text, float)
-        elif name in _TEXT_ATTRS and text:
-            if name in standard:  # CityGML allows several function / usage values
-                prev = standard[name]
-                standard[name] = (prev if isinstance(prev, list) else [prev]) + [text]
-            else:
-                standard[name] = text
-    attrs.update(standard)
-    return attrs
-
-
-def _generic(el: ET.Element) -> tuple[str | None, Any]:
-    name = el.get("name")
-    kind = _local(el.tag)
-    if kind == "genericAttributeSet":
-        members = dict(_generic(c) for c in el if _local(c.tag) in _GENERIC or _local(c.tag) == "genericAttributeSet")
-        members.pop(None, None)
-        return name, members
-    value = next((c for c in el if _local(c.tag) == "value"), None)
-    text = (value.text or "").strip() if value is not None else ""
-    return name, _number(text, _GENERIC[kind]) if text else text
-
-
-def _generic3(el: ET.Element) -> tuple[str | None, Any]:
-    """A CityGML 3.0 generic attribute: ``gen:XAttribute`` with ``gen:name`` and ``gen:value``."""
-    kind = _local(el.tag)
-    name = next(((c.text or "").strip() for c in el if _local(c.tag) == "name"), None)
-    if kind == "GenericAttributeSet":
-        members = dict(_generic3(c) for m in el if _local(m.tag) == "genericAttribute" for c in m)
-        members.pop(None, None)
-        return name, members
-    if kind not in _GENERIC3:
-        return None, None
-    value = next((c for c in el if _local(c.tag) == "value"), None)
-    text = (value.text or "").strip() if value is not None else ""
-    return name, _number(text, _GENERIC3[kind]) if text else text
