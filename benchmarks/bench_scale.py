@@ -172,7 +172,8 @@ def measure_dask(src: Path, out: Path, fmt: list[str]) -> dict:
 
     from lod2energy.cli import build_parser, export_options
     from lod2energy.executor import DaskExecutor
-    from lod2energy.pipeline import RunOptions, export
+    from lod2energy.options import RunOptions
+    from lod2energy.pipeline import export
 
     a = build_parser().parse_args(["export", str(src), "-o", str(out), *fmt])
     with LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cluster, \
