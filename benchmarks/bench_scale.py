@@ -242,7 +242,8 @@ def measure_dask(src: Path, out: Path, fmt: list[str], workers: int = 2) -> dict
 
     from lod2energy.cli import build_parser, export_options
     from lod2energy.executor import DaskExecutor
-    from lod2energy.pipeline import RunOptions, export
+    from lod2energy.options import RunOptions
+    from lod2energy.pipeline import export
 
     a = build_parser().parse_args(["export", str(src), "-o", str(out), *fmt])
     load0 = os.getloadavg()[0]

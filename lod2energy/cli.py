@@ -205,7 +205,7 @@ def _print_validate_table(rows: list[dict]) -> None:
 
 def cmd_validate(a) -> int:
     from lod2energy.io import read
-    from lod2energy.pipeline import frame_entry, note_frame
+    from lod2energy.reports import frame_entry, note_frame
     from lod2energy.validate.report import validate_features
 
     tol = _tolerances(a)
@@ -250,7 +250,7 @@ def cmd_validate(a) -> int:
         from lod2energy.safe_write import write_json
         write_json(a.report, out, inputs=a.files)
     if getattr(a, "html", None):
-        from lod2energy.pipeline import json_ready
+        from lod2energy.reports import json_ready
         try:
             from lod2energy.viz.report import write_report_html
             out = reports[0] if len(reports) == 1 else {"type": "lod2energy_reports", "reports": reports}
@@ -261,16 +261,16 @@ def cmd_validate(a) -> int:
 
 
 def cmd_repair(a) -> int:
-    from lod2energy.pipeline import repair_file
+    from lod2energy.repair_file import repair_file
     return repair_file(a, _tolerances(a))
 
 
 def export_options(a) -> "ExportOptions":
-    """:class:`lod2energy.pipeline.ExportOptions` from the parsed ``export`` arguments."""
+    """:class:`lod2energy.options.ExportOptions` from the parsed ``export`` arguments."""
     from lod2energy.exporters.energyplus.options import IdfOptions
     from lod2energy.exporters.registry import CityJsonOptions
     from lod2energy.exporters.stl import StlOptions
-    from lod2energy.pipeline import FORMATS, ExportOptions, prepare_options
+    from lod2energy.options import FORMATS, ExportOptions, prepare_options
 
     formats = tuple(f for f in FORMATS if getattr(a, f, False))
     idf = IdfOptions(**{k: v for k, v in dict(
@@ -287,7 +287,9 @@ def export_options(a) -> "ExportOptions":
 
 
 def cmd_export(a) -> int:
-    from lod2energy.pipeline import RunOptions, export, print_export_summary
+    from lod2energy.options import RunOptions
+    from lod2energy.pipeline import export
+    from lod2energy.reports import print_export_summary
     if not (a.idf or a.stl or a.cityjson or getattr(a, "cfd", False) or getattr(a, "geojson", False)):
         raise _UsageError("choose at least one of --idf, --stl, --cityjson, --cfd, --geojson")
     if a.wwr is not None and not (0.0 <= a.wwr < 1.0):
@@ -319,9 +321,9 @@ def main(argv: list[str] | None = None) -> int:
         parser.print_help(sys.stderr)
         return EXIT_UNUSABLE
     t0 = time.perf_counter()
-    from lod2energy.pipeline import Interrupted, _Signals
+    from lod2energy.interrupt import Interrupted, Signals
     try:
-        with _Signals():  # SIGTERM ends every command as ^C does: one line, exit 143
+        with Signals():  # SIGTERM ends every command as ^C does: one line, exit 143
             rc = _commands()[a.command](a)
     except Interrupted as e:
         _err(f"interrupted by {e.name}")

@@ -17,7 +17,7 @@ MAX_LINES = 600
 # Modules still over MAX_LINES, each with the cap it must not grow past until it is split
 # (issue 14: the EnergyPlus package, the CityJSON writer/reader, the spine's writers pass)
 EXEMPT_SIZE = {"exporters/common.py": 800, "exporters/cityjson.py": 800,
-               "lod2energy/io/cityjson.py": 720, "lod2energy/pipeline.py": 1020}
+               "lod2energy/io/cityjson.py": 720}
 
 
 def _modules() -> dict[str, Path]:

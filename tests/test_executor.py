@@ -119,7 +119,8 @@ def test_dask_local_cluster_writes_the_same_bytes_as_jobs_1(tmp_path, capsys):
     distributed = pytest.importorskip("dask.distributed")
     from lod2energy.cli import export_options, build_parser
     from lod2energy.executor import DaskExecutor
-    from lod2energy.pipeline import RunOptions, export
+    from lod2energy.options import RunOptions
+    from lod2energy.pipeline import export
 
     src = row_of_boxes_seq(tmp_path / "row.city.jsonl", n=4)
     out = tmp_path / "out"

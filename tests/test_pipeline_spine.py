@@ -10,7 +10,8 @@ import pytest
 
 from lod2energy.cli import main
 from lod2energy.config import DEFAULT, Tolerances
-from lod2energy.pipeline import ExportOptions, PrepareOptions, prepare_building, process_building
+from lod2energy.options import ExportOptions, PrepareOptions
+from lod2energy.pipeline import prepare_building, process_building
 from lod2energy.records import BuildingRecord
 from lod2energy.validate import checks
 

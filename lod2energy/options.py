@@ -1,0 +1,192 @@
+"""What an export computes and how it runs: :class:`ExportOptions` (with :class:`PrepareOptions`),
+:class:`RunOptions`, and their completion from the input file (:func:`resolve`).
+
+The options are frozen and picklable: they travel with every job to the workers.
+"""
+from __future__ import annotations
+
+import os
+from dataclasses import asdict, dataclass, field, replace
+from typing import Any
+
+from lod2energy.config import DEFAULT, Tolerances
+from lod2energy.errors import ParameterError
+from lod2energy.model import CityModel
+
+#: Writers in the order they run and appear in the options.
+FORMATS = ("cityjson", "idf", "stl", "cfd", "geojson")
+
+
+def _thermal_default():
+    from lod2energy.thermal import ThermalOptions
+    return ThermalOptions()
+
+
+@dataclass(frozen=True)
+class PrepareOptions:
+    """Options of validate -> repair -> label -> U-values -> compliance.
+
+    Parameters
+    ----------
+    tol : Tolerances
+        The user's tolerances: validation, repair, the final check and every writer's check.
+    lod : str, optional
+        LoD of the energy envelope (default: each building's highest >= 2).
+    timeout : float, s
+        The repair's time budget per building (the ladder escalates when it is spent).
+    merge_parts : bool
+        Union overlapping BuildingParts (601).
+    thermal : ThermalOptions
+        Typology / U-value choices (country, tables, overrides, WWR).
+    """
+
+    tol: Tolerances = DEFAULT
+    lod: str | None = None
+    timeout: float = 30.0
+    merge_parts: bool = False
+    thermal: Any = field(default_factory=_thermal_default)
+
+
+def _idf_default():
+    from lod2energy.exporters.energyplus.options import IdfOptions
+    return IdfOptions()
+
+
+def _stl_default():
+    from lod2energy.exporters.stl import StlOptions
+    return StlOptions()
+
+
+def _cityjson_default():
+    from lod2energy.exporters.registry import CityJsonOptions
+    return CityJsonOptions()
+
+
+@dataclass(frozen=True)
+class ExportOptions:
+    """What ``lod2energy export`` computes and writes (picklable: it travels to the workers).
+
+    Parameters
+    ----------
+    formats : tuple of str
+        Writers to run, names of :mod:`lod2energy.exporters.registry` ("cityjson", "idf", "stl").
+    prepare : PrepareOptions
+    idf : IdfOptions
+    stl : StlOptions
+    cityjson : CityJsonOptions
+    cfd : lod2energy.cfd.CfdOptions or None
+        The OpenFOAM case (``--cfd``).
+    html : bool
+        Write ``report.html`` (the method's pictures) beside ``report.json``.
+    hard_timeout : float or None, s
+        Limit of one building's first-pass job, enforced by the executor (CPU time of the
+        worker, or ten times that of wall time; the worker is killed and replaced, the
+        building reported ``timeout``). Default: the repair budget plus ``max(2 s, 20 %)``.
+    """
+
+    formats: tuple[str, ...] = ()
+    prepare: PrepareOptions = field(default_factory=PrepareOptions)
+    idf: Any = field(default_factory=_idf_default)
+    stl: Any = field(default_factory=_stl_default)
+    cityjson: Any = field(default_factory=_cityjson_default)
+    hard_timeout: float | None = None
+    cfd: Any = None
+    html: bool = True
+
+    def writer_options(self, name: str):
+        # the footprints (geojson) carry the energy model's figures: they take its options
+        return {"idf": self.idf, "stl": self.stl, "cityjson": self.cityjson, "cfd": self.cfd,
+                "geojson": self.idf}[name]
+
+    @property
+    def job_timeout(self) -> float | None:
+        if self.hard_timeout is not None:
+            return self.hard_timeout if self.hard_timeout > 0 else None
+        return hard_budget(self.prepare.timeout)
+
+    def fingerprint(self) -> dict:
+        """JSON-ready summary of everything that changes the outputs (the journal header)."""
+        d = asdict(self)
+        d.pop("hard_timeout", None)
+        return d
+
+
+@dataclass(frozen=True)
+class RunOptions:
+    """How an export runs (not what it computes: none of these change a file).
+
+    Parameters
+    ----------
+    jobs : int or None
+        Worker processes (None or 0: all cores; 1: in this process).
+    dask : str or dask.distributed.Client, optional
+        Run the jobs on this Dask cluster instead.
+    resume : bool
+        Continue the run whose journal is in OUTDIR: buildings whose outputs are complete,
+        self-checked and unchanged on disk are not processed again.
+    quiet : bool
+        No progress bar, notes or table.
+    """
+
+    jobs: int | None = None
+    dask: Any = None
+    resume: bool = False
+    quiet: bool = False
+
+
+def hard_budget(timeout: float | None) -> float | None:
+    """The executor's limit for one building's job (s): the repair's ``timeout`` plus
+    ``max(2 s, 20 %)`` for the stages after it; None without a budget."""
+    return None if not timeout or timeout <= 0 else timeout + max(2.0, 0.2 * timeout)
+
+
+def prepare_options(a, tol: Tolerances = DEFAULT, crs: str | None = None) -> PrepareOptions:
+    """:class:`PrepareOptions` from a namespace of CLI options (absent ones: defaults)."""
+    from lod2energy.thermal import ThermalOptions
+    kw = {"crs": crs, "lod": getattr(a, "lod", None)}
+    for name in ("country", "u_table", "u_wall", "u_roof", "u_ground", "u_window", "wwr"):
+        v = getattr(a, name, None)
+        if v is not None:
+            kw[name] = v
+    timeout = getattr(a, "timeout", 30.0)
+    return PrepareOptions(tol, getattr(a, "lod", None), 30.0 if timeout is None else float(timeout),
+                          bool(getattr(a, "merge_parts", False)), ThermalOptions(**kw))
+
+
+def default_weather(country: str | None) -> str | None:
+    """The bundled EPW for ``country`` (only NL ships one), else None."""
+    if (country or "").upper() != "NL":
+        return None
+    from importlib.resources import files
+    p = files("lod2energy") / "data" / "weather" / "NLD_OV_Heino.062780_TMYx.2007-2021.epw"
+    return str(p) if p.is_file() else None
+
+
+def resolve(options: ExportOptions, model: CityModel) -> ExportOptions:
+    """``options`` completed from the file: the CRS for the typology, the weather for ``--run``.
+
+    Raises
+    ------
+    ParameterError
+        ``--run`` without a weather file where none ships, or a missing weather file.
+    """
+    from lod2energy.thermal import country_from_crs
+    prep = options.prepare
+    if getattr(prep.thermal, "crs", None) is None and model is not None and model.crs:
+        prep = replace(prep, thermal=replace(prep.thermal, crs=model.crs))
+    idf = options.idf
+    if "idf" in options.formats:
+        weather = idf.weather
+        if idf.run and weather is None:
+            weather = default_weather(prep.thermal.country or country_from_crs(model.crs))
+            if weather is None:
+                raise ParameterError("--run needs --weather EPW (a weather file ships only for the Netherlands)")
+        if weather is not None and not os.path.isfile(weather):
+            raise ParameterError(f"--weather {weather}: no such file")
+        if options.prepare.lod is not None and idf.lod is None:
+            idf = replace(idf, lod=options.prepare.lod)
+        idf = replace(idf, weather=weather)
+    stl = options.stl
+    if options.prepare.lod is not None and stl.lod is None:
+        stl = replace(stl, lod=options.prepare.lod)
+    return replace(options, prepare=prep, idf=idf, stl=stl)

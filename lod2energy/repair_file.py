@@ -1,0 +1,135 @@
+"""``lod2energy repair IN -o OUT``: the repair ladder over a file, every building held to its
+time budget by an executor, written back as CityJSON / CityJSONSeq with a report."""
+from __future__ import annotations
+
+import os
+from dataclasses import replace
+
+from lod2energy.config import Tolerances
+from lod2energy.interrupt import EXIT_OK, EXIT_INVALID, EXIT_UNUSABLE
+from lod2energy.model import Building, FeatureError, frozen_mapping
+from lod2energy.options import hard_budget
+from lod2energy.reports import err, frame_entry, json_ready, note_frame, progress, refuse_overwriting_inputs
+from lod2energy.safe_write import UnsafeWriteError, check_target, write_json
+from lod2energy.validate.report import error_json
+
+
+def with_repair_attributes(b: Building) -> Building:
+    """``b`` with its repair record as flat attributes of the root CityObject."""
+    from lod2energy.repair import repair_attributes
+    if not b.is_building:
+        return b
+    attrs = dict(b.root.attributes)
+    attrs.update({k: v for k, v in repair_attributes(b).items() if v is not None})
+    root = replace(b.root, attributes=frozen_mapping(attrs))
+    return replace(b, objects=(root,) + b.objects[1:])
+
+
+#: Output suffixes of ``lod2energy repair`` (the writer picks CityJSON or CityJSONSeq by them).
+REPAIR_SUFFIXES = (".json", ".jsonl", ".cjseq")
+
+
+def _repair_job(task):
+    from lod2energy.repair import repair_features
+    b, tol, timeout, merge_parts, lod = task
+    return next(iter(repair_features([b], tol, timeout, merge_parts, lod)))
+
+
+def _repaired(feats, tol: Tolerances, timeout: float, merge_parts: bool, lod, jobs: int | None):
+    """``repair_features`` on an executor that holds each building to its time budget: a building
+    still running ``max(2 s, 20 %)`` past ``timeout`` is stopped and kept as read, reported
+    ``timeout`` (the ladder's own deadline is cooperative and cannot interrupt one long step)."""
+    from lod2energy.executor import Failure, Overrun, make_executor
+
+    limit = hard_budget(timeout)
+    with make_executor(1 if jobs is None else jobs, None) as ex:
+        def tasks():
+            for f in feats:
+                yield (f, tol, timeout, merge_parts, lod)
+        for task, res in ex.map(_repair_job, tasks(), limit):
+            b = task[0]
+            if isinstance(res, (Overrun, Failure)):
+                why = f"timeout after {res.seconds:.0f} s" if isinstance(res, Overrun) else res.message
+                stage = "timeout" if isinstance(res, Overrun) else "irreparable"
+                res = b.with_provenance(repair={"stage": stage, "error": f"{stage}: {why}; kept as read",
+                                                "iou": None, "mean_displacement": None, "hausdorff": None,
+                                                "defects_before": [], "defects_after": [999]})
+            yield res
+
+
+def _print_repair_summary(table: dict) -> None:
+    keys = ("total", "valid_before", "valid_after", "compliant_before", "compliant_after", "local_repairs",
+            "global_repairs", "left", "miou", "map_v")
+    print("  ".join(f"{k}={table[k]:.3g}" if isinstance(table.get(k), float) else f"{k}={table.get(k)}"
+                    for k in keys if k in table))
+    print("stages: " + ", ".join(f"{k}: {v}" for k, v in (table.get("stages") or {}).items()))
+
+
+def repair_file(a, tol: Tolerances) -> int:
+    """``lod2energy repair IN -o OUT``: every CityObject kept, defective buildings replaced by solids."""
+    from lod2energy.io import cityjson, read
+    from lod2energy.repair import dataset_table, repair_features, repair_info
+
+    if not a.output.lower().endswith(REPAIR_SUFFIXES):
+        err(f"repair writes CityJSON (.json, .city.json) or CityJSONSeq (.jsonl, .city.jsonl): "
+             f"cannot write {a.output!r}")
+        return EXIT_UNUSABLE
+    refuse_overwriting_inputs([a.output, getattr(a, "report", None)], [a.input])
+    if a.report and os.path.abspath(a.report) == os.path.abspath(a.output):
+        raise UnsafeWriteError(f"--report {a.report} is the output file")
+    model, feats = read(a.input)
+    if model is None:
+        for fe in feats:
+            err(fe.message)
+        return EXIT_UNUSABLE
+    note_frame(a.input, model)
+    out_b: list[Building] = []
+    records: list[dict] = []
+    lost: list[dict] = []
+    html_inputs: dict = {}
+    if getattr(a, "html", None):
+        from lod2energy.viz.report import keep
+        check_target(a.html, None, [a.input, a.output])
+        feats = keep(feats, html_inputs)
+    tick, close = progress(a.quiet, os.path.basename(a.input))
+    worst = EXIT_OK
+    try:
+        for item in _repaired(feats, tol, a.timeout, a.merge_parts, a.lod, getattr(a, "jobs", None)):
+            tick()
+            if isinstance(item, FeatureError):
+                err(f"{a.input}: {item.message}")
+                if item.id is None:
+                    worst = EXIT_UNUSABLE
+                lost.append({"id": item.id, "type": item.type, "errors": [error_json(item.code, "", item.message)]})
+                worst = max(worst, EXIT_INVALID)
+                continue
+            if item.is_building:
+                rep = {"id": item.id, **{k: v for k, v in repair_info(item).items() if k != "geometries"}}
+                records.append(rep)
+                if rep.get("error"):
+                    err(f"{a.input}: {item.type} {item.id}: {rep['error']}")
+                after = rep.get("defects_after") or []
+                if rep.get("stage") == "irreparable" or any(c != 601 for c in after):
+                    worst = max(worst, EXIT_INVALID)
+            out_b.append(with_repair_attributes(item))
+    finally:
+        close()
+    out_dir = os.path.dirname(os.path.abspath(a.output))
+    os.makedirs(out_dir, exist_ok=True)
+    check_target(a.output, None, [a.input])
+    cityjson.write(a.output, model, out_b)
+    table = dataset_table(out_b)
+    doc = {"input_file": a.input, "output_file": a.output, **frame_entry(model),
+           "summary": table, "buildings": records, "unreadable": lost}
+    if a.report:
+        write_json(a.report, doc, inputs=[a.input, a.output])
+    if getattr(a, "html", None):
+        try:
+            from lod2energy.viz.report import write_report_html
+            write_report_html(json_ready(doc), a.html, inputs=html_inputs, outputs={b.id: b for b in out_b},
+                              tol=tol, input_files=[a.input, a.output])
+        except Exception as e:  # noqa: BLE001 - the page is a view of the report
+            err(f"{a.html} not written: {type(e).__name__}: {e}")
+    if not a.quiet:
+        _print_repair_summary(table)
+    return worst

@@ -1,0 +1,120 @@
+"""What a command tells its user: report.json / report.csv / report.html, the summary table,
+the lines on stderr (errors, notes, the progress bar).
+"""
+from __future__ import annotations
+
+import csv
+import os
+import sys
+from typing import Iterable
+
+from lod2energy.config import DEFAULT, Tolerances
+from lod2energy.model import CityModel
+from lod2energy.options import FORMATS
+from lod2energy.records import CSV_FIELDS, BuildingRecord
+from lod2energy.safe_write import atomic_write, check_target, write_json
+from lod2energy.spool import load_spooled, spool_path
+
+
+def err(msg: str) -> None:
+    """One error line on stderr (``lod2energy: error: ...``)."""
+    print(f"lod2energy: error: {msg}", file=sys.stderr)
+
+
+def progress(quiet: bool, desc: str):
+    """``(tick, close)`` of a progress bar on stderr (no-ops when ``quiet``)."""
+    if quiet:
+        return lambda: None, lambda: None
+    from tqdm import tqdm
+    bar = tqdm(desc=desc, unit=" buildings", file=sys.stderr, disable=None, leave=False)
+    return (lambda: bar.update(1)), bar.close
+
+
+def frame_entry(model: CityModel | None) -> dict:
+    """Report entry for a geographic input: the local metric frame its buildings were
+    validated, repaired and exported in (IDF / STL offsets are in this frame)."""
+    frame = getattr(model, "frame", None)
+    return {"local_frame": frame.as_dict()} if frame is not None else {}
+
+
+def note_frame(path: str, model: CityModel | None) -> None:
+    """One line on stderr when a geographic input is processed in a local metric frame."""
+    f = getattr(model, "frame", None)
+    if f is not None:
+        print(f"lod2energy: note: {path}: CRS {model.crs} is geographic (degrees); buildings are checked and "
+              f"exported in a local east-north-up frame in metres at lat {f.lat0:.7f}, lon {f.lon0:.7f} "
+              "(report.json: local_frame); CityJSON is written back in degrees", file=sys.stderr)
+
+
+def refuse_overwriting_inputs(outputs: Iterable[str], inputs: Iterable[str]) -> None:
+    """:class:`UnsafeWriteError` when an output path is one of the inputs (also via a link)."""
+    inputs = [p for p in inputs if p]
+    for out in outputs:
+        if out:
+            check_target(out, None, inputs)
+
+
+def write_reports(out: str, input_path: str, model, rows: list[BuildingRecord], dataset_errors: list[str],
+                   interrupted, inputs) -> str:
+    """report.json and report.csv from the records, in input order (no timing in them)."""
+    doc = {"input_file": input_path, "output_dir": out, **frame_entry(model),
+           "buildings": [r.report_entry() for r in rows]}
+    if dataset_errors:
+        doc["dataset_errors"] = [{"code": 901, "info": m} for m in dataset_errors]
+    if interrupted:
+        doc["interrupted"] = interrupted[0]
+    path = os.path.join(out, "report.json")
+    write_json(path, doc, root=out, inputs=inputs)
+    with atomic_write(os.path.join(out, "report.csv"), "w", root=out, inputs=inputs, newline="") as f:
+        w = csv.DictWriter(f, fieldnames=CSV_FIELDS, extrasaction="ignore")
+        w.writeheader()
+        for r in rows:
+            w.writerow(r.row())
+    return path
+
+
+def json_ready(doc):
+    """``doc`` as it reads back from JSON (numpy values, tuples and mappings made plain)."""
+    import json
+    from lod2energy.safe_write import json_default
+    return json.loads(json.dumps(doc, default=json_default))
+
+
+def write_html_report(report_path: str, input_path: str, records: dict, spool: str, out: str,
+                      tol: Tolerances = DEFAULT, inputs=()) -> str:
+    """``OUTDIR/report.html`` (:mod:`lod2energy.viz`) from the report, the input buildings and the
+    prepared ones of the spool; a page that cannot be written costs one line, never the export."""
+    import json
+    try:
+        from lod2energy.viz.report import panel_ids, read_buildings, write_report_html
+        from lod2energy.viz import data as viz_data
+        with open(report_path, encoding="utf-8") as f:
+            doc = json.load(f)
+        src = read_buildings(input_path) if os.path.isfile(input_path) else {}
+        ids, _ = panel_ids(viz_data.rows(doc))
+        wanted = set(ids)
+        outputs = {}
+        for s, r in sorted(records.items()):
+            if r.id in wanted and r.outcome == "done" and os.path.exists(spool_path(spool, s)):
+                outputs[r.id] = load_spooled(spool, s)
+        path = os.path.join(out, "report.html")
+        write_report_html(doc, path, inputs=src, outputs=outputs, tol=tol, root=out, input_files=list(inputs))
+        return path
+    except Exception as e:  # noqa: BLE001 - the page is a view of the report, not an output to check
+        err(f"report.html not written: {type(e).__name__}: {e}")
+        return ""
+
+
+def print_export_summary(records: Iterable[BuildingRecord], formats: Iterable[str], outdir: str) -> None:
+    """The table ``lod2energy export`` prints."""
+    formats = [f for f in FORMATS if f in set(formats)]
+    b = [r for r in records if r.type == "Building" or r.assessed]
+    n = len(b)
+    comp = sum(bool(r.energy.compliant) for r in b)
+    print(f"{'buildings':>9} {'compliant':>9} {'repaired':>8}  " + "  ".join(f"{f} ok" for f in formats))
+    rep = sum(1 for r in b if r.repair.stage not in ("", "valid", "none", "irreparable"))
+    cells = [f"{sum(bool(r.export(f) and r.export(f).ok) for r in b)}/{n}" for f in formats]
+    timeouts = sum(r.outcome == "timeout" for r in b)
+    print(f"{n:>9} {comp:>9} {rep:>8}  " + "  ".join(f"{c:>8}" for c in cells)
+          + (f"  ({timeouts} timeout)" if timeouts else ""))
+    print(f"report: {os.path.join(outdir, 'report.json')} and report.csv")
