@@ -40,8 +40,9 @@ from lod2energy.errors import Lod2EnergyError
 from lod2energy.io import cityjson as cjio
 from lod2energy.io.cityjson_grid import on_grid
 from lod2energy.model import Building, CityModel, frozen_mapping
-from lod2energy.repair.accept import TOLERATED_CODES, acceptance_problem, envelope_problems
-from lod2energy.semantics import envelope_objects
+from lod2energy.repair.accept import (  # noqa: F401 - acceptance_problem: importable from here as before
+    TOLERATED_CODES, acceptance_problem, envelope_problems, export_problem, strip_to_energy,
+)
 
 from .cityjson_schema import (  # noqa: F401 - the schema helpers, importable from here as before
     COMPILE_MIN_OBJECTS, EXTENSION_FILE, EXTENSION_NAME, EXTENSION_VERSION, MAX_PROBLEMS, _schema_errors,
@@ -92,35 +93,18 @@ def _untimed(x: Any) -> Any:
     return x
 
 
-def _strip_to_energy(b: Building, lod: str | None, keep_other_lods: bool) -> Building:
-    if keep_other_lods:
-        return b
-    keep = {(o.id, gi) for o, gi, _ in envelope_objects(b, lod)}
-    objs = []
-    for o in b.objects:
-        geoms = tuple(g for gi, g in enumerate(o.geometries) if (o.id, gi) in keep)
-        objs.append(replace(o, geometries=geoms))
-    return replace(b, objects=tuple(objs))
-
-
-def _ready_problem(b: Building, lod: str | None, keep_other_lods: bool = False, tol=None) -> str | None:
-    """Why ``b`` cannot be exported as an energy building (None when it can).
-
-    The same checks as :func:`self_check` runs on the file, on the building as it will be
-    written: thermal data present, val3dity-valid, closed, outward, labelled, U-values.
-    """
+def _ready_problem(b: Building, lod: str | None, keep_other_lods: bool = False, tol=None,
+                   transform=None, frame=None) -> str | None:
+    """Why ``b`` cannot be exported as an energy building (None when it can): the pipeline's
+    final check (:func:`lod2energy.repair.accept.export_problem`) on the file's grid
+    ``transform`` (default: the building's own, :func:`lod2energy.io.cityjson_grid.building_grid`)."""
     from lod2energy.config import DEFAULT
-    from lod2energy.validate.checks import validate_building
 
-    why = acceptance_problem(b, lod)
-    if why is not None:
-        return why
-    defects = [d for d in validate_building(_strip_to_energy(b, lod, keep_other_lods), tol or DEFAULT)
-               if d.code not in TOLERATED_CODES]
-    if defects:
-        codes = sorted({d.code for d in defects})
-        return f"invalid geometry (val3dity codes {codes}), e.g. {defects[0].location}"
-    return None
+    return export_problem(b, lod, tol or DEFAULT, transform=transform, frame=frame, keep_other_lods=keep_other_lods)
+
+
+#: The former private name.
+_strip_to_energy = strip_to_energy
 
 
 def prepare_building(b: Building, lod: str | None = None, keep_other_lods: bool = False) -> Building:
@@ -182,7 +166,7 @@ def write(path: str, model: CityModel, buildings: Iterable[Building], version: s
         # checked as it will be read back: coordinates on the file's grid (a repaired vertex
         # off the grid moves by up to scale/2, which can tip a face over a tolerance)
         b = on_grid(b, transform, m.frame)
-        why = _ready_problem(b, blod, keep_other_lods, tol) if exclude_unready else None
+        why = _ready_problem(b, blod, keep_other_lods, tol, transform, m.frame) if exclude_unready else None
         if why is not None:
             skipped.append((b.id, why))
             continue

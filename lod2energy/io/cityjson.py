@@ -377,6 +377,10 @@ def _features_of_document(doc: Mapping[str, Any], transform: Mapping | None,
                                                or len(item.message) > shape.MAX_MESSAGE):
             # one line, whatever the ids hold (a newline, a control character)
             item = FeatureError(item.id, item.code, shape.one_line(item.message), item.type)
+        if isinstance(item, Building) and isinstance(transform, Mapping):
+            # the grid a writer keeps: the final check judges the building on it
+            item = item.with_provenance(file_transform={"scale": [float(x) for x in transform["scale"]],
+                                                        "translate": [float(x) for x in transform["translate"]]})
         if isinstance(templates, Mapping) and isinstance(item, Building) and any(
                 g.type == "GeometryInstance" for o in item.objects for g in o.geometries):
             # instances are validated on their template (lod2energy.validate.checks.check_instance)

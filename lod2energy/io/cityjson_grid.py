@@ -53,3 +53,26 @@ def on_grid(b: Building, transform: Mapping, frame=None) -> Building:
 
 #: The former private names.
 _quantise = quantise
+
+
+#: Scale of the grid a geographic file (degrees) is written on: ~0.1 mm horizontally, 1 mm in height.
+GEOGRAPHIC_SCALE = (1e-9, 1e-9, 0.001)
+
+
+def building_grid(b: Building) -> tuple[Mapping, object]:
+    """The grid ``b`` will be written on: ``(transform, frame)``.
+
+    The input file's ``transform`` when the reader recorded one (``provenance["file_transform"]``,
+    which a CityJSON writer keeps), else the writer's default for ``b``'s own coordinates: a
+    millimetre grid whose translation is rounded to the millimetre, so its nodes are those of the
+    default grid of any file ``b`` is written into. ``frame`` is the local metric frame of a
+    geographic input (``provenance["file_frame"]``), else None.
+    """
+    frame = b.provenance.get("file_frame")
+    t = b.provenance.get("file_transform")
+    if isinstance(t, Mapping) and "scale" in t and "translate" in t:
+        return t, frame
+    t = default_transform(file_coordinates(np.asarray(b.vertices, dtype=np.float64), frame))
+    if frame is not None:
+        t["scale"] = list(GEOGRAPHIC_SCALE)
+    return t, frame

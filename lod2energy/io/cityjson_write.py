@@ -13,7 +13,7 @@ from typing import Any, Iterable, Mapping
 import numpy as np
 
 from lod2energy.crs import cityjson_reference_system
-from lod2energy.io.cityjson_grid import default_transform, file_coordinates
+from lod2energy.io.cityjson_grid import GEOGRAPHIC_SCALE, default_transform, file_coordinates
 from lod2energy.io.cityjson_grid import quantise as _quantise
 from lod2energy.model import SURFACE_TYPES, Building, CityModel, CityObject, Geometry, Shell, Solid, Surface
 
@@ -116,7 +116,7 @@ def transform_for(model: CityModel, buildings: list[Building]) -> dict:
     allv = [b.vertices for b in buildings if len(b.vertices)]
     t = default_transform(file_coordinates(np.vstack(allv), model.frame) if allv else np.zeros((0, 3)))
     if model.frame is not None:  # degrees: ~0.1 mm horizontally, 1 mm in height
-        t["scale"] = [1e-9, 1e-9, 0.001]
+        t["scale"] = list(GEOGRAPHIC_SCALE)
     return t
 
 

@@ -11,15 +11,20 @@
 from __future__ import annotations
 
 from lod2energy.config import Tolerances
+from dataclasses import replace
+from typing import Iterable, Mapping
+
 import numpy as np
 
 from lod2energy.model import Building, Geometry, Shell, Solid, Surface
 from lod2energy.polymesh import PolyMesh
 from lod2energy.repair.validity import shell_defects
 from lod2energy.semantics import ENVELOPE_TYPES, envelope_objects, face_metrics
-from lod2energy.validate.checks import validate_geometry
+from lod2energy.io.cityjson_grid import building_grid, on_grid
+from lod2energy.validate.checks import validate_building, validate_geometry
 
-__all__ = ["val3dity_codes", "is_repaired", "TOLERATED_CODES", "acceptance_problem", "envelope_problems"]
+__all__ = ["val3dity_codes", "is_repaired", "TOLERATED_CODES", "acceptance_problem", "envelope_problems",
+           "export_problem", "strip_to_energy", "energy_defects"]
 
 #: Overlapping BuildingParts (601) are reported by the validator but do not stop an export:
 #: each part is still a closed, outward shell (the repair ladder's own criterion); use
@@ -111,3 +116,72 @@ def envelope_problems(b: Building, energy=None) -> list[str]:
         if len(out) > MAX_PROBLEMS:
             break
     return out
+
+
+def strip_to_energy(b: Building, lod: str | None, keep_other_lods: bool = False) -> Building:
+    """``b`` with only its envelope geometries at ``lod`` (all of them when ``keep_other_lods``)."""
+    if keep_other_lods:
+        return b
+    keep = {(o.id, gi) for o, gi, _ in envelope_objects(b, lod)}
+    objs = []
+    for o in b.objects:
+        geoms = tuple(g for gi, g in enumerate(o.geometries) if (o.id, gi) in keep)
+        objs.append(replace(o, geometries=geoms))
+    return replace(b, objects=tuple(objs))
+
+
+def energy_defects(b: Building, defects: Iterable, lod: str | None) -> list:
+    """The ``defects`` of ``b`` that concern its envelope at ``lod`` (or the building as a whole),
+    without the tolerated ones (:data:`TOLERATED_CODES`)."""
+    energy = envelope_objects(b, lod)
+    heads = {f"coid={o.id}|geom={gi}" for o, gi, _ in energy}
+    ids = {f"coid={o.id}" for o, _, _ in energy}
+    bad = []
+    for d in defects:
+        if d.code in TOLERATED_CODES:
+            continue
+        locs = str(d.location).split("&&")
+        if any("|".join(loc.split("|")[:2]) in heads or loc in ids or "geom=" not in loc for loc in locs):
+            bad.append(d)
+    return bad
+
+
+def export_problem(b: Building, lod: str | None, tol: Tolerances, *, defects: Iterable | None = None,
+                   transform: Mapping | None = None, frame=None, keep_other_lods: bool = False) -> str | None:
+    """Why ``b`` may not be called compliant nor written (None when it may): the one final check.
+
+    Judged on what a writer writes: the vertices are first rounded to the output file's grid
+    (:func:`lod2energy.io.cityjson_grid.on_grid`, the function the CityJSON writer uses), then
+    :func:`acceptance_problem` and the val3dity checks at the user's tolerances ``tol`` run on
+    the envelope at ``lod`` (overlapping parts, 601, tolerated).
+
+    Parameters
+    ----------
+    b : Building
+        Labelled, with U-values (``provenance["thermal"]``).
+    lod : str or None
+        Energy LoD (None: the building's own).
+    tol : Tolerances
+    defects : iterable of Defect, optional
+        Already computed defects of ``b`` at ``tol``: used when the grid leaves ``b`` as it is.
+    transform, frame : optional
+        The file's grid (scale, translate) and, for a geographic file, its local frame;
+        default: :func:`lod2energy.io.cityjson_grid.building_grid`.
+    keep_other_lods : bool
+        Judge every geometry, not only the envelope at ``lod``.
+    """
+    if transform is None:
+        transform, frame = building_grid(b)
+    snapped = on_grid(b, transform, frame)
+    why = acceptance_problem(snapped, lod)
+    if why is not None:
+        return why
+    if snapped is b and defects is not None and not keep_other_lods:
+        bad = energy_defects(b, defects, lod)
+    else:
+        bad = [d for d in validate_building(strip_to_energy(snapped, lod, keep_other_lods), tol)
+               if d.code not in TOLERATED_CODES]
+    if bad:
+        codes = sorted({d.code for d in bad})
+        return f"invalid geometry (val3dity codes {codes}), e.g. {bad[0].location}"
+    return None
