@@ -51,6 +51,7 @@ from .cityjson_schema import (  # noqa: F401 - the schema helpers, importable fr
 )
 from .cityjson_version import fix_document, model_for
 from .result import ExportResult
+from .run_results import result_attributes
 
 INVALID_SUFFIX = ".invalid"
 _STAGED = itertools.count()
@@ -81,6 +82,7 @@ def _energy_attributes(b: Building) -> dict[str, Any]:
         a["+energyRepair"] = _untimed(cjio._plain(rep))
     if energy is not None:
         a["+energyCompliance"] = cjio._plain(energy)
+    a.update(result_attributes(b))  # after export --run: the simulated demand and loads
     return a
 
 

@@ -94,6 +94,7 @@ def _files(*paths: str) -> tuple[FileRecord, ...]:
 
 
 def _records(fmt: str, results: Sequence, sidecars: Callable[[str], Sequence[str]] = lambda p: ()) -> list:
+    from lod2energy.exporters.run_results import record_results
     out = []
     for res in results:
         extra = {}
@@ -103,8 +104,16 @@ def _records(fmt: str, results: Sequence, sidecars: Callable[[str], Sequence[str
                 extra[k] = list(v) if isinstance(v, tuple) else v
         path = str(res.path)
         files = _files(path, *sidecars(path)) if res.ok else ()
+        ids = tuple(getattr(res, "building_ids", ()) or ())
+        stats = getattr(res, "stats", None) or {}
+        if stats.get("building_results"):  # after a run: each building's own figures in its record
+            for bid in ids:
+                er = ExportRecord(fmt, bool(res.ok), path, tuple(getattr(res, "problems", ()) or ()),
+                                  {**extra, "results": record_results(stats, bid)}, files)
+                out.append(((bid,), er))
+            continue
         er = ExportRecord(fmt, bool(res.ok), path, tuple(getattr(res, "problems", ()) or ()), extra, files)
-        out.append((tuple(getattr(res, "building_ids", ()) or ()), er))
+        out.append((ids, er))
     return WriteResults(out)
 
 
@@ -197,8 +206,9 @@ def _cfd_check(path: str) -> list[str]:
     return []
 
 
-register_writer("cityjson", _write_cityjson, _cityjson_check, scope="dataset")
 register_writer("idf", _write_idf, _idf_check, scope=_idf_scope, halo=_idf_halo)
 register_writer("stl", _write_stl, _stl_check,
                 scope=lambda options: "dataset" if getattr(options, "mode", "building") == "dataset" else "building")
+# after the IDF: the CityJSON carries the results of its EnergyPlus runs (exporters.run_results)
+register_writer("cityjson", _write_cityjson, _cityjson_check, scope="dataset")
 register_writer("cfd", _write_cfd, _cfd_check, scope="dataset")
