@@ -120,6 +120,7 @@ def _run_figures(res) -> dict[str, dict]:
 
 
 def _records(fmt: str, results: Sequence, sidecars: Callable[[str], Sequence[str]] = lambda p: ()) -> list:
+    from lod2energy.exporters.run_results import record_results
     out = []
     for res in results:
         extra = {}
@@ -131,18 +132,21 @@ def _records(fmt: str, results: Sequence, sidecars: Callable[[str], Sequence[str
         files = _files(path, *sidecars(path)) if res.ok else ()
         ids = tuple(getattr(res, "building_ids", ()) or ())
         problems = tuple(getattr(res, "problems", ()) or ())
+        stats = getattr(res, "stats", None) or {}
         figures = _run_figures(res)
         if len(ids) > 1 and figures:  # one file of many buildings: each gets its own figures
             for bid in ids:
                 fig = dict(figures.get(str(bid)) or {})
                 heat, cool = fig.pop("totals", (None, None))
-                own = {**extra, "heating_kwh": heat, "cooling_kwh": cool, **fig}
+                own = {**extra, "heating_kwh": heat, "cooling_kwh": cool, **fig,
+                       "results": record_results(stats, bid)}
                 out.append(((bid,), ExportRecord(fmt, bool(res.ok), path, problems, own, files)))
             continue
         if len(ids) == 1 and str(ids[0]) in figures:
             fig = dict(figures[str(ids[0])])
             fig.pop("totals", None)
             extra.update(fig)
+            extra["results"] = record_results(stats, ids[0])
         out.append((ids, ExportRecord(fmt, bool(res.ok), path, problems, extra, files)))
     return WriteResults(out)
 
@@ -236,10 +240,11 @@ def _cfd_check(path: str) -> list[str]:
     return []
 
 
-register_writer("cityjson", _write_cityjson, _cityjson_check, scope="dataset")
 register_writer("idf", _write_idf, _idf_check, scope=_idf_scope, halo=_idf_halo)
 register_writer("stl", _write_stl, _stl_check,
                 scope=lambda options: "dataset" if getattr(options, "mode", "building") == "dataset" else "building")
+# after the IDF: the CityJSON carries the results of its EnergyPlus runs (exporters.run_results)
+register_writer("cityjson", _write_cityjson, _cityjson_check, scope="dataset")
 register_writer("cfd", _write_cfd, _cfd_check, scope="dataset")
 
 

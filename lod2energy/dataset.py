@@ -30,7 +30,9 @@ def dataset_pass(w, options: ExportOptions, job: Job, records: dict, others: lis
     wopts = options.writer_options(w.name)
     if w.name == "cityjson":
         seqs = [s for s, r in sorted(records.items()) if r.outcome == "done" and r.assessed]
-        bs = [with_repair_attributes(load_spooled(job.spool, s)) for s in seqs]
+        from lod2energy.exporters.run_results import with_run_results  # the IDF runs' figures
+        bs = [with_run_results(with_repair_attributes(load_spooled(job.spool, s)), records[s].export("idf"))
+              for s in seqs]
         bs += [load_spooled(job.spool, s) for s in sorted(others)]
     else:
         seqs = [s for s, r in sorted(records.items()) if r.outcome == "done" and r.energy.geometry_ready]

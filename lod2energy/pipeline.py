@@ -79,30 +79,15 @@ def _geometry_key(b: Building) -> bytes:
 def final_check(b: Building, defects, lod: str | None, tol: Tolerances = DEFAULT) -> str | None:
     """Why ``b`` may not be called compliant nor exported (None when it may).
 
-    The acceptance check every writer applies (the CityJSON writer's: thermal data present,
-    envelope closed, outward, labelled, with U-values, val3dity-valid at the energy LoD),
-    on the already computed ``defects`` of the final geometry at the user's tolerances.
+    The acceptance check every writer applies (:func:`lod2energy.repair.accept.export_problem`:
+    thermal data present, envelope closed, outward, labelled, with U-values, val3dity-valid at
+    the energy LoD at the user's tolerances), judged on the output file's grid: the building
+    as the CityJSON writer will write it. ``defects`` (of the final geometry at ``tol``) are
+    reused when the grid leaves the geometry as it is.
     """
-    from lod2energy.exporters.cityjson import TOLERATED_CODES, acceptance_problem
-    from lod2energy.semantics import envelope_objects
+    from lod2energy.repair.accept import export_problem
 
-    why = acceptance_problem(b, lod)
-    if why is not None:
-        return why
-    energy = envelope_objects(b, lod)
-    heads = {f"coid={o.id}|geom={gi}" for o, gi, _ in energy}
-    ids = {o.id for o, _, _ in energy}
-    bad = []
-    for d in defects:
-        if d.code in TOLERATED_CODES:
-            continue
-        locs = [loc for loc in str(d.location).split("&&")]
-        if any("|".join(loc.split("|")[:2]) in heads or loc in (f"coid={i}" for i in ids) or "geom=" not in loc
-               for loc in locs):
-            bad.append(d)
-    if bad:
-        return f"invalid geometry (val3dity codes {_codes(bad)}), e.g. {bad[0].location}"
-    return None
+    return export_problem(b, lod, tol, defects=defects)
 
 
 def prepare_building(b: Building, options: PrepareOptions = PrepareOptions(), seq: int = 0

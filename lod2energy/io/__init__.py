@@ -107,7 +107,7 @@ def to_local_frame(model: "CityModel | None", features: "Iterator[Building | Fea
     def gen():
         for f in itertools.chain(pending, features):
             if isinstance(f, Building) and len(f.vertices):
-                f = replace(f, vertices=frame.to_local(f.vertices))
+                f = replace(f, vertices=frame.to_local(f.vertices)).with_provenance(file_frame=frame)
             yield f
     return replace(model, frame=frame), gen()
 

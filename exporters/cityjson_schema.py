@@ -1,0 +1,250 @@
+"""The official CityJSON schemas and the Energy extension: loading, validating, and the extension's attributes.
+
+The bundled copies live in ``lod2energy/data/schemas/cityjson/<v>/`` (official files, with a
+``referencing`` registry for the ``$ref`` between them) and
+``lod2energy/data/extensions/<v>/energy.ext.json`` (the Extension lod2energy ships). A
+document is validated by the compiled (``fastjsonschema``) validator when that is worth it,
+and by the interpreted ``jsonschema`` validators for the messages; every ``+energy...``
+attribute must be declared by the extension and its value valid under its schema
+(:func:`extension_problems`), as CityJSON's extension mechanism wants.
+"""
+from __future__ import annotations
+
+import json
+import os
+from dataclasses import dataclass
+from functools import lru_cache
+from importlib import resources
+from typing import Any, Mapping
+
+from lod2energy.errors import Lod2EnergyError
+
+EXTENSION_NAME = "Energy"
+EXTENSION_FILE = "energy.ext.json"
+EXTENSION_VERSION = "1.0"
+_VDIR = {"1.0": "10", "1.1": "11", "2.0": "20"}
+#: At most this many problems are listed for one file.
+MAX_PROBLEMS = 50
+
+
+def _data():
+    return resources.files("lod2energy") / "data"
+
+
+@lru_cache(maxsize=None)
+def extension_schema(version: str) -> dict:
+    """The shipped Energy extension for CityJSON ``version``."""
+    return json.loads((_data() / "extensions" / _VDIR[version] / EXTENSION_FILE).read_text(encoding="utf-8"))
+
+
+@dataclass(frozen=True)
+class _SchemaSet:
+    """Validators of one CityJSON version (whole document, feature, one per CityObject type)."""
+
+    document: Any
+    feature: Any
+    branches: tuple  # one validator per alternative of CityObjects' "oneOf"
+
+
+def _wrap(branch: Mapping, base: str, i: int) -> dict:
+    # a root "$id" next to the official files so that their relative "$ref"s resolve
+    return {"$schema": "http://json-schema.org/draft-07/schema#",
+            "$id": base.rsplit("/", 1)[0] + f"/lod2energy-cityobject-{i}.json", "allOf": [dict(branch)]}
+
+
+@lru_cache(maxsize=None)
+def _validators(version: str) -> _SchemaSet:
+    """Validators for the official schema of ``version`` (bundled copy)."""
+    import jsonschema
+    from referencing import Registry, Resource
+    from referencing.jsonschema import DRAFT7
+
+    d = _data() / "schemas" / "cityjson" / _VDIR[version]
+    registry = Registry()
+    feat = None
+    if version == "1.0":
+        main = json.loads((d / "cityjson.min.schema.json").read_text(encoding="utf-8"))
+        main.setdefault("$id", "https://www.cityjson.org/schemas/1.0.3/cityjson.schema.json")
+    else:
+        resources_ = []
+        for f in sorted(d.iterdir(), key=lambda p: p.name):
+            if not f.name.endswith(".schema.json") or ".min." in f.name:
+                continue
+            contents = json.loads(f.read_text(encoding="utf-8"))
+            resources_.append((contents["$id"], Resource.from_contents(contents, default_specification=DRAFT7)))
+            if f.name == "cityjson.schema.json":
+                main = contents
+            elif f.name == "cityjsonfeature.schema.json":
+                feat = contents
+        registry = registry.with_resources(resources_)
+    branches = main["properties"]["CityObjects"]["additionalProperties"]["oneOf"]
+    return _SchemaSet(
+        jsonschema.Draft7Validator(main, registry=registry),
+        jsonschema.Draft7Validator(feat, registry=registry) if feat else None,
+        tuple(jsonschema.Draft7Validator(_wrap(b, main["$id"], i), registry=registry)
+              for i, b in enumerate(branches)))
+
+
+def _schema_files(version: str) -> tuple[dict, dict | None, dict]:
+    """The bundled official schema of ``version``: (main, feature or None, ``{file name: schema}``)."""
+    d = _data() / "schemas" / "cityjson" / _VDIR[version]
+    if version == "1.0":
+        main = json.loads((d / "cityjson.min.schema.json").read_text(encoding="utf-8"))
+        return main, None, {}
+    files = {f.name: json.loads(f.read_text(encoding="utf-8")) for f in d.iterdir()
+             if f.name.endswith(".schema.json") and ".min." not in f.name}
+    return files["cityjson.schema.json"], files.get("cityjsonfeature.schema.json"), files
+
+
+#: As jsonschema validates: formats not asserted, and the document never filled with defaults.
+_COMPILE = {"use_formats": False, "use_default": False}
+
+
+@lru_cache(maxsize=None)
+def _compiled(version: str) -> tuple[Any, Any]:
+    """Compiled (``fastjsonschema``) validators of the document and of a CityJSONFeature for
+    ``version``, built once per process; ``$ref`` s to the official files resolve to the
+    bundled copies, never to the network. (None, None) when fastjsonschema is missing."""
+    try:
+        import fastjsonschema
+    except ImportError:  # the interpreted validators still decide, only slower
+        return None, None
+    main, feat, files = _schema_files(version)
+
+    def local(uri: str) -> dict:
+        name = uri.split("#", 1)[0].rsplit("/", 1)[-1]
+        if name not in files:
+            raise Lod2EnergyError(f"schema reference {uri} is not a bundled CityJSON {version} file")
+        return files[name]
+
+    handlers = {"https": local, "http": local}
+    return (fastjsonschema.compile(main, handlers=handlers, **_COMPILE),
+            fastjsonschema.compile(feat, handlers=handlers, **_COMPILE) if feat else None)
+
+
+#: Compiling a schema version costs about 2 s once per process, as much as interpreting the
+#: schema on some 25 CityObjects: smaller files are left to the interpreted validators unless
+#: the compiled ones are already built.
+COMPILE_MIN_OBJECTS = 25
+_COMPILED_VERSIONS: set[str] = set()
+
+
+def _worth_compiling(version: str, n_objects: int) -> bool:
+    """Use the compiled validator: a large file, or one already built for ``version``."""
+    return n_objects >= COMPILE_MIN_OBJECTS or version in _COMPILED_VERSIONS
+
+
+def _schema_valid_fast(version: str, doc: Any, feature: bool = False) -> bool:
+    """True when the compiled validator accepts ``doc``. Only a shortcut for valid files:
+    False (or no compiled validator) sends the document to the interpreted validators of
+    :func:`_schema_errors`, which give the messages and the final verdict."""
+    import fastjsonschema
+
+    _COMPILED_VERSIONS.add(version)
+    v = _compiled(version)[1 if feature else 0]
+    if v is None:
+        return False
+    try:
+        v(doc)
+    except fastjsonschema.JsonSchemaException:
+        return False
+    return True
+
+
+def _light(co: Any) -> Any:
+    if not isinstance(co, Mapping):
+        return co
+    return {k: ([] if k == "geometry" else v) for k, v in co.items()}
+
+
+def _schema_errors(schemas: _SchemaSet, doc: Any, what: str, feature: bool = False) -> list[str]:
+    """Schema errors of a CityJSON document or CityJSONFeature.
+
+    Equivalent to validating the whole document, but fast: the document is validated
+    without its CityObjects, and each CityObject only against the alternative(s) of the
+    schema's CityObject ``oneOf`` that accept it once its geometry is set aside (its type);
+    validating every object against all ~30 alternatives takes minutes on a tile.
+    """
+    out: list[str] = []
+    validator = schemas.feature if feature else schemas.document
+
+    def collect(v, inst, prefix):
+        for e in sorted(v.iter_errors(inst), key=lambda e: list(e.absolute_path))[:MAX_PROBLEMS]:
+            where = "/".join(str(p) for p in list(prefix) + list(e.absolute_path)) or "(root)"
+            msg = e.message
+            if e.validator in ("oneOf", "anyOf"):
+                t = e.instance.get("type") if isinstance(e.instance, Mapping) else None
+                msg = (f"{t!r} is not valid under any of the given schemas" if t else
+                       "not valid under any of the given schemas")
+            msg = msg if len(msg) < 300 else msg[:300] + "..."
+            out.append(f"{what}: schema: {where}: {msg}")
+
+    cos = doc.get("CityObjects") if isinstance(doc, Mapping) else None
+    if not isinstance(cos, Mapping):
+        collect(validator, doc, ())
+        return out
+    skeleton = {**doc, "CityObjects": {}}
+    collect(validator, skeleton, ())
+    for oid, co in cos.items():
+        light = _light(co)
+        cands = [v for v in schemas.branches if v.is_valid(light)]
+        if len(cands) == 1:
+            collect(cands[0], co, ("CityObjects", oid))
+        elif not cands:
+            # no alternative accepts it even without geometry: report the errors of the
+            # alternative of its own type (the one not complaining about "type"), else the oneOf
+            own = None
+            for v in schemas.branches:
+                errs = list(v.iter_errors(light))
+                if not any(list(e.absolute_path)[:1] == ["type"] for e in errs):
+                    own = v
+                    break
+            if own is not None:
+                collect(own, light, ("CityObjects", oid))
+            else:
+                collect(validator, {**skeleton, "CityObjects": {oid: light}}, ())
+        else:  # several alternatives accept it: the full oneOf decides
+            collect(validator, {**skeleton, "CityObjects": {oid: co}}, ())
+        if len(out) > MAX_PROBLEMS:
+            break
+    return out
+
+
+def extension_problems(doc: Mapping, extension: Mapping | None, what: str) -> list[str]:
+    import jsonschema
+
+    out = []
+    if extension is None:
+        return out
+    exts = doc.get("extensions") or {}
+    if EXTENSION_NAME not in exts:
+        return [f"{what}: extension {EXTENSION_NAME!r} is not referenced under 'extensions'"]
+    declared = extension.get("extraAttributes", {})
+    for oid, co in (doc.get("CityObjects") or {}).items():
+        attrs = (co or {}).get("attributes") or {}
+        for k, v in attrs.items():
+            if not k.startswith("+energy"):
+                continue
+            sch = declared.get(co.get("type"), {}).get(k)
+            if sch is None:
+                out.append(f"{what}: {oid}: attribute {k} is not defined by the {EXTENSION_NAME} extension")
+                continue
+            try:
+                jsonschema.Draft7Validator(sch).validate(v)
+            except jsonschema.ValidationError as e:
+                out.append(f"{what}: {oid}: {k}: {e.message}")
+    return out
+
+
+def load_extension_beside(path: str, doc: Mapping) -> Mapping | None:
+    url = ((doc.get("extensions") or {}).get(EXTENSION_NAME) or {}).get("url")
+    if not url:
+        return None
+    p = os.path.join(os.path.dirname(os.path.abspath(path)), url)
+    if os.path.exists(p):
+        try:
+            with open(p, encoding="utf-8") as f:
+                return json.load(f)
+        except (OSError, ValueError):
+            return None
+    return None

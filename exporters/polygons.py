@@ -1,0 +1,203 @@
+"""Planar polygons as the writers cut them: normals, areas, a wall-aligned plane basis, triangles, convex pieces.
+
+Exporter coordinates are local (a few hundred metres at most, see
+:func:`~lod2energy.exporters.zones.local_origin`). The normal is
+:func:`lod2energy.geometry.newell_normal` in Newell's textbook form (``centred=False``): the
+exporters' thresholds (piece area, planarity, collinearity) and their written IDF/STL bytes
+were made with that operation order. Earcut is :func:`lod2energy.geometry.earcut_rings`.
+
+What is the writers' own: a plane basis whose ``u`` is horizontal (walls are written with
+"up" = ``v``; :func:`lod2energy.geometry.plane_basis` picks ``u`` from the x axis instead),
+putting back the collinear ring vertices earcut skips (neighbouring faces must keep sharing
+every vertex), and Hertel-Mehlhorn merging of triangles into the convex pieces EnergyPlus wants.
+"""
+from __future__ import annotations
+
+from typing import Sequence
+
+import numpy as np
+
+from lod2energy.geometry import earcut_rings
+from lod2energy.geometry import newell_normal as _newell
+
+#: Largest distance of a vertex to its face plane (m) for the face to be written as one piece.
+PLANAR_TOL = 0.01
+
+
+def newell_normal(points: np.ndarray) -> np.ndarray:
+    """Area-weighted normal of a polygon (Newell's sums on the coordinates), length = 2 x area.
+
+    Parameters
+    ----------
+    points : (k, 3) float
+        Ring vertices, open, m.
+
+    Returns
+    -------
+    (3,) float, m2
+    """
+    return _newell(points, centred=False)
+
+
+def unit(v: np.ndarray) -> np.ndarray:
+    """``v`` scaled to length 1 (unchanged when it is zero)."""
+    n = float(np.linalg.norm(v))
+    return v / n if n > 0 else v
+
+
+def plane_basis(normal: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Orthonormal (u, v) in the plane of unit ``normal`` with u x v = normal.
+
+    u is horizontal (so for walls v points up), except on horizontal planes where u = +x.
+    """
+    n = unit(np.asarray(normal, dtype=np.float64))
+    up = np.array([0.0, 0.0, 1.0])
+    u = np.cross(up, n)
+    if np.linalg.norm(u) < 1e-6:
+        u = np.array([1.0, 0.0, 0.0]) - n[0] * n
+    u = unit(u)
+    v = np.cross(n, u)
+    return u, v
+
+
+def polygon_area3d(points: np.ndarray) -> float:
+    """Area (m2) of a planar polygon, (k, 3) points: half the length of :func:`newell_normal`."""
+    return 0.5 * float(np.linalg.norm(newell_normal(points)))
+
+
+def triangulate(points: np.ndarray, ring_ends: Sequence[int], normal: np.ndarray | None = None) -> np.ndarray:
+    """Triangulate a 3D polygon with holes (earcut in its plane).
+
+    Parameters
+    ----------
+    points : (k, 3) float
+        Outer ring then holes, concatenated, rings open.
+    ring_ends : sequence of int
+        End index (exclusive) of each ring in ``points``.
+    normal : (3,) float, optional
+        Orientation of the result; defaults to the outer ring's Newell normal.
+
+    Returns
+    -------
+    (t, 3) int
+        Indices into ``points``, each triangle counter-clockwise seen from ``normal``.
+    """
+    p = np.asarray(points, dtype=np.float64)
+    if normal is None:
+        normal = newell_normal(p[: ring_ends[0]])
+    n = unit(normal)
+    if not np.any(n):
+        return np.zeros((0, 3), dtype=np.intp)
+    u, v = plane_basis(n)
+    c = p.mean(axis=0)
+    xy = np.column_stack([(p - c) @ u, (p - c) @ v])
+    tri = earcut_rings(xy, ring_ends)
+    if len(tri) == 0:
+        return tri
+    a, b, cc = xy[tri[:, 0]], xy[tri[:, 1]], xy[tri[:, 2]]
+    cross = (b[:, 0] - a[:, 0]) * (cc[:, 1] - a[:, 1]) - (b[:, 1] - a[:, 1]) * (cc[:, 0] - a[:, 0])
+    flip = cross < 0
+    tri[flip] = tri[flip][:, ::-1]
+    missing = np.setdiff1d(np.arange(len(p)), tri.ravel())
+    if len(missing):
+        tri = _insert_dropped(tri, xy, missing)
+    return tri
+
+
+def _insert_dropped(tri: np.ndarray, xy: np.ndarray, missing: np.ndarray) -> np.ndarray:
+    """Put back ring vertices earcut skipped (collinear ones) by splitting the triangle edge
+    they lie on, so that neighbouring faces still share every vertex (no T-junction)."""
+    tris = [list(t) for t in tri]
+    for m in missing:
+        q = xy[m]
+        best, bd = None, np.inf
+        for ti, t in enumerate(tris):
+            for k in range(3):
+                a, b = t[k], t[(k + 1) % 3]
+                ab = xy[b] - xy[a]
+                L2 = float(ab @ ab)
+                if L2 == 0:
+                    continue
+                u = float((q - xy[a]) @ ab) / L2
+                if not 0 < u < 1:
+                    continue
+                d = float(np.linalg.norm(xy[a] + u * ab - q))
+                if d < bd:
+                    best, bd = (ti, k), d
+        if best is None:
+            continue
+        ti, k = best
+        t = tris[ti]
+        a, b, c = t[k], t[(k + 1) % 3], t[(k + 2) % 3]
+        tris[ti] = [a, int(m), c]
+        tris.append([int(m), b, c])
+    return np.asarray(tris, dtype=np.intp).reshape(-1, 3)
+
+
+#: Smallest sine of the turn at a vertex of a written convex piece: EnergyPlus removes
+#: (near-)collinear vertices, which would leave T-junctions with the neighbouring surfaces.
+STRICT_SIN = 2e-3
+
+
+def _is_convex_2d(xy: np.ndarray, eps: float = 1e-9, strict: bool = False) -> bool:
+    """Counter-clockwise polygon ``(k, 2)`` convex?
+
+    Collinear corners are allowed unless ``strict`` (then every turn must have a sine of
+    at least :data:`STRICT_SIN`).
+    """
+    d1 = np.roll(xy, -1, axis=0) - xy
+    d2 = np.roll(d1, -1, axis=0)
+    cross = d1[:, 0] * d2[:, 1] - d1[:, 1] * d2[:, 0]
+    scale = np.maximum(np.linalg.norm(d1, axis=1) * np.linalg.norm(d2, axis=1), 1e-12)
+    if strict:
+        return bool(np.all(cross >= STRICT_SIN * scale))
+    return bool(np.all(cross >= -eps * scale))
+
+
+def merge_convex(tris: np.ndarray, xy: np.ndarray, strict: bool = False) -> list[list[int]]:
+    """Hertel-Mehlhorn: merge counter-clockwise triangles into convex polygons.
+
+    Parameters
+    ----------
+    tris : (t, 3) int
+        Triangles (indices into ``xy``) of one planar polygon.
+    xy : (k, 2) float
+        Vertex coordinates in the polygon's plane.
+
+    Returns
+    -------
+    list of list of int
+        Convex counter-clockwise polygons covering the same area, using only the
+        triangles' vertices (so shared edges with other faces are kept).
+    """
+    polys: list[list[int] | None] = [list(map(int, t)) for t in tris]
+    changed = True
+    while changed:
+        changed = False
+        edge_owner: dict[tuple[int, int], int] = {}
+        for pi, poly in enumerate(polys):
+            if poly is None:
+                continue
+            for k in range(len(poly)):
+                edge_owner[(poly[k], poly[(k + 1) % len(poly)])] = pi
+        for (a, b), pi in list(edge_owner.items()):
+            qi = edge_owner.get((b, a))
+            if qi is None or qi == pi or polys[pi] is None or polys[qi] is None:
+                continue
+            p, q = polys[pi], polys[qi]
+            if (a, b) not in {(p[k], p[(k + 1) % len(p)]) for k in range(len(p))}:
+                continue
+            i = p.index(b)
+            p_rot = p[i:] + p[:i]          # b ... a
+            j = q.index(a)
+            q_rot = q[j:] + q[:j]          # a ... b
+            merged = p_rot + q_rot[1:-1]   # b ... a ... (before b)
+            if len(set(merged)) != len(merged):
+                continue
+            if _is_convex_2d(xy[merged], strict=strict):
+                polys[pi] = merged
+                polys[qi] = None
+                changed = True
+                break
+    return [p for p in polys if p is not None]
+

@@ -1,0 +1,61 @@
+"""Welding of close vertices into one, as the writers do it (each cluster becomes its mean)."""
+from __future__ import annotations
+
+from typing import Sequence
+
+import numpy as np
+from scipy.cluster.hierarchy import DisjointSet
+
+from lod2energy.geometry import close_pairs
+
+
+def weld(points: np.ndarray, tol: float) -> tuple[np.ndarray, np.ndarray]:
+    """Merge points closer than ``tol`` (transitively) into their cluster's mean.
+
+    The pairs are :func:`lod2energy.geometry.close_pairs`; unlike
+    :func:`lod2energy.geometry.snap_map`, which keeps each cluster's first point (val3dity's
+    rule, so that validation sees the input's coordinates), a writer puts a zone's corner
+    between the welded inputs.
+
+    Parameters
+    ----------
+    points : (n, 3) float, m
+    tol : float, m
+
+    Returns
+    -------
+    welded : (m, 3) float
+        One point per cluster (the mean).
+    index : (n,) int
+        Cluster of each input point.
+    """
+    p = np.asarray(points, dtype=np.float64)
+    if len(p) == 0:
+        return p.reshape(0, 3), np.zeros(0, dtype=np.intp)
+    pairs = close_pairs(p, tol)
+    if len(pairs) == 0:
+        return p.copy(), np.arange(len(p))
+    ds = DisjointSet(range(len(p)))
+    for a, b in pairs:
+        ds.merge(int(a), int(b))
+    roots = np.array([ds[i] for i in range(len(p))])
+    _, index = np.unique(roots, return_inverse=True)
+    welded = np.zeros((index.max() + 1, 3))
+    np.add.at(welded, index, p)
+    welded /= np.bincount(index)[:, None]
+    return welded, index
+
+
+def clean_ring(ring: Sequence[int]) -> list[int]:
+    """``ring`` without consecutive repeats, and without a closing copy of its first index."""
+    out: list[int] = []
+    for i in ring:
+        if not out or out[-1] != i:
+            out.append(int(i))
+    while len(out) > 1 and out[0] == out[-1]:
+        out.pop()
+    return out
+
+
+#: The former private name (``exporters.zone_fallback`` imports it from ``common``).
+_clean_ring = clean_ring
