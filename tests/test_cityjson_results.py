@@ -8,7 +8,7 @@ import pytest
 
 from export_helpers import EPW, shifted
 from factories import gabled_house
-from lod2energy import energyplus
+from lod2energy.exporters import energyplus
 from lod2energy.exporters import cityjson as X
 from lod2energy.exporters import run_results as R
 from lod2energy.io import cityjson as cjio
@@ -55,7 +55,7 @@ def test_no_run_no_result_attributes(tmp_path):
 
 @pytest.mark.external
 def test_export_run_puts_the_results_in_the_cityjson(tmp_path):
-    if energyplus.binary() is None:
+    if energyplus.run.binary() is None:
         pytest.skip("EnergyPlus not installed")
     from lod2energy.cli import main
     src = _house_file(tmp_path)
