@@ -45,6 +45,10 @@ class Writer:
     records : bool
         The writer also takes ``records=`` (the buildings' :class:`BuildingRecord` s, with
         the other writers' results) in the ``"dataset"`` pass.
+    prepare : callable(buildings, options, context=()) -> list of Building
+        The stage that runs just before this writer, in the same pass and with the same
+        neighbours (the IDF's energy model, :mod:`lod2energy.repair.energy_model`); it records
+        what it did in the buildings' provenance. Default: the buildings as they are.
     """
 
     name: str
@@ -53,18 +57,29 @@ class Writer:
     scope: Callable[[Any], str]
     halo: Callable[[Any], float] = lambda options: 0.0
     records: bool = False
+    prepare: Callable[..., list] = None  # type: ignore[assignment] - set in __post_init__
+
+    def __post_init__(self):
+        if self.prepare is None:
+            object.__setattr__(self, "prepare", _as_given)
 
 
 _WRITERS: dict[str, Writer] = {}
 
 
+def _as_given(buildings, options, context=()) -> list:
+    """No stage before the writer: the buildings as they are."""
+    return list(buildings)
+
+
 def register_writer(name: str, write: Callable[..., list], self_check: Callable[..., list], *,
                     scope: Callable[[Any], str] | str = "building",
-                    halo: Callable[[Any], float] | float = 0.0, records: bool = False) -> Writer:
+                    halo: Callable[[Any], float] | float = 0.0, records: bool = False,
+                    prepare: Callable[..., list] | None = None) -> Writer:
     """Register (or replace) the writer of format ``name``; returns it."""
     sc = scope if callable(scope) else (lambda options, _s=scope: _s)
     ha = halo if callable(halo) else (lambda options, _h=float(halo): _h)
-    w = Writer(name, write, self_check, sc, ha, bool(records))
+    w = Writer(name, write, self_check, sc, ha, bool(records), prepare)
     _WRITERS[name] = w
     return w
 
@@ -160,6 +175,12 @@ def _idf_halo(options) -> float:
     return float(options.shading_radius) if getattr(options, "shading", False) else 1.0
 
 
+def _prepare_idf(buildings, options, context=()):
+    """The energy model stage before the IDF writer (:func:`lod2energy.repair.energy_model.with_energy_model`)."""
+    from lod2energy.repair.energy_model import with_energy_model
+    return with_energy_model(buildings, options, context)
+
+
 def _write_idf(buildings, outdir, options, *, crs=None, context=(), model=None, stem="out", tol=None, frame=None):
     from lod2energy.exporters.energyplus.writer import write
     return _records("idf", write(buildings, outdir, options, crs=crs, context=context, frame=frame))
@@ -240,7 +261,7 @@ def _cfd_check(path: str) -> list[str]:
     return []
 
 
-register_writer("idf", _write_idf, _idf_check, scope=_idf_scope, halo=_idf_halo)
+register_writer("idf", _write_idf, _idf_check, scope=_idf_scope, halo=_idf_halo, prepare=_prepare_idf)
 register_writer("stl", _write_stl, _stl_check,
                 scope=lambda options: "dataset" if getattr(options, "mode", "building") == "dataset" else "building")
 # after the IDF: the CityJSON carries the results of its EnergyPlus runs (exporters.run_results)

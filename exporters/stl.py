@@ -26,7 +26,11 @@ from lod2energy.geometry import collapse_short_edges  # noqa: F401 - re-exported
 from lod2energy.geometry import triangle_areas, triangle_normals
 from lod2energy.model import BUILDING_TYPES, Building
 
-from .common import ExportResult, ZoneShell, local_origin, weld, not_written, output_path, safe_stem, signed_volume, zone_shells
+from .paths import not_written, output_path, safe_stem
+from .result import ExportResult
+from .shellcheck import signed_volume
+from .weld import weld
+from .zones import ZoneShell, local_origin, zone_shells
 
 #: Edge-collapse tolerance (m) after the union: removes sliver triangles.
 SIMPLIFY_TOL = 1e-3

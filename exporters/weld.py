@@ -56,6 +56,3 @@ def clean_ring(ring: Sequence[int]) -> list[int]:
         out.pop()
     return out
 
-
-#: The former private name (``exporters.zone_fallback`` imports it from ``common``).
-_clean_ring = clean_ring

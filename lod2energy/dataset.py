@@ -41,7 +41,7 @@ def dataset_pass(w, options: ExportOptions, job: Job, records: dict, others: lis
             bs += [load_spooled(job.spool, s) for s in sorted(others)]
     kw = {"records": [records[s] for s in seqs]} if getattr(w, "records", False) else {}
     try:
-        pairs = w.write(bs, job.outdir, wopts, crs=job.crs, model=model, stem=stem_of(input_path),
+        pairs = w.write(w.prepare(bs, wopts), job.outdir, wopts, crs=job.crs, model=model, stem=stem_of(input_path),
                         tol=options.prepare.tol, frame=job.frame, **kw)
     except Exception as e:  # noqa: BLE001 - reported for every building of the file
         pairs = [((records[s].id,), ExportRecord(w.name, False, "", (f"{w.name.upper()} not written: "

@@ -187,7 +187,7 @@ def process_building(b: Building, options: ExportOptions, outdir: str, seq: int 
         if w.scope(wopts) != "building":
             continue
         try:
-            pairs = w.write([pb], outdir, wopts, crs=crs, tol=options.prepare.tol, frame=frame)
+            pairs = w.write(w.prepare([pb], wopts), outdir, wopts, crs=crs, tol=options.prepare.tol, frame=frame)
         except Exception as e:  # noqa: BLE001 - a geometry the writer cannot take
             pairs = [((pb.id,), ExportRecord(w.name, False, "", (f"{w.name.upper()} not written: "
                                                                  f"{type(e).__name__}: {e}",)))]
@@ -227,7 +227,8 @@ def context_pass(task: tuple) -> list[ExportRecord]:
         if w.scope(wopts) != "context":
             continue
         try:
-            pairs = w.write([b], job.outdir, wopts, crs=job.crs, context=context, tol=job.options.prepare.tol,
+            own = w.prepare([b], wopts, context)  # the stage before the writer, with the writer's neighbours
+            pairs = w.write(own, job.outdir, wopts, crs=job.crs, context=context, tol=job.options.prepare.tol,
                             frame=job.frame)
         except Exception as e:  # noqa: BLE001 - reported for this building, the rest goes on
             pairs = [((b.id,), ExportRecord(w.name, False, "", (f"{w.name.upper()} not written: "

@@ -13,7 +13,7 @@ from export_helpers import (DATA, EPW, energy_ready, parts_with_semantics, real_
                             two_part_building)
 from factories import box
 
-from lod2energy.exporters import common, energyplus
+from lod2energy.exporters import energyplus, zones
 
 pytestmark = [pytest.mark.external,
               pytest.mark.skipif(energyplus.run.binary() is None,
@@ -140,7 +140,7 @@ def test_sliver_walls_do_not_break_energyplus_enclosure(tmp_path, weather):
     _, it = read(str(src))
     bs = [energy_ready(b) for b in it if isinstance(b, _B) and b.id.endswith("0503100000019492")]
     assert bs
-    zs = common.zone_shells(bs[0], common.local_origin(bs), None, collinear_tol=common.COLLINEAR_TOL)
+    zs = zones.zone_shells(bs[0], zones.local_origin(bs), None, collinear_tol=zones.COLLINEAR_TOL)
     raw = [p for zi, z in enumerate(zs) for p in energyplus.surfaces.zone_pieces(z, zi, {}, False)]
     res = energyplus.writer.write(bs, tmp_path, _opts(), weather=weather)
     r = res[0]
@@ -173,7 +173,7 @@ def test_thin_pieces_with_a_vertex_on_their_own_edge_run_enclosed(tmp_path, weat
     _, it = read(str(src))
     bs = [prepare(b, DEFAULT, a)[0] for b in it if isinstance(b, _B) and b.id.endswith("0503100000033957")]
     assert bs
-    zs = common.zone_shells(bs[0], common.local_origin(bs), None, collinear_tol=common.COLLINEAR_TOL)
+    zs = zones.zone_shells(bs[0], zones.local_origin(bs), None, collinear_tol=zones.COLLINEAR_TOL)
     pieces = [p for zi, z in enumerate(zs) for p in energyplus.surfaces.zone_pieces(z, zi, {}, False)]
     # no written piece keeps a vertex EnergyPlus would see on one of its other edges
     for p in pieces:
@@ -221,7 +221,7 @@ def test_enclosure_emulation_agrees_with_energyplus(tmp_path, weather, w):
     from lod2energy.exporters.energyplus.enclosure import enclosure_defects
 
     b = energy_ready(box())
-    z = common.zone_shells(b, np.zeros(3))[0]
+    z = zones.zone_shells(b, np.zeros(3))[0]
     polys = _box() if w == 0 else sliver_ground_box(w)
     kinds = ["ground"] + ["ground"] * (len(polys) - 6) + ["roof", "wall", "wall", "wall", "wall"]
     pieces = [energyplus.pieces.Piece(np.asarray(p, float), k, "Ground" if k == "ground" else "Outdoors", 0.5, i)

@@ -11,11 +11,12 @@ import pytest
 from export_helpers import energy_ready
 from factories import box, box_polygons, building_from_polygons, BOX_SEMANTICS
 
-from lod2energy.exporters import common, energyplus
-from lod2energy.exporters.common import check_closed_outward, polygon_area3d
+from lod2energy.exporters import energyplus, zones
+from lod2energy.exporters.polygons import polygon_area3d
+from lod2energy.exporters.shellcheck import check_closed_outward
 from lod2energy.exporters.energyplus.enclosure import (_edges_not_two, enclosure_defects, snap_polygons,
                                        unique_vertices)
-from lod2energy.exporters import zone_fallback
+from lod2energy.repair import energy_model, zone_fallback
 
 
 def _box() -> list[np.ndarray]:
@@ -109,7 +110,7 @@ def test_writer_fixes_a_sliver_zone(tmp_path):
 
 def test_fallback_block_keeps_footprint_height_and_u_values():
     b = energy_ready(box())
-    z = common.zone_shells(b, np.zeros(3))[0]
+    z = zones.zone_shells(b, np.zeros(3))[0]
     nz = zone_fallback.block_zone(z)
     assert nz is not None and "LoD1 block" in nz.warnings[-1]
     pieces = energyplus.surfaces.zone_pieces(nz, 0, {}, False)
@@ -126,24 +127,24 @@ def test_zone_that_fails_gets_a_simpler_envelope(monkeypatch):
     # a zone whose written pieces the emulation rejects is replaced by the first fallback
     # envelope that passes, with a warning saying so
     b = energy_ready(box())
-    z = common.zone_shells(b, np.zeros(3))[0]
+    z = zones.zone_shells(b, np.zeros(3))[0]
     pieces = energyplus.surfaces.zone_pieces(z, 0, {}, False)
     original = {id(p.points) for p in pieces}
     real = energyplus.enclosure.enclosure_defects
 
     def reject_original(polys, *a, **k):
         return ["x"] if {id(p) for p in polys} == original else real(polys, *a, **k)
-    monkeypatch.setattr(energyplus.zones, "enclosure_defects", reject_original)
-    nz, np_ = energyplus.zones.enclosable(z, 0, pieces)
-    assert "fails EnergyPlus's enclosure test" in nz.warnings[-1]
+    monkeypatch.setattr(energy_model, "enclosure_defects", reject_original)
+    nz, np_, how = energy_model.enclosable(z, 0, pieces)
+    assert "fails EnergyPlus's enclosure test" in nz.warnings[-1] and how in ("roof_zone", "block_zone")
     assert real([p.points for p in np_]) == []
-    assert energyplus.zones.enclosable(z, 0, np_) is None        # pieces that pass are kept as they are
+    assert energy_model.enclosable(z, 0, np_) is None        # pieces that pass are kept as they are
 
 
 def test_cleared_zone_moves_a_near_miss_off_the_edge():
     # a corner 7 mm from an edge it is not on (two walls drawn a few mm apart): EnergyPlus
     # would insert it into that edge; it moves 1.6 cm clear, nothing else moves
-    from lod2energy.exporters.common import ZoneFace, ZoneShell
+    from lod2energy.exporters.zones import ZoneFace, ZoneShell
 
     V = np.array([[0, 0, 0], [10, 0, 0], [10, 1, 0], [5, 0.007, 0], [6, 1, 0], [5, 1, 0]], dtype=float)
     faces = (ZoneFace(((0, 1, 2),), "ground", None, 0.3, 0), ZoneFace(((3, 4, 5),), "ground", None, 0.3, 1))
@@ -209,7 +210,7 @@ def test_pieces_are_checked_as_written():
     """Every piece leaves zone_pieces rounded to the written precision: the emulated tests
     see the coordinates EnergyPlus reads."""
     b = energy_ready(box(10.00004, 8.00007, 6.00002))
-    zs = common.zone_shells(b, np.zeros(3), None)
+    zs = zones.zone_shells(b, np.zeros(3), None)
     pcs = energyplus.surfaces.zone_pieces(zs[0], 0, {}, True)
     assert pcs and all(np.array_equal(p.points, np.round(p.points, energyplus.options.WRITE_DECIMALS)) for p in pcs)
     assert any(np.any(np.abs(p.points - 10.00004) < 1e-3) for p in pcs)

@@ -16,7 +16,8 @@ from factories import box, gabled_house
 
 from lod2energy.exporters import energyplus
 from lod2energy.errors import ParameterError
-from lod2energy.exporters import common, energyplus
+from lod2energy.exporters import energyplus, polygons
+from lod2energy.repair import energy_model
 
 
 @pytest.fixture(autouse=True)
@@ -38,7 +39,7 @@ def _surfaces(path):
 
 
 def _area(pts) -> float:
-    return common.polygon_area3d(np.asarray(pts, float))
+    return polygons.polygon_area3d(np.asarray(pts, float))
 
 
 @pytest.mark.parametrize("make", [box, gabled_house, l_shaped, two_part_building], ids=lambda f: f.__name__)
@@ -61,7 +62,7 @@ def test_box_surfaces_outward_ccw_upper_left_first(tmp_path):
     assert types == ["Floor", "Roof", "Wall", "Wall", "Wall", "Wall"]
     for s in surfs:
         p = np.asarray(s.coords, float)
-        n = common.newell_normal(p)
+        n = polygons.newell_normal(p)
         assert float(n @ (p.mean(axis=0) - centre)) > 0, f"{s.Name} faces inward"
         if s.Surface_Type == "Wall":
             assert p[0, 2] == pytest.approx(p[:, 2].max()), "wall does not start at an upper corner"
@@ -161,10 +162,10 @@ def test_windows_follow_wwr_and_lie_on_their_wall(tmp_path):
     assert win_area == pytest.approx(0.3 * sum(_area(p) for p in walls.values()), rel=0.02)
     for w in wins:
         base = walls[w.Building_Surface_Name]
-        n = common.unit(common.newell_normal(base))
+        n = polygons.unit(polygons.newell_normal(base))
         wp = np.asarray(w.coords, float)
         assert np.abs((wp - base.mean(axis=0)) @ n).max() < 1e-3, "window not in its wall's plane"
-        assert float(common.newell_normal(wp) @ n) > 0, "window faces the other way"
+        assert float(polygons.newell_normal(wp) @ n) > 0, "window faces the other way"
     assert res[0].stats["wwr_achieved"] == pytest.approx(0.3, abs=0.01)
 
 
@@ -181,11 +182,11 @@ def test_non_convex_and_non_planar_faces_become_planar_convex_pieces(tmp_path):
     _, surfs, _ = _surfaces(res[0].path)
     for s in surfs:
         p = np.asarray(s.coords, float)
-        n = common.unit(common.newell_normal(p))
+        n = polygons.unit(polygons.newell_normal(p))
         assert np.abs((p - p.mean(axis=0)) @ n).max() < 1e-3, f"{s.Name} not planar"
-        u, w = common.plane_basis(n)
+        u, w = polygons.plane_basis(n)
         xy = np.column_stack([p @ u, p @ w])
-        assert common._is_convex_2d(xy), f"{s.Name} not convex"
+        assert polygons._is_convex_2d(xy), f"{s.Name} not convex"
 
 
 @pytest.mark.parametrize("evil", [
@@ -281,9 +282,9 @@ def test_real_buildings_pass_self_check(tmp_path, rel, multipart, n):
 def test_a_dormer_without_a_floor_joins_the_zone_it_sits_on(tmp_path):
     house, ht, dormer, dt = steep_house_with_dormer()
     b = energy_ready(parts_with_semantics([(house, ht), (dormer, dt)]))
-    assert energyplus.zones.floorless_parts(b) == ["dormer_house-part1"]
-    merged, notes = energyplus.zones.merge_floorless_parts(b)
-    assert energyplus.zones.floorless_parts(merged) == [] and "united with dormer_house-part0" in notes[0]
+    assert energy_model.floorless_parts(b) == ["dormer_house-part1"]
+    merged, notes = energy_model.merge_floorless_parts(b)
+    assert energy_model.floorless_parts(merged) == [] and "united with dormer_house-part0" in notes[0]
     assert [o.id for o, _, _ in merged.energy_objects()] == ["dormer_house-part0"]
     assert [o.id for o, _, _ in b.energy_objects()] == ["dormer_house-part0", "dormer_house-part1"]  # input kept
     res = energyplus.writer.write([b], tmp_path)
@@ -296,7 +297,7 @@ def test_a_floorless_part_that_touches_nothing_is_left_out():
     house, ht, dormer, dt = steep_house_with_dormer()
     lifted = [[(x, y, z + 20) for x, y, z in r] for r in dormer]
     b = energy_ready(parts_with_semantics([(house, ht), (lifted, dt)]))
-    merged, notes = energyplus.zones.merge_floorless_parts(b)
+    merged, notes = energy_model.merge_floorless_parts(b)
     assert [o.id for o, _, _ in merged.energy_objects()] == ["dormer_house-part0"]
     assert "left out of the IDF" in notes[0]
 

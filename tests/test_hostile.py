@@ -386,7 +386,7 @@ def test_links_planted_under_every_output_name_are_refused_and_not_followed(tmp_
     victim = tmp_path / "victim.txt"
     victim.write_text("do not touch\n")
     from lod2energy.io.cityjson import is_cityjsonseq  # noqa: F401 - the reader is importable
-    from lod2energy.exporters.common import safe_stem
+    from lod2energy.exporters.paths import safe_stem
     names = [f"{safe_stem(i, set())}{s}" for i in IDS[:2] for s in (".idf", ".stl", ".json")]
     names += ["energy.ext.json", "in.energy.city.json"]
     pid = os.getpid()
@@ -446,7 +446,7 @@ def test_a_file_that_fails_its_self_check_never_keeps_a_good_name(tmp_path, caps
     outdir = tmp_path / "out"
     outdir.mkdir()
     suffix = {"idf": ".idf", "stl": ".stl", "cityjson": ".energy.city.json"}[fmt]
-    from lod2energy.exporters.common import safe_stem
+    from lod2energy.exporters.paths import safe_stem
     stem = safe_stem(IDS[0], set()) if fmt != "cityjson" else "in"
     old = outdir / f"{stem}{suffix}"  # an older good-looking file of this name
     old.write_text("from an earlier run")

@@ -9,7 +9,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from exporters.common import local_origin, zone_shells
+from exporters.zones import local_origin, zone_shells
 from lod2energy.exporters.energyplus.openings import Opening, opening_polygon, split_openings
 from lod2energy.exporters import energyplus
 from lod2energy.cli import main

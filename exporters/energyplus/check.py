@@ -6,7 +6,9 @@ from pathlib import Path
 import numpy as np
 
 from lod2energy.errors import ExportError
-from ..common import check_closed_outward, MIN_PIECE_AREA, polygon_area3d
+from ..polygons import polygon_area3d
+from ..shellcheck import check_closed_outward
+from ..zones import MIN_PIECE_AREA
 from .conform import PIECE_PLANAR
 from .enclosure import enclosure_defects, eplus_degenerate
 from .pieces import _planar_dev

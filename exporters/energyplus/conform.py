@@ -8,7 +8,10 @@ from dataclasses import replace
 
 import numpy as np
 
-from ..common import check_closed_outward, MIN_PIECE_AREA, polygon_area3d, _split_t_junctions, weld
+from ..polygons import polygon_area3d
+from ..shellcheck import check_closed_outward, _split_t_junctions
+from ..weld import weld
+from ..zones import MIN_PIECE_AREA
 from .enclosure import enclosure_defects, eplus_collinear, eplus_degenerate, _on_line, snap_polygons
 from .options import WRITE_DECIMALS
 from .pieces import Piece, _planar_dev

@@ -30,7 +30,8 @@ from typing import Sequence
 
 import numpy as np
 
-from ..common import polygon_area3d, weld
+from ..polygons import polygon_area3d
+from ..weld import weld
 
 #: Per-axis tolerance (m) of EnergyPlus's ``isAlmostEqual3dPt`` and the slack of its
 #: ``isPointOnLineBetweenPoints`` (1/2 inch).

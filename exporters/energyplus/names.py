@@ -8,7 +8,7 @@ from __future__ import annotations
 import json
 import re
 
-from ..common import _short_hash
+from ..paths import _short_hash
 
 
 _IDF_NAME_BAD = re.compile(r"[^A-Za-z0-9_.-]+")

@@ -7,7 +7,8 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from ..common import _is_convex_2d, newell_normal, plane_basis, polygon_area3d, unit, ZoneShell
+from ..polygons import _is_convex_2d, newell_normal, plane_basis, polygon_area3d, unit
+from ..zones import ZoneShell
 
 
 def window_for(piece: np.ndarray, wwr: float) -> np.ndarray | None:

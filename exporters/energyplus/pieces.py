@@ -10,10 +10,8 @@ from typing import Sequence
 
 import numpy as np
 
-from ..common import (
-    _is_convex_2d, merge_convex, newell_normal, PLANAR_TOL, plane_basis, triangulate, unit, ZoneFace,
-    ZoneShell,
-)
+from ..polygons import _is_convex_2d, merge_convex, newell_normal, PLANAR_TOL, plane_basis, triangulate, unit
+from ..zones import ZoneFace, ZoneShell
 from .options import WRITE_DECIMALS
 
 

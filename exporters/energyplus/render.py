@@ -9,7 +9,8 @@ from typing import Sequence
 import numpy as np
 
 from lod2energy.errors import ExportError
-from ..common import newell_normal, polygon_area3d, unit, ZoneShell
+from ..polygons import newell_normal, polygon_area3d, unit
+from ..zones import ZoneShell
 from .constructions import construction_layers, _construction_name, INTERZONE_SLAB, _KIND_TYPE, MASS
 from .names import comment_text, _IDF_NAME_BAD, NameRegistry
 from .openings import Opening, opening_polygon, window_for

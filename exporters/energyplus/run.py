@@ -24,7 +24,7 @@ import time
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 
-from ..common import ExportResult
+from ..result import ExportResult
 from .options import IdfOptions
 
 J_PER_KWH = 3.6e6

@@ -1,4 +1,9 @@
-"""The EnergyPlus writer: :func:`write` (one IDF per building, or one per dataset) and its self-check."""
+"""The EnergyPlus writer: :func:`write` (one IDF per building, or one per dataset) and its self-check.
+
+It writes the energy model it is given (``provenance["energy_model"]``, made by the stage
+:mod:`lod2energy.repair.energy_model` before the writer runs): zones, pieces and party walls
+in their local frame. Called directly on buildings without one, it has the stage make it.
+"""
 from __future__ import annotations
 
 from concurrent.futures import ThreadPoolExecutor
@@ -10,20 +15,20 @@ import numpy as np
 
 from lod2energy import safe_write
 from lod2energy.errors import ParameterError
-from lod2energy.model import BUILDING_TYPES, Building
-from ..common import (
-    COLLINEAR_TOL, ExportResult, local_origin, not_written, output_path, polygon_area3d, safe_stem,
-    set_aside_failed, zone_shells, ZoneShell,
-)
+from lod2energy.model import Building
+from lod2energy.repair import energy_model
+from ..paths import not_written, output_path, safe_stem, set_aside_failed
+from ..polygons import polygon_area3d
+from ..result import ExportResult
+from ..zones import local_origin
 from .check import self_check
-from .openings import Opening, split_openings
 from .options import IdfOptions
 from .pieces import _face_frame, _pieces_from_points
 from .render import render_idf
 from .run import _run
 from .site import _group_site, read_epw_header
-from .surfaces import find_party_faces, zone_pieces
-from .zones import enclosable, merge_floorless_parts, _written_zones
+from .surfaces import zone_pieces
+from .zones import _written_zones
 
 
 def _bbox(b: Building) -> np.ndarray:
@@ -84,36 +89,12 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
     out = Path(outdir)
     out.mkdir(parents=True, exist_ok=True)
 
-    blist = [b for b in buildings if b.type in BUILDING_TYPES and b.energy_objects(options.lod)]
-    if not blist:
+    model = energy_model.model_of(buildings, options, context)
+    if model is None:
         return []
-    n_own = len(blist)
-    own_ids = {b.id for b in blist}
-    blist += [b for b in context if b.id not in own_ids and b.type in BUILDING_TYPES and b.energy_objects(options.lod)]
-    merge_notes: dict[int, list[str]] = {}
-    for bi, b in enumerate(blist):
-        blist[bi], merge_notes[bi] = merge_floorless_parts(b, options.lod)
-    origin = local_origin(blist)
-    zones: list[ZoneShell] = []
-    zones_of: dict[int, list[int]] = {}
-    for bi, b in enumerate(blist):
-        zs = zone_shells(b, origin, options.lod, wwr=options.wwr, collinear_tol=COLLINEAR_TOL)
-        zones_of[bi] = list(range(len(zones), len(zones) + len(zs)))
-        zones.extend(zs)
-    openings: dict[int, tuple[Opening, ...]] = {}  # real windows / doors per zone (LoD3 input)
-    for zi in range(len(zones)):
-        zones[zi], openings[zi], unmatched = split_openings(zones[zi])
-        if unmatched:
-            merge_notes.setdefault(next(bi for bi, zl in zones_of.items() if zi in zl), []).append(
-                f"zone {zones[zi].object_id}: {unmatched} window/door face(s) fill no wall hole; written as wall")
-    party = find_party_faces(zones) if options.party_walls else {}
-    pieces = [zone_pieces(z, zi, party, options.party_split) for zi, z in enumerate(zones)]
-    for zi in range(len(zones)):
-        simpler = enclosable(zones[zi], zi, pieces[zi])
-        if simpler is not None:
-            zones[zi], pieces[zi] = simpler
-            party = {k: v for k, v in party.items() if k[0] != zi}
-            openings[zi] = ()  # a fallback envelope: the WWR rule
+    blist, n_own, origin = list(model.buildings), model.n_own, model.origin
+    zones, zones_of, openings, party, pieces = model.zones, model.zones_of, model.openings, model.party, model.pieces
+    merge_notes = model.notes
 
     written_of, zone_notes, bstats = _written_zones(blist[:n_own], zones, zones_of, pieces, options, openings)
 

@@ -1,4 +1,8 @@
-"""Zones: one per Building/BuildingPart or per storey, floors, floorless parts and simpler envelopes."""
+"""Zones as written: one per Building/BuildingPart or per storey, floors, what each zone is.
+
+Floorless parts and simpler envelopes are decided before the writer, by the energy model
+stage (:mod:`lod2energy.repair.energy_model`).
+"""
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
@@ -6,68 +10,18 @@ from typing import Sequence
 
 import numpy as np
 
-from lod2energy.model import Building
-from ..common import check_closed_outward, newell_normal, unit, ZoneShell
-from ..zone_fallback import FALLBACKS
+from ..polygons import newell_normal, unit
+from ..shellcheck import check_closed_outward
+from ..zones import ZoneShell
 from .enclosure import enclosure_defects
 from .openings import Opening
 from .pieces import Piece, _pieces_from_points
-from .surfaces import zone_pieces
 
 
 #: EnergyPlus puts a zone's interior solar gains on its floors, and counts a surface as one
 #: only when it faces down more than 30 degrees past vertical (tilt > 120 degrees): outward
 #: n_z below this. A zone without one stops with a severe error.
 FLOOR_NZ = -0.5
-
-
-def floorless_parts(b: Building, lod: str | None = None) -> list[str]:
-    """BuildingParts of ``b`` without a face EnergyPlus can take as a floor (n_z < -0.5).
-
-    Typically a dormer or roof superstructure modelled as its own part, whose underside
-    follows a roof steeper than 60 degrees.
-    """
-    out = []
-    for o, _, g in b.energy_objects(lod):
-        nz = [unit(newell_normal(b.vertices[list(s.rings[0])]))[2] for *_, s in g.iter_surfaces()]
-        if o.type == "BuildingPart" and nz and not min(nz) < FLOOR_NZ:
-            out.append(o.id)
-    return out
-
-
-def merge_floorless_parts(b: Building, lod: str | None = None) -> tuple[Building, list[str]]:
-    """``b`` with no floorless part (:func:`floorless_parts`) left as a zone of its own.
-
-    A dormer is no separately conditioned zone, and EnergyPlus cannot distribute solar gains
-    in a zone without a floor. Its solid is united with the part it sits on when the union
-    is a valid solid (the repair ladder's criterion); otherwise it is left out of the IDF
-    (such parts are small: their underside follows a roof steeper than 60 degrees), and the
-    roof under it is then written as an outdoor roof. A union keeps its host's floor, so one
-    pass over the floorless parts suffices.
-
-    Returns
-    -------
-    building : Building
-        For the IDF only; the other exports keep the parts.
-    warnings : list of str
-    """
-    from lod2energy.repair.parts import merge_parts, touching_part, without_geometry
-
-    lod = lod if lod is not None else b.default_lod()
-    warnings: list[str] = []
-    for pid in floorless_parts(b, lod):
-        host = touching_part(b, pid, lod)
-        merged = merge_parts(b, {pid, host}, lod=lod, into=host) if host else b
-        if merged is not b:
-            b = merged
-            warnings.append(f"part {pid} has no surface EnergyPlus can take as a floor: united with {host} "
-                            "into one zone")
-        else:
-            b = without_geometry(b, {pid}, lod)
-            warnings.append(f"part {pid} has no surface EnergyPlus can take as a floor (none faces down more "
-                            "than 30 degrees past vertical) and no valid union with the part it sits on: left "
-                            "out of the IDF")
-    return b, warnings
 
 
 def with_floor(pieces: list[Piece], tilt_band: float = 0.05) -> tuple[list[Piece], int]:
@@ -214,23 +168,3 @@ def _written_zones(blist, zones, zones_of, pieces, options, openings):
                       "storeys_source": st.source, "storey_height_m": round(st.storey_height, 3),
                       "attic": st.attic}
     return written_of, notes, bstats
-
-
-def enclosable(zone: ZoneShell, zi: int, pieces: list[Piece]) -> tuple[ZoneShell, list[Piece]] | None:
-    """A simpler envelope for a zone whose pieces EnergyPlus would call not fully enclosed.
-
-    Returns None when the pieces pass (:func:`enclosure.enclosure_defects`) or no
-    fallback of :mod:`exporters.zone_fallback` (2.5D model, then LoD1 block) passes either;
-    else the first fallback zone that does, with its pieces (party walls not split).
-    """
-    if not pieces or not enclosure_defects([p.points for p in pieces]):
-        return None
-    for make in FALLBACKS:
-        nz = make(zone)
-        if nz is None:
-            continue
-        np_ = zone_pieces(nz, zi, {}, False)
-        pts = [p.points for p in np_]
-        if np_ and not check_closed_outward(pts) and not enclosure_defects(pts):
-            return nz, np_
-    return None

@@ -146,7 +146,7 @@ def build_case(buildings, region: Region, wind_direction: float, cell_size: floa
     ParameterError
         No building of the region could be used.
     """
-    from lod2energy.exporters.common import local_origin
+    from lod2energy.exporters.zones import local_origin
     from .region import select
 
     blist = [b for b in buildings if b.is_building]

@@ -3,7 +3,7 @@
 Method, per building of the region (already validated, repaired and labelled):
 
 1. its solids (Building and BuildingParts) are triangulated by the STL exporter's functions
-   (:func:`lod2energy.exporters.common.zone_shells`, ``stl._zone_mesh``), every triangle keeping
+   (:func:`lod2energy.exporters.zones.zone_shells`, ``stl._zone_mesh``), every triangle keeping
    its class (roof, wall, ground, floor);
 2. every vertex of its ground (bottom) faces is moved down to ``ground level - SINK`` so that
    the body goes through the domain floor: a building standing a little above the region's
@@ -115,7 +115,7 @@ def building_body(b, origin: np.ndarray, lod: str | None = None) -> BuildingBody
     ValueError
         The building has no solid, or one of its solids is not a closed 2-manifold.
     """
-    from lod2energy.exporters.common import zone_shells
+    from lod2energy.exporters.zones import zone_shells
     from lod2energy.exporters.stl import ZONE_WELD_TOL, _closed_by_position, _zone_mesh
     import manifold3d as m3
 

@@ -1,4 +1,7 @@
-"""Simpler envelopes for a zone EnergyPlus would not accept as written.
+"""Simpler envelopes for a zone EnergyPlus would not accept as written (the energy model's fallbacks).
+
+Part of the energy model stage (:mod:`lod2energy.repair.energy_model`), which tries them in
+the order of :data:`FALLBACKS` before the IDF writer runs; the writer only writes the result.
 
 A repaired LoD2 shell is a closed 2-manifold, but EnergyPlus's enclosure test merges points
 within 1.27 cm per axis and inserts points within 1.27 cm of an edge
@@ -11,7 +14,7 @@ written as a simpler envelope of the same building, least change first:
    :func:`separated_zone` - the same faces, with sheets that touch within EnergyPlus's
    tolerance pulled 4 cm apart (instead of the repair's 8 mm);
 1. :func:`roof_zone` - the building as a 2.5D model (every roof plane kept, walls vertical,
-   :func:`lod2energy.repair.pipeline.roof_model`);
+   :func:`lod2energy.repair.roofs.roof_model`);
 2. :func:`block_zone` - an LoD1 block: the footprint, simplified at 5 cm, extruded from the
    lowest point to the area-weighted mean roof height; then the same with spikes narrower
    than 20 cm and 1 m cut off (morphological opening), then the footprint's convex hull.
@@ -20,14 +23,21 @@ U-values carry over per surface class (area-weighted mean of the zone's faces of
 """
 from __future__ import annotations
 
+from dataclasses import replace
 from functools import partial
 
 import numpy as np
+from shapely.geometry.polygon import orient
 
 from lod2energy.config import DEFAULT
-from lod2energy.repair._mesh import Face, PolyMesh
-
-from .common import ZoneFace, ZoneShell, classify, newell_normal, polygon_area3d
+from lod2energy.exporters.energyplus.enclosure import eplus_merge
+from lod2energy.exporters.polygons import newell_normal, polygon_area3d
+from lod2energy.exporters.weld import clean_ring
+from lod2energy.exporters.zones import ZoneFace, ZoneShell, classify
+from lod2energy.polymesh import Face, PolyMesh
+from lod2energy.repair.footprint import footprint_polygon, roof_height
+from lod2energy.repair.roofs import roof_model
+from lod2energy.repair.unpinch import unpinch
 
 #: Footprint simplification (m) of :func:`block_zone`: above EnergyPlus's 1.27 cm tolerance.
 BLOCK_SIMPLIFY = 0.05
@@ -98,8 +108,6 @@ def cleared_zone(zone: ZoneShell, rounds: int = 3) -> ZoneShell | None:
     close to, to :data:`CLEARANCE`; faces keep their vertices, so the shell stays closed.
     A point exactly on an edge (a true T-junction, which EnergyPlus handles) stays.
     """
-    from dataclasses import replace
-
     V = np.array(zone.vertices, dtype=np.float64)
     E = _edges(zone)
     if len(E) == 0:
@@ -162,19 +170,12 @@ def separated_zone(zone: ZoneShell) -> ZoneShell | None:
     EnergyPlus merges them and the sheets separated by :data:`EPLUS_UNPINCH` instead; faces
     and their classes stay, only the pinch points move.
     """
-    from dataclasses import replace
-
-    from lod2energy.repair.unpinch import unpinch
-
-    from .common import _clean_ring
-    from .energyplus.enclosure import eplus_merge
-
     V, idx = eplus_merge(zone.vertices)
     if len(V) == len(zone.vertices):
         return None
     kept, faces = [], []
     for f in zone.faces:
-        rings = [tuple(_clean_ring([int(idx[i]) for i in r])) for r in f.rings]
+        rings = [tuple(clean_ring([int(idx[i]) for i in r])) for r in f.rings]
         if len(set(rings[0])) < 3 or any(len(set(r)) < 3 for r in rings[1:]):
             return None
         kept.append(f)
@@ -191,8 +192,6 @@ def separated_zone(zone: ZoneShell) -> ZoneShell | None:
 
 def roof_zone(zone: ZoneShell) -> ZoneShell | None:
     """The zone as a 2.5D model (roof planes kept), or None when there is no valid one."""
-    from lod2energy.repair.pipeline import roof_model
-
     try:
         m = roof_model(_mesh(zone), "2.2", DEFAULT)
     except Exception:  # noqa: BLE001 - a failed reconstruction only means no candidate
@@ -216,10 +215,6 @@ def block_zone(zone: ZoneShell, simplify: float = BLOCK_SIMPLIFY, opening: float
     hull : bool
         Use the footprint's convex hull.
     """
-    from shapely.geometry.polygon import orient
-
-    from lod2energy.repair.footprint import footprint_polygon, roof_height
-
     m = _mesh(zone)
     fp = footprint_polygon(m, simplify=simplify)
     if fp is None:
@@ -258,6 +253,6 @@ def block_zone(zone: ZoneShell, simplify: float = BLOCK_SIMPLIFY, opening: float
                                       f"{z1 - z0:.2f} m): the repaired shell fails EnergyPlus's enclosure test")
 
 
-#: Tried in this order by the IDF writer: least change first.
+#: Tried in this order by the energy model stage: least change first.
 FALLBACKS = (cleared_zone, separated_zone, roof_zone, block_zone, partial(block_zone, opening=0.1), partial(block_zone, opening=0.5),
              partial(block_zone, hull=True))

@@ -1,0 +1,134 @@
+"""The energy model stage (lod2energy.repair.energy_model): floorless parts and simpler envelopes
+are decided before the IDF writer, recorded in the building's provenance, and the writer writes
+what it is given."""
+from __future__ import annotations
+
+import json
+from dataclasses import replace
+import re
+
+import numpy as np
+import pytest
+
+from export_helpers import energy_ready, parts_with_semantics, shifted, steep_house_with_dormer
+from factories import box
+
+from lod2energy.exporters import energyplus
+from lod2energy.exporters.registry import writer
+from lod2energy.exporters.zones import local_origin
+from lod2energy.model import CityModel, frozen_mapping
+from lod2energy.repair import energy_model
+
+OPTIONS = energyplus.options.IdfOptions()
+
+
+def dormer_house():
+    """A steep house with a dormer part that has no face EnergyPlus can take as a floor."""
+    house, ht, dormer, dt = steep_house_with_dormer()
+    return energy_ready(parts_with_semantics([(house, ht), (dormer, dt)]))
+
+
+def _zone_names(path) -> list[str]:
+    return sorted(re.findall(r"\nZone,\s*([^,;]+?)\s*[,;]", open(path, encoding="ascii").read()))
+
+
+def _idf_bytes(res) -> bytes:
+    return open(res[0].path, "rb").read()
+
+
+def test_the_stage_records_a_united_dormer_and_keeps_the_geometry():
+    b = dormer_house()
+    [staged] = energy_model.with_energy_model([b], OPTIONS)
+    rec = staged.provenance["energy_model"]
+    assert any("united with dormer_house-part0" in n for n in rec["notes"])
+    assert rec["zones"] == ("dormer_house-part0",)
+    assert isinstance(rec["model"], energy_model.EnergyModel)
+    # the building's own geometry (what STL and CityJSON write) keeps both parts
+    assert np.array_equal(staged.vertices, b.vertices) and staged.objects == b.objects
+    assert [o.id for o, _, _ in staged.energy_objects()] == ["dormer_house-part0", "dormer_house-part1"]
+    assert "energy_model" not in b.provenance
+
+
+def test_the_writer_writes_the_recorded_model(tmp_path, monkeypatch):
+    b = dormer_house()
+    direct = energyplus.writer.write([b], tmp_path / "direct", OPTIONS)
+    staged = energy_model.with_energy_model([b], OPTIONS)
+
+    def no_second_model(*a, **k):
+        raise AssertionError("the writer made its own energy model")
+    monkeypatch.setattr(energy_model, "prepare_energy_model", no_second_model)
+    given = energyplus.writer.write(staged, tmp_path / "given", OPTIONS)
+    assert given[0].ok, given[0].problems
+    assert _idf_bytes(given) == _idf_bytes(direct)
+    assert _zone_names(given[0].path) == _zone_names(direct[0].path) and len(_zone_names(direct[0].path)) >= 1
+    assert any("united with" in w for w in given[0].warnings)
+
+
+def test_a_model_made_for_other_neighbours_is_made_again(tmp_path):
+    b, nb = energy_ready(box(id="a")), energy_ready(box(origin=(10.0, 0.0, 0.0), id="n"))
+    [staged] = energy_model.with_energy_model([b], OPTIONS)  # without the neighbour
+    m = energy_model.model_of([staged], OPTIONS, [nb])
+    assert m is not staged.provenance["energy_model"]["model"]
+    assert [x.id for x in m.buildings] == ["a", "n"] and m.party       # the shared wall is found
+    assert energy_model.model_of([staged], OPTIONS) is staged.provenance["energy_model"]["model"]
+
+
+def test_a_simpler_envelope_is_recorded_and_written(tmp_path, monkeypatch):
+    # a zone whose pieces the enclosure emulation rejects: the stage swaps in the first
+    # fallback that passes, says which, and the writer writes that zone
+    b = energy_ready(box())
+    real = energy_model.enclosure_defects
+    calls = []
+
+    def reject_first(polys, *a, **k):
+        calls.append(len(polys))
+        return ["x"] if len(calls) == 1 else real(polys, *a, **k)
+    monkeypatch.setattr(energy_model, "enclosure_defects", reject_first)
+    [staged] = energy_model.with_energy_model([b], OPTIONS)
+    [simpler] = staged.provenance["energy_model"]["simpler_zones"]
+    names = {energy_model._fallback_name(f) for f in energy_model.FALLBACKS}
+    assert simpler["zone"] == staged.provenance["energy_model"]["zones"][0] and simpler["envelope"] in names
+    model = staged.provenance["energy_model"]["model"]
+    assert "fails EnergyPlus's enclosure test" in model.zones[0].warnings[-1]
+    res = energyplus.writer.write([staged], tmp_path, OPTIONS)
+    assert res[0].ok, res[0].problems
+    assert any("fails EnergyPlus's enclosure test" in w for w in res[0].warnings)
+    # without the stage's verdict the same building is written as it is, without that warning
+    monkeypatch.setattr(energy_model, "enclosure_defects", real)
+    plain = energyplus.writer.write([b], tmp_path / "plain", OPTIONS)
+    assert not any("fails EnergyPlus's enclosure test" in w for w in plain[0].warnings)
+
+
+def test_no_energy_ready_building_passes_unchanged():
+    b = replace(box(), type="SolitaryVegetationObject")  # not a building: no zone of its own
+    assert energy_model.with_energy_model([b], OPTIONS) == [b]
+    assert energy_model.prepare_energy_model([b], OPTIONS) is None
+
+
+def test_the_registry_runs_the_stage_before_the_idf_writer_only():
+    b = dormer_house()
+    [idf] = writer("idf").prepare([b], OPTIONS)
+    assert "energy_model" in idf.provenance
+    assert writer("stl").prepare([b], None) == [b] and writer("cityjson").prepare([b], None) == [b]
+
+
+def test_the_cityjson_writer_leaves_the_energy_model_out(tmp_path):
+    from lod2energy.exporters import cityjson
+    [staged] = energy_model.with_energy_model([dormer_house()], OPTIONS)
+    model = CityModel(version="2.0", metadata=frozen_mapping({"referenceSystem": "urn:ogc:def:crs:EPSG::7415"}))
+    res = cityjson.write(str(tmp_path / "out.city.json"), model, [staged])
+    text = open(res.path, encoding="utf-8").read()
+    assert json.loads(text)["CityObjects"] and "energy_model" not in text and "frame_origin" not in text
+
+
+@pytest.mark.parametrize("make", [dormer_house, lambda: energy_ready(box())], ids=["dormer", "box"])
+def test_the_frame_is_the_writers(make, tmp_path):
+    b = shifted(make())
+    [staged] = energy_model.with_energy_model([b], OPTIONS)
+    origin = np.asarray(staged.provenance["energy_model"]["frame_origin"])
+    res = energyplus.writer.write([staged], tmp_path, OPTIONS)
+    # building mode: the file's offset is the frame the model was made in, that of the IDF's
+    # geometry (a united dormer can reach a hair below the input's lowest point)
+    assert np.array_equal(origin, local_origin(staged.provenance["energy_model"]["model"].buildings))
+    assert np.all(np.abs(origin - np.floor(b.vertices.min(axis=0))) <= 1)
+    assert np.array_equal(np.asarray(res[0].offset), origin)
