@@ -218,7 +218,7 @@ def properties(b: Building, record=None, use: str | None = None, lod: str | None
              "construction_period": thermal.get("construction_period") or None}
     if run:
         idf = record.export("idf") if record is not None else None
-        extra = dict(idf.extra) if idf is not None else {}
+        extra = idf.values() if idf is not None else {}
         for k in RUN_KEYS:
             props[k] = _plain(extra.get(k))
     return {k: _plain(v) for k, v in props.items()}

@@ -112,28 +112,6 @@ def _files(*paths: str) -> tuple[FileRecord, ...]:
     return tuple(out)
 
 
-#: Per-building figures of an EnergyPlus run (``stats["building_results"]``) kept in the report.
-_RUN_FIGURES = ("heating_kwh_m2", "cooling_kwh_m2", "heating_peak_w", "cooling_peak_w")
-
-
-def _run_figures(res) -> dict[str, dict]:
-    """``{building id: report figures}`` of a run: the building's annual need per m2, peaks,
-    conditioned floor area (m2) and ``zones``, one entry per conditioned zone."""
-    stats = getattr(res, "stats", None) or {}
-    br = stats.get("building_results") or {}
-    if not br:
-        return {}
-    zb = stats.get("zone_building") or {}
-    out = {}
-    for bid, d in br.items():
-        fig = {k: d.get(k) for k in _RUN_FIGURES}
-        fig["conditioned_floor_area_m2"] = d.get("floor_area_m2")
-        fig["zones"] = [{"zone": z, **dict(zd)} for z, zd in (stats.get("zone_results") or {}).items()
-                        if zb.get(z) == bid]
-        out[str(bid)] = {"totals": (d.get("heating_kwh"), d.get("cooling_kwh")), **fig}
-    return out
-
-
 def _records(fmt: str, results: Sequence, sidecars: Callable[[str], Sequence[str]] = lambda p: ()) -> list:
     from lod2energy.exporters.run_results import record_results
     out = []
@@ -148,19 +126,17 @@ def _records(fmt: str, results: Sequence, sidecars: Callable[[str], Sequence[str
         ids = tuple(getattr(res, "building_ids", ()) or ())
         problems = tuple(getattr(res, "problems", ()) or ())
         stats = getattr(res, "stats", None) or {}
-        figures = _run_figures(res)
-        if len(ids) > 1 and figures:  # one file of many buildings: each gets its own figures
+        # a run's figures are stored once, as ``results``; the report's flat figures and per-zone
+        # list are derived from them (lod2energy.records.run_figures)
+        totals = {str(k): v for k, v in (stats.get("building_results") or {}).items()}
+        if len(ids) > 1 and totals:  # one file of many buildings: each gets its own figures
             for bid in ids:
-                fig = dict(figures.get(str(bid)) or {})
-                heat, cool = fig.pop("totals", (None, None))
-                own = {**extra, "heating_kwh": heat, "cooling_kwh": cool, **fig,
+                d = totals.get(str(bid)) or {}
+                own = {**extra, "heating_kwh": d.get("heating_kwh"), "cooling_kwh": d.get("cooling_kwh"),
                        "results": record_results(stats, bid)}
                 out.append(((bid,), ExportRecord(fmt, bool(res.ok), path, problems, own, files)))
             continue
-        if len(ids) == 1 and str(ids[0]) in figures:
-            fig = dict(figures[str(ids[0])])
-            fig.pop("totals", None)
-            extra.update(fig)
+        if len(ids) == 1 and str(ids[0]) in totals:
             extra["results"] = record_results(stats, ids[0])
         out.append((ids, ExportRecord(fmt, bool(res.ok), path, problems, extra, files)))
     return WriteResults(out)

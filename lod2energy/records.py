@@ -193,6 +193,24 @@ class FileRecord:
         return now is not None and now.sha256 == self.sha256
 
 
+#: Figures of an IDF record derived from its ``results`` (a run's per-building figures and
+#: per-zone list, :func:`lod2energy.exporters.run_results.record_results`) for report.json,
+#: report.csv and the footprints: stored once, as ``results``.
+RESULT_FIGURES = ("heating_kwh_m2", "cooling_kwh_m2", "heating_peak_w", "cooling_peak_w",
+                  "conditioned_floor_area_m2", "zones")
+
+
+def run_figures(results: Mapping) -> dict:
+    """The report's figures of a run's ``results`` (``{"building": {...}, "zones": {...}}``):
+    the building's demand per m2 and peaks, its conditioned floor area (m2) and ``zones``, one
+    entry per conditioned zone."""
+    b = results.get("building") or {}
+    fig = {k: b.get(k) for k in RESULT_FIGURES[:4]}
+    fig["conditioned_floor_area_m2"] = b.get("floor_area_m2")
+    fig["zones"] = [{"zone": z, **dict(zd)} for z, zd in (results.get("zones") or {}).items()]
+    return fig
+
+
 @dataclass(frozen=True)
 class ExportRecord:
     """What one writer did for one building.
@@ -220,9 +238,22 @@ class ExportRecord:
     extra: Mapping = field(default_factory=dict)
     files: tuple[FileRecord, ...] = ()
 
+    def values(self) -> dict:
+        """``extra`` as the report has it: with the run figures its ``results`` give
+        (:func:`run_figures`), just before ``results``."""
+        results = self.extra.get("results")
+        if not isinstance(results, Mapping):
+            return dict(self.extra)
+        out = {}
+        for k, v in self.extra.items():
+            if k == "results":
+                out.update(run_figures(results))
+            out[k] = v
+        return out
+
     def to_json(self) -> dict:
         d = {"ok": self.ok, "path": self.path, "problems": list(self.problems)}
-        d.update(_untimed(dict(self.extra)))
+        d.update(_untimed(self.values()))
         return d
 
     def journal(self) -> dict:
@@ -231,6 +262,8 @@ class ExportRecord:
     @classmethod
     def from_journal(cls, d: Mapping) -> "ExportRecord":
         extra = {k: v for k, v in d.items() if k not in ("format", "ok", "path", "problems", "files")}
+        if isinstance(extra.get("results"), Mapping):  # figures the results give: stored once
+            extra = {k: v for k, v in extra.items() if k not in RESULT_FIGURES}
         return cls(str(d["format"]), bool(d["ok"]), str(d.get("path") or ""), tuple(d.get("problems") or ()),
                    extra, tuple(FileRecord(**f) for f in d.get("files") or ()))
 
@@ -322,9 +355,10 @@ class BuildingRecord:
              "UA_W_per_K": th.detail.get("UA", "")}
         for e in sorted(self.exports, key=lambda e: e.format):
             r[f"{e.format}_ok"] = e.ok
+            values = e.values()
             for k in RUN_FIELDS:
-                if k in e.extra:
-                    r[k] = e.extra[k]
+                if k in values:
+                    r[k] = values[k]
         r["message"] = self.message
         r["outcome"] = self.outcome
         return r

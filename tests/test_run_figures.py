@@ -1,7 +1,7 @@
 """Run figures per building and per zone in the records (registry) and report.json/csv (records)."""
 from lod2energy.exporters.result import ExportResult
 from lod2energy.exporters.registry import _records
-from lod2energy.records import CSV_FIELDS, BuildingRecord
+from lod2energy.records import CSV_FIELDS, RESULT_FIGURES, BuildingRecord
 
 
 def _zone(h, c, a):
@@ -23,10 +23,13 @@ def test_dataset_file_gives_each_building_its_own_figures_and_zones():
     pairs = _records("idf", [_result(["a", "b"])])
     got = {ids[0]: er for ids, er in pairs}
     assert set(got) == {"a", "b"}
-    a, b = got["a"].extra, got["b"].extra
+    a, b = got["a"].values(), got["b"].values()
     assert a["heating_kwh"] == 180.0 and b["heating_kwh"] == 300.0  # not the file's 480
     assert a["heating_kwh_m2"] == 1.8 and a["conditioned_floor_area_m2"] == 100.0
     assert [z["zone"] for z in a["zones"]] == ["a_S1", "a_S2"] and len(b["zones"]) == 1
+    # stored once: the flat figures and the zone list are derived from the results
+    assert not set(RESULT_FIGURES) & set(got["a"].extra)
+    assert got["a"].extra["results"]["building"]["heating_kwh_m2"] == a["heating_kwh_m2"]
 
 
 def test_report_json_has_zones_and_csv_the_building_columns():
@@ -37,11 +40,14 @@ def test_report_json_has_zones_and_csv_the_building_columns():
     assert "zones" not in entry["exports"]["idf"]
     row = rec.row()
     for k in ("heating_kwh_m2", "cooling_kwh_m2", "heating_peak_w", "cooling_peak_w", "conditioned_floor_area_m2"):
-        assert k in CSV_FIELDS and row[k] == er.extra[k]
+        assert k in CSV_FIELDS and row[k] == er.values()[k] == er.extra["results"]["building"][
+            "floor_area_m2" if k == "conditioned_floor_area_m2" else k]
     assert row["heating_kwh"] == 480.0  # a one-building file keeps the run's own total
     assert "zones" not in CSV_FIELDS
     back = BuildingRecord.from_json(rec.to_json())  # the journal keeps the zones
     assert back.report_entry()["zones"] == entry["zones"]
+    assert back.to_json() == rec.to_json() and list(back.report_entry()) == list(entry)
+    assert not set(RESULT_FIGURES) & set(back.export("idf").extra)  # once again after the round trip
 
 
 import json  # noqa: E402
