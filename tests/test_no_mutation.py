@@ -1,6 +1,6 @@
-"""No stage and no writer changes its input: every repair stage, the label and U-value stages
-and the three writers leave the input Building (vertices, rings, attributes, provenance) and
-the input PolyMesh as they were."""
+"""No stage and no writer changes its input: every repair stage, the label and U-value stages,
+the energy model stage and the three writers leave the input Building (vertices, rings,
+attributes, provenance) and the input PolyMesh as they were."""
 from __future__ import annotations
 
 from types import MappingProxyType
@@ -112,3 +112,21 @@ def test_writer_keeps_its_input(writer, name, tmp_path):
         res = cityjson.write(str(tmp_path / "out.city.json"), model, [b])
     assert res
     assert snapshot(b) == before
+
+
+@pytest.mark.parametrize("name", ["box", "gabled_house", "dormer_house"])
+def test_energy_model_stage_keeps_its_input(name):
+    # the stage before the IDF writer: a dormer without a floor is united for the IDF only
+    from export_helpers import parts_with_semantics, steep_house_with_dormer
+    from lod2energy.exporters.energyplus.options import IdfOptions
+    from lod2energy.repair.energy_model import with_energy_model
+
+    if name == "dormer_house":
+        house, ht, dormer, dt = steep_house_with_dormer()
+        b = energy_ready(parts_with_semantics([(house, ht), (dormer, dt)]))
+    else:
+        b = energy_ready(BUILDINGS[name]())
+    before = snapshot(b)
+    [out] = with_energy_model([b], IdfOptions())
+    assert snapshot(b) == before
+    assert "energy_model" in out.provenance and snapshot(out)[:4] == before[:4]  # geometry as it was
