@@ -1,7 +1,9 @@
 """Repair ladder: turn defective building geometry into closed, outward, clean Solids.
 
 One module per stage (cleanup, orientation, holefill, refill, alphashape, footprint, hull),
-the ladder in :mod:`~lod2energy.repair.pipeline`, fidelity in :mod:`~lod2energy.repair.metrics`.
+the ladder in :mod:`~lod2energy.repair.pipeline`, fidelity in :mod:`~lod2energy.repair.metrics`;
+the energy model the IDF writer writes (floorless parts, simpler zone envelopes) in
+:mod:`~lod2energy.repair.energy_model`.
 """
 from lod2energy.repair.pipeline import (  # noqa: F401
     DEFAULT_TIMEOUT, STAGES, dataset_table, repair_attributes, repair_building, repair_features, repair_info,

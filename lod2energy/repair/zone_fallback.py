@@ -254,5 +254,5 @@ def block_zone(zone: ZoneShell, simplify: float = BLOCK_SIMPLIFY, opening: float
 
 
 #: Tried in this order by the energy model stage: least change first.
-FALLBACKS = (cleared_zone, separated_zone, roof_zone, block_zone, partial(block_zone, opening=0.1), partial(block_zone, opening=0.5),
-             partial(block_zone, hull=True))
+FALLBACKS = (cleared_zone, separated_zone, roof_zone, block_zone, partial(block_zone, opening=0.1),
+             partial(block_zone, opening=0.5), partial(block_zone, hull=True))
