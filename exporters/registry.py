@@ -47,7 +47,7 @@ class Writer:
         the other writers' results) in the ``"dataset"`` pass.
     prepare : callable(buildings, options, context=()) -> list of Building
         The stage that runs just before this writer, in the same pass and with the same
-        neighbours (the IDF's energy model, :mod:`lod2energy.repair.energy_model`); it records
+        neighbours (the IDF's energy model, :mod:`lod2energy.exporters.energyplus.model`); it records
         what it did in the buildings' provenance. Default: the buildings as they are.
     """
 
@@ -152,8 +152,8 @@ def _idf_halo(options) -> float:
 
 
 def _prepare_idf(buildings, options, context=()):
-    """The energy model stage before the IDF writer (:func:`lod2energy.repair.energy_model.with_energy_model`)."""
-    from lod2energy.repair.energy_model import with_energy_model
+    """The energy model stage before the IDF writer (:func:`lod2energy.exporters.energyplus.model.with_energy_model`)."""
+    from lod2energy.exporters.energyplus.model import with_energy_model
     return with_energy_model(buildings, options, context)
 
 

@@ -1,4 +1,4 @@
-"""The energy model stage (lod2energy.repair.energy_model): floorless parts and simpler envelopes
+"""The energy model stage (lod2energy.exporters.energyplus.model): floorless parts and simpler envelopes
 are decided before the IDF writer, recorded in the building's provenance, and the writer writes
 what it is given."""
 from __future__ import annotations
@@ -17,7 +17,7 @@ from lod2energy.exporters import energyplus
 from lod2energy.exporters.registry import writer
 from lod2energy.exporters.zones import local_origin
 from lod2energy.model import CityModel, frozen_mapping
-from lod2energy.repair import energy_model
+from lod2energy.exporters.energyplus import model as energy_model
 
 OPTIONS = energyplus.options.IdfOptions()
 

@@ -16,7 +16,7 @@ from lod2energy.exporters.polygons import polygon_area3d
 from lod2energy.exporters.shellcheck import check_closed_outward
 from lod2energy.exporters.energyplus.enclosure import (_edges_not_two, enclosure_defects, snap_polygons,
                                        unique_vertices)
-from lod2energy.repair import energy_model, zone_fallback
+from lod2energy.exporters.energyplus import fallback as zone_fallback, model as energy_model
 
 
 def _box() -> list[np.ndarray]:

@@ -17,7 +17,7 @@ from factories import box, gabled_house
 from lod2energy.exporters import energyplus
 from lod2energy.errors import ParameterError
 from lod2energy.exporters import energyplus, polygons
-from lod2energy.repair import energy_model
+from lod2energy.exporters.energyplus import model as energy_model
 
 
 @pytest.fixture(autouse=True)

@@ -119,7 +119,7 @@ def test_energy_model_stage_keeps_its_input(name):
     # the stage before the IDF writer: a dormer without a floor is united for the IDF only
     from export_helpers import parts_with_semantics, steep_house_with_dormer
     from lod2energy.exporters.energyplus.options import IdfOptions
-    from lod2energy.repair.energy_model import with_energy_model
+    from lod2energy.exporters.energyplus.model import with_energy_model
 
     if name == "dormer_house":
         house, ht, dormer, dt = steep_house_with_dormer()

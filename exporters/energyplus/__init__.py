@@ -25,6 +25,9 @@ One module per concept, in the order the writer uses them:
 - ``constructions``: layer build-ups from U-values;
 - ``site``: ``Site:Location`` and ground temperatures;
 - ``zones``: storey zones, zone information, floors;
+- ``model``: the energy model, the stage before the writer (floorless parts united, zone shells
+  in the writer's frame, party walls, pieces), with ``fallback``: simpler envelopes for a zone
+  the enclosure test rejects;
 - ``render``: the IDF text (jinja2 template ``templates/building.idf.j2``);
 - ``writer``: ``write()``;
 - ``check``: the self-check of a written file (``self_check``, ``read_checked_idf``, eppy);
@@ -38,6 +41,6 @@ without case) and at most 100 characters; ids in comments are JSON-escaped on on
 # the modules, so that ``energyplus.writer.write``, ``energyplus.run.binary`` ... are reachable
 # from the package
 from . import (  # noqa: F401
-    check, conform, constructions, enclosure, names, openings, options, pieces, render, run, site, surfaces,
-    writer, zones,
+    check, conform, constructions, enclosure, fallback, model, names, openings, options, pieces, render, run, site,
+    surfaces, writer, zones,
 )

@@ -1,7 +1,7 @@
 """The EnergyPlus writer: :func:`write` (one IDF per building, or one per dataset) and its self-check.
 
 It writes the energy model it is given (``provenance["energy_model"]``, made by the stage
-:mod:`lod2energy.repair.energy_model` before the writer runs): zones, pieces and party walls
+:mod:`lod2energy.exporters.energyplus.model` before the writer runs): zones, pieces and party walls
 in their local frame. Called directly on buildings without one, it has the stage make it.
 """
 from __future__ import annotations
@@ -16,7 +16,7 @@ import numpy as np
 from lod2energy import safe_write
 from lod2energy.errors import ParameterError
 from lod2energy.model import Building
-from lod2energy.repair import energy_model
+from . import model as energy_model
 from ..paths import not_written, output_path, safe_stem, set_aside_failed
 from ..polygons import polygon_area3d
 from ..result import ExportResult

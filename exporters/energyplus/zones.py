@@ -1,7 +1,7 @@
 """Zones as written: one per Building/BuildingPart or per storey, floors, what each zone is.
 
 Floorless parts and simpler envelopes are decided before the writer, by the energy model
-stage (:mod:`lod2energy.repair.energy_model`).
+stage (:mod:`lod2energy.exporters.energyplus.model`).
 """
 from __future__ import annotations
 

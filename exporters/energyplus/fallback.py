@@ -1,6 +1,6 @@
 """Simpler envelopes for a zone EnergyPlus would not accept as written (the energy model's fallbacks).
 
-Part of the energy model stage (:mod:`lod2energy.repair.energy_model`), which tries them in
+Part of the energy model stage (:mod:`lod2energy.exporters.energyplus.model`), which tries them in
 the order of :data:`FALLBACKS` before the IDF writer runs; the writer only writes the result.
 
 A repaired LoD2 shell is a closed 2-manifold, but EnergyPlus's enclosure test merges points

@@ -9,7 +9,7 @@ keep the Building's own geometry. In the order of the work:
    in the writer's local frame, the real windows and doors split off (LoD3), the party walls
    found and each zone's written pieces cut (:mod:`lod2energy.exporters.energyplus.surfaces`);
 3. a zone whose pieces EnergyPlus would call not fully enclosed replaced by the first simpler
-   envelope that passes (:func:`enclosable`, :data:`lod2energy.repair.zone_fallback.FALLBACKS`).
+   envelope that passes (:func:`enclosable`, :data:`lod2energy.exporters.energyplus.fallback.FALLBACKS`).
 
 Which fallback passes depends on the frame (the local origin of the buildings *and* their
 neighbours, floored to whole metres, :func:`~lod2energy.exporters.zones.local_origin`) and on
@@ -37,7 +37,7 @@ from lod2energy.exporters.shellcheck import check_closed_outward
 from lod2energy.exporters.zones import COLLINEAR_TOL, local_origin, zone_shells, ZoneShell
 from lod2energy.model import BUILDING_TYPES, Building, frozen_mapping
 from lod2energy.repair.parts import merge_parts, touching_part, without_geometry
-from lod2energy.repair.zone_fallback import FALLBACKS
+from .fallback import FALLBACKS
 
 def floorless_parts(b: Building, lod: str | None = None) -> list[str]:
     """BuildingParts of ``b`` without a face EnergyPlus can take as a floor (n_z < ``FLOOR_NZ``).
@@ -97,7 +97,7 @@ def enclosable(zone: ZoneShell, zi: int, pieces: list[Piece]) -> tuple[ZoneShell
     """A simpler envelope for a zone whose pieces EnergyPlus would call not fully enclosed.
 
     Returns None when the pieces pass (:func:`enclosure_defects`) or no fallback of
-    :mod:`lod2energy.repair.zone_fallback` (near misses cleared, sheets separated, 2.5D
+    :mod:`lod2energy.exporters.energyplus.fallback` (near misses cleared, sheets separated, 2.5D
     model, then LoD1 block) passes either; else the first fallback zone that does, with its
     pieces (party walls not split) and the fallback's name.
     """
