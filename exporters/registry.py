@@ -133,6 +133,8 @@ def _records(fmt: str, results: Sequence, sidecars: Callable[[str], Sequence[str
         ids = tuple(getattr(res, "building_ids", ()) or ())
         problems = tuple(getattr(res, "problems", ()) or ())
         stats = getattr(res, "stats", None) or {}
+        if stats.get("input_windows") or stats.get("input_doors"):  # LoD3: the input's own, in the file
+            extra["openings"] = {"Window": int(stats.get("input_windows") or 0), "Door": int(stats.get("input_doors") or 0)}
         figures = _run_figures(res)
         if len(ids) > 1 and figures:  # one file of many buildings: each gets its own figures
             for bid in ids:
