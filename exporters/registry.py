@@ -126,6 +126,8 @@ def _records(fmt: str, results: Sequence, sidecars: Callable[[str], Sequence[str
         ids = tuple(getattr(res, "building_ids", ()) or ())
         problems = tuple(getattr(res, "problems", ()) or ())
         stats = getattr(res, "stats", None) or {}
+        if stats.get("input_windows") or stats.get("input_doors"):  # LoD3: the input's own, in the file
+            extra["openings"] = {"Window": int(stats.get("input_windows") or 0), "Door": int(stats.get("input_doors") or 0)}
         # a run's figures are stored once, as ``results``; the report's flat figures and per-zone
         # list are derived from them (lod2energy.records.run_figures)
         totals = {str(k): v for k, v in (stats.get("building_results") or {}).items()}

@@ -103,6 +103,7 @@ def prepare_building(b: Building, options: PrepareOptions = PrepareOptions(), se
         The labelled building with ``provenance["energy"]`` and its record.
     """
     from lod2energy.io.interior import without_interior
+    from lod2energy.io.openings import cut_openings
     from lod2energy.repair import repair_info
     from lod2energy.semantics import label_building
     from lod2energy.thermal import assign_u_values
@@ -110,6 +111,7 @@ def prepare_building(b: Building, options: PrepareOptions = PrepareOptions(), se
 
     tol, lod = options.tol, options.lod
     b = without_interior(b)  # LoD3/4 interior detail is not envelope (counted in the repair record)
+    b = cut_openings(b)  # LoD3 openings drawn over their wall: the wall gets their hole (counted too)
     before = _checks.validate_building(b, tol)
     rb = repair_one(b, tol, options.timeout, options.merge_parts, lod)
     if rb.provenance.get("repair") is not None:
@@ -118,6 +120,8 @@ def prepare_building(b: Building, options: PrepareOptions = PrepareOptions(), se
     extra = {}
     if b.provenance.get("interior_left_out"):
         extra["interior_left_out"] = dict(b.provenance["interior_left_out"])
+    if b.provenance.get("openings_cut"):
+        extra["openings_cut"] = dict(b.provenance["openings_cut"])
     # BuildingParts that overlap in the input stay as they are (reported by the repair as
     # ``overlapping_parts``): clipping them for the energy model (repair.parts.clip_overlapping_parts)
     # left hairline faces that 13 of Den Haag's 844 buildings' STL/CityJSON self-checks refused,

@@ -163,11 +163,72 @@ def split_openings(zone: ZoneShell, recess: float = OPENING_RECESS) -> tuple[Zon
             out.append(Opening(pts.copy(), OPENING_SURFACE_TYPE[faces[best].semantic_type], w.index))
         if len(keep) != len(w.rings):
             new_rings[wi] = keep
+    for oi in cand:  # an opening in a notch of its wall's outline (a door down to the ground)
+        if oi in drop:
+            continue
+        hit = _merge_notch(zone, faces, new_rings, oi, drop)
+        if hit is not None:
+            wi, rings, pts = hit
+            new_rings[wi] = rings
+            drop.add(oi)
+            out.append(Opening(pts, OPENING_SURFACE_TYPE[faces[oi].semantic_type], faces[wi].index))
     if not out:
         return zone, (), len(cand)
     kept = [replace(f, rings=tuple(new_rings[i])) if i in new_rings else f
             for i, f in enumerate(faces) if i not in drop]
     return replace(zone, faces=tuple(kept)), tuple(out), sum(1 for i in cand if i not in drop)
+
+
+def _merge_notch(zone: ZoneShell, faces, new_rings, oi: int, drop: set):
+    """The wall whose outline an opening face completes: ``(wall, rings, opening points)``.
+
+    The opening lies in the wall's plane and shares at least one edge with its outer ring;
+    the wall's new rings are the union of the two, made of their vertices, whose edges are
+    exactly the edges of either that the other does not use (so the zone stays as closed as
+    it was). None when there is no such wall.
+    """
+    from shapely.geometry import Polygon
+
+    from lod2energy.io.openings import polygon_rings
+
+    v = zone.vertices
+    op = faces[oi]
+    ring = list(op.rings[0])
+    p = v[ring]
+    n_o = newell_normal(p)
+    if len(op.rings) != 1 or np.linalg.norm(n_o) < 1e-12:
+        return None
+    n_o = n_o / np.linalg.norm(n_o)
+    mine = set(_edges([ring]))
+    for wi, w in enumerate(faces):
+        if wi == oi or wi in drop or w.kind != "wall" or w.semantic_type in OPENING_SURFACE_TYPE:
+            continue
+        rings = new_rings.get(wi, list(w.rings))
+        theirs = set(_edges(rings[:1]))
+        if not mine & theirs:
+            continue
+        outer = v[list(rings[0])]
+        n = unit(newell_normal(outer))
+        c = outer.mean(axis=0)
+        if float(n @ n_o) < 0.999 or np.abs((p - c) @ n).max() > 0.01:
+            continue
+        a, b = plane_basis(n)
+        to2 = lambda q: np.column_stack([(q - c) @ a, (q - c) @ b])  # noqa: E731
+        try:
+            union = Polygon(to2(outer), [to2(v[list(r)]) for r in rings[1:]]).union(Polygon(to2(p)))
+        except Exception:  # noqa: BLE001 - shapely topology errors on degenerate input
+            continue
+        if union.geom_type != "Polygon":
+            continue
+        ids = np.unique(np.concatenate([np.asarray(r, dtype=np.intp) for r in rings] + [np.asarray(ring)]))
+        merged = polygon_rings(union, ids, to2(v[ids]))
+        if merged is None:
+            continue
+        whole = set(_edges(rings)) | mine
+        if set(_edges(merged)) != whole - (set(_edges(rings)) & mine):
+            continue
+        return wi, [tuple(r) for r in merged], p.copy()
+    return None
 
 
 def opening_polygon(op: Opening, piece: np.ndarray) -> np.ndarray | None:
