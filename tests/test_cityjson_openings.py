@@ -151,6 +151,8 @@ def test_cityjson_openings_become_real_windows_and_doors_on_their_wall(tmp_path,
     assert r["energy"]["compliant"] and r["exports"]["idf"]["ok"] and r["exports"]["stl"]["ok"]
     assert r["exports"]["idf"]["openings"] == {"Window": 1, "Door": 1}
     assert r["volume_m3"] == pytest.approx(480.0, rel=1e-6)             # nothing lost or doubled
+    # every opening is written by the storey zone its wall part belongs to: no false "not written"
+    assert "lies on no outdoor piece" not in json.dumps(r)
     if not ENCODINGS[name].get("holes", True):
         assert r["repair"]["openings_cut"] == {"Door": 1, "Window": 1}
     text = (out / "box.idf").read_text()

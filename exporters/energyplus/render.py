@@ -94,6 +94,8 @@ def render_idf(zones: Sequence[ZoneShell], pieces: Sequence[list[Piece]], delta:
     links: dict[str, dict] = {}
     uses: dict[str, object] = {}
     infos = list(zone_info) if zone_info is not None else [None] * len(zones)
+    unplaced: dict[int, tuple] = {}  # openings no outdoor wall piece of a zone took, by identity
+    placed: set[int] = set()
     for zk, (z, zp, info) in enumerate(zip(zones, pieces, infos)):
         zop = tuple(openings[zk]) if openings and zk < len(openings) else ()
         zp, floored = with_floor(zp)
@@ -175,9 +177,11 @@ def render_idf(zones: Sequence[ZoneShell], pieces: Sequence[list[Piece]], delta:
                 if w is not None and (best is None or polygon_area3d(w) > polygon_area3d(best[0])):
                     best = (w, sname, cname)
             if best is None:
-                warnings.append(f"zone {z.object_id}: a {op.kind.lower()} lies on no outdoor piece of its wall; "
-                                "not written (the wall is closed)")
+                # a storey zone holds only its storey's part of the wall: the opening may be
+                # written by another storey of its source zone, so the warning waits for the end
+                unplaced.setdefault(id(op), (op, z.object_id))
                 continue
+            placed.add(id(op))
             w, sname, cname = best
             if op.kind == "Window":
                 cons = f"Window_U{z.u_window:.3f}_G{options.shgc:.2f}".replace(".", "p")
@@ -190,6 +194,10 @@ def render_idf(zones: Sequence[ZoneShell], pieces: Sequence[list[Piece]], delta:
             win_ctx.append({"name": reg.name(f"{sname}_{op.kind}{n_real[op.kind]}", 99), "type": op.kind,
                             "construction": cons, "base": sname,
                             "vertices": _vertex_lines(upper_left_first(w - delta))})
+    for k, (op, zone_id) in unplaced.items():
+        if k not in placed:
+            warnings.append(f"zone {zone_id}: a {op.kind.lower()} lies on no outdoor piece of its wall; "
+                            "not written (the wall is closed)")
     for key, sc in links.items():
         other = links.get(key[:-1] + ("f" if key.endswith("c") else "c"))
         if other is None:
