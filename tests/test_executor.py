@@ -187,6 +187,9 @@ def test_a_100000_face_building_is_reported_timeout_and_the_others_exported(tmp_
     for bid in ("b0", "b1"):
         assert rows[bid]["outcome"] == "done" and rows[bid]["stl_ok"] and rows[bid]["cityjson_ok"]
     assert "huge: timeout" in e or "timeout" in e
+    assert not (out / ".lod2energy" / "spool" / f"{2:08d}.pkl").exists()  # a timeout is not spooled
+    page = (out / "report.html").read_text(encoding="utf-8")  # drawn, the huge one by its hull
+    assert "huge" in page and len(page) < 500_000, len(page)  # one ring per downward face: > 1.2 MB
 
 
 # ----------------------------------------------------------------------------- SIGTERM and --resume
