@@ -149,7 +149,7 @@ def add_export_parser(sub) -> argparse.ArgumentParser:
         e.add_argument(f"--u-{c}", type=float, default=None, metavar="U", help=f"override the {c} U-value, W/(m2 K)")
     e.add_argument("--timeout", type=float, default=30.0, metavar="S",
                    help="time budget per building (default 30 s): the repair escalates when it is spent, "
-                   "and a building still running a little later is stopped and reported 'timeout'")
+                   "and a building whose job has used that much CPU time is stopped and reported 'timeout'")
     e.add_argument("--merge-parts", action="store_true")
     e.add_argument("--no-html", action="store_true", help="do not write OUTDIR/report.html")
     e.add_argument("-q", "--quiet", action="store_true")

@@ -81,7 +81,8 @@ class ExportOptions:
     hard_timeout : float or None, s
         Limit of one building's first-pass job, enforced by the executor (CPU time of the
         worker, or ten times that of wall time; the worker is killed and replaced, the
-        building reported ``timeout``). Default: the repair budget plus ``max(2 s, 20 %)``.
+        building reported ``timeout``). Default: the repair budget itself (``--timeout``,
+        :func:`hard_budget`).
     """
 
     formats: tuple[str, ...] = ()
@@ -102,7 +103,7 @@ class ExportOptions:
     def job_timeout(self) -> float | None:
         if self.hard_timeout is not None:
             return self.hard_timeout if self.hard_timeout > 0 else None
-        return hard_budget(self.prepare.timeout)
+        return hard_budget(self.prepare.timeout, margin=False)
 
     def fingerprint(self) -> dict:
         """JSON-ready summary of everything that changes the outputs (the journal header)."""
@@ -134,10 +135,25 @@ class RunOptions:
     quiet: bool = False
 
 
-def hard_budget(timeout: float | None) -> float | None:
-    """The executor's limit for one building's job (s): the repair's ``timeout`` plus
-    ``max(2 s, 20 %)`` for the stages after it; None without a budget."""
-    return None if not timeout or timeout <= 0 else timeout + max(2.0, 0.2 * timeout)
+def hard_budget(timeout: float | None, margin: bool = True) -> float | None:
+    """The executor's limit for one building's job (s); None without a budget.
+
+    Parameters
+    ----------
+    timeout : float or None, s
+        The budget (``--timeout``).
+    margin : bool
+        Add ``max(2 s, 20 %)`` for the steps the repair's ladder takes after its own deadline
+        (``lod2energy repair``, whose job is the repair alone). ``export`` passes False: there
+        ``--timeout S`` bounds the whole job of a building, which is stopped after ``S`` s of
+        its worker's CPU time (or ``WALL_FACTOR * S`` s of wall time, see
+        :mod:`lod2energy.executor`). The ladder works to a wall-clock deadline of the same
+        ``S`` s, which on a loaded machine comes first; on an idle one a building whose repair
+        runs to its deadline is stopped before its last stages and reported ``timeout``.
+    """
+    if not timeout or timeout <= 0:
+        return None
+    return float(timeout) + max(2.0, 0.2 * timeout) if margin else float(timeout)
 
 
 def prepare_options(a, tol: Tolerances = DEFAULT, crs: str | None = None) -> PrepareOptions:

@@ -383,7 +383,7 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
                         else:
                             rec = BuildingRecord(seq, str(b.id), b.type, "failed",
                                                  message=f"pipeline failed: {res.message}")
-                        spool_building(job, seq, b)
+                        # not spooled: no later pass reads a building that is not "done"
                     else:
                         rec = res
                     if rec.outcome == "unreadable":  # the reader's message names the object itself

@@ -57,6 +57,40 @@ def test_pool_replaces_a_killed_worker_and_goes_on():
         assert len(ex._workers) == 2 and all(w.proc.is_alive() for w in ex._workers)
 
 
+def _spin(seconds):
+    """Busy for ``seconds`` s of CPU time (s); returns them."""
+    t0 = time.process_time()
+    while time.process_time() - t0 < seconds:
+        pass
+    return seconds
+
+
+@pytest.mark.parametrize("make", [InProcessExecutor, lambda: ProcessPoolExecutor(1)])
+def test_a_cpu_bound_job_is_stopped_at_its_budget_not_later(make):
+    import resource
+
+    def cpu():
+        me, ch = resource.getrusage(resource.RUSAGE_SELF), resource.getrusage(resource.RUSAGE_CHILDREN)
+        return me.ru_utime + me.ru_stime + ch.ru_utime + ch.ru_stime
+
+    with make() as ex:
+        c0 = cpu()
+        (_, res), = list(ex.map(_spin, [20.0], timeout=1.0))
+        assert isinstance(res, Overrun)
+    spent = cpu() - c0  # the killed worker is reaped by close(): its CPU is counted here
+    assert 0.9 <= spent < 2.5, f"a job with a 1 s budget cost {spent:.2f} CPU s"
+
+
+def test_export_stops_a_job_at_the_timeout_itself_and_repair_keeps_its_margin():
+    from lod2energy.options import ExportOptions, PrepareOptions, hard_budget
+
+    assert ExportOptions(prepare=PrepareOptions(timeout=5.0)).job_timeout == 5.0
+    assert ExportOptions(prepare=PrepareOptions(timeout=5.0), hard_timeout=3.0).job_timeout == 3.0
+    assert ExportOptions(prepare=PrepareOptions(timeout=5.0), hard_timeout=0).job_timeout is None
+    assert hard_budget(5.0) == 7.0 and hard_budget(30.0) == 36.0  # lod2energy repair
+    assert hard_budget(5.0, margin=False) == 5.0 and hard_budget(0) is None
+
+
 # ----------------------------------------------------------------------------- byte-identical outputs
 
 def _export(args, out: Path, capsys=None) -> int:
@@ -153,6 +187,9 @@ def test_a_100000_face_building_is_reported_timeout_and_the_others_exported(tmp_
     for bid in ("b0", "b1"):
         assert rows[bid]["outcome"] == "done" and rows[bid]["stl_ok"] and rows[bid]["cityjson_ok"]
     assert "huge: timeout" in e or "timeout" in e
+    assert not (out / ".lod2energy" / "spool" / f"{2:08d}.pkl").exists()  # a timeout is not spooled
+    page = (out / "report.html").read_text(encoding="utf-8")  # drawn, the huge one by its hull
+    assert "huge" in page and len(page) < 500_000, len(page)  # one ring per downward face: > 1.2 MB
 
 
 # ----------------------------------------------------------------------------- SIGTERM and --resume

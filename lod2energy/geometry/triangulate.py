@@ -378,11 +378,9 @@ def triangulate_shell(vertices: np.ndarray, shell, rings_map: np.ndarray | None 
 
 # ----------------------------------------------------------------------------- constrained Delaunay
 
-def _incircle(pa, pb, pc, pd) -> float:
-    """> 0 when ``pd`` is inside the circle through the CCW triangle ``pa, pb, pc``."""
-    adx, ady = pa[0] - pd[0], pa[1] - pd[1]
-    bdx, bdy = pb[0] - pd[0], pb[1] - pd[1]
-    cdx, cdy = pc[0] - pd[0], pc[1] - pd[1]
+def _incircle_d(adx: float, ady: float, bdx: float, bdy: float, cdx: float, cdy: float) -> float:
+    """The incircle determinant from the corners' offsets to ``pd`` (``a - d``, ``b - d``,
+    ``c - d``), 0 where its sign is rounding noise (see :func:`_incircle`)."""
     ad = adx * adx + ady * ady
     bd = bdx * bdx + bdy * bdy
     cd = cdx * cdx + cdy * cdy
@@ -391,6 +389,11 @@ def _incircle(pa, pb, pc, pd) -> float:
     perm = ((abs(bdx * cdy) + abs(bdy * cdx)) * ad + (abs(cdx * ady) + abs(cdy * adx)) * bd
             + (abs(adx * bdy) + abs(ady * bdx)) * cd)
     return det if abs(det) > 1e-14 * perm else 0.0
+
+
+def _incircle(pa, pb, pc, pd) -> float:
+    """> 0 when ``pd`` is inside the circle through the CCW triangle ``pa, pb, pc``."""
+    return _incircle_d(pa[0] - pd[0], pa[1] - pd[1], pb[0] - pd[0], pb[1] - pd[1], pc[0] - pd[0], pc[1] - pd[1])
 
 
 def _orient(pa, pb, pc) -> float:
@@ -514,8 +517,8 @@ _EDGE_TABLE_MAX = 2048
 def lawson_cdt(pts: np.ndarray, ring_ends, max_flips: int | None = None) -> np.ndarray:
     """CDT by ear clipping then constrained Lawson flips (general, slower path).
 
-    The flip test is :func:`_incircle` and :func:`_orient` written out inline (same
-    arithmetic, same order, so the same flips).
+    The flip test is :func:`_incircle_d` (the arithmetic of :func:`_incircle`) and
+    :func:`_orient` written out inline (same arithmetic, same order, so the same flips).
     """
     tri = ear_triangles(pts, ring_ends)
     n = len(pts)
@@ -537,6 +540,7 @@ def lawson_cdt(pts: np.ndarray, ring_ends, max_flips: int | None = None) -> np.n
     Y = pts[:, 1].tolist()
     budget = max_flips if max_flips is not None else 10 * n * n + 10
     get = edge_tris.get
+    incircle = _incircle_d
     while stack and budget > 0:
         e = stack.pop()
         ts = get(e)
@@ -557,16 +561,7 @@ def lawson_cdt(pts: np.ndarray, ring_ends, max_flips: int | None = None) -> np.n
             continue
         d = D[0]
         xd, yd = X[d], Y[d]
-        adx, ady = X[a] - xd, Y[a] - yd
-        bdx, bdy = X[b] - xd, Y[b] - yd
-        cdx, cdy = X[c] - xd, Y[c] - yd
-        ad = adx * adx + ady * ady
-        bd = bdx * bdx + bdy * bdy
-        cd = cdx * cdx + cdy * cdy
-        det = adx * (bdy * cd - bd * cdy) - ady * (bdx * cd - bd * cdx) + ad * (bdx * cdy - bdy * cdx)
-        perm = ((abs(bdx * cdy) + abs(bdy * cdx)) * ad + (abs(cdx * ady) + abs(cdy * adx)) * bd
-                + (abs(adx * bdy) + abs(ady * bdx)) * cd)
-        if not (abs(det) > 1e-14 * perm) or det <= 0.0:
+        if incircle(X[a] - xd, Y[a] - yd, X[b] - xd, Y[b] - yd, X[c] - xd, Y[c] - yd) <= 0.0:
             continue
         xa, ya, xc, yc = X[a], Y[a], X[c], Y[c]
         if (xd - xa) * (yc - ya) - (yd - ya) * (xc - xa) <= 0:

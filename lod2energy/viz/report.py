@@ -52,8 +52,8 @@ def _plan(rs: list[D.Row], inputs: dict, outputs: dict, panels: set[str]) -> tup
         b = inputs.get(r.id) or outputs.get(r.id)
         if b is None:
             continue
-        try:
-            fp = R.footprint(b)
+        try:  # a huge mesh (one that timed out, say): its hull, not one ring per downward face
+            fp = R.footprint(b) if _n_faces(b) <= MAX_PANEL_FACES else _hull(b)
         except Exception:  # noqa: BLE001 - a building whose footprint cannot be drawn is left off the plan
             fp = []
         title = f"{r.id}: {r.status}" + (f", stage {r.stage}" if r.stage else "")
@@ -78,6 +78,14 @@ MAX_PANEL_FACES = 5000
 
 def _n_faces(b: Building | None) -> int:
     return 0 if b is None else sum(g.n_surfaces for o in b.objects for g in o.geometries if g.is_polygonal)
+
+
+def _hull(b: Building) -> list[np.ndarray]:
+    """The plan's footprint of a building over ``MAX_PANEL_FACES`` faces: the convex hull of its
+    vertices projected on the ground, ``[(k, 2) float, m]``."""
+    from scipy.spatial import ConvexHull
+    pts = np.asarray(b.vertices, dtype=float)[:, :2]
+    return [pts[ConvexHull(pts).vertices]]
 
 
 def _panel(r: D.Row, before: Building | None, after: Building | None, tol: Tolerances) -> dict:
