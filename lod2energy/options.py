@@ -156,6 +156,16 @@ def hard_budget(timeout: float | None, margin: bool = True) -> float | None:
     return float(timeout) + max(2.0, 0.2 * timeout) if margin else float(timeout)
 
 
+def ladder_budget(timeout: float | None) -> float | None:
+    """The repair ladder's own deadline inside an ``export`` job (s): ``timeout`` less
+    ``max(1 s, 20 %)``, so that the cheap reconstructions it escalates to when the deadline
+    passes (footprint extrusion, hull) can finish before the executor stops the job at
+    ``timeout`` (:func:`hard_budget` without margin). None or 0 keeps the value as given."""
+    if not timeout or timeout <= 0:
+        return timeout
+    return float(timeout) - max(1.0, 0.2 * float(timeout))
+
+
 def prepare_options(a, tol: Tolerances = DEFAULT, crs: str | None = None) -> PrepareOptions:
     """:class:`PrepareOptions` from a namespace of CLI options (absent ones: defaults)."""
     from lod2energy.thermal import ThermalOptions

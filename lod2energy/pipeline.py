@@ -28,7 +28,7 @@ from lod2energy.dataset import dataset_pass
 from lod2energy.errors import ParameterError
 from lod2energy.interrupt import EXIT_INVALID, EXIT_OK, EXIT_SIGINT, EXIT_UNUSABLE, Interrupted, Signals
 from lod2energy.model import Building, CityModel, FeatureError, frozen_mapping
-from lod2energy.options import ExportOptions, PrepareOptions, RunOptions, prepare_options, resolve
+from lod2energy.options import ExportOptions, PrepareOptions, RunOptions, ladder_budget, prepare_options, resolve
 from lod2energy.records import _untimed, BuildingRecord, ComplianceRecord, ExportRecord, RepairRecord, ThermalRecord
 from lod2energy.reports import err, note_frame, progress, refuse_overwriting_inputs, write_html_report, write_reports
 from lod2energy.spool import Job, load_spooled, reusable, spool_building
@@ -113,7 +113,8 @@ def prepare_building(b: Building, options: PrepareOptions = PrepareOptions(), se
     b = without_interior(b)  # LoD3/4 interior detail is not envelope (counted in the repair record)
     b = cut_openings(b)  # LoD3 openings drawn over their wall: the wall gets their hole (counted too)
     before = _checks.validate_building(b, tol)
-    rb = repair_one(b, tol, options.timeout, options.merge_parts, lod)
+    # the ladder escalates before the job's budget ends, so its fallbacks can finish in it
+    rb = repair_one(b, tol, ladder_budget(options.timeout), options.merge_parts, lod)
     if rb.provenance.get("repair") is not None:
         # the ladder's timings would make the files (``+energyRepair``) differ run to run
         rb = rb.with_provenance(repair=frozen_mapping(_untimed(rb.provenance["repair"])))
