@@ -10,6 +10,11 @@ semantic type is written as CityJSON spells it ("Window", "Door"). 3.0's ``gen:g
 ``con:dateOfConstruction`` (its year, as ``yearOfConstruction``) and ``con:height`` (as
 ``measuredHeight``) are read too.
 
+A ``dem:TINRelief`` (in a ``dem:ReliefFeature``) is one feature of type "TINRelief" whose
+``dem:tin`` (``gml:TriangulatedSurface`` / ``gml:Tin``: triangle patches, or control points
+triangulated) is a CompositeSurface of LoD ``dem:lod``, as the CityJSON reader yields one: the
+terrain of a CFD case (:func:`lod2energy.cfd.terrain.tin_of`).
+
 LoD3/4 interior detail is not envelope: the polygons of InteriorWallSurface / CeilingSurface /
 FloorSurface and the rooms, furniture, interior installations (and 3.0 constructive elements)
 are left out of the building's geometries and counted in ``provenance["interior_left_out"]``
@@ -75,7 +80,9 @@ ROOTS = ("CityModel", "FeatureCollection")  # a CityGML file, or a WFS answer ho
 TOP_LEVEL = {"Building": "Building", "Bridge": "Bridge", "Tunnel": "Tunnel",
              "CityFurniture": "CityFurniture", "GenericCityObject": "GenericCityObject",
              "WaterBody": "WaterBody", "LandUse": "LandUse",
-             "SolitaryVegetationObject": "SolitaryVegetationObject", "PlantCover": "PlantCover"}
+             "SolitaryVegetationObject": "SolitaryVegetationObject", "PlantCover": "PlantCover",
+             # a component of a dem:ReliefFeature: the terrain (a CFD case's ground)
+             "TINRelief": "TINRelief"}
 #: Properties that hold a child city object (the child's local name gives its type).
 CHILD_PROPERTIES = ("consistsOfBuildingPart", "outerBuildingInstallation", "consistsOfBridgePart",
                     "outerBridgeInstallation", "outerBridgeConstruction", "consistsOfTunnelPart",
@@ -245,6 +252,16 @@ def _feature_or_error(el: ET.Element, ctype: str, n: int) -> Building | FeatureE
         return FeatureError(oid, 901, f"coid={oid}: geometry nested too deeply (or an xlink cycle)", ctype)
 
 
+def _relief_lod(el: ET.Element) -> str:
+    """The ``dem:lod`` of a relief component (0-4; "1" when missing or not a number)."""
+    for prop in el:
+        if _local(prop.tag) == "lod":
+            text = (prop.text or "").strip()
+            if text.isdigit() and 0 <= int(text) <= 4:
+                return text
+    return "1"
+
+
 # ----------------------------------------------------------------------------- one feature
 
 class _Feature(GmlGeometry):
@@ -347,6 +364,8 @@ class _Feature(GmlGeometry):
             m = _GEOMETRY_PROPERTY.match(_local(prop.tag))
             if m:
                 yield prop, m.group(1)
+            elif _local(prop.tag) == "tin" and _local(el.tag) == "TINRelief":
+                yield prop, _relief_lod(el)
 
     def _target(self, prop: ET.Element, where: str) -> ET.Element | None:
         href = prop.get(XLINK_HREF)
@@ -368,8 +387,9 @@ class _Feature(GmlGeometry):
                    "_solids": [self.solid(s, where) for s in self.members(g, _SOLID_MEMBERS, where)]}
             faces = [f for so in out["_solids"] for sh in so for f in sh]
         elif name in _SURFACE_KINDS:
+            # a TIN (TINRelief's dem:tin) is a CompositeSurface of triangles, as in CityJSON
             gtype = name if name in ("MultiSurface", "CompositeSurface") else (
-                "CompositeSurface" if name == "Shell" else "MultiSurface")
+                "CompositeSurface" if name in ("Shell", "TriangulatedSurface", "Tin") else "MultiSurface")
             out = {"type": gtype, "lod": lod, "_faces": self.surface(g, where)}
             faces = out["_faces"]
         else:
