@@ -329,9 +329,10 @@ def _repair_building(b: Building, tol: Tolerances, timeout: float, merge_parts: 
             entry["error"] = why
         elif time.monotonic() > deadline:
             res = convex_hull(cleanup(m, tol))
-            stage = "hull" if is_repaired(res, g.lod, tol) else "irreparable"
+            verdict = repair_verdict(res, g.lod, tol)
+            stage = "hull" if verdict is None else "irreparable"
             res = res if stage == "hull" else None
-            log = ["timeout: jumped to the convex hull"]
+            log = ["timeout: jumped to the convex hull"] + ([f"hull: {verdict}"] if verdict else [])
         else:
             stage, res, log = ladder(m, g.lod, tol, deadline)
             stage, res, log = not_hollow(  # a hollow result goes further up the ladder
