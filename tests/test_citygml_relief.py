@@ -31,8 +31,9 @@ def pl(pts) -> str:
     return " ".join(repr(float(c)) for p in pts for c in p)
 
 
-def triangulated(n: int = 4) -> str:
-    """A gml:TriangulatedSurface of 2 n^2 upward triangles over the grid."""
+def triangulated(n: int = 4, patches: str = "trianglePatches") -> str:
+    """A gml:TriangulatedSurface of 2 n^2 upward triangles over the grid (GML 3.1.1
+    ``trianglePatches``, GML 3.2 ``patches``)."""
     g = grid_points(n)
     tris = []
     for i in range(n):
@@ -41,7 +42,7 @@ def triangulated(n: int = 4) -> str:
             for t in ((a, b, c), (a, c, d)):
                 tris.append(f"<gml:Triangle><gml:exterior><gml:LinearRing><gml:posList>{pl(list(t) + [t[0]])}"
                             "</gml:posList></gml:LinearRing></gml:exterior></gml:Triangle>")
-    return f"<gml:TriangulatedSurface><gml:trianglePatches>{''.join(tris)}</gml:trianglePatches></gml:TriangulatedSurface>"
+    return f"<gml:TriangulatedSurface><gml:{patches}>{''.join(tris)}</gml:{patches}></gml:TriangulatedSurface>"
 
 
 def control_points(n: int = 4) -> str:
@@ -56,9 +57,10 @@ def relief(tin: str, lod: int = 2) -> str:
             "</dem:reliefComponent></dem:ReliefFeature>")
 
 
-@pytest.mark.parametrize("tin,n_tri", [(triangulated(), 32), (control_points(), 32)])
-def test_tin_relief_is_read_as_the_terrain_feature(tmp_path, tin, n_tri):
-    _, feats = read_all(write(tmp_path, city_model(building("B", box_body()), relief(tin))))
+@pytest.mark.parametrize("tin,n_tri,gml", [(triangulated(), 32, "3.1.1"), (triangulated(patches="patches"), 32, "3.2"),
+                                           (control_points(), 32, "3.2")])
+def test_tin_relief_is_read_as_the_terrain_feature(tmp_path, tin, n_tri, gml):
+    _, feats = read_all(write(tmp_path, city_model(building("B", box_body()), relief(tin), gml=gml)))
     assert [type(f).__name__ for f in feats] == ["Building", "Building"]
     b, t = feats
     assert (b.type, t.type, t.id) == ("Building", "TINRelief", "tin1")
