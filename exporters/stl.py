@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import json
 import struct
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import Iterable
 
@@ -28,7 +28,7 @@ from lod2energy.model import BUILDING_TYPES, Building
 
 from .paths import not_written, output_path, safe_stem
 from .result import ExportResult
-from .shellcheck import signed_volume
+from .shellcheck import _split_t_junctions, signed_volume
 from .weld import weld
 from .zones import ZoneShell, local_origin, zone_shells
 
@@ -44,6 +44,9 @@ ZONE_WELD_TOL = 1e-3
 SEPARATION = 2e-3
 #: A triangle lower than this (m) over its longest edge is a cap to flip away (flip_caps).
 CAP_HEIGHT = 1e-6
+#: A vertex this close (m) to an edge that has no twin is a T-junction: it is inserted into
+#: the edge before the face is triangulated (:func:`split_t_junctions`).
+T_JUNCTION_TOL = 1e-3
 #: Patch order (binary attribute = index).
 PATCHES = ("roof", "wall", "ground", "floor")
 
@@ -68,7 +71,21 @@ class StlOptions:
     lod: str | None = None
 
 
+def split_t_junctions(z: ZoneShell, tol: float = T_JUNCTION_TOL) -> ZoneShell:
+    """``z`` with the vertices that lie on an edge without a twin (a T-junction: the neighbour
+    has the edge in two pieces) inserted into that edge, so that its triangles share both
+    pieces; ``z`` itself when no edge lacks a twin."""
+    rings = [list(r) for f in z.faces for r in f.rings]
+    directed = {(r[k], r[(k + 1) % len(r)]) for r in rings for k in range(len(r))}
+    if all((b, a) in directed for a, b in directed):
+        return z
+    split = iter(_split_t_junctions(z.vertices, rings, tol, only_unmatched=True))
+    faces = tuple(replace(f, rings=tuple(tuple(next(split)) for _ in f.rings)) for f in z.faces)
+    return replace(z, faces=faces)
+
+
 def _zone_mesh(z: ZoneShell) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    z = split_t_junctions(z)
     # caps are flipped inside each face first: a run of collinear points shared by two
     # faces makes each face's triangulation fan its caps onto the same chord, which then
     # carries four triangles, and no neighbour across it can be told apart afterwards

@@ -10,6 +10,11 @@ semantic type is written as CityJSON spells it ("Window", "Door"). 3.0's ``gen:g
 ``con:dateOfConstruction`` (its year, as ``yearOfConstruction``) and ``con:height`` (as
 ``measuredHeight``) are read too.
 
+A ``dem:TINRelief`` (in a ``dem:ReliefFeature``) is one feature of type "TINRelief" whose
+``dem:tin`` (``gml:TriangulatedSurface`` / ``gml:Tin``: triangle patches, or control points
+triangulated) is a CompositeSurface of LoD ``dem:lod``, as the CityJSON reader yields one: the
+terrain of a CFD case (:func:`lod2energy.cfd.terrain.tin_of`).
+
 LoD3/4 interior detail is not envelope: the polygons of InteriorWallSurface / CeilingSurface /
 FloorSurface and the rooms, furniture, interior installations (and 3.0 constructive elements)
 are left out of the building's geometries and counted in ``provenance["interior_left_out"]``
@@ -62,7 +67,7 @@ from xml.parsers import expat
 import numpy as np
 
 from lod2energy.errors import FormatNotSupportedError, InputError
-from lod2energy.io.cityjson import build_feature
+from lod2energy.io.cityjson import _duplicate_id, build_feature
 from lod2energy.io.citygml_attributes import attributes as _attributes
 from lod2energy.io.gml import (SOLID_MEMBERS as _SOLID_MEMBERS, SURFACE_KINDS as _SURFACE_KINDS, XLINK_HREF,
                                GmlGeometry, gml_id as _gml_id, local_name as _local)
@@ -75,7 +80,9 @@ ROOTS = ("CityModel", "FeatureCollection")  # a CityGML file, or a WFS answer ho
 TOP_LEVEL = {"Building": "Building", "Bridge": "Bridge", "Tunnel": "Tunnel",
              "CityFurniture": "CityFurniture", "GenericCityObject": "GenericCityObject",
              "WaterBody": "WaterBody", "LandUse": "LandUse",
-             "SolitaryVegetationObject": "SolitaryVegetationObject", "PlantCover": "PlantCover"}
+             "SolitaryVegetationObject": "SolitaryVegetationObject", "PlantCover": "PlantCover",
+             # a component of a dem:ReliefFeature: the terrain (a CFD case's ground)
+             "TINRelief": "TINRelief"}
 #: Properties that hold a child city object (the child's local name gives its type).
 CHILD_PROPERTIES = ("consistsOfBuildingPart", "outerBuildingInstallation", "consistsOfBridgePart",
                     "outerBridgeInstallation", "outerBridgeConstruction", "consistsOfTunnelPart",
@@ -199,6 +206,7 @@ def read(path: str, **_) -> "tuple[CityModel | None, Iterator[Building | Feature
 def _features(path: str) -> Iterator[Building | FeatureError]:
     stack: list[ET.Element] = []
     n = 0
+    seen: dict = {}  # gml:id of every city object read -> the feature it came in
     try:
         for ev, el in ET.iterparse(path, events=("start", "end")):
             if ev == "start":
@@ -208,7 +216,7 @@ def _features(path: str) -> Iterator[Building | FeatureError]:
             name = _local(el.tag)
             if name in TOP_LEVEL and not any(_local(a.tag) in _OBJECT_NAMES for a in stack):
                 n += 1
-                yield _feature_or_error(el, TOP_LEVEL[name], n)
+                yield _once(_feature_or_error(el, TOP_LEVEL[name], n), _gml_id(el), n, seen)
                 if stack:
                     stack[-1].remove(el)  # release it: the tile is streamed
             elif len(stack) == 1:
@@ -219,6 +227,21 @@ def _features(path: str) -> Iterator[Building | FeatureError]:
         yield FeatureError(None, 901, f"cannot read {path}: {e.strerror}")
 
 
+def _once(f: Building | FeatureError, gid: str | None, n: int, seen: dict) -> Building | FeatureError:
+    """``f``, or a per-building error 901 when a city object of it has a gml:id an earlier
+    feature of the file already had (the first is kept, as the CityJSON reader does)."""
+    ids = [o.id for o in f.objects] if isinstance(f, Building) else ([gid] if gid else [])
+    again = next((i for i in ids if i in seen), None)
+    if again is not None:
+        rtype = f.type or ""
+        return FeatureError(_duplicate_id(ids[0], seen), 901,
+                            f"coid={again}: gml:id {again!r} was already read (feature {seen[again]}); "
+                            f"the first is kept, this one (feature {n}) is not read", rtype)
+    for i in ids:
+        seen[i] = n
+    return f
+
+
 def _feature_or_error(el: ET.Element, ctype: str, n: int) -> Building | FeatureError:
     oid = _gml_id(el) or f"{ctype}_{n}"
     try:
@@ -227,6 +250,16 @@ def _feature_or_error(el: ET.Element, ctype: str, n: int) -> Building | FeatureE
         return FeatureError(oid, e.code, str(e), ctype)
     except RecursionError:
         return FeatureError(oid, 901, f"coid={oid}: geometry nested too deeply (or an xlink cycle)", ctype)
+
+
+def _relief_lod(el: ET.Element) -> str:
+    """The ``dem:lod`` of a relief component (0-4; "1" when missing or not a number)."""
+    for prop in el:
+        if _local(prop.tag) == "lod":
+            text = (prop.text or "").strip()
+            if text.isdigit() and 0 <= int(text) <= 4:
+                return text
+    return "1"
 
 
 # ----------------------------------------------------------------------------- one feature
@@ -240,6 +273,7 @@ class _Feature(GmlGeometry):
         self.ctype = ctype
         self.oid = oid
         self.semantic_of: dict[ET.Element, ET.Element] = {}  # polygon -> its thematic surface
+        self.duplicates: dict[str, int] = {}  # gml:id of more than one surface -> how many
         self._index(el, 3)
         self.used: set[ET.Element] = set()
         self.left_out: dict[str, int] = {}  # interior detail not read as envelope: kind -> count
@@ -259,7 +293,9 @@ class _Feature(GmlGeometry):
             if name in _SURFACE_KINDS:
                 gid = _gml_id(e)
                 if gid is not None:
-                    self.surfaces.setdefault(gid, e)
+                    if self.surfaces.setdefault(gid, e) is not e:
+                        self.duplicates.setdefault(gid, 1)
+                        self.duplicates[gid] += 1
                 if theme is not None:
                     self.semantic_of[e] = theme
             elif name in ("posList", "pos", "coordinates"):
@@ -269,6 +305,10 @@ class _Feature(GmlGeometry):
             todo.extend((c, d, theme) for c in reversed(e))
 
     def build(self) -> Building:
+        if self.duplicates:
+            gid, k = next(iter(self.duplicates.items()))
+            raise InputError(f"coid={self.oid}: gml:id {gid!r} is the id of {k} surfaces (gml:id must be "
+                             f"unique: an xlink to it is ambiguous); {len(self.duplicates)} such id(s)")
         objects: list[tuple[str, str, ET.Element, str | None]] = []  # id, type, element, parent
         self._collect(self.el, self.ctype, self.oid, None, objects)
         cos: dict[str, dict] = {}
@@ -324,6 +364,8 @@ class _Feature(GmlGeometry):
             m = _GEOMETRY_PROPERTY.match(_local(prop.tag))
             if m:
                 yield prop, m.group(1)
+            elif _local(prop.tag) == "tin" and _local(el.tag) == "TINRelief":
+                yield prop, _relief_lod(el)
 
     def _target(self, prop: ET.Element, where: str) -> ET.Element | None:
         href = prop.get(XLINK_HREF)
@@ -345,8 +387,9 @@ class _Feature(GmlGeometry):
                    "_solids": [self.solid(s, where) for s in self.members(g, _SOLID_MEMBERS, where)]}
             faces = [f for so in out["_solids"] for sh in so for f in sh]
         elif name in _SURFACE_KINDS:
+            # a TIN (TINRelief's dem:tin) is a CompositeSurface of triangles, as in CityJSON
             gtype = name if name in ("MultiSurface", "CompositeSurface") else (
-                "CompositeSurface" if name == "Shell" else "MultiSurface")
+                "CompositeSurface" if name in ("Shell", "TriangulatedSurface", "Tin") else "MultiSurface")
             out = {"type": gtype, "lod": lod, "_faces": self.surface(g, where)}
             faces = out["_faces"]
         else:

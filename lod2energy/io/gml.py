@@ -4,6 +4,7 @@ Elements are matched by local name, so any namespace prefix works. A surface is 
 (``gml:Polygon``, ``Triangle``, ``Rectangle``, ``PolygonPatch``), a set of them (``MultiSurface``,
 ``CompositeSurface``, ``Shell``, ``Surface``, ``TriangulatedSurface`` / ``Tin``,
 ``PolyhedralSurface``) or an ``OrientableSurface`` (orientation "-" reverses its rings);
+a ``Tin`` given by its ``controlPoint`` only is their Delaunay triangulation in plan;
 ``surfaceMember`` holds an inline surface or an ``xlink:href`` to one (``#id`` or a bare ``id``)
 in the id index the caller fills (:attr:`GmlGeometry.surfaces`).
 
@@ -112,9 +113,45 @@ class GmlGeometry:
             reverse = reverse ^ (el.get("orientation", "+").strip() == "-")
         elif name not in SURFACE_SETS:
             raise InputError(f"{where}: unsupported surface type gml:{name}")
+        members = self.members(el, SURFACE_MEMBERS, where)
+        if not members and name == "Tin":
+            members = self.tin_triangles(el, where)
         out = []
-        for m in self.members(el, SURFACE_MEMBERS, where):
+        for m in members:
             out.extend(self.surface(m, where, reverse, depth + 1))
+        return out
+
+    def tin_triangles(self, tin: ET.Element, where: str) -> list[ET.Element]:
+        """The triangles of a ``gml:Tin`` given by its ``gml:controlPoint`` only: the Delaunay
+        triangulation of the points in plan, each triangle counter-clockwise seen from above
+        (upward), as ``gml:Triangle`` elements of the Tin's namespace."""
+        pts: list[tuple[float, float, float]] = []
+        for cp in tin:
+            if local_name(cp.tag) != "controlPoint":
+                continue
+            for e in cp.iter():
+                if local_name(e.tag) in ("posList", "pos"):
+                    pts.extend(_xyz((e.text or "").split(), self.dims.get(e, 3), where))
+        pts = list(dict.fromkeys(pts))
+        if len(pts) < 3:
+            raise InputError(f"{where}: gml:Tin without triangle patches and fewer than 3 control points")
+        import numpy as np
+        from scipy.spatial import Delaunay, QhullError
+        p = np.asarray(pts, dtype=np.float64)
+        try:
+            tri = Delaunay(p[:, :2]).simplices
+        except (QhullError, ValueError):
+            raise InputError(f"{where}: the control points of a gml:Tin lie on one line in plan") from None
+        ns = tin.tag[: tin.tag.index("}") + 1] if tin.tag.startswith("{") else ""
+        out = []
+        for t in tri:
+            a, b, c = p[t]
+            if (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]) < 0:
+                t = t[[0, 2, 1]]
+            el = ET.Element(f"{ns}Triangle")
+            ring = ET.SubElement(ET.SubElement(el, f"{ns}exterior"), f"{ns}LinearRing")
+            ET.SubElement(ring, f"{ns}posList").text = " ".join(repr(float(x)) for i in list(t) + [t[0]] for x in p[i])
+            out.append(el)
         return out
 
     def polygon(self, poly: ET.Element, reverse: bool, loc: str) -> list[list[int]]:

@@ -28,7 +28,7 @@ from lod2energy.model import (
     BUILDING_TYPES, Building, FeatureError, Geometry, frozen_mapping, lod_key,
 )
 from lod2energy.polymesh import PolyMesh, compact, face_area, topology
-from lod2energy.repair.accept import is_repaired, val3dity_codes
+from lod2energy.repair.accept import grid_rounding, is_repaired, output_grid, repair_verdict, val3dity_codes
 from lod2energy.repair.alphashape import alpha_repair
 from lod2energy.repair.cleanup import clean_rings, cleanup, desliver, drop_degenerate, merge_slivers, snap_vertices
 from lod2energy.repair.convert import geometry_of_mesh, mesh_of_geometry
@@ -87,9 +87,9 @@ def ladder(m: PolyMesh, lod, tol: Tolerances, deadline: float) -> tuple[str, Pol
     log: list[str] = []
 
     def ok(name, r):
-        good = is_repaired(r, lod, tol)
-        log.append(f"{name}: {'ok' if good else ('no result' if r is None else 'failed')}")
-        return good
+        why = repair_verdict(r, lod, tol)
+        log.append(f"{name}: {why or 'ok'}")
+        return why is None
 
     def late():
         return time.monotonic() > deadline
@@ -160,9 +160,9 @@ def global_stages(m0: PolyMesh, lod, tol: Tolerances, deadline: float,
     """The global end of the ladder on a cleaned shell: 2.5D roof model, alpha shapes,
     footprint extrusion, convex hull; "irreparable" when none is valid."""
     def ok(name, r):
-        good = is_repaired(r, lod, tol)
-        log.append(f"{name}: {'ok' if good else ('no result' if r is None else 'failed')}")
-        return good
+        why = repair_verdict(r, lod, tol)
+        log.append(f"{name}: {why or 'ok'}")
+        return why is None
 
     if time.monotonic() <= deadline:
         m4r = roof_model(m0, lod, tol)
@@ -264,6 +264,11 @@ def repair_building(b: Building, tol: Tolerances = DEFAULT, timeout: float = DEF
                     merge_parts: bool = False, lod: str | None = None) -> Building:
     """Repair every defective Building/BuildingPart geometry of ``b`` (see the module docstring).
 
+    Every stage's result is judged as computed and on the grid ``b`` will be written on
+    (:func:`lod2energy.repair.accept.output_grid`, the final check's grid): a result that
+    rounding to it spoils goes on up the ladder, and the geometry's ``log`` says at which
+    stage and with which val3dity codes.
+
     Parameters
     ----------
     b : Building
@@ -282,6 +287,12 @@ def repair_building(b: Building, tol: Tolerances = DEFAULT, timeout: float = DEF
         ``b`` itself when nothing needed a repair (with provenance when it carried none);
         else a new building with ``provenance["repair"]`` set.
     """
+    with output_grid(grid_rounding(b)):
+        return _repair_building(b, tol, timeout, merge_parts, lod)
+
+
+def _repair_building(b: Building, tol: Tolerances, timeout: float, merge_parts: bool,
+                     lod: str | None) -> Building:
     t0 = time.monotonic()
     deadline = t0 + timeout
     targets = _targets(b, lod)
@@ -318,9 +329,10 @@ def repair_building(b: Building, tol: Tolerances = DEFAULT, timeout: float = DEF
             entry["error"] = why
         elif time.monotonic() > deadline:
             res = convex_hull(cleanup(m, tol))
-            stage = "hull" if is_repaired(res, g.lod, tol) else "irreparable"
+            verdict = repair_verdict(res, g.lod, tol)
+            stage = "hull" if verdict is None else "irreparable"
             res = res if stage == "hull" else None
-            log = ["timeout: jumped to the convex hull"]
+            log = ["timeout: jumped to the convex hull"] + ([f"hull: {verdict}"] if verdict else [])
         else:
             stage, res, log = ladder(m, g.lod, tol, deadline)
             stage, res, log = not_hollow(  # a hollow result goes further up the ladder
