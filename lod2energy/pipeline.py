@@ -118,10 +118,11 @@ def prepare_building(b: Building, options: PrepareOptions = PrepareOptions(), se
     extra = {}
     if b.provenance.get("interior_left_out"):
         extra["interior_left_out"] = dict(b.provenance["interior_left_out"])
-    # BuildingParts that overlap in the input stay as they are (reported by the repair as
-    # ``overlapping_parts``): clipping them for the energy model (repair.parts.clip_overlapping_parts)
-    # left hairline faces that 13 of Den Haag's 844 buildings' STL/CityJSON self-checks refused,
-    # so it is not applied until the clipped shells pass every writer
+    if not options.merge_parts and rb.is_building:  # no volume counted twice (issue 19 item 1)
+        from lod2energy.repair.parts import clip_overlapping_parts
+        rb, parts_energy = clip_overlapping_parts(rb, tol, lod)
+        if parts_energy:
+            extra["parts_energy"] = parts_energy
     repair = RepairRecord.from_info({**repair_info(rb), **extra})
     lb = label_building(rb, lod=lod, source=b)
     thermal_opts = options.thermal
