@@ -255,11 +255,14 @@ def _snap_back(m: PolyMesh, other: PolyMesh, max_move: float = SNAP_BACK) -> Pol
     return m.with_faces(m.faces, V) if moved else None
 
 
-def _clip_by(m: PolyMesh, other: PolyMesh, min_edge: float = 0.0) -> PolyMesh | None:
+def _clip_by(m: PolyMesh, other: PolyMesh, min_edge: float = 0.0, snap_to: np.ndarray | None = None
+             ) -> PolyMesh | None:
     """``m`` minus ``other`` (manifold3d), faces on ``m``'s faces keeping their semantic surface,
     vertices within 0.1 mm of ``other``'s triangle planes put onto them; with ``min_edge`` (m)
     the result's edges shorter than that are collapsed (where the two solids' corners lie a
-    hair apart, the difference keeps sub-millimetre edges that a writer's grid would fold)."""
+    hair apart, the difference keeps sub-millimetre edges that a writer's grid would fold), after
+    its vertices within ``min_edge`` of a corner of ``other`` (or of ``snap_to``, (n, 3) m: the
+    corners of the building's other parts) are put onto that corner."""
     from lod2energy.repair.metrics import _sqdist
     origin = np.vstack([m.vertices, other.vertices]).mean(axis=0)
     a, b = _manifold(m, origin), _manifold(other, origin)
@@ -270,6 +273,12 @@ def _clip_by(m: PolyMesh, other: PolyMesh, min_edge: float = 0.0) -> PolyMesh | 
     T = np.asarray(mesh.tri_verts, dtype=np.int64)
     if not len(T):
         return None
+    if min_edge > 0:  # corners of the neighbour a hair away: onto them (one wall, one corner)
+        from scipy.spatial import cKDTree
+        P = other.vertices if snap_to is None else np.vstack([other.vertices, snap_to])
+        d, j = cKDTree(P).query(V, distance_upper_bound=min_edge)
+        hit = np.isfinite(d)
+        V[hit] = P[j[hit]]
     for src in (other, m):  # float32 booleans: back onto the exact planes
         tris, _ = triangulate_mesh(src)
         A, B, C = src.vertices[tris[:, 0]], src.vertices[tris[:, 1]], src.vertices[tris[:, 2]]
