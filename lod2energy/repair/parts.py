@@ -526,3 +526,24 @@ def clip_overlapping_parts(b: Building, tol: Tolerances = DEFAULT, lod=None,
     if out is b:
         return b, rec
     return out.with_provenance(parts_energy=rec), rec
+
+
+def keep_input_parts(clipped: Building, unclipped: Building) -> Building:
+    """``clipped`` carrying the parts of ``unclipped`` (the same building before
+    :func:`clip_overlapping_parts`, prepared alike) for the writers of the parts' union.
+
+    The STL is the union of the parts, the same with the input parts as with the clipped ones;
+    written from the input parts it gains no seam where a clipped part meets its neighbour.
+    :func:`input_parts` gives the building back with them.
+    """
+    return clipped.with_provenance(parts_input=(unclipped.objects, unclipped.vertices))
+
+
+def input_parts(b: Building) -> Building:
+    """``b`` with the parts it had before :func:`clip_overlapping_parts` (``b`` itself when the
+    stage left it as it was), see :func:`keep_input_parts`."""
+    kept = b.provenance.get("parts_input")
+    if kept is None:
+        return b
+    objects, vertices = kept
+    return replace(b, objects=objects, vertices=vertices)
