@@ -130,6 +130,10 @@ def test_input_overlap_is_counted_once_in_the_energy_model():
     assert overlap_pairs(cb) == {}
     assert part_volume(cb, "a") == pytest.approx(480.0) and part_volume(cb, "b") == pytest.approx(192.0)
     assert part_volume(cb, "a") + part_volume(cb, "b") == pytest.approx(union, rel=0.005)
+    from lod2energy.repair.parts import input_parts, keep_input_parts
+    back = input_parts(keep_input_parts(cb, b))              # what the STL (the union) is written from
+    assert back.objects == b.objects and np.array_equal(back.vertices, b.vertices)
+    assert back.provenance["parts_energy"] == rec and input_parts(b) is b
     shared_wall = two_parts()
     assert clip_overlapping_parts(shared_wall) == (shared_wall, {})   # parts sharing a wall: nothing to do
 
