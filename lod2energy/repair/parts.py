@@ -451,9 +451,8 @@ def clip_overlapping_parts(b: Building, tol: Tolerances = DEFAULT, lod=None,
     solid (also once on the output file's grid), has a hairline edge or sliver face
     (:func:`_writable`; the boolean's edges under :data:`CLIP_MIN_EDGE` are collapsed first) or
     does not lose the shared volume, the earlier part is clipped by the later one instead; a pair neither clip resolves
-    is united into the earlier part (:func:`merge_parts` ``into``); else it is left, and then
-    the building keeps its input parts (all pairs reported as left, with a ``note``). The union
-    of the parts is unchanged.
+    is united into the earlier part (:func:`merge_parts` ``into``); else it is left and
+    reported. The union of the parts is unchanged.
 
     Parameters
     ----------
@@ -519,10 +518,6 @@ def clip_overlapping_parts(b: Building, tol: Tolerances = DEFAULT, lod=None,
             else:
                 rec["left"].append([a, c, round(shared, 6)])
     rec["volume_removed_m3"] = round(rec["volume_removed_m3"], 6)
-    if rec["left"]:  # all or nothing: a half-separated set of parts broke the STL union (2 of Den Haag's)
-        return b, {"clipped": [], "united": [], "volume_removed_m3": 0.0,
-                   "left": [[a, c, round(v, 6)] for (a, c), v in sorted(pairs.items())],
-                   "note": "not every overlapping pair could be separated: parts kept as in the input"}
     if out is b:
         return b, rec
     return out.with_provenance(parts_energy=rec), rec
