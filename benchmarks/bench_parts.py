@@ -10,7 +10,8 @@ repaired building are counted. Reported per tile: buildings with parts, building
 be 0), buildings whose new overlaps the repair resolved (``parts_overlap`` records), seconds.
 With ``--clip`` "after" is the building the writers get: the repair, then the preparation
 stage that separates input overlaps (:func:`lod2energy.repair.parts.clip_overlapping_parts`);
-two more columns count the buildings it separated and the volume it took off (m3).
+three more columns count the buildings it separated, the volume it took off (m3) and the
+buildings with a pair it could not separate (left, reported).
 """
 from __future__ import annotations
 
@@ -100,7 +101,7 @@ def main(argv=None) -> int:
     paths = [Path(t) if Path(t).exists() else SHARED / t for t in (a.tiles or TILES)]
     lines = [f"601 (BuildingParts overlap, overlap_tol {a.overlap_tol}) before / after repair", "",
              "| tile | buildings with parts | repaired | 601 before | 601 after | buildings with more 601 after "
-             "| new overlaps resolved | s |" + (" separated (clip) | m3 taken off | kept as input |" if a.clip else ""),
+             "| new overlaps resolved | s |" + (" separated (clip) | m3 taken off | with a pair left |" if a.clip else ""),
              "|---|---|---|---|---|---|---|---|" + ("---|---|---|" if a.clip else "")]
     if a.clip:
         lines[0] += ", after = repair + clip_overlapping_parts"
