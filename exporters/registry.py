@@ -170,6 +170,8 @@ def _stl_sidecar(path: str) -> list[str]:
 
 def _write_stl(buildings, outdir, options, *, crs=None, context=(), model=None, stem="out", tol=None, frame=None):
     from lod2energy.exporters import stl
+    from lod2energy.repair.parts import input_parts  # the union of the input parts (issue 19)
+    buildings = [input_parts(b) for b in buildings]
     return _records("stl", stl.write(buildings, outdir, options, crs=crs), _stl_sidecar)
 
 

@@ -123,16 +123,21 @@ def prepare_building(b: Building, options: PrepareOptions = PrepareOptions(), se
         extra["interior_left_out"] = dict(b.provenance["interior_left_out"])
     if b.provenance.get("openings_cut"):
         extra["openings_cut"] = dict(b.provenance["openings_cut"])
-    # BuildingParts that overlap in the input stay as they are (reported by the repair as
-    # ``overlapping_parts``): clipping them for the energy model (repair.parts.clip_overlapping_parts)
-    # left hairline faces that 13 of Den Haag's 844 buildings' STL/CityJSON self-checks refused,
-    # so it is not applied until the clipped shells pass every writer
+    unclipped = rb
+    if not options.merge_parts and rb.is_building:  # no volume counted twice (issue 19 item 1)
+        from lod2energy.repair.parts import clip_overlapping_parts
+        rb, parts_energy = clip_overlapping_parts(rb, tol, lod)
+        if parts_energy:
+            extra["parts_energy"] = parts_energy
     repair = RepairRecord.from_info({**repair_info(rb), **extra})
     lb = label_building(rb, lod=lod, source=b)
     thermal_opts = options.thermal
     if lod is not None and getattr(thermal_opts, "lod", None) is None:
         thermal_opts = replace(thermal_opts, lod=lod)
     tb = assign_u_values(lb, thermal_opts)
+    if rb is not unclipped:  # the union writers (STL) keep the input parts: same union, no new seams
+        from lod2energy.repair.parts import keep_input_parts
+        tb = keep_input_parts(tb, assign_u_values(label_building(unclipped, lod=lod, source=b), thermal_opts))
     after = before if _geometry_key(tb) == _geometry_key(b) else _checks.validate_building(tb, tol)
     block = dict(energy_compliance(tb, after, lod=lod, tol=tol, assess_labels=True, assess_u_values=True))
     if repair.error:  # e.g. implausible coordinates: kept in the output, not simulated

@@ -109,25 +109,116 @@ def part_volume(b: Building, pid: str) -> float:
     return signed_volume(mesh_of_geometry(b.vertices, b.object_index[pid].geometries[0]))
 
 
+def _union_volume(b: Building) -> float:
+    import manifold3d as m3
+    from lod2energy.repair.parts import _manifold, _part_meshes_all
+    meshes = [m for *_, m in _part_meshes_all(b, b.default_lod())]
+    origin = np.vstack([m.vertices for m in meshes]).mean(axis=0)
+    return m3.Manifold.batch_boolean([_manifold(m, origin) for m in meshes], m3.OpType.Add).volume()
+
+
 def test_input_overlap_is_counted_once_in_the_energy_model():
     from lod2energy.repair.parts import clip_overlapping_parts
     b = two_parts(dx_b=5.0, x_b=9.0)                         # b (5 m long) overlaps a by 1 m: 48 m3
     assert overlap_pairs(b)[("a", "b")] == pytest.approx(48.0)
+    union = _union_volume(b)
+    assert part_volume(b, "a") + part_volume(b, "b") == pytest.approx(union + 48.0)   # counted twice
     cb, rec = clip_overlapping_parts(b)
-    assert rec == {"clipped": [["b", "a", 48.0]], "united": [], "left": []}   # the smaller part yields
+    assert rec["clipped"] == [["b", "a", pytest.approx(48.0), pytest.approx(48.0)]]  # the later part yields
+    assert rec["united"] == [] and rec["left"] == [] and rec["volume_removed_m3"] == pytest.approx(48.0)
+    assert cb.provenance["parts_energy"] == rec
     assert overlap_pairs(cb) == {}
     assert part_volume(cb, "a") == pytest.approx(480.0) and part_volume(cb, "b") == pytest.approx(192.0)
-    assert clip_overlapping_parts(two_parts())[1] == {}        # parts sharing a wall: nothing to do
+    assert part_volume(cb, "a") + part_volume(cb, "b") == pytest.approx(union, rel=0.005)
+    from lod2energy.repair.parts import input_parts, keep_input_parts
+    back = input_parts(keep_input_parts(cb, b))              # what the STL (the union) is written from
+    assert back.objects == b.objects and np.array_equal(back.vertices, b.vertices)
+    assert back.provenance["parts_energy"] == rec and input_parts(b) is b
+    shared_wall = two_parts()
+    assert clip_overlapping_parts(shared_wall) == (shared_wall, {})   # parts sharing a wall: nothing to do
+
+
+def test_the_earlier_part_keeps_its_solid_whatever_the_sizes():
+    from lod2energy.repair.parts import clip_overlapping_parts
+    b = two_parts(dx_b=20.0, x_b=8.0)                        # the later part is the larger one
+    cb, rec = clip_overlapping_parts(b)
+    assert [r[:2] for r in rec["clipped"]] == [["b", "a"]]
+    assert part_volume(cb, "a") == pytest.approx(480.0)
+    assert part_volume(cb, "b") == pytest.approx((20.0 - 2.0) * 48.0)
+    assert part_volume(cb, "a") + part_volume(cb, "b") == pytest.approx(_union_volume(b), rel=0.005)
+
+
+def test_corners_a_hair_off_the_neighbour_leave_no_hairline_edge():
+    from lod2energy.repair.parts import CLIP_MIN_EDGE, _writable, clip_overlapping_parts
+    from lod2energy.repair.pipeline import mesh_of_geometry
+    b = two_parts(dx_b=5.0, x_b=9.0)
+    V = b.vertices.copy()
+    g = b.object_index["b"].geometries[0]
+    V[sorted({i for *_, s in g.iter_surfaces() for r in s.rings for i in r}), 1] += 0.002
+    b = replace(b, vertices=V)          # b 2 mm north of a: b - a leaves a 2 mm strip along a's north wall
+    cb, rec = clip_overlapping_parts(b)
+    assert rec["clipped"] and not rec["left"]
+    m = mesh_of_geometry(cb.vertices, cb.object_index[rec["clipped"][0][0]].geometries[0])
+    assert _writable(m)
+    V = m.vertices
+    shortest = min(float(np.min(np.linalg.norm(V[list(r)] - np.roll(V[list(r)], -1, axis=0), axis=1)))
+                   for f in m.faces for r in f.rings)
+    assert shortest >= CLIP_MIN_EDGE
+    assert part_volume(cb, "a") + part_volume(cb, "b") == pytest.approx(_union_volume(b), rel=0.005)
+
+
+def _boxes_city_json(path, boxes) -> None:
+    """A CityJSON file of one Building whose BuildingParts are the boxes ``(id, (x0, y0, z0),
+    (dx, dy, dz))`` (m, RD New), with Ground/Wall/Roof semantics and a construction year."""
+    import json
+    verts, objs, kids, index = [], {}, [], {}
+    for pid, origin, (dx, dy, dz) in boxes:
+        shell = []
+        for poly in box_polygons(dx, dy, dz, origin):
+            ring = []
+            for q in poly[0]:
+                key = (pid, *(int(round(float(c) * 1000)) for c in q))   # shared within a part
+                if key not in index:
+                    index[key] = len(verts)
+                    verts.append(list(key[1:]))
+                ring.append(index[key])
+            shell.append([ring])
+        sem = {"surfaces": [{"type": t} for t in dict.fromkeys(BOX_SEMANTICS)],
+               "values": [[SEM_INDEX[t] for t in BOX_SEMANTICS]]}
+        objs[pid] = {"type": "BuildingPart", "parents": ["B"],
+                     "geometry": [{"type": "Solid", "lod": "2.2", "boundaries": [shell], "semantics": sem}]}
+        kids.append(pid)
+    objs["B"] = {"type": "Building", "children": kids, "attributes": {"oorspronkelijkbouwjaar": 1975}}
+    cj = {"type": "CityJSON", "version": "2.0", "metadata": {"referenceSystem":
+          "https://www.opengis.net/def/crs/EPSG/0/7415"},
+          "transform": {"scale": [0.001, 0.001, 0.001], "translate": [85000.0, 446000.0, 0.0]},
+          "CityObjects": objs, "vertices": verts}
+    path.write_text(json.dumps(cj))
 
 
 def test_export_reports_what_was_done_with_overlapping_parts(tmp_path, capsys):
+    """Two overlapping box parts through the whole export: what was clipped is in the report,
+    every writer accepts the building, and the IDF's zones add up to the STL's volume (the
+    union) within 0.5%."""
     import json
+    import sys
+    from pathlib import Path
     from lod2energy.cli import main
-    path = shared_path("val3dity-tests", "test_geometry_specific", "601_1.json")
+    path = tmp_path / "two_boxes.city.json"
+    _boxes_city_json(path, [("a", (0, 0, 0), (10, 8, 6)), ("b", (9, 0, 0), (5, 8, 6))])
     out = tmp_path / "o"
-    main(["export", str(path), "-o", str(out), "--idf", "-q"])
+    main(["export", str(path), "-o", str(out), "--idf", "--stl", "--cityjson", "-q"])
     capsys.readouterr()
     (r,) = json.loads((out / "report.json").read_text())["buildings"]
-    # input overlaps are reported, not clipped in the pipeline (see lod2energy.pipeline.prepare_building)
-    assert "601" in str(r["output_errors"]).split() and "parts_energy" not in r["repair"]
-    assert r["energy"]["compliant"] and r["exports"]["idf"]["ok"]
+    rec = r["repair"]["parts_energy"]
+    assert rec["clipped"] and rec["volume_removed_m3"] > 0
+    assert [x[:2] for x in rec["clipped"]] == [["b", "a"]] and rec["left"] == []
+    assert rec["volume_removed_m3"] == pytest.approx(48.0, rel=1e-3)
+    assert r["energy"]["compliant"]
+    assert all(r["exports"][k]["ok"] for k in ("idf", "stl", "cityjson"))
+    sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
+    from client_check import idf_zones, stl_volume
+    (idf,) = out.glob("*.idf")
+    zones = sum(z["volume_geometry"] for z in idf_zones(idf).values())
+    shell = stl_volume(idf.with_suffix(".stl"))
+    assert zones == pytest.approx(shell, rel=0.005)

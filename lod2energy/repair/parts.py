@@ -255,9 +255,14 @@ def _snap_back(m: PolyMesh, other: PolyMesh, max_move: float = SNAP_BACK) -> Pol
     return m.with_faces(m.faces, V) if moved else None
 
 
-def _clip_by(m: PolyMesh, other: PolyMesh) -> PolyMesh | None:
+def _clip_by(m: PolyMesh, other: PolyMesh, min_edge: float = 0.0, snap_to: np.ndarray | None = None
+             ) -> PolyMesh | None:
     """``m`` minus ``other`` (manifold3d), faces on ``m``'s faces keeping their semantic surface,
-    vertices within 0.1 mm of ``other``'s triangle planes put onto them."""
+    vertices within 0.1 mm of ``other``'s triangle planes put onto them; with ``min_edge`` (m)
+    the result's edges shorter than that are collapsed (where the two solids' corners lie a
+    hair apart, the difference keeps sub-millimetre edges that a writer's grid would fold), after
+    its vertices within ``min_edge`` of a corner of ``other`` (or of ``snap_to``, (n, 3) m: the
+    corners of the building's other parts) are put onto that corner."""
     from lod2energy.repair.metrics import _sqdist
     origin = np.vstack([m.vertices, other.vertices]).mean(axis=0)
     a, b = _manifold(m, origin), _manifold(other, origin)
@@ -268,6 +273,12 @@ def _clip_by(m: PolyMesh, other: PolyMesh) -> PolyMesh | None:
     T = np.asarray(mesh.tri_verts, dtype=np.int64)
     if not len(T):
         return None
+    if min_edge > 0:  # corners of the neighbour a hair away: onto them (one wall, one corner)
+        from scipy.spatial import cKDTree
+        P = other.vertices if snap_to is None else np.vstack([other.vertices, snap_to])
+        d, j = cKDTree(P).query(V, distance_upper_bound=min_edge)
+        hit = np.isfinite(d)
+        V[hit] = P[j[hit]]
     for src in (other, m):  # float32 booleans: back onto the exact planes
         tris, _ = triangulate_mesh(src)
         A, B, C = src.vertices[tris[:, 0]], src.vertices[tris[:, 1]], src.vertices[tris[:, 2]]
@@ -282,13 +293,22 @@ def _clip_by(m: PolyMesh, other: PolyMesh) -> PolyMesh | None:
     A, B, C = m.vertices[tris[:, 0]], m.vertices[tris[:, 1]], m.vertices[tris[:, 2]]
     tn = np.cross(B - A, C - A)
     tn /= np.maximum(np.linalg.norm(tn, axis=1), 1e-12)[:, None]
-    faces = []
-    for t in T:
+    own = np.full(len(T), -1, dtype=np.intp)
+    for k, t in enumerate(T):
         c = V[t].mean(axis=0)
         n = np.cross(V[t[1]] - V[t[0]], V[t[2]] - V[t[0]])
         n /= np.linalg.norm(n) or 1.0
         hit = np.flatnonzero((_sqdist(c[None], A, B, C) < 1e-6) & (tn @ n > 0.999))
-        f = m.faces[int(owner[hit[0]])] if len(hit) else None
+        if len(hit):
+            own[k] = int(owner[hit[0]])
+    if min_edge > 0:
+        from lod2energy.geometry import collapse_short_edges
+        V, T, own = collapse_short_edges(V, T, own, min_edge)
+        if not len(T):
+            return None
+    faces = []
+    for t, k in zip(T, own):
+        f = m.faces[int(k)] if k >= 0 else None
         faces.append(Face((tuple(int(i) for i in t),), -1 if f is None else f.source,
                           None if f is None else f.semantic))
     return compact(merge_coplanar(PolyMesh(V, tuple(faces)), angle_tol=1e-6, dist_tol=1e-4))
@@ -408,21 +428,50 @@ def _writable(m: PolyMesh) -> bool:
     return True
 
 
+def _valid_on_grid(b: Building, part_id: str, lod, tol: Tolerances) -> bool:
+    """The solid of ``part_id`` in ``b`` is still a valid, writable solid once its vertices are
+    rounded to the grid ``b`` will be written on (the writers' final check,
+    :func:`lod2energy.repair.accept.export_problem`, judges it there)."""
+    from lod2energy.io.cityjson_grid import building_grid, on_grid
+    snapped = on_grid(b, *building_grid(b))
+    mine = [m for o, _gi, _g, m in _part_meshes_all(snapped, lod) if o.id == part_id]
+    return bool(mine) and is_repaired(mine[0], lod, tol) and _writable(mine[0])
+
+
 def clip_overlapping_parts(b: Building, tol: Tolerances = DEFAULT, lod=None,
                            min_volume: float = ENERGY_OVERLAP) -> tuple[Building, dict]:
-    """``b`` with no volume shared by two BuildingParts, for the energy model (zones).
+    """``b`` with no volume shared by two BuildingParts: the preparation stage in front of the
+    writers, so that the energy model (zones) counts no volume twice and the written parts
+    are val3dity-601-free.
 
-    For every 601 pair sharing more than ``min_volume`` m3 the smaller part is clipped by
-    the larger (manifold3d difference; then the larger by the smaller), the clipped solid
-    kept only if valid; a pair neither clip resolves is united into the larger part
-    (:func:`merge_parts` ``into``); else left and reported.
+    The parts are taken in the building's order (:attr:`Building.envelope_objects`). For every
+    601 pair sharing more than ``min_volume`` m3, in that order (by the later part, then the
+    earlier), the later part is clipped by the earlier one (manifold3d difference, faces on
+    the later part's faces keeping their semantic surface); when that result is not a valid
+    solid (also once on the output file's grid), has a hairline edge or sliver face
+    (:func:`_writable`; the boolean's edges under :data:`CLIP_MIN_EDGE` are collapsed first) or
+    does not lose the shared volume, the earlier part is clipped by the later one instead; a pair neither clip resolves
+    is united into the earlier part (:func:`merge_parts` ``into``); else it is left and
+    reported. The union of the parts is unchanged.
+
+    Parameters
+    ----------
+    b : Building
+    tol : Tolerances
+    lod : str, optional
+        The LoD of the parts' solids (default: the building's default LoD).
+    min_volume : float, m3
+        Shared volumes up to this are left (numerical noise for the heat balance).
 
     Returns
     -------
     building : Building
+        ``b`` itself when no pair shares more than ``min_volume``.
     record : dict
-        ``{"clipped": [[clipped, by, m3], ...], "united": [[into, other, m3], ...],
-        "left": [[a, b, m3], ...]}``; empty when no part shares volume.
+        ``{"clipped": [[clipped, by, shared m3, removed m3], ...], "united": [[into, other,
+        shared m3], ...], "left": [[a, b, shared m3], ...], "volume_removed_m3": total}``
+        (``volume_removed_m3`` counts the clipped and the united pairs); empty when nothing
+        was to be done.
     """
     lod = lod if lod is not None else b.default_lod()
     if len(_part_meshes_all(b, lod)) < 2:
@@ -430,32 +479,66 @@ def clip_overlapping_parts(b: Building, tol: Tolerances = DEFAULT, lod=None,
     pairs = {k: v for k, v in overlap_pairs(b, tol).items() if v is not None and v > min_volume}
     if not pairs:
         return b, {}
-    rec: dict = {"clipped": [], "united": [], "left": []}
+    order = {o.id: k for k, (o, *_rest) in enumerate(_part_meshes_all(b, lod))}
+    rec: dict = {"clipped": [], "united": [], "left": [], "volume_removed_m3": 0.0}
     out = b
-    for (a, c), v in sorted(pairs.items(), key=lambda kv: -kv[1]):
+    for a, c in sorted(pairs, key=lambda k: sorted((order.get(k[0], 0), order.get(k[1], 0)), reverse=True)):
         parts = {o.id: (o, gi, g, m) for o, gi, g, m in _part_meshes_all(out, lod)}
         if a not in parts or c not in parts:
             continue
+        earlier, later = sorted((a, c), key=lambda k: order.get(k, 0))
         origin = np.vstack([parts[a][3].vertices, parts[c][3].vertices]).mean(axis=0)
         ma, mc = _manifold(parts[a][3], origin), _manifold(parts[c][3], origin)
-        if ma is None or mc is None or (ma ^ mc).volume() <= min_volume:
-            continue  # resolved by an earlier clip
-        small, big = sorted((a, c), key=lambda k: signed_volume(parts[k][3]))
+        shared = None if ma is None or mc is None else (ma ^ mc).volume()
+        if shared is None or shared <= min_volume:
+            continue  # resolved by an earlier clip (or no longer measurable)
         done = False
-        for cut, by in ((small, big), (big, small)):
+        for cut, by in ((later, earlier), (earlier, later)):
             o, gi, g, m = parts[cut]
-            res = _clip_by(m, parts[by][3])
+            res = _clip_by(m, parts[by][3], CLIP_MIN_EDGE)
             if res is None or not is_repaired(res, lod, tol) or not _writable(res):
                 continue
-            out = _with_part(out, o.id, gi, g, res)
-            rec["clipped"].append([cut, by, round(v, 6)])
+            removed = signed_volume(m) - signed_volume(res)
+            if abs(removed - shared) > 0.01 * shared + 1e-3 * signed_volume(m) + 1e-3:
+                continue  # the boolean (and the collapse of its hairline edges) lost or kept more
+            trial = _with_part(out, o.id, gi, g, res)
+            if not _valid_on_grid(trial, cut, lod, tol):
+                continue
+            out = trial
+            rec["clipped"].append([cut, by, round(shared, 6), round(removed, 6)])
+            rec["volume_removed_m3"] += removed
             done = True
             break
         if not done:
-            merged = merge_parts(out, {a, c}, tol, lod, into=big)
-            if merged is not out:
+            merged = merge_parts(out, {a, c}, tol, lod, into=earlier)
+            if merged is not out and _valid_on_grid(merged, earlier, lod, tol):
                 out = merged
-                rec["united"].append([big, small, round(v, 6)])
+                rec["united"].append([earlier, later, round(shared, 6)])
+                rec["volume_removed_m3"] += shared
             else:
-                rec["left"].append([a, c, round(v, 6)])
-    return out, rec
+                rec["left"].append([a, c, round(shared, 6)])
+    rec["volume_removed_m3"] = round(rec["volume_removed_m3"], 6)
+    if out is b:
+        return b, rec
+    return out.with_provenance(parts_energy=rec), rec
+
+
+def keep_input_parts(clipped: Building, unclipped: Building) -> Building:
+    """``clipped`` carrying the parts of ``unclipped`` (the same building before
+    :func:`clip_overlapping_parts`, prepared alike) for the writers of the parts' union.
+
+    The STL is the union of the parts, the same with the input parts as with the clipped ones;
+    written from the input parts it gains no seam where a clipped part meets its neighbour.
+    :func:`input_parts` gives the building back with them.
+    """
+    return clipped.with_provenance(parts_input=(unclipped.objects, unclipped.vertices))
+
+
+def input_parts(b: Building) -> Building:
+    """``b`` with the parts it had before :func:`clip_overlapping_parts` (``b`` itself when the
+    stage left it as it was), see :func:`keep_input_parts`."""
+    kept = b.provenance.get("parts_input")
+    if kept is None:
+        return b
+    objects, vertices = kept
+    return replace(b, objects=objects, vertices=vertices)
