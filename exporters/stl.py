@@ -36,6 +36,9 @@ from .zones import ZoneShell, local_origin, zone_shells
 SIMPLIFY_TOL = 1e-3
 #: Vertices of different parts closer than this (m) are made identical before the union.
 CROSS_WELD_TOL = 1e-3
+#: Largest relative change of the union's volume that its clean-up (simplify, short-edge
+#: collapse) may make; a clean-up that changes more is not applied.
+VOLUME_RTOL = 1e-4
 #: Weld distance (m) tried first for each zone's vertices: the repaired shells are already
 #: snapped at val3dity's 1 mm, and a wider weld would re-join sheets the repair separated by
 #: 8 mm (the usual 10 mm weld is used when the fine one leaves the zone open).
@@ -247,15 +250,23 @@ def merge_meshes(meshes: list[tuple[np.ndarray, np.ndarray, np.ndarray]], union:
                 break
             parts.append(mf)
         if ok:
-            # simplify removes the slivers left where coplanar faces of touching parts met
-            u = m3.Manifold.batch_boolean(parts, m3.OpType.Add).simplify(SIMPLIFY_TOL)
-            out = u.to_mesh64()
-            v = np.asarray(out.vert_properties)[:, :3].astype(np.float64)
-            t = np.asarray(out.tri_verts).astype(np.intp)
-            c = np.asarray(code_of, dtype=np.intp)[np.asarray(out.face_id).astype(np.intp)]
-            v2, t2, c2 = collapse_short_edges(v, t, c, CROSS_WELD_TOL)
-            if _closed_by_position(*separate_touching(v2, t2)[:1], t2):
-                v, t, c = v2, t2, c2
+            # simplify removes the slivers left where coplanar faces of touching parts met; but
+            # it can take whole percents off a stepped roof: the first clean-up that keeps the
+            # union's volume and leaves no degenerate triangle is used (else the simplified one)
+            union_ = m3.Manifold.batch_boolean(parts, m3.OpType.Add)
+            v_union = abs(union_.volume())
+            codes = np.asarray(code_of, dtype=np.intp)
+            first = v, t, c = _cleaned(union_.simplify(SIMPLIFY_TOL), codes)
+            if not _keeps(v, t, v_union):
+                for tol in (SIMPLIFY_TOL / 10, SIMPLIFY_TOL / 100, 0.0):
+                    cand = _cleaned(union_.simplify(tol) if tol else union_, codes, caps=True)
+                    if _keeps(*cand[:2], v_union):
+                        v, t, c = cand
+                        warnings.append(f"the union simplified at {tol * 1000:g} mm, not {SIMPLIFY_TOL * 1000:g}: "
+                                        "that would change its volume")
+                        break
+                else:
+                    v, t, c = first
             v, moved = separate_touching(v, t)
             if moved:
                 warnings.append(f"{moved} vertices where merged parts only touch were moved "
@@ -306,6 +317,31 @@ def separate_touching(v: np.ndarray, t: np.ndarray, dist: float | None = None) -
         if L > 0:
             v[i] = v[i] + d / L * dist
     return v, len(idx)
+
+
+def _cleaned(u, codes: np.ndarray, caps: bool = False) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """A manifold3d union as arrays ``(vertices (n, 3), triangles (t, 3), class codes (t,))``, its
+    short edges collapsed where that keeps it closed (and, with ``caps``, zero-area caps flipped)."""
+    out = u.to_mesh64()
+    v = np.asarray(out.vert_properties)[:, :3].astype(np.float64)
+    t = np.asarray(out.tri_verts).astype(np.intp)
+    c = codes[np.asarray(out.face_id).astype(np.intp)]
+    v2, t2, c2 = collapse_short_edges(v, t, c, CROSS_WELD_TOL)
+    if _closed_by_position(*separate_touching(v2, t2)[:1], t2):
+        v, t, c = v2, t2, c2
+    if caps and len(t):
+        t, c = flip_caps(v, t, c)
+    return v, t, c
+
+
+def _keeps(v: np.ndarray, t: np.ndarray, volume: float) -> bool:
+    """The cleaned union keeps ``volume`` (m3) within :data:`VOLUME_RTOL`, has no zero-area triangle and
+    is closed once read back as float32 positions."""
+    if not len(t):
+        return False
+    if abs(abs(signed_volume(v, t)) - volume) > VOLUME_RTOL * max(volume, 1e-9):
+        return False
+    return bool((triangle_areas(v, t) > 1e-10).all()) and _closed_by_position(*separate_touching(v, t)[:1], t)
 
 
 def _closed_by_position(v: np.ndarray, t: np.ndarray) -> bool:
