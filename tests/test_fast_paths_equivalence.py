@@ -109,3 +109,48 @@ def test_triangulate_keeps_dropped_vertices():
     tri = polygons.triangulate(ring, [len(ring)])
     assert set(tri.ravel()) == set(range(len(ring)))
     assert len(tri) == 3
+
+
+def _ref_eplus_collinear(points):
+    """exporters.energyplus.enclosure.eplus_collinear before it was batched (np.roll per ring)."""
+    from exporters.energyplus.enclosure import PLANE_DET, PROJECTED_EPS, TURN_THRESHOLD
+    q = np.asarray(points, dtype=np.float64)
+    k = len(q)
+    if k < 3:
+        return []
+    for i, j in ((0, 1), (0, 2), (1, 2)):
+        A, B = q[:, i], q[:, j]
+        if abs(float(np.sum(A * np.roll(B, -1) - np.roll(A, -1) * B))) > PLANE_DET:
+            break
+    p0, p2 = np.roll(np.arange(k), 1), np.roll(np.arange(k), -1)
+    ua, ub = A - A[p0], B - B[p0]
+    va, vb = A[p2] - A, B[p2] - B
+    turn = np.arctan2(ua * vb - ub * va, ua * va + ub * vb)
+    seen = (np.hypot(ua, ub) > PROJECTED_EPS) & (np.hypot(va, vb) > PROJECTED_EPS)
+    return [int(i) for i in np.nonzero(seen & (np.abs(np.sin(turn)) < TURN_THRESHOLD))[0]]
+
+
+def test_batched_collinear_test_is_the_single_one():
+    """Batched over many rings, EnergyPlus's collinear test finds what it finds on each ring
+    alone: rings with collinear runs, spikes, vertical walls (XY projection degenerate) and
+    projected areas at the plane threshold."""
+    from exporters.energyplus import enclosure as ee
+    rng = np.random.default_rng(3)
+    rings = []
+    for i in range(300):
+        k = int(rng.integers(0, 40 if i % 9 == 0 else 9))
+        p = rng.normal(size=(k, 3)) * 5
+        if i % 3 == 0 and k >= 3:  # a collinear point between two others
+            p[1] = 0.5 * (p[0] + p[2])
+        if i % 4 == 0:
+            p[:, 0] = 1.0  # vertical: XY area 0, XZ area 0, YZ plane
+        if i % 5 == 0 and k >= 4:
+            p[3] = p[1]  # spike
+        if i % 7 == 0:
+            p *= 1e-2 * rng.random()  # around PLANE_DET
+        rings.append(p)
+    rings += [r for r in _rings(rng, 60)]
+    got = ee._collinear_many(rings)
+    assert got == [_ref_eplus_collinear(r) for r in rings]
+    assert any(got) and not all(got)
+    assert [ee.eplus_collinear(r) for r in rings] == got
