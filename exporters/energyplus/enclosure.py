@@ -71,7 +71,26 @@ class BadEdge:
 def eplus_collinear(points: np.ndarray) -> list[int]:
     """Indices of the vertices EnergyPlus's ``CheckConvexity`` finds collinear with their
     neighbours (in its projection plane, see :data:`PLANE_DET`, :data:`TURN_THRESHOLD`)."""
-    return _collinear_many([np.asarray(points, dtype=np.float64)])[0]
+    q = np.asarray(points, dtype=np.float64)
+    k = len(q)
+    if k < 3:
+        return []
+    # the rows shifted once each way, built once (np.roll per axis and plane cost 3/4 of this
+    # function); the values and their arithmetic are the same as with np.roll
+    qn = np.concatenate((q[1:], q[:1]))     # q[i + 1]
+    qp = np.concatenate((q[-1:], q[:-1]))   # q[i - 1]
+    for i, j in ((0, 1), (0, 2), (1, 2)):
+        A, B = q[:, i], q[:, j]
+        if abs(float(np.sum(A * qn[:, j] - qn[:, i] * B))) > PLANE_DET:
+            break
+    ua, ub = A - qp[:, i], B - qp[:, j]
+    va, vb = qn[:, i] - A, qn[:, j] - B
+    turn = np.arctan2(ua * vb - ub * va, ua * va + ub * vb)
+    # the sine of the turn decides: a spike (the outline doubling back, turn = pi) counts too;
+    # a vertex next to an edge that projects to a point (a vertical edge seen from above) has
+    # no turn and is kept
+    seen = (np.hypot(ua, ub) > PROJECTED_EPS) & (np.hypot(va, vb) > PROJECTED_EPS)
+    return np.flatnonzero(seen & (np.abs(np.sin(turn)) < TURN_THRESHOLD)).tolist()
 
 
 def _collinear_many(rings: Sequence[np.ndarray]) -> list[list[int]]:
@@ -119,10 +138,7 @@ def _collinear_many(rings: Sequence[np.ndarray]) -> list[list[int]]:
     ua, ub = A - Qp[rows, ia], B - Qp[rows, ib]
     va, vb = Qn[rows, ia] - A, Qn[rows, ib] - B
     turn = np.arctan2(ua * vb - ub * va, ua * va + ub * vb)
-    # the sine of the turn decides: a spike (the outline doubling back, turn = pi) counts too;
-    # a vertex next to an edge that projects to a point (a vertical edge seen from above) has
-    # no turn and is kept
-    seen = (np.hypot(ua, ub) > PROJECTED_EPS) & (np.hypot(va, vb) > PROJECTED_EPS)
+    seen = (np.hypot(ua, ub) > PROJECTED_EPS) & (np.hypot(va, vb) > PROJECTED_EPS)  # as above
     hit = np.flatnonzero(seen & (np.abs(np.sin(turn)) < TURN_THRESHOLD))
     if len(hit):
         ring_of = np.repeat(np.arange(len(qs)), lens)
@@ -162,6 +178,12 @@ def eplus_degenerate(points: np.ndarray) -> bool:
     collinear vertices are removed: a severe error)?"""
     keep = _drop_coincident(points, 1)
     return len(keep) - len(eplus_collinear(keep)) < 3
+
+
+def eplus_degenerate_many(surfaces: Sequence[np.ndarray]) -> list[bool]:
+    """:func:`eplus_degenerate` of each surface (the collinear test batched over all of them)."""
+    keeps = [_drop_coincident(s, 1) for s in surfaces]
+    return [len(q) - len(c) < 3 for q, c in zip(keeps, _collinear_many(keeps))]
 
 
 def eplus_vertices(points: np.ndarray) -> np.ndarray:
