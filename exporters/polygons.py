@@ -109,10 +109,10 @@ def triangulate(points: np.ndarray, ring_ends: Sequence[int], normal: np.ndarray
     if normal is None:
         normal = newell_normal(p[: ring_ends[0]])
     n = unit(normal)
-    if not np.any(n):
+    if not n.any():
         return np.zeros((0, 3), dtype=np.intp)
     u, v = plane_basis(n)
-    c = p.mean(axis=0)
+    c = np.add.reduce(p, axis=0) / len(p)  # p.mean(axis=0), the same bits
     xy = np.column_stack([(p - c) @ u, (p - c) @ v])
     tri = earcut_rings(xy, ring_ends)
     if len(tri) == 0:

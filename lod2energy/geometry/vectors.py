@@ -37,15 +37,18 @@ def newell_normal(points: np.ndarray, centred: bool = True) -> np.ndarray:
     if len(p) < 3:
         return np.zeros(3)
     if not centred:
-        d = p - roll_next(p)
-        s = p + roll_next(p)
-        return np.array([
-            np.add.reduce(d[:, 1] * s[:, 2]),
-            np.add.reduce(d[:, 2] * s[:, 0]),
-            np.add.reduce(d[:, 0] * s[:, 1]),
-        ])
+        q = roll_next(p)
+        # the three products as the rows of one C-contiguous (3, k) array: each row is summed
+        # on its own, as np.sum of that product alone sums it (same bits, one call)
+        t = np.ascontiguousarray(((p - q)[:, _NEWELL_A] * (p + q)[:, _NEWELL_B]).T)
+        return np.add.reduce(t, axis=1)
     p = p - np.add.reduce(p, axis=0) / len(p)
     return np.add.reduce(_cross(p, roll_next(p)), axis=0)
+
+
+#: Newell's sums: component c is sum((p - q)[:, _NEWELL_A[c]] * (p + q)[:, _NEWELL_B[c]]).
+_NEWELL_A = np.array([1, 2, 0])
+_NEWELL_B = np.array([2, 0, 1])
 
 
 def roll_next(a: np.ndarray) -> np.ndarray:
