@@ -100,16 +100,26 @@ def _schema_files(version: str) -> tuple[dict, dict | None, dict]:
 _COMPILE = {"use_formats": False, "use_default": False}
 
 
-@lru_cache(maxsize=None)
 def _compiled(version: str) -> tuple[Any, Any]:
     """Compiled (``fastjsonschema``) validators of the document and of a CityJSONFeature for
-    ``version``, built once per process; ``$ref`` s to the official files resolve to the
-    bundled copies, never to the network. (None, None) when fastjsonschema is missing."""
+    ``version`` (:func:`_compiled_one`). (None, None) when fastjsonschema is missing."""
+    return _compiled_one(version, False), _compiled_one(version, True)
+
+
+@lru_cache(maxsize=None)
+def _compiled_one(version: str, feature: bool) -> Any:
+    """The compiled (``fastjsonschema``) validator of the document (``feature=False``) or of a
+    CityJSONFeature for ``version``, built once per process and only when first asked for (a
+    file or a CityJSONSeq needs one of the two: compiling costs about 1 s CPU each); ``$ref``
+    s to the official files resolve to the bundled copies, never to the network. None when
+    fastjsonschema is missing or the version has no feature schema."""
     try:
         import fastjsonschema
     except ImportError:  # the interpreted validators still decide, only slower
-        return None, None
+        return None
     main, feat, files = _schema_files(version)
+    if feature and feat is None:
+        return None
 
     def local(uri: str) -> dict:
         name = uri.split("#", 1)[0].rsplit("/", 1)[-1]
@@ -118,8 +128,7 @@ def _compiled(version: str) -> tuple[Any, Any]:
         return files[name]
 
     handlers = {"https": local, "http": local}
-    return (fastjsonschema.compile(main, handlers=handlers, **_COMPILE),
-            fastjsonschema.compile(feat, handlers=handlers, **_COMPILE) if feat else None)
+    return fastjsonschema.compile(feat if feature else main, handlers=handlers, **_COMPILE)
 
 
 #: Compiling a schema version costs about 2 s once per process, as much as interpreting the
@@ -141,7 +150,7 @@ def _schema_valid_fast(version: str, doc: Any, feature: bool = False) -> bool:
     import fastjsonschema
 
     _COMPILED_VERSIONS.add(version)
-    v = _compiled(version)[1 if feature else 0]
+    v = _compiled_one(version, bool(feature))
     if v is None:
         return False
     try:

@@ -20,6 +20,7 @@ fields, ``;`` ends an object, surrounding blanks are dropped.
 """
 from __future__ import annotations
 
+import functools
 import math
 import re
 from dataclasses import dataclass
@@ -95,9 +96,10 @@ class ClassDef:
         k0 = self.first_extensible
         return self.fields[k0 + (i - k0) % self.extensible]
 
-    @property
+    @functools.cached_property
     def field_index(self) -> dict[str, int]:
-        """``{upper-case field name: index}``."""
+        """``{upper-case field name: index}``, built on first use and kept (the IDF self-check
+        looks fields up tens of thousands of times a file); callers must not modify it."""
         return {f.name.upper(): i for i, f in enumerate(self.fields)}
 
 

@@ -10,7 +10,7 @@ from ..polygons import polygon_area3d
 from ..shellcheck import check_closed_outward
 from ..zones import MIN_PIECE_AREA
 from .conform import PIECE_PLANAR
-from .enclosure import enclosure_defects, eplus_degenerate
+from .enclosure import enclosure_defects, eplus_degenerate_many
 from .pieces import _planar_dev
 from . import run as eplus_run
 
@@ -121,19 +121,29 @@ def self_check(path: str | Path, run: bool = False, weather: str | Path | None =
         problems.append("no Zone")
     names: dict[str, int] = {}
     by_zone: dict[str, list[np.ndarray]] = {}
-    for s in objs.get("BUILDINGSURFACE:DETAILED", []):
+    surfaces = objs.get("BUILDINGSURFACE:DETAILED", [])
+    vertices: list[np.ndarray | None] = []
+    for s in surfaces:
+        try:
+            vertices.append(s.vertices())
+        except (KeyError, TypeError, ValueError):
+            vertices.append(None)
+    # EnergyPlus's degenerate test on every readable surface at once (the same verdicts as one
+    # surface at a time)
+    readable = [p for p in vertices if p is not None]
+    degenerate = iter(eplus_degenerate_many(readable))
+    for s, pts in zip(surfaces, vertices):
         name, zone, cons = s.get("Name"), s.get("Zone Name"), s.get("Construction Name")
         names[name.upper()] = names.get(name.upper(), 0) + 1
         if zone.upper() not in zones:
             problems.append(f"surface {name}: unknown zone {zone}")
         if cons.upper() not in constr:
             problems.append(f"surface {name}: unknown construction {cons}")
-        try:
-            pts = s.vertices()
-        except (KeyError, TypeError, ValueError):
+        if pts is None:
             problems.append(f"surface {name}: unreadable vertices")
             continue
-        if len(pts) < 3 or polygon_area3d(pts) <= MIN_PIECE_AREA or eplus_degenerate(pts):
+        degen = next(degenerate)
+        if len(pts) < 3 or polygon_area3d(pts) <= MIN_PIECE_AREA or degen:
             problems.append(f"surface {name}: degenerate for EnergyPlus ({len(pts)} vertices)")
         elif _planar_dev(pts) > 2 * PIECE_PLANAR:
             problems.append(f"surface {name}: non-planar for EnergyPlus ({_planar_dev(pts):.4f} m out of plane)")

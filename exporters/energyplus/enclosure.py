@@ -25,6 +25,7 @@ The steps follow EnergyPlus 9-25:
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from typing import Sequence
 
@@ -75,36 +76,100 @@ def eplus_collinear(points: np.ndarray) -> list[int]:
     k = len(q)
     if k < 3:
         return []
+    # the rows shifted once each way, built once (np.roll per axis and plane cost 3/4 of this
+    # function); the values and their arithmetic are the same as with np.roll
+    qn = np.concatenate((q[1:], q[:1]))     # q[i + 1]
+    qp = np.concatenate((q[-1:], q[:-1]))   # q[i - 1]
     for i, j in ((0, 1), (0, 2), (1, 2)):
         A, B = q[:, i], q[:, j]
-        if abs(float(np.sum(A * np.roll(B, -1) - np.roll(A, -1) * B))) > PLANE_DET:
+        if abs(float(np.sum(A * qn[:, j] - qn[:, i] * B))) > PLANE_DET:
             break
-    p0, p2 = np.roll(np.arange(k), 1), np.roll(np.arange(k), -1)
-    ua, ub = A - A[p0], B - B[p0]
-    va, vb = A[p2] - A, B[p2] - B
+    ua, ub = A - qp[:, i], B - qp[:, j]
+    va, vb = qn[:, i] - A, qn[:, j] - B
     turn = np.arctan2(ua * vb - ub * va, ua * va + ub * vb)
     # the sine of the turn decides: a spike (the outline doubling back, turn = pi) counts too;
     # a vertex next to an edge that projects to a point (a vertical edge seen from above) has
     # no turn and is kept
     seen = (np.hypot(ua, ub) > PROJECTED_EPS) & (np.hypot(va, vb) > PROJECTED_EPS)
-    return [int(i) for i in np.nonzero(seen & (np.abs(np.sin(turn)) < TURN_THRESHOLD))[0]]
+    return np.flatnonzero(seen & (np.abs(np.sin(turn)) < TURN_THRESHOLD)).tolist()
+
+
+def _collinear_many(rings: Sequence[np.ndarray]) -> list[list[int]]:
+    """:func:`eplus_collinear` of many rings at once, each ``(k_i, 3)`` float64.
+
+    The element-wise arithmetic runs once over the concatenated rings; each ring's projected
+    doubled area (which picks its coordinate plane) is still summed on its own slice, so
+    every value and every decision is the one the ring alone gives, bit for bit.
+
+    Returns
+    -------
+    list of list of int
+        Per ring, the indices of its collinear vertices (empty for rings of < 3 vertices).
+    """
+    out: list[list[int]] = [[] for _ in rings]
+    idx = [r for r, q in enumerate(rings) if len(q) >= 3]
+    if not idx:
+        return out
+    qs = [rings[r] for r in idx]
+    lens = [len(q) for q in qs]
+    Q = np.concatenate(qs) if len(qs) > 1 else qs[0]
+    # each ring's rows shifted once each way (np.roll per ring), as one gather
+    starts = np.cumsum([0] + lens[:-1])
+    pos = np.arange(len(Q)) - np.repeat(starts, lens)
+    k = np.repeat(lens, lens)
+    first = np.repeat(starts, lens)
+    nxt = first + (pos + 1) % k
+    prv = first + (pos - 1) % k
+    Qn, Qp = Q[nxt], Q[prv]
+    # doubled signed area in the XY, XZ and YZ planes, element-wise once; summed per ring on
+    # its own contiguous slice (same summation as np.sum of the ring alone)
+    terms = [Q[:, i] * Qn[:, j] - Qn[:, i] * Q[:, j] for i, j in ((0, 1), (0, 2), (1, 2))]
+    ia = np.empty(len(Q), dtype=np.intp)
+    ib = np.empty(len(Q), dtype=np.intp)
+    a = 0
+    for k_r in lens:
+        b = a + k_r
+        for (i, j), t in zip(((0, 1), (0, 2), (1, 2)), terms):
+            if abs(float(np.sum(t[a:b]))) > PLANE_DET:
+                break
+        ia[a:b], ib[a:b] = i, j
+        a = b
+    rows = np.arange(len(Q))
+    A, B = Q[rows, ia], Q[rows, ib]
+    ua, ub = A - Qp[rows, ia], B - Qp[rows, ib]
+    va, vb = Qn[rows, ia] - A, Qn[rows, ib] - B
+    turn = np.arctan2(ua * vb - ub * va, ua * va + ub * vb)
+    seen = (np.hypot(ua, ub) > PROJECTED_EPS) & (np.hypot(va, vb) > PROJECTED_EPS)  # as above
+    hit = np.flatnonzero(seen & (np.abs(np.sin(turn)) < TURN_THRESHOLD))
+    if len(hit):
+        ring_of = np.repeat(np.arange(len(qs)), lens)
+        for h, r in zip((hit - first[hit]).tolist(), ring_of[hit].tolist()):
+            out[idx[r]].append(int(h))
+    return out
 
 
 def _drop_coincident(points: np.ndarray, floor: int) -> np.ndarray:
     """``GetVertices``' coincident test: a vertex closer than :data:`COINCIDENT` to the
     previous kept one is dropped, then the last ones while closer than that to the first and
     more than ``floor`` remain. (k, 3) -> (k', 3), a new array."""
+    # distances as np.linalg.norm computes them (sqrt of the row sums of squares, sqrt of
+    # the dot product for one vector), without its per-call overhead
     P = np.asarray(points, dtype=np.float64).reshape(-1, 3)
-    if len(P) > 1 and np.all(np.linalg.norm(P[1:] - P[:-1], axis=1) >= COINCIDENT):
+    d = P[1:] - P[:-1]
+    if len(P) > 1 and np.all(np.sqrt(np.add.reduce(d * d, axis=1)) >= COINCIDENT):
         keep = P.copy()      # no vertex dropped: each one's previous kept vertex is its predecessor
     else:                    # sequential: whether a vertex stays depends on the one kept before it
         rows = [P[0]] if len(P) else []
         for p in P[1:]:
-            if np.linalg.norm(p - rows[-1]) >= COINCIDENT:
+            e = p - rows[-1]
+            if math.sqrt(float(e.dot(e))) >= COINCIDENT:
                 rows.append(p)
         keep = np.asarray(rows, dtype=np.float64).reshape(-1, 3)
     n = len(keep)
-    while n > floor and np.linalg.norm(keep[0] - keep[n - 1]) < COINCIDENT:
+    while n > floor:
+        e = keep[0] - keep[n - 1]
+        if not math.sqrt(float(e.dot(e))) < COINCIDENT:
+            break
         n -= 1
     return keep[:n]
 
@@ -116,6 +181,12 @@ def eplus_degenerate(points: np.ndarray) -> bool:
     return len(keep) - len(eplus_collinear(keep)) < 3
 
 
+def eplus_degenerate_many(surfaces: Sequence[np.ndarray]) -> list[bool]:
+    """:func:`eplus_degenerate` of each surface (the collinear test batched over all of them)."""
+    keeps = [_drop_coincident(s, 1) for s in surfaces]
+    return [len(q) - len(c) < 3 for q, c in zip(keeps, _collinear_many(keeps))]
+
+
 def eplus_vertices(points: np.ndarray) -> np.ndarray:
     """A surface's vertices as EnergyPlus keeps them, (k, 3) -> (k', 3).
 
@@ -123,11 +194,18 @@ def eplus_vertices(points: np.ndarray) -> np.ndarray:
     (``GetVertices``), then the vertices :func:`eplus_collinear` finds, while at least three
     remain (``CheckConvexity``).
     """
-    q = _drop_coincident(points, 3)
-    drop = eplus_collinear(q)
-    if drop and len(q) - len(drop) >= 3:
-        q = np.delete(q, drop, axis=0)
-    return q
+    return eplus_vertices_many([points])[0]
+
+
+def eplus_vertices_many(surfaces: Sequence[np.ndarray]) -> list[np.ndarray]:
+    """:func:`eplus_vertices` of each surface (the collinear test batched over all of them)."""
+    qs = [_drop_coincident(s, 3) for s in surfaces]
+    out = []
+    for q, drop in zip(qs, _collinear_many(qs)):
+        if drop and len(q) - len(drop) >= 3:
+            q = np.delete(q, drop, axis=0)
+        out.append(q)
+    return out
 
 
 def _near_pairs(points: np.ndarray, tol: float) -> np.ndarray:
@@ -326,7 +404,7 @@ def enclosure_defects(surfaces: Sequence[np.ndarray], tol: float = POINT_TOL) ->
         both counts (what EnergyPlus lists in its warning) or, when none fails both, those
         that fail the second count.
     """
-    faces = [eplus_vertices(np.asarray(s, dtype=np.float64)) for s in surfaces]
+    faces = eplus_vertices_many([np.asarray(s, dtype=np.float64) for s in surfaces])
     first = _edges_not_two(faces, tol)
     if not first:
         return []

@@ -10,7 +10,7 @@ from typing import Sequence
 
 import numpy as np
 
-__all__ = ["cross_rows", "unit_rows", "newell_normal", "polygon_normal", "newell_normals",
+__all__ = ["roll_next", "cross_rows", "unit_rows", "newell_normal", "polygon_normal", "newell_normals",
            "rings_normal", "plane_basis", "plane_bases", "project_2d", "cross2"]
 
 
@@ -37,14 +37,36 @@ def newell_normal(points: np.ndarray, centred: bool = True) -> np.ndarray:
     if len(p) < 3:
         return np.zeros(3)
     if not centred:
-        q = np.roll(p, -1, axis=0)
-        return np.array([
-            np.sum((p[:, 1] - q[:, 1]) * (p[:, 2] + q[:, 2])),
-            np.sum((p[:, 2] - q[:, 2]) * (p[:, 0] + q[:, 0])),
-            np.sum((p[:, 0] - q[:, 0]) * (p[:, 1] + q[:, 1])),
-        ])
-    p = p - p.mean(axis=0)
-    return _cross(p, np.roll(p, -1, axis=0)).sum(axis=0)
+        q = roll_next(p)
+        # the three products as the rows of one C-contiguous (3, k) array: each row is summed
+        # on its own, as np.sum of that product alone sums it (same bits, one call)
+        t = np.ascontiguousarray(((p - q)[:, _NEWELL_A] * (p + q)[:, _NEWELL_B]).T)
+        return np.add.reduce(t, axis=1)
+    p = p - np.add.reduce(p, axis=0) / len(p)
+    return np.add.reduce(_cross(p, roll_next(p)), axis=0)
+
+
+#: Newell's sums: component c is sum((p - q)[:, _NEWELL_A[c]] * (p + q)[:, _NEWELL_B[c]]).
+_NEWELL_A = np.array([1, 2, 0])
+_NEWELL_B = np.array([2, 0, 1])
+
+
+def roll_next(a: np.ndarray) -> np.ndarray:
+    """The rows of ``a`` shifted by one: row ``i`` holds ``a[i + 1]``, the last row ``a[0]``.
+
+    The same values as ``np.roll(a, -1, axis=0)`` at a fraction of its call overhead (the
+    ring walks call it hundreds of thousands of times per file).
+
+    Parameters
+    ----------
+    a : (k, ...) array
+
+    Returns
+    -------
+    (k, ...) array
+        A new array (``a`` is not modified).
+    """
+    return np.concatenate((a[1:], a[:1]))
 
 
 def polygon_normal(points: np.ndarray) -> np.ndarray:

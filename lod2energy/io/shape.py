@@ -211,6 +211,27 @@ def _kind(x: Any) -> str:
     return type(x).__name__
 
 
+def _plain_numbers(v: list) -> bool:
+    """Is every item of ``v`` a plain ``int`` within :data:`MAX_NUMBER` or a finite ``float``?
+
+    One pass without the walk's stack (the leaves of boundaries and semantic values are
+    such lists). False on anything else - bools, subclasses, None, containers, an integer
+    out of range, inf or NaN - and the caller walks the list item by item as before, so the
+    verdict and its message are the same either way.
+    """
+    for x in v:
+        t = type(x)
+        if t is int:
+            if x > MAX_NUMBER or x < -MAX_NUMBER:
+                return False
+        elif t is float:
+            if x - x != 0.0:  # inf - inf and nan - nan are NaN
+                return False
+        else:
+            return False
+    return True
+
+
 def value_problem(value: Any, max_depth: int = MAX_DEPTH) -> str | None:
     """What is wrong in a JSON value as a whole (depth, non-finite numbers, huge strings), or None.
 
@@ -222,7 +243,8 @@ def value_problem(value: Any, max_depth: int = MAX_DEPTH) -> str | None:
         if isinstance(v, list):
             if d >= max_depth:
                 return f"nested more than {max_depth} levels deep{where and ' in ' + where}"
-            stack.extend((x, d + 1, where) for x in v)
+            if not _plain_numbers(v):  # a list of sound numbers has nothing to report
+                stack.extend((x, d + 1, where) for x in v)
         elif isinstance(v, Mapping):
             if d >= max_depth:
                 return f"nested more than {max_depth} levels deep{where and ' in ' + where}"
