@@ -67,8 +67,11 @@ def _prepared(tile: Path, n: int):
 
 
 def _row(b) -> tuple:
+    """(country, building type, period) of the U-value row; a non-residential building's use
+    stands for the building type (no residential reference applies to it)."""
     t = b.provenance.get("thermal", {})
-    return (str(t.get("country", "?")), str(t.get("typology", "?")), str(t.get("construction_period", "?")))
+    btype = str(t.get("typology", "?")) if not t.get("use") else f"{t['use']} (non-residential)"
+    return (str(t.get("country", "?")), btype, str(t.get("construction_period", "?")))
 
 
 def _year(b) -> int:

@@ -381,8 +381,6 @@ def assign_u_values(b: Building, options: ThermalOptions = ThermalOptions()) -> 
     if use.type != "residential":
         thermal.update(use=use.type, use_source=use.source,
                        constructions=_constructions_note(use.type, typ, used))
-        if any(r in nonres for r in used):
-            thermal["typology"] = NONRES_TYPE
     return out.with_provenance(thermal=frozen_mapping(thermal))
 
 
