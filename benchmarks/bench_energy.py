@@ -144,6 +144,23 @@ def table(rows: list[dict], ref: list[dict], band: float) -> str:
     return "\n".join(lines)
 
 
+def building_table(rows: list[dict], ref: list[dict]) -> str:
+    """Markdown table of every building: its year, use, zones, floor area, heating need and reference."""
+    lines = ["| tile | building | year | use | zones | floor area (m2) | heating need (kWh/m2a) | TABULA type "
+             "| q_h_nd (kWh/m2a) | ratio |", "|---|---|---:|---|---:|---:|---:|---|---:|---:|"]
+    for r in sorted(rows, key=lambda r: (tuple(r["row"]), r.get("year") or 0, r["id"])):
+        key = tuple(r["row"])
+        rv = reference_for(ref, key[0], key[1], int(r.get("year") or 0))
+        h, area = r.get("heating_kwh_m2"), r.get("area")
+        hs = "" if h is None else f"{h:.0f}"
+        code, q = (rv.get("tabula_code") or "reference", f"{rv['heating_kwh_m2']:.1f}") if rv else ("-", "")
+        ratio = f"{h / rv['heating_kwh_m2']:.2f}" if rv and h is not None else ""
+        area_s = "" if area is None else f"{area:.0f}"
+        lines.append(f"| {r['tile']} | `{r['id']}` | {r.get('year', '')} | {r.get('use') or ''} | "
+                     f"{r.get('zones') or ''} | {area_s} | {hs} | {code} | {q} | {ratio} |")
+    return "\n".join(lines)
+
+
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("tiles", nargs="*")
@@ -161,7 +178,8 @@ def main(argv=None) -> int:
             rows = measure([Path(t) for t in a.tiles] or default_tiles(), a.n, Path(tmp))
         if a.rows:
             Path(a.rows).write_text("".join(json.dumps(r) + "\n" for r in rows))
-    text = table(rows, load_reference(a.reference), a.band)
+    ref = load_reference(a.reference)
+    text = table(rows, ref, a.band) + "\n\nPer building:\n\n" + building_table(rows, ref)
     print(text)
     if a.out:
         from lod2energy.safe_write import write_text
