@@ -114,12 +114,16 @@ def reference_for(ref: list[dict], country: str, building_type: str, year: int) 
                  and r["period_start"] <= year <= r["period_end"]), None)
 
 
-def table(rows: list[dict], ref: list[dict], band: float) -> str:
-    """Markdown table: per typology row (and TABULA type) the median heating need and the reference."""
+def table(rows: list[dict], ref: list[dict], band: float, min_area: float = 0.0) -> str:
+    """Markdown table: per typology row (and TABULA type) the median heating need and the reference
+    (buildings under ``min_area`` m2 of conditioned floor area left out and counted)."""
     by: dict = defaultdict(list)
     refs: dict = {}
+    small = 0
     for r in rows:
-        if r["ok"] and r["heating_kwh_m2"] is not None:
+        if r["ok"] and r["heating_kwh_m2"] is not None and (r.get("area") or 0.0) < min_area:
+            small += 1
+        elif r["ok"] and r["heating_kwh_m2"] is not None:
             key = tuple(r["row"])
             rv = reference_for(ref, key[0], key[1], int(r.get("year") or 0))
             code = (rv.get("tabula_code") or "reference") if rv else ""
@@ -140,7 +144,8 @@ def table(rows: list[dict], ref: list[dict], band: float) -> str:
         lines.append(f"| {key[0]} | {key[1]} | {key[2]} | {key[3] or '-'} | {len(v)} | {med:.0f} | "
                      f"{min(v):.0f} - {max(v):.0f} | {refcol} | {ratio} | {inside} |")
     failed = sum(1 for r in rows if not r["ok"])
-    lines.append(f"\n{len(rows)} buildings, {failed} not simulated cleanly.")
+    lines.append(f"\n{len(rows)} buildings, {failed} not simulated cleanly"
+                 + (f", {small} under {min_area:g} m2 of floor area left out." if min_area else "."))
     return "\n".join(lines)
 
 
@@ -167,6 +172,8 @@ def main(argv=None) -> int:
     ap.add_argument("--n", type=int, default=4, help="buildings per tile")
     ap.add_argument("--reference", default=None, help="reference CSV (default: the shipped TABULA table)")
     ap.add_argument("--band", type=float, default=0.3, help="relative band around the reference (0.3)")
+    ap.add_argument("--min-area", type=float, default=0.0,
+                    help="also give the table without buildings under this floor area (m2)")
     ap.add_argument("--rows", default=None, help="write the per-building figures here (JSON lines)")
     ap.add_argument("--from-rows", default=None, help="build the table from these figures only")
     ap.add_argument("--out", default=None)
@@ -179,7 +186,11 @@ def main(argv=None) -> int:
         if a.rows:
             Path(a.rows).write_text("".join(json.dumps(r) + "\n" for r in rows))
     ref = load_reference(a.reference)
-    text = table(rows, ref, a.band) + "\n\nPer building:\n\n" + building_table(rows, ref)
+    text = table(rows, ref, a.band)
+    if a.min_area:
+        text += f"\n\nWithout buildings under {a.min_area:g} m2 of conditioned floor area:\n\n" + table(
+            rows, ref, a.band, a.min_area)
+    text += "\n\nPer building:\n\n" + building_table(rows, ref)
     print(text)
     if a.out:
         from lod2energy.safe_write import write_text
