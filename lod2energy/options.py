@@ -170,7 +170,7 @@ def prepare_options(a, tol: Tolerances = DEFAULT, crs: str | None = None) -> Pre
     """:class:`PrepareOptions` from a namespace of CLI options (absent ones: defaults)."""
     from lod2energy.thermal import ThermalOptions
     kw = {"crs": crs, "lod": getattr(a, "lod", None)}
-    for name in ("country", "u_table", "u_wall", "u_roof", "u_ground", "u_window", "wwr"):
+    for name in ("country", "u_table", "u_wall", "u_roof", "u_ground", "u_window", "wwr", "use"):
         v = getattr(a, name, None)
         if v is not None:
             kw[name] = v

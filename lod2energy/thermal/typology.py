@@ -13,8 +13,9 @@ Fallbacks (documented, in order):
 - **attached**: a shared-wall area attribute (``b3_opp_scheidingsmuur`` > 1 m2).
 - **building type**: storeys <= 3 and footprint <= 250 m2 -> single-family, or terraced when
   attached; storeys <= 5 -> multi-family; otherwise apartment block. A function / usage
-  attribute is recorded but residential typologies are used for every function (the tables
-  are residential).
+  attribute is recorded here; the U-value stage (:mod:`lod2energy.thermal.uvalues`) gives
+  German non-residential buildings the IWU office constructions instead of the residential
+  row of this type.
 - **country**: the caller's choice, else from the CRS (:func:`country_from_crs`), else
   ``"*"`` (generic European default).
 """

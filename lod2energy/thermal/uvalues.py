@@ -10,6 +10,16 @@ Table lookup (``country`` x ``building_type`` x construction period), most speci
 2. only then rows of the nearest period (same order);
 3. per-element overrides (``--u-wall`` ...) replace the looked-up values last.
 
+Non-residential buildings (use from :func:`lod2energy.thermal.use.building_use`, ``--use``
+wins) of a country with a non-residential table (today Germany: ``data/iwu_office_de.csv``,
+the IWU office constructions of TEASER's office archetype, derived by
+``scripts/derive_iwu_office.py``) whose period holds the year get that table's ``office``
+rows, between the user's table and the residential ones. For the other non-residential use
+types (retail, education, ...) the office rows are used, stated as such in
+``provenance["thermal"]["constructions"]``, as no typology of their own is shipped. Outside
+those periods and countries, non-residential buildings keep the residential tables (also
+stated there).
+
 Per surface (in ``semantic_surfaces``): RoofSurface / OuterCeilingSurface -> roof U,
 ``"exterior"``; WallSurface -> wall U (opaque part), ``"exterior"``; GroundSurface -> ground
 U, ``"ground"``; OuterFloorSurface -> ground U, ``"exterior"``; ClosureSurface -> wall U,
@@ -43,6 +53,7 @@ ELEMENTS = ("roof", "wall", "ground", "window")
 RELATED_TYPE = {"terraced": "single-family", "single-family": "terraced",
                 "apartment-block": "multi-family", "multi-family": "apartment-block"}
 U_RANGE = (0.05, 6.0)  # W/(m2 K): plausible U-values of envelope elements
+NONRES_TYPE = "office"  # the building_type of the non-residential table rows
 
 
 @dataclass(frozen=True)
@@ -81,6 +92,8 @@ class ThermalOptions:
         Window-to-wall ratio for every building (default: per building type).
     lod : str, optional
         LoD of the energy geometries.
+    use : str, optional
+        Use type for every building (the CLI's ``--use``); default: from the attributes.
     """
 
     country: str | None = None
@@ -93,6 +106,7 @@ class ThermalOptions:
     u_wall: float | None = None
     u_ground: float | None = None
     u_window: float | None = None
+    use: str | None = None
 
     @property
     def all_overrides(self) -> dict[str, float]:
@@ -171,6 +185,19 @@ def builtin_rows() -> tuple[URow, ...]:
     for name in ("tabula_de.csv", "u_values.csv"):
         rows += parse_table(d.joinpath(name).read_text(encoding="utf-8"), name)
     return tuple(rows)
+
+
+@lru_cache(maxsize=None)
+def builtin_nonres_rows() -> tuple[URow, ...]:
+    """The shipped non-residential table (``data/iwu_office_de.csv``)."""
+    d = resources.files("lod2energy.thermal") / "data"
+    return tuple(parse_table(d.joinpath("iwu_office_de.csv").read_text(encoding="utf-8"), "iwu_office_de.csv"))
+
+
+def nonresidential_rows(country: str, year: int) -> tuple[URow, ...]:
+    """Rows of the non-residential table for ``country`` whose period holds ``year`` (may be empty)."""
+    return tuple(r for r in builtin_nonres_rows()
+                 if r.country == country and r.period_start <= year <= r.period_end)
 
 
 @lru_cache(maxsize=None)
@@ -284,6 +311,7 @@ def assign_u_values(b: Building, options: ThermalOptions = ThermalOptions()) -> 
         A_env (m2), volume (m3), UA (W/K) and the attributes used.
     """
     from lod2energy.thermal.typology import country_from_crs
+    from lod2energy.thermal.use import building_use
 
     lod = options.lod if options.lod is not None else b.default_lod()
     energy = envelope_objects(b, lod)
@@ -296,7 +324,12 @@ def assign_u_values(b: Building, options: ThermalOptions = ThermalOptions()) -> 
     country = country.upper() if country != "*" else "*"
     typ = classify(b, country, ground_area or None, z_extent)
     rows = tuple(load_table(options.u_table)) if options.u_table else ()
-    u, used = lookup(typ.country, typ.building_type, typ.lookup_year, rows, builtin_rows())
+    use = building_use(b, options.use)
+    nonres = nonresidential_rows(typ.country, typ.lookup_year) if use.type != "residential" else ()
+    if nonres:
+        u, used = lookup(typ.country, NONRES_TYPE, typ.lookup_year, rows, nonres, builtin_rows())
+    else:
+        u, used = lookup(typ.country, typ.building_type, typ.lookup_year, rows, builtin_rows())
     for e, v in options.all_overrides.items():
         u[e] = v
     missing = [e for e in ELEMENTS if e not in u]
@@ -345,7 +378,21 @@ def assign_u_values(b: Building, options: ThermalOptions = ThermalOptions()) -> 
         "sources": dict(typ.sources), "table_sources": [r.source for r in used],
         "overrides": options.all_overrides,
     }
+    if use.type != "residential":
+        thermal.update(use=use.type, use_source=use.source,
+                       constructions=_constructions_note(use.type, typ, used))
     return out.with_provenance(thermal=frozen_mapping(thermal))
+
+
+def _constructions_note(use: str, typ: Typology, used: list[URow]) -> str:
+    """Where a non-residential building's constructions come from, in words."""
+    if any(r.source == "TEASER-IWU-OFFICE" for r in used):
+        s = "IWU office typology (TEASER office archetype, heavy construction; iwu_office_de.csv)"
+        return s if use == NONRES_TYPE else s + f", used for {use}: no {use} typology is shipped"
+    why = (f"no non-residential table for country {typ.country}" if not any(
+        r.country == typ.country for r in builtin_nonres_rows()) else
+        f"the non-residential table has no period for {typ.lookup_year}")
+    return f"residential typology of the country and period, used for {use}: {why}"
 
 
 def check_u_values(b: Building, lod: str | None = None) -> list[Defect]:
