@@ -178,20 +178,21 @@ def _write_cityjson(buildings, outdir, options, *, crs=None, context=(), model=N
                     frame=None):
     """One Energy-ADE CityJSON for all ``buildings``: a record for each, ok or left out."""
     from lod2energy.exporters import cityjson
-    buildings = list(buildings)
+    if not isinstance(buildings, Sequence):
+        buildings = list(buildings)  # a Sequence (the spool) is streamed, never all in memory
     path = os.path.join(str(outdir), f"{stem}.energy.city.json")
     res = cityjson.write(path, model, buildings, version=getattr(options, "version", None), tol=tol)
     ok = bool(getattr(res, "ok", False))
     skipped = dict(getattr(res, "skipped", ()) or ())
     files = _files(str(res.path), getattr(res, "extension_path", "") or "") if ok else ()
     out = []
-    for b in buildings:
-        if b.id in skipped and b.type != "Building":
+    for bid, btype in getattr(buildings, "heads", None) or [(b.id, b.type) for b in buildings]:
+        if bid in skipped and btype != "Building":
             continue  # terrain, vegetation ...: not part of the energy model, never a failure
-        if b.id in skipped:
-            out.append(((b.id,), ExportRecord("cityjson", False, path, (f"left out: {skipped[b.id]}",))))
+        if bid in skipped:
+            out.append(((bid,), ExportRecord("cityjson", False, path, (f"left out: {skipped[bid]}",))))
         else:
-            out.append(((b.id,), ExportRecord("cityjson", ok, str(res.path),
+            out.append(((bid,), ExportRecord("cityjson", ok, str(res.path),
                                               tuple(getattr(res, "problems", ()) or ())[:3], {}, files)))
     return WriteResults(out, tuple(getattr(res, "notes", ()) or ()))
 
