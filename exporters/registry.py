@@ -254,18 +254,17 @@ def _write_geojson(buildings, outdir, options, *, crs=None, context=(), model=No
     """``OUTDIR/<stem>.footprints.geojson``: the footprints (WGS84) with the buildings' records;
     ``options`` are the IDF options (``use``, ``lod``, ``run``: the figures of the energy model)."""
     from lod2energy.exporters import geojson
-    buildings = [b for b in buildings if b.is_building]
     path = os.path.join(str(outdir), f"{stem}{geojson.SUFFIX}")
     res = geojson.write(buildings, path, crs=crs, frame=frame, records=records, use=getattr(options, "use", None),
                         lod=getattr(options, "lod", None), run=bool(getattr(options, "run", False)), root=outdir)
     files = _files(res.path) if res.ok else ()
     out = []
     left = dict(res.left_out or {})
-    for b in buildings:
-        if b.id in left:
-            out.append(((b.id,), ExportRecord("geojson", False, res.path, (f"left out: {left[b.id]}",))))
+    for bid, _ in res.seen:  # the buildings the writer was given, in order (it streams them)
+        if bid in left:
+            out.append(((bid,), ExportRecord("geojson", False, res.path, (f"left out: {left[bid]}",))))
         else:
-            out.append(((b.id,), ExportRecord("geojson", res.ok, res.path, tuple(res.problems)[:3], {}, files)))
+            out.append(((bid,), ExportRecord("geojson", res.ok, res.path, tuple(res.problems)[:3], {}, files)))
     return WriteResults(out)
 
 

@@ -13,6 +13,8 @@ import re
 from typing import IO, Any, Iterator
 
 _WS = re.compile(r"[ \t\n\r]*")
+#: What may still follow a number cut at the chunk's end ("1." of "1.5": the parser took "1").
+_NUMBER_TAIL = re.compile(r"[0-9.eE+\-]*")
 #: Characters read at a time.
 CHUNK = 1 << 20
 
@@ -79,7 +81,7 @@ class Scanner:
                 if self._fill():  # perhaps only cut off by the chunk's end
                     continue
                 raise StreamError(e.msg, self.lines + e.lineno) from None
-            if end == len(self.buf) and self._fill():  # a number or literal cut at the chunk's end
+            if _NUMBER_TAIL.fullmatch(self.buf, end) and self._fill():  # a number cut at the chunk's end
                 continue
             self.pos = end
             return v
