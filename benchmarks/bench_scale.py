@@ -18,6 +18,8 @@ gap, then runs each command as a subprocess of this script:
   13,520 buildings costs more than an hour of CPU on current main, so above ``--all-max`` objects
   (default 3,380) ``export-all`` is replaced by ``export-stl`` (``export --stl``) and the row says so,
 - ``export-stl`` when asked for explicitly, at every size,
+- ``export-stl-cityjson`` (``export --stl --cityjson``: the one-file CityJSON writer without the
+  IDF's CPU) when asked for explicitly, at every size,
 - ``export-run`` (``export --idf --run``, EnergyPlus) on the first ``--run-sample`` buildings
   (default 10) of Den Haag, once.
 
@@ -71,6 +73,7 @@ COMMANDS = {
                "-q", "-j", "{jobs}"],
     "export-all": ["export", "{src}", "-o", "{out}", *ALL3, "-q", "-j", "{jobs}"],
     "export-stl": ["export", "{src}", "-o", "{out}", "--stl", "-q", "-j", "{jobs}"],
+    "export-stl-cityjson": ["export", "{src}", "-o", "{out}", "--stl", "--cityjson", "-q", "-j", "{jobs}"],
     "export-run": ["export", "{src}", "-o", "{out}", "--idf", "--run", "-q", "-j", "{jobs}"],
 }
 SAMPLE_S = 0.2
@@ -357,6 +360,8 @@ def main(argv=None) -> int:
     ap.add_argument("--dask", action="store_true", help="a Dask LocalCluster row at the first size")
     ap.add_argument("--dask-command", default="export-stl", choices=["export-stl", "export-all"])
     ap.add_argument("--plan", action="store_true", help="print the rows that would run, run nothing")
+    ap.add_argument("--code", default="", help="the code column (default: the last commit of the code; "
+                    "give it when the code measured is not this checkout, e.g. through PYTHONPATH)")
     ap.add_argument("--rows", default=str(REPO / "benchmarks" / "results" / "scale.jsonl"))
     ap.add_argument("--out", default=str(REPO / "benchmarks" / "results" / "scale.md"))
     a = ap.parse_args(argv)
@@ -369,7 +374,7 @@ def main(argv=None) -> int:
         print(f"missing {SOURCE}", file=sys.stderr)
         return 2
     exe = [sys.executable, "-m", "lod2energy"]
-    rev, day = _revision(), datetime.date.today().isoformat()
+    rev, day = a.code or _revision(), datetime.date.today().isoformat()
     with tempfile.TemporaryDirectory(prefix="bench_scale_") as tmp:
         tmp = Path(tmp)
         for row in todo:

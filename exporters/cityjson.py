@@ -33,12 +33,13 @@ import itertools
 import json
 import os
 from dataclasses import replace
-from typing import Any, Iterable, Mapping
+from typing import Any, Iterable, Iterator, Mapping, Sequence
 
 from lod2energy import safe_write
 from lod2energy.errors import Lod2EnergyError
 from lod2energy.io import cityjson as cjio
 from lod2energy.io.cityjson_grid import on_grid
+from lod2energy.io.cityjson_write import write_document
 from lod2energy.model import Building, CityModel, frozen_mapping
 from lod2energy.repair.accept import (  # noqa: F401 - acceptance_problem: importable from here as before
     TOLERATED_CODES, acceptance_problem, envelope_problems, export_problem, strip_to_energy,
@@ -49,7 +50,7 @@ from .cityjson_schema import (  # noqa: F401 - the schema helpers, importable fr
     _schema_valid_fast, _validators, _worth_compiling, extension_problems, extension_schema,
     load_extension_beside,
 )
-from .cityjson_version import fix_document, model_for
+from .cityjson_version import fix_cityobject, fix_document, fix_header, model_for  # noqa: F401
 from .result import ExportResult
 from .run_results import result_attributes
 
@@ -157,23 +158,28 @@ def write(path: str, model: CityModel, buildings: Iterable[Building], version: s
         return ExportResult((), path, False, (str(e),), version=str(version))
     if cjio.is_cityjsonseq(path) and version == "1.0":
         return ExportResult((), path, False, ("CityJSONSeq needs CityJSON 1.1 or 2.0",), version=version)
-    out, skipped = [], []
-    buildings = list(buildings)
+    skipped: list[tuple[str, str]] = []
+    written: list[str] = []
+    if not isinstance(buildings, Sequence):
+        buildings = list(buildings)
     m, notes = model_for(model, version)
-    transform = cjio._transform_for(m, buildings)
+    transform = cjio._transform_for(m, buildings)  # iterates the buildings only without a transform
     if not m.transform:
         m = replace(m, transform=frozen_mapping(transform))
-    for b in buildings:
-        blod = lod if lod is not None else (b.provenance.get("thermal") or {}).get("lod")
-        # checked as it will be read back: coordinates on the file's grid (a repaired vertex
-        # off the grid moves by up to scale/2, which can tip a face over a tolerance)
-        b = on_grid(b, transform, m.frame)
-        why = _ready_problem(b, blod, keep_other_lods, tol, transform, m.frame) if exclude_unready else None
-        if why is not None:
-            skipped.append((b.id, why))
-            continue
-        out.append(prepare_building(b, blod, keep_other_lods))
-    ids = tuple(b.id for b in out)
+
+    def prepared() -> Iterator[Building]:
+        # one building at a time: a lazy sequence (the export's spool) is never all in memory
+        for b in buildings:
+            blod = lod if lod is not None else (b.provenance.get("thermal") or {}).get("lod")
+            # checked as it will be read back: coordinates on the file's grid (a repaired vertex
+            # off the grid moves by up to scale/2, which can tip a face over a tolerance)
+            b = on_grid(b, transform, m.frame)
+            why = _ready_problem(b, blod, keep_other_lods, tol, transform, m.frame) if exclude_unready else None
+            if why is not None:
+                skipped.append((b.id, why))
+                continue
+            written.append(b.id)
+            yield prepare_building(b, blod, keep_other_lods)
     folder = os.path.dirname(os.path.abspath(path))
     os.makedirs(folder, exist_ok=True)
     base = os.path.basename(path)
@@ -185,16 +191,18 @@ def write(path: str, model: CityModel, buildings: Iterable[Building], version: s
     try:
         safe_write.write_json(ext_path, extension_schema(version), root=folder, inputs=inputs)
         if cjio.is_cityjsonseq(path):
-            cjio.write(tmp, m, out, version, root=folder, inputs=inputs)
+            cjio.write(tmp, m, prepared(), version, root=folder, inputs=inputs)
         else:
-            doc = fix_document(cjio.to_document(m, out, version), version)
             with safe_write.atomic_write(tmp, "w", root=folder, inputs=inputs) as f:
-                json.dump(doc, f, separators=(",", ":"), ensure_ascii=False)
+                write_document(f, m, prepared(), version, fix_object=lambda co: fix_cityobject(co, version),
+                                    fix_header=lambda d: fix_header(d, version), scratch_dir=folder)
     except (OSError, ValueError, TypeError, Lod2EnergyError) as e:
         _remove(tmp)
+        ids = tuple(written)
         why = e.strerror if isinstance(e, OSError) and e.strerror else e
         return ExportResult(ids, path, False, (f"cannot write {path}: {why}",), version=version,
                             skipped=tuple(skipped))
+    ids = tuple(written)
     try:
         problems = self_check(tmp, extension=extension_schema(version), tol=tol)
         target = path + INVALID_SUFFIX if problems else path
@@ -246,6 +254,9 @@ def self_check(path: str, extension: Mapping | None = None, tol=None) -> list[st
     from lod2energy.validate.codes import name
 
     tol = tol or DEFAULT
+    if not cjio.is_cityjsonseq(path):  # a document: read one CityObject at a time
+        from .cityjson_check import self_check_document
+        return self_check_document(path, extension, tol)
     problems: list[str] = []
     try:
         with open(path, "rb") as f:

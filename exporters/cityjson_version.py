@@ -99,20 +99,31 @@ def _fix_address(co: dict, version: str) -> None:
         co["address"] = items
 
 
-def fix_document(doc: dict, version: str) -> dict:
-    """Version-specific details the shared writer leaves generic."""
-    for co in doc.get("CityObjects", {}).values():
-        _fix_address(co, version)
-        if version == "1.0" and isinstance(co.get("attributes"), dict):
-            # CityJSON 1.0 types its standard attributes (class, function, ...) as strings
-            # without a null: an attribute without a value is left out
-            co["attributes"] = {k: v for k, v in co["attributes"].items() if v is not None}
-        for g in co.get("geometry", []) or []:
-            if version == "1.0" and isinstance(g.get("lod"), str):
-                lod = float(g["lod"])
-                g["lod"] = int(lod) if lod.is_integer() else lod
-            g.pop("material", None)
-            g.pop("texture", None)
+def fix_cityobject(co: dict, version: str) -> dict:
+    """Version-specific details of one CityObject's JSON the shared writer leaves generic (in place)."""
+    _fix_address(co, version)
+    if version == "1.0" and isinstance(co.get("attributes"), dict):
+        # CityJSON 1.0 types its standard attributes (class, function, ...) as strings
+        # without a null: an attribute without a value is left out
+        co["attributes"] = {k: v for k, v in co["attributes"].items() if v is not None}
+    for g in co.get("geometry", []) or []:
+        if version == "1.0" and isinstance(g.get("lod"), str):
+            lod = float(g["lod"])
+            g["lod"] = int(lod) if lod.is_integer() else lod
+        g.pop("material", None)
+        g.pop("texture", None)
+    return co
+
+
+def fix_header(doc: dict, version: str) -> dict:
+    """Version-specific details of the document's head (in place)."""
     if version == "1.0":
         doc.get("metadata", {}).pop("title", None)
     return doc
+
+
+def fix_document(doc: dict, version: str) -> dict:
+    """Version-specific details the shared writer leaves generic."""
+    for co in doc.get("CityObjects", {}).values():
+        fix_cityobject(co, version)
+    return fix_header(doc, version)

@@ -59,6 +59,8 @@ class GeoJsonResult:
         The buildings that have a Feature.
     left_out : mapping of str to str
         Building id -> why it has no Feature (no footprint, not placeable on the Earth).
+    seen : tuple of (str, str)
+        ``(id, type)`` of every building given, in order (with a Feature or left out).
     """
 
     path: str
@@ -66,6 +68,7 @@ class GeoJsonResult:
     problems: tuple[str, ...] = ()
     building_ids: tuple[str, ...] = ()
     left_out: Mapping[str, str] = None  # type: ignore[assignment]
+    seen: tuple[tuple[str, str], ...] = ()
 
 
 # ----------------------------------------------------------------------------- footprint
@@ -245,31 +248,39 @@ def write(buildings: Iterable[Building], path: str | os.PathLike, *, crs: Any = 
     root : path, optional
         The folder the file must stay in (:func:`lod2energy.safe_write.check_target`).
     """
-    from lod2energy.safe_write import write_text
+    from lod2energy.safe_write import atomic_write
     from lod2energy.site import SiteError
 
     by_id = {r.id: r for r in records or ()}
-    feats, ids, left_out = [], [], {}
-    for b in buildings:
-        if not b.is_building:
-            continue
-        try:
-            geom = footprint_geometry(b, crs, frame, lod)
-        except SiteError as e:
-            left_out[str(b.id)] = str(e)
-            continue
-        if geom is None:
-            left_out[str(b.id)] = "no face with a projected area"
-            continue
-        feats.append({"type": "Feature", "id": str(b.id),
-                      "properties": properties(b, by_id.get(str(b.id)), use, lod, run), "geometry": geom})
-        ids.append(str(b.id))
-    doc = {"type": "FeatureCollection", "name": Path(path).name[:-len(SUFFIX)] if str(path).endswith(SUFFIX)
-           else Path(path).stem, "features": feats}
-    text = json.dumps(doc, ensure_ascii=False, separators=(",", ":"), allow_nan=False)
-    write_text(path, text + "\n", root=root)
-    problems = self_check(str(path), n_features=len(feats))
-    return GeoJsonResult(str(path), not problems, tuple(problems), tuple(ids), left_out)
+    ids, left_out, seen = [], {}, []
+    name = Path(path).name[:-len(SUFFIX)] if str(path).endswith(SUFFIX) else Path(path).stem
+    head = _dumps({"type": "FeatureCollection", "name": name, "features": []})
+    # one Feature at a time: the bytes of json.dumps of the whole collection
+    with atomic_write(path, "w", root=root) as f:
+        f.write(head[:-2])
+        for b in buildings:
+            if not b.is_building:
+                continue
+            seen.append((str(b.id), b.type))
+            try:
+                geom = footprint_geometry(b, crs, frame, lod)
+            except SiteError as e:
+                left_out[str(b.id)] = str(e)
+                continue
+            if geom is None:
+                left_out[str(b.id)] = "no face with a projected area"
+                continue
+            f.write(("," if ids else "") + _dumps({"type": "Feature", "id": str(b.id),
+                                                  "properties": properties(b, by_id.get(str(b.id)), use, lod, run),
+                                                  "geometry": geom}))
+            ids.append(str(b.id))
+        f.write("]}\n")
+    problems = self_check(str(path), n_features=len(ids))
+    return GeoJsonResult(str(path), not problems, tuple(problems), tuple(ids), left_out, tuple(seen))
+
+
+def _dumps(x) -> str:
+    return json.dumps(x, ensure_ascii=False, separators=(",", ":"), allow_nan=False)
 
 
 def _check_ring(ring, where: str) -> list[str]:
@@ -292,40 +303,63 @@ def self_check(path: str, n_features: int | None = None) -> list[str]:
     Re-reads the JSON and checks: a FeatureCollection of ``n_features`` Features, each with a
     Polygon / MultiPolygon of closed rings of ``[lon, lat]`` in range, exterior rings
     counter-clockwise and holes clockwise (RFC 7946 3.1.6), a valid polygon (shapely) and an id.
+    The file is read one Feature at a time (:class:`lod2energy.io.json_stream.Scanner`).
     """
-    from shapely.geometry import shape
-
     try:
-        with open(path, encoding="utf-8") as f:
-            doc = json.load(f)
+        problems, head, n = [], {}, 0
+        for i, ft in _features(path, head):
+            n += 1
+            if len(problems) <= 20:
+                problems += _feature_problems(path, i, ft)
     except (OSError, ValueError) as e:
         return [f"{path}: not readable as JSON: {e}"]
-    if not isinstance(doc, dict) or doc.get("type") != "FeatureCollection" or not isinstance(doc.get("features"), list):
+    if head.get("type") != "FeatureCollection" or not isinstance(head.get("features"), list):
         return [f"{path}: not a FeatureCollection"]
-    problems = []
-    feats = doc["features"]
-    if n_features is not None and len(feats) != n_features:
-        problems.append(f"{path}: {len(feats)} features, {n_features} written")
-    for i, ft in enumerate(feats):
-        where = f"{path}: feature {i} ({ft.get('id') if isinstance(ft, dict) else '?'})"
-        if not isinstance(ft, dict) or ft.get("type") != "Feature" or "id" not in ft:
-            problems.append(f"{where}: not a Feature with an id")
-            continue
-        g = ft.get("geometry") or {}
-        if g.get("type") not in ("Polygon", "MultiPolygon"):
-            problems.append(f"{where}: geometry is {g.get('type')!r}, not a (Multi)Polygon")
-            continue
-        polys = [g.get("coordinates")] if g["type"] == "Polygon" else g.get("coordinates") or []
-        bad = []
-        for poly in polys:
-            for k, ring in enumerate(poly or []):
-                bad += _check_ring(ring, where)
-                if not bad and (_signed_area(ring) > 0) != (k == 0):
-                    bad.append(f"{where}: ring {k} wound {'clockwise' if k == 0 else 'counter-clockwise'}")
-        if not bad and not shape(g).is_valid:
-            from shapely.validation import explain_validity
-            bad.append(f"{where}: invalid polygon: {explain_validity(shape(g))}")
-        problems += bad[:1]
-        if len(problems) > 20:
-            break
+    if n_features is not None and n != n_features:
+        problems.insert(0, f"{path}: {n} features, {n_features} written")
     return problems
+
+
+def _features(path: str, head: dict):
+    """``(index, Feature)`` of the file's ``features`` array, one at a time; ``head`` gets
+    the other members (and ``features: []`` when it is an array). ValueError: not JSON."""
+    from lod2energy.io.json_stream import Scanner
+
+    with open(path, encoding="utf-8") as f:
+        sc = Scanner(f)
+        if sc.peek() != "{":  # valid JSON, not an object: not a FeatureCollection
+            head["type"] = None
+            sc.value()
+            sc.end()
+            return
+        for key in sc.members():
+            if key == "features" and sc.peek() == "[":
+                head[key] = []
+                for i in sc.items():
+                    yield i, sc.value()
+            else:
+                head[key] = sc.value()
+        sc.end()
+
+
+def _feature_problems(path: str, i: int, ft) -> list[str]:
+    """The first problem of Feature ``i`` (empty: good)."""
+    from shapely.geometry import shape
+
+    where = f"{path}: feature {i} ({ft.get('id') if isinstance(ft, dict) else '?'})"
+    if not isinstance(ft, dict) or ft.get("type") != "Feature" or "id" not in ft:
+        return [f"{where}: not a Feature with an id"]
+    g = ft.get("geometry") or {}
+    if g.get("type") not in ("Polygon", "MultiPolygon"):
+        return [f"{where}: geometry is {g.get('type')!r}, not a (Multi)Polygon"]
+    polys = [g.get("coordinates")] if g["type"] == "Polygon" else g.get("coordinates") or []
+    bad = []
+    for poly in polys:
+        for k, ring in enumerate(poly or []):
+            bad += _check_ring(ring, where)
+            if not bad and (_signed_area(ring) > 0) != (k == 0):
+                bad.append(f"{where}: ring {k} wound {'clockwise' if k == 0 else 'counter-clockwise'}")
+    if not bad and not shape(g).is_valid:
+        from shapely.validation import explain_validity
+        bad.append(f"{where}: invalid polygon: {explain_validity(shape(g))}")
+    return bad[:1]

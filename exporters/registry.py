@@ -179,20 +179,21 @@ def _write_cityjson(buildings, outdir, options, *, crs=None, context=(), model=N
                     frame=None):
     """One Energy-ADE CityJSON for all ``buildings``: a record for each, ok or left out."""
     from lod2energy.exporters import cityjson
-    buildings = list(buildings)
+    if not isinstance(buildings, Sequence):
+        buildings = list(buildings)  # a Sequence (the spool) is streamed, never all in memory
     path = os.path.join(str(outdir), f"{stem}.energy.city.json")
     res = cityjson.write(path, model, buildings, version=getattr(options, "version", None), tol=tol)
     ok = bool(getattr(res, "ok", False))
     skipped = dict(getattr(res, "skipped", ()) or ())
     files = _files(str(res.path), getattr(res, "extension_path", "") or "") if ok else ()
     out = []
-    for b in buildings:
-        if b.id in skipped and b.type != "Building":
+    for bid, btype in getattr(buildings, "heads", None) or [(b.id, b.type) for b in buildings]:
+        if bid in skipped and btype != "Building":
             continue  # terrain, vegetation ...: not part of the energy model, never a failure
-        if b.id in skipped:
-            out.append(((b.id,), ExportRecord("cityjson", False, path, (f"left out: {skipped[b.id]}",))))
+        if bid in skipped:
+            out.append(((bid,), ExportRecord("cityjson", False, path, (f"left out: {skipped[bid]}",))))
         else:
-            out.append(((b.id,), ExportRecord("cityjson", ok, str(res.path),
+            out.append(((bid,), ExportRecord("cityjson", ok, str(res.path),
                                               tuple(getattr(res, "problems", ()) or ())[:3], {}, files)))
     return WriteResults(out, tuple(getattr(res, "notes", ()) or ()))
 
@@ -254,18 +255,17 @@ def _write_geojson(buildings, outdir, options, *, crs=None, context=(), model=No
     """``OUTDIR/<stem>.footprints.geojson``: the footprints (WGS84) with the buildings' records;
     ``options`` are the IDF options (``use``, ``lod``, ``run``: the figures of the energy model)."""
     from lod2energy.exporters import geojson
-    buildings = [b for b in buildings if b.is_building]
     path = os.path.join(str(outdir), f"{stem}{geojson.SUFFIX}")
     res = geojson.write(buildings, path, crs=crs, frame=frame, records=records, use=getattr(options, "use", None),
                         lod=getattr(options, "lod", None), run=bool(getattr(options, "run", False)), root=outdir)
     files = _files(res.path) if res.ok else ()
     out = []
     left = dict(res.left_out or {})
-    for b in buildings:
-        if b.id in left:
-            out.append(((b.id,), ExportRecord("geojson", False, res.path, (f"left out: {left[b.id]}",))))
+    for bid, _ in res.seen:  # the buildings the writer was given, in order (it streams them)
+        if bid in left:
+            out.append(((bid,), ExportRecord("geojson", False, res.path, (f"left out: {left[bid]}",))))
         else:
-            out.append(((b.id,), ExportRecord("geojson", res.ok, res.path, tuple(res.problems)[:3], {}, files)))
+            out.append(((bid,), ExportRecord("geojson", res.ok, res.path, tuple(res.problems)[:3], {}, files)))
     return WriteResults(out)
 
 

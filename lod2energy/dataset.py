@@ -10,7 +10,11 @@ from lod2energy.options import ExportOptions
 from lod2energy.records import ExportRecord
 from lod2energy.repair_file import with_repair_attributes
 from lod2energy.reports import err
-from lod2energy.spool import Job, load_spooled
+from lod2energy.spool import Job, Spooled, load_spooled
+
+#: The one-file writers that take the buildings one at a time (a :class:`~lod2energy.spool.Spooled`
+#: sequence); the others get a list.
+STREAMED = ("cityjson", "geojson")
 
 
 def stem_of(path: str) -> str:
@@ -23,22 +27,30 @@ def stem_of(path: str) -> str:
 
 
 def dataset_pass(w, options: ExportOptions, job: Job, records: dict, others: list[int], model: CityModel,
-                  input_path: str, quiet: bool) -> None:
+                  input_path: str, quiet: bool, journal=None) -> None:
     """Writer ``w`` of one file for all buildings (CityJSON, IDF / STL in dataset mode, the CFD
     case): the buildings are loaded from the spool in input order; every record of ``records``
-    (seq -> BuildingRecord) in the file gets the writer's export record."""
+    (seq -> BuildingRecord) in the file gets the writer's export record, also appended to
+    ``journal`` (a :class:`~lod2energy.journal.Journal`; a ``dataset`` line per building)."""
     wopts = options.writer_options(w.name)
     if w.name == "cityjson":
         seqs = [s for s, r in sorted(records.items()) if r.outcome == "done" and r.assessed]
         from lod2energy.exporters.run_results import with_run_results  # the IDF runs' figures
-        bs = [with_run_results(with_repair_attributes(load_spooled(job.spool, s)), records[s].export("idf"))
-              for s in seqs]
-        bs += [load_spooled(job.spool, s) for s in sorted(others)]
+        energy = set(seqs)
+
+        def load(b, s):
+            return with_run_results(with_repair_attributes(b), records[s].export("idf")) if s in energy else b
+
+        # read from the spool one at a time as the writer streams the file
+        bs = Spooled(job.spool, seqs + sorted(others), load)
     else:
         seqs = [s for s, r in sorted(records.items()) if r.outcome == "done" and r.energy.geometry_ready]
-        bs = [load_spooled(job.spool, s) for s in seqs]
-        if w.name == "cfd":  # the file's terrain (TINRelief) is the case's ground
-            bs += [load_spooled(job.spool, s) for s in sorted(others)]
+        if w.name in STREAMED:
+            bs = Spooled(job.spool, seqs)
+        else:
+            bs = [load_spooled(job.spool, s) for s in seqs]
+            if w.name == "cfd":  # the file's terrain (TINRelief) is the case's ground
+                bs += [load_spooled(job.spool, s) for s in sorted(others)]
     kw = {"records": [records[s] for s in seqs]} if getattr(w, "records", False) else {}
     try:
         pairs = w.write(w.prepare(bs, wopts), job.outdir, wopts, crs=job.crs, model=model, stem=stem_of(input_path),
@@ -59,7 +71,11 @@ def dataset_pass(w, options: ExportOptions, job: Job, records: dict, others: lis
         for bid in ids:
             for s in by_id.get(bid, ()):
                 records[s] = records[s].with_export(er)
+                if journal is not None:
+                    journal.append({"kind": "dataset", "seq": s, "exports": [er.journal()]}, sync=False)
         if not er.ok and bad is None:
             bad = er
+    if journal is not None:
+        journal.sync()
     if bad is not None:
         err(f"{w.name.upper()} export {bad.path} failed its self-check: {'; '.join(bad.problems[:3])}")

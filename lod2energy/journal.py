@@ -12,10 +12,14 @@ Lines (each a JSON object with a ``kind``):
   (validate ... per-building writers), for every input object in input order;
 - ``{"kind": "context", "seq": I, "exports": [...]}`` - the writers that needed the
   building's neighbours (IDF party walls, shading, ``--run``), for building ``seq``;
+- ``{"kind": "dataset", "seq": I, "exports": [...]}`` - a writer of one file for all
+  buildings (CityJSON, GeoJSON, IDF / STL in dataset mode, the CFD case), for building ``seq``;
 - ``{"kind": "dataset_error", "code": C, "message": M}`` - a file-level problem;
 - ``{"kind": "end", "interrupted": null | "SIGINT" | "SIGTERM"}`` - the run's last line.
 
 A later line for the same ``seq`` and kind replaces an earlier one (a resumed run appends).
+:func:`records_of` folds the lines of one run (from :attr:`Journal.run_start`) into the
+buildings' final records: what ``report.json`` and ``report.csv`` are written from.
 """
 from __future__ import annotations
 
@@ -86,6 +90,9 @@ class Journal:
             with atomic_write(self.path, "w", root=root, inputs=inputs) as f:
                 f.write(_dumps(head) + "\n")
         check_target(self.path, root, inputs)
+        #: Byte offset of this run's first line (the lines before are the header and the
+        #: runs this one resumes).
+        self.run_start = self.path.stat().st_size
         flags = os.O_WRONLY | os.O_APPEND | getattr(os, "O_NOFOLLOW", 0) | getattr(os, "O_CLOEXEC", 0)
         self._fd = os.open(self.path, flags)
 
@@ -98,6 +105,11 @@ class Journal:
         data = (_dumps(entry) + "\n").encode("utf-8")
         os.write(self._fd, data)
         if sync:
+            os.fsync(self._fd)
+
+    def sync(self) -> None:
+        """fsync what was appended with ``sync=False``."""
+        if self._fd is not None:
             os.fsync(self._fd)
 
     def close(self) -> None:
@@ -125,3 +137,46 @@ def read_lines(path: str | os.PathLike) -> Iterator[dict]:
                 continue
             if isinstance(d, dict):
                 yield d
+
+
+def records_of(path: str | os.PathLike, start: int = 0) -> dict:
+    """The buildings' records as the journal's lines from byte ``start`` on tell them.
+
+    Each ``building`` line is a record (a later one for the same ``seq`` replaces it); the
+    ``context`` and ``dataset`` lines that follow add their writers' export records, in
+    the order they were appended (as :meth:`BuildingRecord.with_export` did in the run).
+
+    Parameters
+    ----------
+    path : path
+        The journal.
+    start : int
+        Byte offset to read from (:attr:`Journal.run_start`: this run's lines only).
+
+    Returns
+    -------
+    dict of int to BuildingRecord
+        ``seq`` -> record (insertion order: as the lines came, not sorted).
+    """
+    from lod2energy.records import BuildingRecord, ExportRecord
+
+    out: dict = {}
+    with open(path, "rb") as f:
+        f.seek(start)
+        for raw in f:
+            try:
+                d = json.loads(raw)
+            except (json.JSONDecodeError, UnicodeDecodeError):
+                continue  # a torn last line
+            if not isinstance(d, dict):
+                continue
+            kind = d.get("kind")
+            if kind == "building":
+                out[int(d["seq"])] = BuildingRecord.from_json(d)
+            elif kind in ("context", "dataset") and int(d["seq"]) in out:
+                s = int(d["seq"])
+                rec = out[s]
+                for e in d.get("exports") or ():
+                    rec = rec.with_export(ExportRecord.from_journal(e))
+                out[s] = rec
+    return out

@@ -30,7 +30,9 @@ from lod2energy.interrupt import EXIT_INVALID, EXIT_OK, EXIT_SIGINT, EXIT_UNUSAB
 from lod2energy.model import Building, CityModel, FeatureError, frozen_mapping
 from lod2energy.options import ExportOptions, PrepareOptions, RunOptions, ladder_budget, prepare_options, resolve
 from lod2energy.records import _untimed, BuildingRecord, ComplianceRecord, ExportRecord, RepairRecord, ThermalRecord
-from lod2energy.reports import err, note_frame, progress, refuse_overwriting_inputs, write_html_report, write_reports
+from lod2energy.reports import (
+    CsvRows, err, note_frame, progress, refuse_overwriting_inputs, write_html_report, write_reports_from_journal,
+)
 from lod2energy.spool import Job, load_spooled, reusable, spool_building
 from lod2energy.validate import checks as _checks
 
@@ -334,6 +336,7 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
     per_building = [n for n, s in scope.items() if s == "building"]
     journal = Journal(os.path.join(out, JOURNAL_NAME), out, inputs,
                       header(input_path, options.fingerprint()), resume=run.resume)
+    csv_rows = CsvRows(os.path.join(out, "report.csv"), out, inputs)  # a row as each building finishes
     prev_b: dict[int, BuildingRecord] = {}
     prev_c: dict[int, dict] = {}
     for ln in journal.previous():
@@ -404,6 +407,7 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
                                  f"{'; '.join(e.problems[:3])}")
                     records[seq] = rec
                     journal.append({"kind": "building", **rec.to_json()})
+                    csv_rows.append(rec)
                 close_bar()
 
                 # ---- pass 2: writers that need the neighbours, one building at a time
@@ -451,7 +455,7 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
             for w in chosen:
                 if scope[w.name] != "dataset" or unusable:
                     continue
-                dataset_pass(w, options, job, records, others, model, input_path, run.quiet)
+                dataset_pass(w, options, job, records, others, model, input_path, run.quiet, journal)
     except KeyboardInterrupt:
         interrupted = ("SIGINT", EXIT_SIGINT)
     except Interrupted as e:
@@ -459,7 +463,10 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
     finally:
         close_bar()
     rows = [records[s] for s in sorted(records)]
-    report = write_reports(out, input_path, model, rows, dataset_errors, interrupted, inputs)
+    csv_rows.close()
+    journal.sync()
+    report = write_reports_from_journal(out, input_path, model, str(journal.path), journal.run_start,
+                                        dataset_errors, interrupted, inputs)
     if options.html:
         write_html_report(report, input_path, records, job.spool, out, options.prepare.tol, inputs)
     journal.append({"kind": "end", "interrupted": interrupted[0] if interrupted else None})

@@ -4,15 +4,17 @@ the lines on stderr (errors, notes, the progress bar).
 from __future__ import annotations
 
 import csv
+import io
+import json
 import os
 import sys
-from typing import Iterable
+from typing import Iterable, Sequence
 
 from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.model import CityModel
 from lod2energy.options import FORMATS
 from lod2energy.records import CSV_FIELDS, BuildingRecord
-from lod2energy.safe_write import atomic_write, check_target, write_json
+from lod2energy.safe_write import atomic_write, check_target, json_default
 from lod2energy.spool import load_spooled, spool_path
 
 
@@ -54,23 +56,93 @@ def refuse_overwriting_inputs(outputs: Iterable[str], inputs: Iterable[str]) -> 
             check_target(out, None, inputs)
 
 
-def write_reports(out: str, input_path: str, model, rows: list[BuildingRecord], dataset_errors: list[str],
+class CsvRows:
+    """``OUTDIR/report.csv`` as the run goes: the header first, then one row appended as each
+    building finishes (one ``write`` on an ``O_APPEND`` file, as the journal's lines), so that
+    an interrupted or killed run leaves a CSV of what it finished. :func:`write_reports`
+    replaces it at the end with the final rows (the writers of later passes add columns).
+
+    Parameters
+    ----------
+    path : path
+        report.csv.
+    root, inputs :
+        See :func:`lod2energy.safe_write.check_target`.
+    """
+
+    def __init__(self, path: str | os.PathLike, root, inputs=()):
+        with atomic_write(path, "w", root=root, inputs=inputs, newline="", fsync=False) as f:
+            csv.DictWriter(f, fieldnames=CSV_FIELDS, extrasaction="ignore").writeheader()
+        check_target(path, root, inputs)
+        flags = os.O_WRONLY | os.O_APPEND | getattr(os, "O_NOFOLLOW", 0) | getattr(os, "O_CLOEXEC", 0)
+        self._fd: int | None = os.open(path, flags)
+
+    def append(self, rec: BuildingRecord) -> None:
+        """The row of ``rec``, as :func:`write_reports` writes it."""
+        if self._fd is None:
+            return
+        buf = io.StringIO(newline="")
+        csv.DictWriter(buf, fieldnames=CSV_FIELDS, extrasaction="ignore").writerow(rec.row())
+        os.write(self._fd, buf.getvalue().encode("utf-8"))
+
+    def close(self) -> None:
+        if self._fd is not None:
+            os.close(self._fd)
+            self._fd = None
+
+
+#: Stands for the buildings' list in the report's head (a NUL cannot be in a path nor an id).
+_ROWS = "\x00lod2energy: buildings\x00"
+
+
+def _dump(obj) -> str:
+    return json.dumps(obj, indent=1, ensure_ascii=False, default=json_default)
+
+
+def write_reports(out: str, input_path: str, model, rows: Iterable[BuildingRecord], dataset_errors: list[str],
                    interrupted, inputs) -> str:
-    """report.json and report.csv from the records, in input order (no timing in them)."""
-    doc = {"input_file": input_path, "output_dir": out, **frame_entry(model),
-           "buildings": [r.report_entry() for r in rows]}
+    """report.json and report.csv from the records, in input order (no timing in them).
+
+    Both are written one building at a time: ``report.json`` is the bytes of ``json.dump(doc,
+    indent=1)`` of the whole report, without the report as one object in memory.
+
+    Parameters
+    ----------
+    rows : iterable of BuildingRecord
+        In input order; iterated twice when it is a sequence, else kept as a list.
+    """
+    if not isinstance(rows, Sequence):
+        rows = list(rows)
+    doc = {"input_file": input_path, "output_dir": out, **frame_entry(model), "buildings": _ROWS}
     if dataset_errors:
         doc["dataset_errors"] = [{"code": 901, "info": m} for m in dataset_errors]
     if interrupted:
         doc["interrupted"] = interrupted[0]
+    head, tail = _dump(doc).split(_dump(_ROWS), 1)
     path = os.path.join(out, "report.json")
-    write_json(path, doc, root=out, inputs=inputs)
+    with atomic_write(path, "w", root=out, inputs=inputs) as f:
+        f.write(head + "[")
+        n = 0
+        for r in rows:
+            f.write(("," if n else "") + "\n  " + _dump(r.report_entry()).replace("\n", "\n  "))
+            n += 1
+        f.write(("\n ]" if n else "]") + tail)
     with atomic_write(os.path.join(out, "report.csv"), "w", root=out, inputs=inputs, newline="") as f:
         w = csv.DictWriter(f, fieldnames=CSV_FIELDS, extrasaction="ignore")
         w.writeheader()
         for r in rows:
             w.writerow(r.row())
     return path
+
+
+def write_reports_from_journal(out: str, input_path: str, model, journal_path: str, start: int,
+                               dataset_errors: list[str], interrupted, inputs) -> str:
+    """:func:`write_reports` from this run's lines of the journal (:func:`lod2energy.journal.records_of`
+    from byte ``start``): what the journal says was done is what the report says."""
+    from lod2energy.journal import records_of
+    recs = records_of(journal_path, start)
+    return write_reports(out, input_path, model, [recs[s] for s in sorted(recs)], dataset_errors,
+                         interrupted, inputs)
 
 
 def json_ready(doc):

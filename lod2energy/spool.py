@@ -9,7 +9,7 @@ from __future__ import annotations
 import os
 import pickle
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, Callable, Iterator, Sequence
 
 from lod2energy.model import Building
 from lod2energy.options import ExportOptions
@@ -43,6 +43,50 @@ def load_spooled(spool: str, seq: int) -> Building:
     """The building spooled as object ``seq``."""
     with open(spool_path(spool, seq), "rb") as f:
         return pickle.load(f)
+
+
+class Spooled(Sequence):
+    """Spooled buildings in the order of ``seqs``, read from the spool one at a time as they
+    are iterated (again on each iteration): what the one-file writers stream.
+
+    Parameters
+    ----------
+    spool : path
+    seqs : sequence of int
+        The objects, in the order the writer gets them.
+    load : callable(Building, int) -> Building, optional
+        Applied to each building (with its seq) as it is read.
+
+    Attributes
+    ----------
+    heads : list of (str, str) or None
+        ``(id, type)`` of every building, in order, once an iteration went through them all
+        (so that the writer's records need not read the spool again).
+    """
+
+    def __init__(self, spool: str, seqs: Sequence[int], load: Callable[[Building, int], Building] | None = None):
+        self.spool, self.seqs, self.load = spool, tuple(seqs), load
+        self.heads: list[tuple[str, str]] | None = None
+
+    def __len__(self) -> int:
+        return len(self.seqs)
+
+    def _get(self, seq: int) -> Building:
+        b = load_spooled(self.spool, seq)
+        return self.load(b, seq) if self.load is not None else b
+
+    def __getitem__(self, i):
+        if isinstance(i, slice):
+            return Spooled(self.spool, self.seqs[i], self.load)
+        return self._get(self.seqs[i])
+
+    def __iter__(self) -> Iterator[Building]:
+        heads = []
+        for s in self.seqs:
+            b = self._get(s)
+            heads.append((str(b.id), b.type))
+            yield b
+        self.heads = heads
 
 
 def reusable(p: BuildingRecord | None, b: Building, job: Job, per_building: list[str]) -> bool:

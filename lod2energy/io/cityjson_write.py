@@ -8,7 +8,9 @@ from __future__ import annotations
 
 import json
 import os
-from typing import Any, Iterable, Mapping
+import shutil
+import tempfile
+from typing import Any, Callable, Iterable, Mapping, Sequence
 
 import numpy as np
 
@@ -110,11 +112,17 @@ def _header_json(model: CityModel, version: str) -> dict:
     return d
 
 
-def transform_for(model: CityModel, buildings: list[Building]) -> dict:
+def transform_for(model: CityModel, buildings: Iterable[Building]) -> dict:
+    """The file's ``transform``: the model's, else a 1 mm grid (geographic: ~0.1 mm) from the
+    smallest coordinates of ``buildings`` (iterated once, one building at a time)."""
     if model.transform:
         return _plain(model.transform)
-    allv = [b.vertices for b in buildings if len(b.vertices)]
-    t = default_transform(file_coordinates(np.vstack(allv), model.frame) if allv else np.zeros((0, 3)))
+    lo = None
+    for b in buildings:
+        if len(b.vertices):
+            m = file_coordinates(np.asarray(b.vertices), model.frame).min(axis=0)
+            lo = m if lo is None else np.minimum(lo, m)
+    t = default_transform(lo.reshape(1, 3) if lo is not None else np.zeros((0, 3)))
     if model.frame is not None:  # degrees: ~0.1 mm horizontally, 1 mm in height
         t["scale"] = list(GEOGRAPHIC_SCALE)
     return t
@@ -137,6 +145,67 @@ def to_document(model: CityModel, buildings: Iterable[Building], version: str | 
     doc["CityObjects"] = cos
     doc["vertices"] = verts
     return doc
+
+
+def _dumps(x: Any) -> str:
+    return json.dumps(x, separators=(",", ":"), ensure_ascii=False)
+
+
+def write_document(f, model: CityModel, buildings: Iterable[Building], version: str | None = None, *,
+                   fix_object: Callable[[dict], None] | None = None,
+                   fix_header: Callable[[dict], None] | None = None, scratch_dir: str | None = None) -> None:
+    """Write a whole CityJSON document into the text file ``f``, one building at a time.
+
+    The bytes are those of ``json.dump(to_document(model, buildings, version), f,
+    separators=(",", ":"), ensure_ascii=False)`` (after ``fix_header`` / ``fix_object`` on the
+    document's head and on each CityObject), but no more than one building is in memory: the
+    CityObjects go to ``f`` as they come, the vertices to an anonymous scratch file (in
+    ``scratch_dir``), appended after them.
+
+    Parameters
+    ----------
+    f : text file
+    model : CityModel
+        With a ``transform`` (else ``buildings`` are iterated once more, for the grid).
+    buildings : iterable of Building
+    fix_object, fix_header : callable(dict), optional
+        Change a CityObject's JSON / the document's head (everything but CityObjects and
+        vertices) in place before it is written.
+
+    Raises
+    ------
+    ValueError
+        Two CityObjects with one id (a document cannot hold both).
+    """
+    version = version or model.version
+    if not model.transform and not isinstance(buildings, Sequence):
+        buildings = list(buildings)
+    head = _header_json(model, version)
+    transform = transform_for(model, buildings)
+    head["transform"] = transform
+    if fix_header is not None:
+        fix_header(head)
+    f.write(_dumps(head)[:-1] + ',"CityObjects":{')
+    seen: set[str] = set()
+    n = 0
+    with tempfile.TemporaryFile("w+", encoding="utf-8", dir=scratch_dir) as vf:
+        for b in buildings:
+            q = _quantise(b.vertices, transform, model.frame)
+            for o in b.objects:
+                if o.id in seen:
+                    raise ValueError(f"two CityObjects with id {o.id!r}")
+                co = cityobject_json(o, n, version)
+                if fix_object is not None:
+                    fix_object(co)
+                f.write(("," if seen else "") + _dumps(o.id) + ":" + _dumps(co))
+                seen.add(o.id)
+            if q:
+                vf.write(("," if n else "") + _dumps(q)[1:-1])
+                n += len(q)
+        f.write('},"vertices":[')
+        vf.seek(0)
+        shutil.copyfileobj(vf, f)
+    f.write("]}")
 
 
 def feature_document(b: Building, transform: Mapping, version: str, frame=None) -> dict:
@@ -162,7 +231,8 @@ def write(path: str, model: CityModel, buildings: Iterable[Building], version: s
         inputs = [model.source] if model.source and os.path.exists(str(model.source)) else []
     with safe_write.atomic_write(path, "w", root=root, inputs=inputs) as f:
         if is_cityjsonseq(path):
-            buildings = list(buildings)
+            if not model.transform:  # the grid from every building first
+                buildings = list(buildings)
             header = _header_json(model, version)
             transform = transform_for(model, buildings)
             header["transform"] = transform
@@ -173,8 +243,7 @@ def write(path: str, model: CityModel, buildings: Iterable[Building], version: s
                 f.write(json.dumps(feature_document(b, transform, version, model.frame), separators=(",", ":"),
                                    ensure_ascii=False) + "\n")
         else:
-            doc = to_document(model, buildings, version)
-            json.dump(doc, f, separators=(",", ":"), ensure_ascii=False)
+            write_document(f, model, buildings, version, scratch_dir=os.path.dirname(os.path.abspath(path)))
 
 
 #: The former private name.
