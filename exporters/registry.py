@@ -45,7 +45,7 @@ class Writer:
     records : bool
         The writer also takes ``records=`` (the buildings' :class:`BuildingRecord` s, with
         the other writers' results) in the ``"dataset"`` pass.
-    prepare : callable(buildings, options, context=()) -> list of Building
+    prepare : callable(buildings, options, context=()) -> sequence of Building
         The stage that runs just before this writer, in the same pass and with the same
         neighbours (the IDF's energy model, :mod:`lod2energy.exporters.energyplus.model`); it records
         what it did in the buildings' provenance. Default: the buildings as they are.
@@ -67,9 +67,10 @@ class Writer:
 _WRITERS: dict[str, Writer] = {}
 
 
-def _as_given(buildings, options, context=()) -> list:
-    """No stage before the writer: the buildings as they are."""
-    return list(buildings)
+def _as_given(buildings, options, context=()):
+    """No stage before the writer: the buildings as they are (the same sequence, so that a
+    streamed one - the spool read one building at a time - stays streamed)."""
+    return buildings
 
 
 def register_writer(name: str, write: Callable[..., list], self_check: Callable[..., list], *,
