@@ -16,7 +16,8 @@ written as a simpler envelope of the same building, least change first:
 1. :func:`roof_zone` - the building as a 2.5D model (every roof plane kept, walls vertical,
    :func:`lod2energy.repair.roofs.roof_model`);
 2. :func:`block_zone` - an LoD1 block: the footprint, simplified at 5 cm, extruded from the
-   lowest point to the area-weighted mean roof height; then the same with spikes narrower
+   lowest point to the height that keeps the shell's volume (the area-weighted mean roof
+   height when the shell has no positive volume); then the same with spikes narrower
    than 20 cm and 1 m cut off (morphological opening), then the footprint's convex hull.
 
 U-values carry over per surface class (area-weighted mean of the zone's faces of that class).
@@ -34,7 +35,7 @@ from lod2energy.exporters.energyplus.enclosure import eplus_merge
 from lod2energy.exporters.polygons import newell_normal, polygon_area3d
 from lod2energy.exporters.weld import clean_ring
 from lod2energy.exporters.zones import ZoneFace, ZoneShell, classify
-from lod2energy.polymesh import Face, PolyMesh
+from lod2energy.polymesh import Face, PolyMesh, signed_volume
 from lod2energy.repair.footprint import footprint_polygon, roof_height
 from lod2energy.repair.roofs import roof_model
 from lod2energy.repair.unpinch import unpinch
@@ -204,7 +205,11 @@ def roof_zone(zone: ZoneShell) -> ZoneShell | None:
 
 def block_zone(zone: ZoneShell, simplify: float = BLOCK_SIMPLIFY, opening: float = 0.0,
                hull: bool = False) -> ZoneShell | None:
-    """The zone as an LoD1 block (footprint extruded to the mean roof height), or None.
+    """The zone as an LoD1 block, or None.
+
+    The footprint is extruded from the lowest point to the height at which the block keeps
+    the zone shell's volume (:func:`block_top`), so the zone volume EnergyPlus uses (air
+    changes, the heat capacity of the air) is the building's.
 
     Parameters
     ----------
@@ -234,6 +239,7 @@ def block_zone(zone: ZoneShell, simplify: float = BLOCK_SIMPLIFY, opening: float
         fp = orient(fp.convex_hull.simplify(simplify), 1.0)
     if fp.geom_type != "Polygon" or not fp.is_valid or fp.area <= 1e-2:
         return None
+    z1 = block_top(m, z0, z1, float(fp.area))
     rings = [np.asarray(fp.exterior.coords)[:-1]] + [np.asarray(r.coords)[:-1] for r in fp.interiors]
     verts: list[tuple[float, float, float]] = []
     bottom, top, walls = [], [], []
@@ -251,6 +257,24 @@ def block_zone(zone: ZoneShell, simplify: float = BLOCK_SIMPLIFY, opening: float
     what = "convex hull of the footprint" if hull else "footprint"
     return zone_from_mesh(zone, mesh, f"{zone.object_id}: written as an LoD1 block ({what} extruded to "
                                       f"{z1 - z0:.2f} m): the repaired shell fails EnergyPlus's enclosure test")
+
+
+def block_top(m: PolyMesh, z0: float, mean_top: float, area: float) -> float:
+    """Top (m) of an LoD1 block of footprint ``area`` (m2) from ``z0`` (m) that holds the
+    volume of the closed shell ``m``: ``z0 + V / area``; ``mean_top`` (the area-weighted
+    mean roof height) when the shell's volume is not positive or gives a block lower than
+    10 cm.
+
+    The mean roof height is not the height of the volume under the roof: each roof face
+    counts with the mean of its vertex heights (not its centroid's), faces steeper than
+    84 degrees and undersides not at all (on a 3DBAG house with
+    31 roof faces, 6.335 m against 6.303 m: a block 0.51 % larger than the shell; the 5 cm
+    footprint simplification adds 0.01 %).
+    """
+    vol = signed_volume(m)
+    if not np.isfinite(vol) or vol <= 0 or vol / area <= 0.1:
+        return mean_top
+    return z0 + vol / area
 
 
 #: Tried in this order by the energy model stage: least change first.

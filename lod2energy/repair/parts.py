@@ -16,6 +16,7 @@ from lod2energy.model import Building, Geometry, Shell, Solid, Surface
 from lod2energy.polymesh import Face, PolyMesh, compact, merge_coplanar, signed_volume, triangulate_mesh
 from lod2energy.repair.accept import is_repaired
 from lod2energy.repair.convert import geometry_of_mesh, mesh_of_geometry
+from lod2energy.repair.contact import onto_surface as _onto_surface
 
 
 def _part_meshes(b: Building, lod):
@@ -450,9 +451,13 @@ def clip_overlapping_parts(b: Building, tol: Tolerances = DEFAULT, lod=None,
     the later part's faces keeping their semantic surface); when that result is not a valid
     solid (also once on the output file's grid), has a hairline edge or sliver face
     (:func:`_writable`; the boolean's edges under :data:`CLIP_MIN_EDGE` are collapsed first) or
-    does not lose the shared volume, the earlier part is clipped by the later one instead; a pair neither clip resolves
+    does not lose the shared volume, the earlier part is clipped by the later one instead;
+    when neither passes, both are tried again with the cut part's corners that lie within
+    :data:`CLIP_MIN_EDGE` of the other part's surface put onto it first (:func:`_onto_surface`:
+    such a corner leaves a hairline strip that the output grid folds); a pair no clip resolves
     is united into the earlier part (:func:`merge_parts` ``into``); else it is left and
-    reported. The union of the parts is unchanged.
+    reported. The union of the parts is unchanged (but for those corners, moved at most
+    :data:`CLIP_MIN_EDGE`).
 
     Parameters
     ----------
@@ -493,9 +498,15 @@ def clip_overlapping_parts(b: Building, tol: Tolerances = DEFAULT, lod=None,
         if shared is None or shared <= min_volume:
             continue  # resolved by an earlier clip (or no longer measurable)
         done = False
-        for cut, by in ((later, earlier), (earlier, later)):
+        for cut, by, snap in ((later, earlier, False), (earlier, later, False),
+                              (later, earlier, True), (earlier, later, True)):
             o, gi, g, m = parts[cut]
-            res = _clip_by(m, parts[by][3], CLIP_MIN_EDGE)
+            cutter = parts[by][3]
+            if snap:  # corners a hair off the other solid's surface: onto it first
+                m = _onto_surface(m, cutter, CLIP_MIN_EDGE)
+                if m is None:
+                    continue
+            res = _clip_by(m, cutter, CLIP_MIN_EDGE)
             if res is None or not is_repaired(res, lod, tol) or not _writable(res):
                 continue
             removed = signed_volume(m) - signed_volume(res)
