@@ -156,3 +156,87 @@ def test_batched_collinear_test_is_the_single_one():
     assert got == [_ref_eplus_collinear(r) for r in rings]
     assert any(got) and not all(got)
     assert [ee.eplus_collinear(r) for r in rings] == got
+
+
+# ---------------------------------------------------------------- session 22, second wave
+
+def _ref_ring_centroid(p, n_hat):
+    if len(p) < 3:
+        return 0.0, p.mean(axis=0) if len(p) else np.zeros(3)
+    a, b, c = p[0], p[1:-1], p[2:]
+    w = 0.5 * np.cross(b - a, c - a) @ n_hat
+    tot = w.sum()
+    cent = (a + b + c) / 3.0
+    if abs(tot) < 1e-15:
+        return 0.0, p.mean(axis=0)
+    return float(tot), (w[:, None] * cent).sum(axis=0) / tot
+
+
+def test_cross_rows_and_ring_centroid_same_bits():
+    from lod2energy import semantics
+
+    rng = np.random.default_rng(22)
+    for p in _rings(rng):
+        if len(p) >= 3:
+            d1, d2 = p[1:-1] - p[0], p[2:] - p[0]
+            assert _same(semantics._cross_rows(d1, d2), np.cross(d1, d2)), len(p)
+        n = vectors.newell_normal(p)
+        ln = float(np.linalg.norm(n))
+        n_hat = n / ln if ln > 0 else np.array([0.0, 0.0, 1.0])
+        p0 = p - p[0] if len(p) else p
+        got, ref = semantics._ring_centroid(p0, n_hat), _ref_ring_centroid(p0, n_hat)
+        assert got[0] == ref[0] and np.signbit(got[0]) == np.signbit(ref[0]), len(p)
+        assert _same(got[1], ref[1]), len(p)
+
+
+def _ref_pieces_volume(pieces):
+    vol = 0.0
+    for p in pieces:
+        q = p.points
+        for k in range(1, len(q) - 1):
+            vol += float(np.dot(q[0], np.cross(q[k], q[k + 1]))) / 6.0
+    return vol
+
+
+def test_pieces_volume_same_bits():
+    from exporters.energyplus.pieces import Piece, _pieces_volume
+
+    rng = np.random.default_rng(5)
+    rings = _rings(rng)
+    for i in range(0, len(rings), 7):
+        pieces = [Piece(q, "wall", "Outdoors", 1.0, k) for k, q in enumerate(rings[i:i + 7])]
+        got, ref = _pieces_volume(pieces), _ref_pieces_volume(pieces)
+        assert got == ref and np.signbit(got) == np.signbit(ref), i
+    ints = [Piece(np.array([[0, 0, 0], [4, 0, 0], [4, 3, 0], [0, 3, 1]]), "roof", "Outdoors", 1.0, 0)]
+    assert _pieces_volume(ints) == _ref_pieces_volume(ints)
+
+
+def _ref_upper_left_first(points):
+    n = polygons.unit(polygons.newell_normal(points))
+    up = np.array([0.0, 0.0, 1.0]) - n[2] * n
+    if np.linalg.norm(up) < 1e-6:
+        up = np.array([0.0, 1.0, 0.0]) - n[1] * n
+    up = polygons.unit(up)
+    right = np.cross(up, n)
+    h = points @ up
+    cand = np.nonzero(h >= h.max() - 1e-3)[0]
+    start = int(cand[np.argmin(points[cand] @ right)])
+    return np.roll(points, -start, axis=0)
+
+
+def test_upper_left_first_and_vertex_lines_same_as_before():
+    from exporters.energyplus import render
+
+    rng = np.random.default_rng(9)
+    rings = _rings(rng)[:-1]  # the 2-vertex ring has no plane
+    rings += [np.array([[0.0, 0, 3], [0, 5, 3], [4, 5, 3], [4, 0, 3]]),  # horizontal: "up" is +y
+              np.array([[0.0, 0, 0], [4, 0, 0], [4, 0, 3], [0, 0, 3]]),  # a wall
+              np.round(rng.normal(size=(6, 3)), 1)]  # ties in height and "right"
+    for p in rings:
+        with np.errstate(invalid="ignore", divide="ignore"):
+            got = render.upper_left_first(p)
+            ref = _ref_upper_left_first(p)
+            fallback = render._upper_left_first_ref(p, polygons.unit(polygons.newell_normal(p)))
+        assert _same(got, ref) and _same(fallback, ref), len(p)
+        old = [f"{render._fmt(q[0])}, {render._fmt(q[1])}, {render._fmt(q[2])}" for q in got]
+        assert render._vertex_lines(got) == old
