@@ -240,3 +240,104 @@ def test_upper_left_first_and_vertex_lines_same_as_before():
         assert _same(got, ref) and _same(fallback, ref), len(p)
         old = [f"{render._fmt(q[0])}, {render._fmt(q[1])}, {render._fmt(q[2])}" for q in got]
         assert render._vertex_lines(got) == old
+
+
+def _ref_keep_corners(pieces, tol=1e-3):
+    from dataclasses import replace
+
+    from exporters.energyplus.conform import PIECE_PLANAR
+    from exporters.energyplus.enclosure import eplus_collinear, eplus_degenerate, _on_line
+    from exporters.energyplus.options import WRITE_DECIMALS
+    from exporters.energyplus.pieces import _planar_dev
+
+    out = []
+    for p in pieces:
+        q = p.points
+        lost = [i for i in eplus_collinear(q) if not _on_line(q[i - 1], q[(i + 1) % len(q)], q[i], tol)]
+        if not lost and not eplus_degenerate(q) and (len(q) == 3 or _planar_dev(q) <= PIECE_PLANAR):
+            out.append(p)
+            continue
+        c = np.round(q.mean(axis=0), WRITE_DECIMALS)
+        for i in range(len(q)):
+            tri = np.array([c, q[i], q[(i + 1) % len(q)]])
+            if polygon_area(tri) > 1e-9 and not eplus_degenerate(tri):
+                out.append(replace(p, points=tri))
+    return out
+
+
+def polygon_area(p):
+    return polygons.polygon_area3d(p)
+
+
+def _wall_pieces(rng, count=150):
+    """Wall-like pieces: off-vertical walls with stepped bottoms (EnergyPlus drops corners),
+    near-coincident vertices, out-of-plane ones, slivers, as the writer rounds them."""
+    out = []
+    for i in range(count):
+        k = int(rng.integers(3, 9))
+        x = np.sort(rng.random(k)) * rng.choice([0.02, 1.0, 8.0])
+        z = rng.random(k) * rng.choice([1e-4, 0.01, 3.0])
+        lean = rng.choice([0.0, 1e-4, 0.01])
+        p = np.column_stack([x, lean * z + rng.normal(size=k) * rng.choice([0.0, 1e-3, 0.02]), z])
+        if i % 3 == 0:
+            p = np.concatenate([p, p[::-1] + [0.0, 0.0, 2.5]])  # a closed-ish wall outline
+        if i % 4 == 0:
+            p += [85000.0, 447000.0, 0.0]
+        out.append(np.round(p, 4))
+    return out
+
+
+def test_keep_corners_batched_same_pieces():
+    from exporters.energyplus.conform import keep_corners
+    from exporters.energyplus.pieces import Piece
+
+    rng = np.random.default_rng(31)
+    rings = _wall_pieces(rng) + [q for q in _rings(rng, 120) if len(q) >= 3]
+    pieces = [Piece(q, "wall", "Outdoors", 1.0, k) for k, q in enumerate(rings)]
+    with np.errstate(invalid="ignore", divide="ignore"):
+        got, ref = keep_corners(pieces), _ref_keep_corners(pieces)
+    assert len(got) == len(ref) and len(ref) > len(pieces)  # some pieces were fanned
+    for a, b in zip(got, ref):
+        assert _same(a.points, b.points) and a.face_index == b.face_index
+
+
+def test_window_for_same_with_vectorised_box():
+    import math
+
+    from shapely.geometry import Polygon, box
+
+    from exporters.energyplus.openings import window_for
+
+    def ref(piece, wwr):  # the bisection with shapely.geometry.box
+        area = polygons.polygon_area3d(piece)
+        n = polygons.unit(polygons.newell_normal(piece))
+        u, v = polygons.plane_basis(n)
+        c0 = piece.mean(axis=0)
+        xy = np.column_stack([(piece - c0) @ u, (piece - c0) @ v])
+        poly = Polygon(xy)
+        cen = np.asarray(poly.centroid.coords[0])
+        w, h = np.ptp(xy[:, 0]), np.ptp(xy[:, 1])
+        lo_t, hi_t = 0.0, 1.0
+        for _ in range(24):
+            t = (lo_t + hi_t) / 2
+            r = box(cen[0] - t * w / 2, cen[1] - t * h / 2, cen[0] + t * w / 2, cen[1] + t * h / 2)
+            lo_t, hi_t = (t, hi_t) if poly.contains(r) else (lo_t, t)
+        t = min(math.sqrt(wwr * area / (w * h)), 0.95 * lo_t)
+        if t <= 0:
+            return None
+        hw, hh = t * w / 2, t * h / 2
+        rect = np.array([[cen[0] - hw, cen[1] + hh], [cen[0] - hw, cen[1] - hh],
+                         [cen[0] + hw, cen[1] - hh], [cen[0] + hw, cen[1] + hh]])
+        return c0 + rect[:, :1] * u + rect[:, 1:2] * v
+
+    rng = np.random.default_rng(4)
+    for i in range(60):
+        w, h = rng.random(2) * 10 + 0.1
+        top = h * (1 + rng.random() * (i % 2))  # rectangles and trapezoids (gables)
+        p = np.array([[0.0, 0, 0], [w, 0, 0], [w, 0, h], [0, 0, top]])
+        ang = rng.random() * 6.28
+        rot = np.array([[np.cos(ang), -np.sin(ang), 0], [np.sin(ang), np.cos(ang), 0], [0, 0, 1]])
+        p = np.round(p @ rot.T + [85000.0, 447000.0, 1.0], 4)
+        for wwr in (0.2, 0.6):
+            got, exp = window_for(p, wwr), ref(p, wwr)
+            assert (got is None and exp is None) or _same(got, exp), i
