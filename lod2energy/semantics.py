@@ -167,7 +167,7 @@ def face_metrics(vertices: np.ndarray, surface: Surface) -> tuple[float, np.ndar
     origin = outer.mean(axis=0) if len(outer) else np.zeros(3)
     outer = outer - origin
     vec = 0.5 * newell_normal(vertices[surface.outer]) if len(outer) >= 3 else np.zeros(3)
-    norm = float(np.linalg.norm(vec))
+    norm = math.sqrt(float(vec.dot(vec)))  # np.linalg.norm of a (3,) float64 vector, the same bits
     if norm < 1e-15:
         return 0.0, np.zeros(3), origin
     n_hat = vec / norm

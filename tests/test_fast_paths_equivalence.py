@@ -341,3 +341,38 @@ def test_window_for_same_with_vectorised_box():
         for wwr in (0.2, 0.6):
             got, exp = window_for(p, wwr), ref(p, wwr)
             assert (got is None and exp is None) or _same(got, exp), i
+
+
+def test_face_metrics_same_bits():
+    from lod2energy import semantics
+    from lod2energy.geometry import newell_normal
+    from lod2energy.model import Surface
+
+    def ref(vertices, surface):
+        outer = vertices[surface.outer]
+        origin = outer.mean(axis=0) if len(outer) else np.zeros(3)
+        outer = outer - origin
+        vec = 0.5 * newell_normal(vertices[surface.outer]) if len(outer) >= 3 else np.zeros(3)
+        norm = float(np.linalg.norm(vec))
+        if norm < 1e-15:
+            return 0.0, np.zeros(3), origin
+        n_hat = vec / norm
+        a0, c0 = _ref_ring_centroid(outer, n_hat)
+        area, moment = abs(a0), abs(a0) * c0
+        for r in surface.inners:
+            ai, ci = _ref_ring_centroid(vertices[r] - origin, n_hat)
+            area -= abs(ai)
+            moment = moment - abs(ai) * ci
+        if area <= 1e-15:
+            return 0.0, n_hat, origin + c0
+        return float(area), n_hat, origin + moment / area
+
+    rng = np.random.default_rng(17)
+    for p in _rings(rng, 200):
+        k = len(p)
+        hole = (p[: min(k, 4)] - p.mean(axis=0)) * 0.3 + p.mean(axis=0)
+        verts = np.concatenate([p, hole])
+        for rings in ([list(range(k))], [list(range(k)), list(range(k, len(verts)))]):
+            s = Surface.from_lists(rings)
+            got, exp = semantics.face_metrics(verts, s), ref(verts, s)
+            assert got[0] == exp[0] and _same(got[1], exp[1]) and _same(got[2], exp[2]), k
