@@ -111,12 +111,33 @@ def envelope_objects(b: Building, lod: str | None = None) -> list:
 
 # ----------------------------------------------------------------------------- face geometry
 
+def _cross_rows(d1: np.ndarray, d2: np.ndarray) -> np.ndarray:
+    """Row-wise cross product of two (m, 3) arrays, ``np.cross``'s operations in its order
+    (the same bits and memory layout) without its axis handling.
+
+    Parameters
+    ----------
+    d1, d2 : (m, 3) float
+
+    Returns
+    -------
+    (m, 3) float, C-contiguous
+    """
+    out = np.empty(d1.shape, dtype=np.result_type(d1, d2))
+    a0, a1, a2 = d1[:, 0], d1[:, 1], d1[:, 2]
+    b0, b1, b2 = d2[:, 0], d2[:, 1], d2[:, 2]
+    np.subtract(a1 * b2, a2 * b1, out=out[:, 0])
+    np.subtract(a2 * b0, a0 * b2, out=out[:, 1])
+    np.subtract(a0 * b1, a1 * b0, out=out[:, 2])
+    return out
+
+
 def _ring_centroid(p: np.ndarray, n_hat: np.ndarray) -> tuple[float, np.ndarray]:
     """Signed area (along ``n_hat``) and area centroid of a planar ring (fan triangulation)."""
     if len(p) < 3:
         return 0.0, p.mean(axis=0) if len(p) else np.zeros(3)
     a, b, c = p[0], p[1:-1], p[2:]
-    w = 0.5 * np.cross(b - a, c - a) @ n_hat
+    w = 0.5 * _cross_rows(b - a, c - a) @ n_hat
     tot = w.sum()
     cent = (a + b + c) / 3.0
     if abs(tot) < 1e-15:
@@ -146,7 +167,7 @@ def face_metrics(vertices: np.ndarray, surface: Surface) -> tuple[float, np.ndar
     origin = outer.mean(axis=0) if len(outer) else np.zeros(3)
     outer = outer - origin
     vec = 0.5 * newell_normal(vertices[surface.outer]) if len(outer) >= 3 else np.zeros(3)
-    norm = float(np.linalg.norm(vec))
+    norm = math.sqrt(float(vec.dot(vec)))  # np.linalg.norm of a (3,) float64 vector, the same bits
     if norm < 1e-15:
         return 0.0, np.zeros(3), origin
     n_hat = vec / norm

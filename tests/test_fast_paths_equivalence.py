@@ -156,3 +156,223 @@ def test_batched_collinear_test_is_the_single_one():
     assert got == [_ref_eplus_collinear(r) for r in rings]
     assert any(got) and not all(got)
     assert [ee.eplus_collinear(r) for r in rings] == got
+
+
+# ---------------------------------------------------------------- session 22, second wave
+
+def _ref_ring_centroid(p, n_hat):
+    if len(p) < 3:
+        return 0.0, p.mean(axis=0) if len(p) else np.zeros(3)
+    a, b, c = p[0], p[1:-1], p[2:]
+    w = 0.5 * np.cross(b - a, c - a) @ n_hat
+    tot = w.sum()
+    cent = (a + b + c) / 3.0
+    if abs(tot) < 1e-15:
+        return 0.0, p.mean(axis=0)
+    return float(tot), (w[:, None] * cent).sum(axis=0) / tot
+
+
+def test_cross_rows_and_ring_centroid_same_bits():
+    from lod2energy import semantics
+
+    rng = np.random.default_rng(22)
+    for p in _rings(rng):
+        if len(p) >= 3:
+            d1, d2 = p[1:-1] - p[0], p[2:] - p[0]
+            assert _same(semantics._cross_rows(d1, d2), np.cross(d1, d2)), len(p)
+        n = vectors.newell_normal(p)
+        ln = float(np.linalg.norm(n))
+        n_hat = n / ln if ln > 0 else np.array([0.0, 0.0, 1.0])
+        p0 = p - p[0] if len(p) else p
+        got, ref = semantics._ring_centroid(p0, n_hat), _ref_ring_centroid(p0, n_hat)
+        assert got[0] == ref[0] and np.signbit(got[0]) == np.signbit(ref[0]), len(p)
+        assert _same(got[1], ref[1]), len(p)
+
+
+def _ref_pieces_volume(pieces):
+    vol = 0.0
+    for p in pieces:
+        q = p.points
+        for k in range(1, len(q) - 1):
+            vol += float(np.dot(q[0], np.cross(q[k], q[k + 1]))) / 6.0
+    return vol
+
+
+def test_pieces_volume_same_bits():
+    from exporters.energyplus.pieces import Piece, _pieces_volume
+
+    rng = np.random.default_rng(5)
+    rings = _rings(rng)
+    for i in range(0, len(rings), 7):
+        pieces = [Piece(q, "wall", "Outdoors", 1.0, k) for k, q in enumerate(rings[i:i + 7])]
+        got, ref = _pieces_volume(pieces), _ref_pieces_volume(pieces)
+        assert got == ref and np.signbit(got) == np.signbit(ref), i
+    ints = [Piece(np.array([[0, 0, 0], [4, 0, 0], [4, 3, 0], [0, 3, 1]]), "roof", "Outdoors", 1.0, 0)]
+    assert _pieces_volume(ints) == _ref_pieces_volume(ints)
+
+
+def _ref_upper_left_first(points):
+    n = polygons.unit(polygons.newell_normal(points))
+    up = np.array([0.0, 0.0, 1.0]) - n[2] * n
+    if np.linalg.norm(up) < 1e-6:
+        up = np.array([0.0, 1.0, 0.0]) - n[1] * n
+    up = polygons.unit(up)
+    right = np.cross(up, n)
+    h = points @ up
+    cand = np.nonzero(h >= h.max() - 1e-3)[0]
+    start = int(cand[np.argmin(points[cand] @ right)])
+    return np.roll(points, -start, axis=0)
+
+
+def test_upper_left_first_and_vertex_lines_same_as_before():
+    from exporters.energyplus import render
+
+    rng = np.random.default_rng(9)
+    rings = _rings(rng)[:-1]  # the 2-vertex ring has no plane
+    rings += [np.array([[0.0, 0, 3], [0, 5, 3], [4, 5, 3], [4, 0, 3]]),  # horizontal: "up" is +y
+              np.array([[0.0, 0, 0], [4, 0, 0], [4, 0, 3], [0, 0, 3]]),  # a wall
+              np.round(rng.normal(size=(6, 3)), 1)]  # ties in height and "right"
+    for p in rings:
+        with np.errstate(invalid="ignore", divide="ignore"):
+            got = render.upper_left_first(p)
+            ref = _ref_upper_left_first(p)
+            fallback = render._upper_left_first_ref(p, polygons.unit(polygons.newell_normal(p)))
+        assert _same(got, ref) and _same(fallback, ref), len(p)
+        old = [f"{render._fmt(q[0])}, {render._fmt(q[1])}, {render._fmt(q[2])}" for q in got]
+        assert render._vertex_lines(got) == old
+
+
+def _ref_keep_corners(pieces, tol=1e-3):
+    from dataclasses import replace
+
+    from exporters.energyplus.conform import PIECE_PLANAR
+    from exporters.energyplus.enclosure import eplus_collinear, eplus_degenerate, _on_line
+    from exporters.energyplus.options import WRITE_DECIMALS
+    from exporters.energyplus.pieces import _planar_dev
+
+    out = []
+    for p in pieces:
+        q = p.points
+        lost = [i for i in eplus_collinear(q) if not _on_line(q[i - 1], q[(i + 1) % len(q)], q[i], tol)]
+        if not lost and not eplus_degenerate(q) and (len(q) == 3 or _planar_dev(q) <= PIECE_PLANAR):
+            out.append(p)
+            continue
+        c = np.round(q.mean(axis=0), WRITE_DECIMALS)
+        for i in range(len(q)):
+            tri = np.array([c, q[i], q[(i + 1) % len(q)]])
+            if polygon_area(tri) > 1e-9 and not eplus_degenerate(tri):
+                out.append(replace(p, points=tri))
+    return out
+
+
+def polygon_area(p):
+    return polygons.polygon_area3d(p)
+
+
+def _wall_pieces(rng, count=150):
+    """Wall-like pieces: off-vertical walls with stepped bottoms (EnergyPlus drops corners),
+    near-coincident vertices, out-of-plane ones, slivers, as the writer rounds them."""
+    out = []
+    for i in range(count):
+        k = int(rng.integers(3, 9))
+        x = np.sort(rng.random(k)) * rng.choice([0.02, 1.0, 8.0])
+        z = rng.random(k) * rng.choice([1e-4, 0.01, 3.0])
+        lean = rng.choice([0.0, 1e-4, 0.01])
+        p = np.column_stack([x, lean * z + rng.normal(size=k) * rng.choice([0.0, 1e-3, 0.02]), z])
+        if i % 3 == 0:
+            p = np.concatenate([p, p[::-1] + [0.0, 0.0, 2.5]])  # a closed-ish wall outline
+        if i % 4 == 0:
+            p += [85000.0, 447000.0, 0.0]
+        out.append(np.round(p, 4))
+    return out
+
+
+def test_keep_corners_batched_same_pieces():
+    from exporters.energyplus.conform import keep_corners
+    from exporters.energyplus.pieces import Piece
+
+    rng = np.random.default_rng(31)
+    rings = _wall_pieces(rng) + [q for q in _rings(rng, 120) if len(q) >= 3]
+    pieces = [Piece(q, "wall", "Outdoors", 1.0, k) for k, q in enumerate(rings)]
+    with np.errstate(invalid="ignore", divide="ignore"):
+        got, ref = keep_corners(pieces), _ref_keep_corners(pieces)
+    assert len(got) == len(ref) and len(ref) > len(pieces)  # some pieces were fanned
+    for a, b in zip(got, ref):
+        assert _same(a.points, b.points) and a.face_index == b.face_index
+
+
+def test_window_for_same_with_vectorised_box():
+    import math
+
+    from shapely.geometry import Polygon, box
+
+    from exporters.energyplus.openings import window_for
+
+    def ref(piece, wwr):  # the bisection with shapely.geometry.box
+        area = polygons.polygon_area3d(piece)
+        n = polygons.unit(polygons.newell_normal(piece))
+        u, v = polygons.plane_basis(n)
+        c0 = piece.mean(axis=0)
+        xy = np.column_stack([(piece - c0) @ u, (piece - c0) @ v])
+        poly = Polygon(xy)
+        cen = np.asarray(poly.centroid.coords[0])
+        w, h = np.ptp(xy[:, 0]), np.ptp(xy[:, 1])
+        lo_t, hi_t = 0.0, 1.0
+        for _ in range(24):
+            t = (lo_t + hi_t) / 2
+            r = box(cen[0] - t * w / 2, cen[1] - t * h / 2, cen[0] + t * w / 2, cen[1] + t * h / 2)
+            lo_t, hi_t = (t, hi_t) if poly.contains(r) else (lo_t, t)
+        t = min(math.sqrt(wwr * area / (w * h)), 0.95 * lo_t)
+        if t <= 0:
+            return None
+        hw, hh = t * w / 2, t * h / 2
+        rect = np.array([[cen[0] - hw, cen[1] + hh], [cen[0] - hw, cen[1] - hh],
+                         [cen[0] + hw, cen[1] - hh], [cen[0] + hw, cen[1] + hh]])
+        return c0 + rect[:, :1] * u + rect[:, 1:2] * v
+
+    rng = np.random.default_rng(4)
+    for i in range(60):
+        w, h = rng.random(2) * 10 + 0.1
+        top = h * (1 + rng.random() * (i % 2))  # rectangles and trapezoids (gables)
+        p = np.array([[0.0, 0, 0], [w, 0, 0], [w, 0, h], [0, 0, top]])
+        ang = rng.random() * 6.28
+        rot = np.array([[np.cos(ang), -np.sin(ang), 0], [np.sin(ang), np.cos(ang), 0], [0, 0, 1]])
+        p = np.round(p @ rot.T + [85000.0, 447000.0, 1.0], 4)
+        for wwr in (0.2, 0.6):
+            got, exp = window_for(p, wwr), ref(p, wwr)
+            assert (got is None and exp is None) or _same(got, exp), i
+
+
+def test_face_metrics_same_bits():
+    from lod2energy import semantics
+    from lod2energy.geometry import newell_normal
+    from lod2energy.model import Surface
+
+    def ref(vertices, surface):
+        outer = vertices[surface.outer]
+        origin = outer.mean(axis=0) if len(outer) else np.zeros(3)
+        outer = outer - origin
+        vec = 0.5 * newell_normal(vertices[surface.outer]) if len(outer) >= 3 else np.zeros(3)
+        norm = float(np.linalg.norm(vec))
+        if norm < 1e-15:
+            return 0.0, np.zeros(3), origin
+        n_hat = vec / norm
+        a0, c0 = _ref_ring_centroid(outer, n_hat)
+        area, moment = abs(a0), abs(a0) * c0
+        for r in surface.inners:
+            ai, ci = _ref_ring_centroid(vertices[r] - origin, n_hat)
+            area -= abs(ai)
+            moment = moment - abs(ai) * ci
+        if area <= 1e-15:
+            return 0.0, n_hat, origin + c0
+        return float(area), n_hat, origin + moment / area
+
+    rng = np.random.default_rng(17)
+    for p in _rings(rng, 200):
+        k = len(p)
+        hole = (p[: min(k, 4)] - p.mean(axis=0)) * 0.3 + p.mean(axis=0)
+        verts = np.concatenate([p, hole])
+        for rings in ([list(range(k))], [list(range(k)), list(range(k, len(verts)))]):
+            s = Surface.from_lists(rings)
+            got, exp = semantics.face_metrics(verts, s), ref(verts, s)
+            assert got[0] == exp[0] and _same(got[1], exp[1]) and _same(got[2], exp[2]), k

@@ -12,7 +12,8 @@ from ..polygons import polygon_area3d
 from ..shellcheck import check_closed_outward, _split_t_junctions
 from ..weld import weld
 from ..zones import MIN_PIECE_AREA
-from .enclosure import enclosure_defects, eplus_collinear, eplus_degenerate, _on_line, snap_polygons
+from .enclosure import (_collinear_many, enclosure_defects, eplus_degenerate_many, _on_line,
+                        snap_polygons)
 from .options import WRITE_DECIMALS
 from .pieces import Piece, _planar_dev
 
@@ -33,18 +34,23 @@ def keep_corners(pieces: list[Piece], tol: float = CORNER_TOL) -> list[Piece]:
     (a triangle keeps its three vertices and is planar); a fan triangle EnergyPlus would
     still call degenerate is left out (its short side is merged away by EnergyPlus too).
     """
+    # EnergyPlus's collinear and degenerate tests batched over all pieces (the same verdicts
+    # as eplus_collinear / eplus_degenerate of each one, bit for bit)
+    rings = [np.asarray(p.points, dtype=np.float64) for p in pieces]
+    collinear = _collinear_many(rings)
+    degenerate = eplus_degenerate_many(rings)
     out = []
-    for p in pieces:
+    for p, col, deg in zip(pieces, collinear, degenerate):
         q = p.points
-        lost = [i for i in eplus_collinear(q)
-                if not _on_line(q[i - 1], q[(i + 1) % len(q)], q[i], tol)]
-        if not lost and not eplus_degenerate(q) and (len(q) == 3 or _planar_dev(q) <= PIECE_PLANAR):
+        lost = [i for i in col if not _on_line(q[i - 1], q[(i + 1) % len(q)], q[i], tol)]
+        if not lost and not deg and (len(q) == 3 or _planar_dev(q) <= PIECE_PLANAR):
             out.append(p)
             continue
         c = np.round(q.mean(axis=0), WRITE_DECIMALS)
-        for i in range(len(q)):
-            tri = np.array([c, q[i], q[(i + 1) % len(q)]])
-            if polygon_area3d(tri) > 1e-9 and not eplus_degenerate(tri):
+        tris = [np.array([c, q[i], q[(i + 1) % len(q)]]) for i in range(len(q))]
+        tris = [t for t in tris if polygon_area3d(t) > 1e-9]
+        for tri, bad in zip(tris, eplus_degenerate_many(tris)):
+            if not bad:
                 out.append(replace(p, points=tri))
     return out
 

@@ -18,7 +18,8 @@ def window_for(piece: np.ndarray, wwr: float) -> np.ndarray | None:
     centred on the area centroid (shrunk when the ratio cannot be reached: EnergyPlus turns
     non-rectangular quadrilateral windows into rectangles anyway).
     """
-    from shapely.geometry import Polygon, box
+    import shapely
+    from shapely.geometry import Polygon
 
     if wwr <= 0:
         return None
@@ -37,7 +38,8 @@ def window_for(piece: np.ndarray, wwr: float) -> np.ndarray | None:
     lo_t, hi_t = 0.0, 1.0
     for _ in range(24):
         t = (lo_t + hi_t) / 2
-        r = box(cen[0] - t * w / 2, cen[1] - t * h / 2, cen[0] + t * w / 2, cen[1] + t * h / 2)
+        # shapely.box: the ring of shapely.geometry.box, same coordinates, a fifth of its cost
+        r = shapely.box(cen[0] - t * w / 2, cen[1] - t * h / 2, cen[0] + t * w / 2, cen[1] + t * h / 2)
         if poly.contains(r):
             lo_t = t
         else:

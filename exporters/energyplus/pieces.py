@@ -168,6 +168,15 @@ def _pieces_volume(pieces: Sequence[Piece]) -> float:
     vol = 0.0
     for p in pieces:
         q = p.points
-        for k in range(1, len(q) - 1):
-            vol += float(np.dot(q[0], np.cross(q[k], q[k + 1]))) / 6.0
+        if q.dtype != np.float64 or q.ndim != 2 or q.shape[1] != 3:
+            for k in range(1, len(q) - 1):
+                vol += float(np.dot(q[0], np.cross(q[k], q[k + 1]))) / 6.0
+            continue
+        # np.cross of two 3-vectors written out on floats in its operation order (same bits);
+        # the dot stays np.dot (BLAS sums in its own order)
+        q0, rows = q[0], q.tolist()
+        for k in range(1, len(rows) - 1):
+            x0, x1, x2 = rows[k]
+            y0, y1, y2 = rows[k + 1]
+            vol += float(np.dot(q0, np.array([x1 * y2 - x2 * y1, x2 * y0 - x0 * y2, x0 * y1 - x1 * y0]))) / 6.0
     return vol

@@ -9,7 +9,7 @@ from typing import Sequence
 import numpy as np
 
 from lod2energy.errors import ExportError
-from ..polygons import newell_normal, polygon_area3d, unit
+from ..polygons import _norm, newell_normal, polygon_area3d, unit
 from ..zones import ZoneShell
 from .constructions import construction_layers, _construction_name, INTERZONE_SLAB, _KIND_TYPE, MASS
 from .names import comment_text, _IDF_NAME_BAD, NameRegistry
@@ -26,6 +26,25 @@ def upper_left_first(points: np.ndarray) -> np.ndarray:
     "Up" is world +z projected on the plane (+y on horizontal planes), "right" = up x normal.
     """
     n = unit(newell_normal(points))
+    if n.dtype != np.float64 or n.shape != (3,) or points.ndim != 2:
+        return _upper_left_first_ref(points, n)
+    up = np.array([0.0, 0.0, 1.0]) - n[2] * n
+    if _norm(up) < 1e-6:
+        up = np.array([0.0, 1.0, 0.0]) - n[1] * n
+    up = unit(up)
+    # np.cross(up, n) written out on floats in its operation order (same bits)
+    u0, u1, u2 = up.tolist()
+    n0, n1, n2 = n.tolist()
+    right = np.array([u1 * n2 - u2 * n1, u2 * n0 - u0 * n2, u0 * n1 - u1 * n0])
+    h = points @ up
+    cand = np.nonzero(h >= h.max() - 1e-3)[0]
+    start = int(cand[np.argmin(points[cand] @ right)])
+    return np.concatenate((points[start:], points[:start]))  # np.roll(points, -start, axis=0)
+
+
+def _upper_left_first_ref(points: np.ndarray, n: np.ndarray) -> np.ndarray:
+    """:func:`upper_left_first` as first written (numpy throughout), for any input; ``n`` is
+    the unit Newell normal of ``points``."""
     up = np.array([0.0, 0.0, 1.0]) - n[2] * n
     if np.linalg.norm(up) < 1e-6:
         up = np.array([0.0, 1.0, 0.0]) - n[1] * n
@@ -43,7 +62,9 @@ def _fmt(x: float, nd: int = WRITE_DECIMALS) -> str:
 
 
 def _vertex_lines(points: np.ndarray) -> list[str]:
-    return [f"{_fmt(p[0])}, {_fmt(p[1])}, {_fmt(p[2])}" for p in points]
+    """``x, y, z`` lines of (k, 3) points as the IDF writes them (on Python floats: the same text)."""
+    rows = points.tolist() if isinstance(points, np.ndarray) and points.dtype == np.float64 else points
+    return [f"{_fmt(p[0])}, {_fmt(p[1])}, {_fmt(p[2])}" for p in rows]
 
 
 @functools.lru_cache(maxsize=1)
