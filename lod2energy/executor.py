@@ -323,10 +323,15 @@ class _BudgetChild:
                                          pass_fds=(child.fileno(),), stdin=subprocess.DEVNULL)
         finally:
             child.close()
-        self.conn.send(("init", list(sys.path), modules))
-        if not self.conn.poll(START_TIMEOUT) or self.conn.recv() != "ready":
+        try:
+            self.conn.send(("init", list(sys.path), modules))
+            ready = self.conn.poll(START_TIMEOUT) and self.conn.recv() == "ready"
+        except (EOFError, OSError):
+            ready = False
+        if not ready:
             self.stop()
-            raise OSError(f"the budget process did not start within {START_TIMEOUT:g} s")
+            raise OSError(f"the budget process did not start within {START_TIMEOUT:g} s "
+                          f"(exit code {self.proc.returncode})")
 
     def stop(self) -> None:
         try:
