@@ -238,8 +238,8 @@ def test_dask_stops_a_cpu_bound_job_at_its_budget_and_the_worker_goes_on(tmp_pat
         assert not _alive(after)  # close() stops the budget processes on every worker
 
 
-@pytest.mark.parametrize("processes", [True, False])
-def test_dask_reports_a_100000_face_building_timeout_with_the_bytes_of_jobs_1(tmp_path, capsys, processes):
+def test_dask_reports_a_100000_face_building_timeout_with_the_bytes_of_jobs_1(tmp_path, capsys):
+    # worker processes (processes=False is covered by the budget test above)
     distributed = pytest.importorskip("dask.distributed")
     from lod2energy.cli import build_parser, export_options
     from lod2energy.executor import DaskExecutor
@@ -254,7 +254,7 @@ def test_dask_reports_a_100000_face_building_timeout_with_the_bytes_of_jobs_1(tm
     ref = tree_bytes(out)
     shutil.rmtree(out)
     a = build_parser().parse_args(["export", src, "-o", str(out), *fmt])
-    with distributed.LocalCluster(n_workers=1, threads_per_worker=2, processes=processes,
+    with distributed.LocalCluster(n_workers=1, threads_per_worker=2, processes=True,
                                   dashboard_address=None) as cluster, distributed.Client(cluster) as client:
         with DaskExecutor(client) as ex:
             t0 = time.monotonic()
