@@ -320,7 +320,8 @@ class _BudgetChild:
         self.conn, child = mp.Pipe(duplex=True)
         try:
             self.proc = subprocess.Popen([sys.executable, "-c", _CHILD_CODE, str(child.fileno())],
-                                         pass_fds=(child.fileno(),), stdin=subprocess.DEVNULL)
+                                         pass_fds=(child.fileno(),), stdin=subprocess.DEVNULL,
+                                         env={**os.environ, "PYTHONPATH": os.pathsep.join(p for p in sys.path if p)})
         finally:
             child.close()
         try:
