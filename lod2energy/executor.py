@@ -9,9 +9,9 @@ return value, or
 - :class:`Overrun` when the job ran past its time budget (``timeout``, s, of CPU time - so that
   a loaded machine does not time out jobs that only waited for a core - or ``WALL_FACTOR``
   times that of wall time, for jobs that block): the process pool kills the worker and starts a
-  fresh one; in-process a ``SIGPROF`` / ``SIGALRM`` guard interrupts it; on Dask the task is
-  cancelled after ``timeout`` of wall time (a Dask worker thread cannot be killed: it runs to
-  its own end);
+  fresh one; in-process a ``SIGPROF`` / ``SIGALRM`` guard interrupts it; on Dask the task runs
+  the job in a budget process of its worker (:func:`run_with_budget`), killed and replaced at
+  the same budget (a Dask worker thread itself cannot be stopped);
 - :class:`Failure` when the function raised (the message, one line) or its worker died.
 
 At most ``window`` jobs are in flight or buffered, so memory stays bounded however long the
@@ -22,11 +22,13 @@ from __future__ import annotations
 import multiprocessing as mp
 import os
 import signal
+import subprocess
+import sys
 import threading
 import time
 from collections import deque
 from dataclasses import dataclass
-from multiprocessing.connection import wait
+from multiprocessing.connection import Connection, wait
 from typing import Any, Callable, Iterable, Iterator
 
 import lod2energy.records  # noqa: F401 - makes Building picklable in every process
@@ -284,10 +286,158 @@ class ProcessPoolExecutor(Executor):
             self._retire(w, kill=kill)
 
 
+# ----------------------------------------------------------------------------- budget process
+
+_CHILD_CODE = "import sys; from lod2energy.executor import _budget_child_main; _budget_child_main(int(sys.argv[1]))"
+#: Wall time (s) a fresh budget process may take to start and import the job's module.
+START_TIMEOUT = 120.0
+
+
+def _budget_child_main(fd: int) -> None:
+    """A budget process: take ``sys.path`` and the modules to import, say ready, then serve
+    jobs exactly as a pool worker does (:func:`_worker_loop`)."""
+    conn = Connection(fd)
+    try:
+        _, path, modules = conn.recv()
+    except (EOFError, OSError):
+        return
+    sys.path[:] = path
+    import importlib
+    for m in modules:
+        try:
+            importlib.import_module(m)
+        except Exception:  # noqa: BLE001 - the job itself reports what cannot be imported
+            pass
+    conn.send("ready")
+    _worker_loop(conn)
+
+
+class _BudgetChild:
+    """One persistent ``python`` subprocess (fork + exec: safe from a multi-threaded, daemonic
+    Dask worker, where ``multiprocessing`` may not start children), jobs over a socket pair."""
+
+    def __init__(self, modules: list[str]):
+        self.conn, child = mp.Pipe(duplex=True)
+        try:
+            self.proc = subprocess.Popen([sys.executable, "-c", _CHILD_CODE, str(child.fileno())],
+                                         pass_fds=(child.fileno(),), stdin=subprocess.DEVNULL,
+                                         env={**os.environ, "PYTHONPATH": os.pathsep.join(p for p in sys.path if p)})
+        finally:
+            child.close()
+        try:
+            self.conn.send(("init", list(sys.path), modules))
+            ready = self.conn.poll(START_TIMEOUT) and self.conn.recv() == "ready"
+        except (EOFError, OSError):
+            ready = False
+        if not ready:
+            self.stop()
+            raise OSError(f"the budget process did not start within {START_TIMEOUT:g} s "
+                          f"(exit code {self.proc.returncode})")
+
+    def stop(self) -> None:
+        try:
+            self.proc.kill()
+            self.proc.wait()
+        except OSError:
+            pass
+        self.conn.close()
+
+
+_CHILDREN: dict[int, _BudgetChild] = {}  # worker thread id -> its budget process
+_CHILDREN_LOCK = threading.Lock()
+
+
+def _dumps(obj) -> bytes:
+    try:
+        import cloudpickle  # a dask dependency: sends functions of __main__ by value
+        return cloudpickle.dumps(obj)
+    except ImportError:  # pragma: no cover - cloudpickle ships with dask
+        import pickle
+        return pickle.dumps(obj)
+
+
+def run_with_budget(fn: Callable[[Any], Any], arg: Any, timeout: float | None) -> Any:
+    """``fn(arg)`` in this thread's budget process, stopped at ``timeout`` (s) of its CPU time
+    or ``WALL_FACTOR * timeout`` of wall time, like a pool worker.
+
+    The Dask task of :class:`DaskExecutor`. Each thread of the calling process keeps one
+    persistent budget process (started on first use, its start not counted in the budget); a
+    process that overruns is killed, reaped and replaced at the next call.
+
+    Returns
+    -------
+    object
+        ``fn(arg)``, :class:`Overrun` or :class:`Failure` (``fn`` raised, the budget process
+        died or could not start). Without a budget ``fn(arg)`` runs in this thread.
+    """
+    if timeout is None or timeout <= 0:
+        try:
+            return fn(arg)
+        except Exception as e:  # noqa: BLE001 - one job's failure never stops the batch
+            return Failure(_one_line(e))
+    key = threading.get_ident()
+    with _CHILDREN_LOCK:
+        child = _CHILDREN.get(key)
+    if child is not None and child.proc.poll() is not None:
+        _drop(key, child)
+        child = None
+    if child is None:
+        mods = ["lod2energy.records"]
+        mod = getattr(fn, "__module__", None)
+        if mod and mod not in ("__main__", "__mp_main__"):
+            mods.append(mod)
+        try:
+            child = _BudgetChild(mods)
+        except (OSError, ValueError, EOFError) as e:
+            return Failure(f"budget process not started: {_one_line(e)}")
+        with _CHILDREN_LOCK:
+            _CHILDREN[key] = child
+    try:
+        msg = _dumps((0, fn, arg))
+    except Exception as e:  # noqa: BLE001 - an argument that does not pickle
+        return Failure(f"job not sendable: {_one_line(e)}")
+    pid = child.proc.pid
+    t0, c0 = time.monotonic(), _cpu_seconds(pid)
+    try:
+        child.conn.send_bytes(msg)
+        while True:
+            left = t0 + timeout * WALL_FACTOR - time.monotonic()
+            if child.conn.poll(max(0.0, min(0.25, left))):  # CPU time polled every 0.25 s
+                _, ok, res = child.conn.recv()
+                return res if ok else Failure(res)
+            if time.monotonic() - t0 >= timeout * WALL_FACTOR or _cpu_seconds(pid) - c0 >= timeout:
+                _drop(key, child)
+                return Overrun(round(time.monotonic() - t0, 1))
+    except (EOFError, OSError) as e:  # the budget process died (e.g. out of memory) or was stopped
+        code = child.proc.poll()
+        _drop(key, child)
+        return Failure(f"worker process died (exit code {code})" if code is not None
+                       else f"worker process lost: {_one_line(e)}")
+
+
+def _drop(key: int, child: _BudgetChild) -> None:
+    """Kill and reap ``child`` and forget it (the next call of thread ``key`` starts one)."""
+    with _CHILDREN_LOCK:
+        if _CHILDREN.get(key) is child:
+            del _CHILDREN[key]
+    child.stop()
+
+
+def stop_budget_processes() -> int:
+    """Kill every budget process of this process (a task running in one then returns
+    :class:`Failure`); returns how many. Run on each Dask worker by :meth:`DaskExecutor.close`."""
+    with _CHILDREN_LOCK:
+        kids = list(_CHILDREN.values())
+        _CHILDREN.clear()
+    for c in kids:
+        c.stop()
+    return len(kids)
+
+
 # ----------------------------------------------------------------------------- Dask
 
 class DaskExecutor(Executor):
-    """Jobs as tasks of a ``dask.distributed`` cluster.
+    """Jobs as tasks of a ``dask.distributed`` cluster, with the pool's hard time budget.
 
     Parameters
     ----------
@@ -299,9 +449,16 @@ class DaskExecutor(Executor):
     Notes
     -----
     The workers must see the same file system as this process (they write the output files
-    and the spool); ``lod2energy`` must be importable on them. A task past ``timeout`` is
-    cancelled and reported :class:`Overrun`, but a Dask worker thread cannot be killed: it runs
-    to the end of the repair's own deadline.
+    and the spool); ``lod2energy`` must be importable on them. With a ``timeout`` each task
+    is :func:`run_with_budget`: the job runs in a persistent ``python`` subprocess of the Dask
+    worker thread (started with ``subprocess``, so it works in daemonic worker processes,
+    ``LocalCluster(processes=True)``, and in worker threads of this process,
+    ``processes=False``); at ``timeout`` s of its CPU time (or ``WALL_FACTOR`` times that of
+    wall time) it is killed and reaped, the task returns :class:`Overrun` and the thread goes
+    on with the next task. The budget counts from the moment the job starts on its worker,
+    not from its submission. Without a ``timeout`` the job runs in the worker thread itself.
+    :meth:`close` stops the budget processes on every worker (left idle, they exit with their
+    worker process).
     """
 
     def __init__(self, client, window: int | None = None):
@@ -318,11 +475,12 @@ class DaskExecutor(Executor):
             threads = 1
         self.jobs = max(1, threads)
         self.window = int(window or 4 * self.jobs)
+        self._pending: deque = deque()  # futures submitted and not yet yielded
 
     def map(self, fn, args, timeout=None):
-        from dask.distributed import wait as dwait
         it = iter(args)
-        queue: deque = deque()  # (arg, future, submitted at)
+        queue = self._pending = deque()  # (arg, future)
+        budget = float(timeout) if timeout is not None and timeout > 0 else None
         exhausted = False
         while True:
             while not exhausted and len(queue) < self.window:
@@ -331,25 +489,25 @@ class DaskExecutor(Executor):
                 except StopIteration:
                     exhausted = True
                     break
-                queue.append((arg, self.client.submit(fn, arg, pure=False), time.monotonic()))
+                queue.append((arg, self.client.submit(run_with_budget, fn, arg, budget, pure=False)))
             if not queue:
                 return
-            arg, fut, t0 = queue.popleft()
-            left = None if not timeout or timeout <= 0 else max(0.0, t0 + timeout - time.monotonic())
+            arg, fut = queue.popleft()
             try:
-                dwait(fut, timeout=left)
-            except Exception:  # noqa: BLE001 - dask's TimeoutError
-                pass
-            if not fut.done():
-                self.client.cancel(fut)
-                yield arg, Overrun(round(time.monotonic() - t0, 1))
-                continue
-            try:
-                yield arg, fut.result()
-            except Exception as e:  # noqa: BLE001 - the task raised on the worker
-                yield arg, Failure(_one_line(e))
+                res = fut.result()  # the task enforces the budget itself
+            except Exception as e:  # noqa: BLE001 - the task raised or its worker was lost
+                res = Failure(_one_line(e))
+            yield arg, res
 
     def close(self, kill: bool = False) -> None:
+        pending = [f for _, f in self._pending]
+        self._pending = deque()
+        try:
+            if pending:
+                self.client.cancel(pending)
+            self.client.run(stop_budget_processes)  # idle ones would exit with their worker
+        except Exception:  # noqa: BLE001 - a cluster already gone
+            pass
         if self._own:
             try:
                 self.client.close()

@@ -192,6 +192,84 @@ def test_a_100000_face_building_is_reported_timeout_and_the_others_exported(tmp_
     assert "huge" in page and len(page) < 500_000, len(page)  # one ring per downward face: > 1.2 MB
 
 
+# ----------------------------------------------------------------------------- time budget on Dask
+
+def _spin_and_tell(job):
+    """Write this process's id to ``job[0]``, then spin ``job[1]`` s of CPU time."""
+    Path(job[0]).write_text(str(os.getpid()))
+    return _spin(job[1])
+
+
+def _pid(_):
+    return os.getpid()
+
+
+def _alive(pid: int) -> bool:
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    return Path(f"/proc/{pid}").exists() and "Z" not in Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1][:3]
+
+
+@pytest.mark.parametrize("processes", [True, False])
+def test_dask_stops_a_cpu_bound_job_at_its_budget_and_the_worker_goes_on(tmp_path, processes):
+    distributed = pytest.importorskip("dask.distributed")
+    from lod2energy.executor import WALL_FACTOR, DaskExecutor
+
+    tell = tmp_path / "pid"
+    with distributed.LocalCluster(n_workers=1, threads_per_worker=1, processes=processes,
+                                  dashboard_address=None) as cluster, distributed.Client(cluster) as client:
+        worker_pid, = client.run(os.getpid).values()
+        with DaskExecutor(client) as ex:
+            first = list(ex.map(_pid, [0], timeout=5.0))[0][1]  # the budget process, started
+            out = list(ex.map(_spin_and_tell, [(str(tell), 0.0), (str(tell), 60.0), (str(tell), 0.0)],
+                              timeout=1.0))
+            assert [a[1] for a, _ in out] == [0.0, 60.0, 0.0]
+            assert out[0][1] == 0.0 and out[2][1] == 0.0  # the one thread went on after the overrun
+            stopped = out[1][1]
+            assert isinstance(stopped, Overrun), stopped
+            assert stopped.seconds < WALL_FACTOR * 1.0, "stopped by the wall clock, not its CPU budget"
+            after = int(tell.read_text())  # the third job ran in a fresh budget process
+            assert first not in (worker_pid, after) and not _alive(first)  # killed and reaped
+            assert list(ex.map(_square, range(4), timeout=1.0)) == [(i, i * i) for i in range(4)]
+            assert list(ex.map(_boom, [2], timeout=1.0))[0][1].message.startswith("ValueError: bad 2")
+            assert list(ex.map(_square, [3]))[0][1] == 9  # no budget: in the worker thread
+        assert not _alive(after)  # close() stops the budget processes on every worker
+
+
+def test_dask_reports_a_100000_face_building_timeout_with_the_bytes_of_jobs_1(tmp_path, capsys):
+    # worker processes (processes=False is covered by the budget test above)
+    distributed = pytest.importorskip("dask.distributed")
+    from lod2energy.cli import build_parser, export_options
+    from lod2energy.executor import DaskExecutor
+    from lod2energy.options import RunOptions
+    from lod2energy.pipeline import export
+
+    src = row_of_boxes_seq(tmp_path / "with_huge.city.jsonl", n=2, touching=False,
+                           extra_lines=[huge_building_line(129)])
+    fmt = ["--stl", "--cityjson", "--timeout", "5"]
+    out = tmp_path / "out"
+    assert _export([src, *fmt, "-j", "1"], out, capsys) == 1
+    ref = tree_bytes(out)
+    shutil.rmtree(out)
+    a = build_parser().parse_args(["export", src, "-o", str(out), *fmt])
+    with distributed.LocalCluster(n_workers=1, threads_per_worker=2, processes=True,
+                                  dashboard_address=None) as cluster, distributed.Client(cluster) as client:
+        with DaskExecutor(client) as ex:
+            t0 = time.monotonic()
+            res = export(src, str(out), export_options(a), RunOptions(quiet=True), executor=ex)
+            wall = time.monotonic() - t0
+    assert res.exit_code == 1 and wall < 5 * 10
+    rows = {b["id"]: b for b in json.loads((out / "report.json").read_text())["buildings"]}
+    assert rows["huge"]["outcome"] == "timeout" and "timeout" in rows["huge"]["message"]
+    assert all(rows[b]["outcome"] == "done" and rows[b]["stl_ok"] for b in ("b0", "b1"))
+    got = tree_bytes(out)
+    assert sorted(got) == sorted(ref)
+    for k in ref:
+        assert got[k] == ref[k], f"{k} differs between Dask and --jobs 1"
+
+
 # ----------------------------------------------------------------------------- SIGTERM and --resume
 
 def _journal_buildings(out: Path) -> int:
