@@ -3,7 +3,7 @@
 - :mod:`~lod2energy.geometry.vectors`: cross products, Newell normals, plane bases, 2D projection;
 - :mod:`~lod2energy.geometry.snap`: vertex snapping (the one clustering of close points);
 - :mod:`~lod2energy.geometry.triangulate`: ear clipping, constrained Delaunay, bulk triangulation;
-- :mod:`~lod2energy.geometry.intersect`: box pairs, segment/triangle tests, winding number;
+- :mod:`~lod2energy.geometry.intersect`: box pairs, segment/triangle tests, winding number, closest point on a triangle;
 - :mod:`~lod2energy.geometry.measure`: areas, signed volume, best-fit plane, planarity;
 - :mod:`~lod2energy.geometry.simplify`: short-edge collapse, collinear vertices.
 
@@ -14,7 +14,7 @@ call these functions. The names are re-exported here (``from lod2energy.geometry
 from __future__ import annotations
 
 from lod2energy.geometry.intersect import (
-    bbox_pairs, points_in_solid, segment_triangle_intersect, triangle_pairs_intersect, winding_number,
+    bbox_pairs, closest_on_triangle, points_in_solid, segment_triangle_intersect, triangle_pairs_intersect, winding_number,
 )
 from lod2energy.geometry.measure import (
     best_fit_plane, plane_distance, ring_area_2d, signed_volume, triangle_areas, triangle_normals,
@@ -33,7 +33,7 @@ from lod2energy.geometry.vectors import (
 __all__ = [
     "cross_rows", "newell_normal", "polygon_normal", "best_fit_plane", "project_2d", "snap_map",
     "triangulate_surface", "triangulate_surfaces", "triangulate_flat", "triangulate_shell", "triangle_normals",
-    "triangle_areas", "signed_volume", "bbox_pairs", "segment_triangle_intersect", "triangle_pairs_intersect",
+    "triangle_areas", "signed_volume", "bbox_pairs", "closest_on_triangle", "segment_triangle_intersect", "triangle_pairs_intersect",
     "winding_number", "points_in_solid", "collapse_short_edges",
     # added with the package
     "newell_normals", "rings_normal", "plane_basis", "plane_bases", "unit_rows", "cross2", "close_pairs",

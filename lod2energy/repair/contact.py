@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from lod2energy.geometry import closest_on_triangle
 from lod2energy.polymesh import PolyMesh, triangulate_mesh
 
 
@@ -35,30 +36,3 @@ def onto_surface(m: PolyMesh, other: PolyMesh, tol: float) -> PolyMesh | None:
         V[i] = closest_on_triangle(V[i], A[k], B[k], C[k])
         moved = True
     return m.with_faces(m.faces, V) if moved else None
-
-
-def closest_on_triangle(p, a, b, c):
-    """The point of triangle ``abc`` nearest to ``p`` ((3,) arrays, m; Ericson's method)."""
-    ab, ac, ap = b - a, c - a, p - a
-    d1, d2 = ab @ ap, ac @ ap
-    if d1 <= 0 and d2 <= 0:
-        return a
-    bp = p - b
-    d3, d4 = ab @ bp, ac @ bp
-    if d3 >= 0 and d4 <= d3:
-        return b
-    vc = d1 * d4 - d3 * d2
-    if vc <= 0 and d1 >= 0 and d3 <= 0:
-        return a + d1 / (d1 - d3) * ab
-    cp = p - c
-    d5, d6 = ab @ cp, ac @ cp
-    if d6 >= 0 and d5 <= d6:
-        return c
-    vb = d5 * d2 - d1 * d6
-    if vb <= 0 and d2 >= 0 and d6 <= 0:
-        return a + d2 / (d2 - d6) * ac
-    va = d3 * d6 - d5 * d4
-    if va <= 0 and d4 - d3 >= 0 and d5 - d6 >= 0:
-        return b + (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (c - b)
-    den = 1.0 / (va + vb + vc)
-    return a + ab * (vb * den) + ac * (vc * den)
