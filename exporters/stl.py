@@ -104,7 +104,72 @@ def _zone_mesh(z: ZoneShell) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     tris, codes = np.concatenate(tris), np.concatenate(codes)
     tris, codes = cancel_fins(tris, codes)
     tris, codes = flip_caps(z.vertices, tris, codes)
+    tris, codes = split_open_edges(z.vertices, tris, codes)
     return z.vertices, tris, codes
+
+
+def split_open_edges(v: np.ndarray, t: np.ndarray, c: np.ndarray, tol: float = T_JUNCTION_TOL,
+                     rounds: int = 4) -> tuple[np.ndarray, np.ndarray]:
+    """Split triangles at the vertices lying inside their open edges (T-junctions in a face).
+
+    A face whose holes have collinear edges (the sills of a row of LoD3 windows) can be
+    triangulated with one long triangle edge along that line, while the triangles on the
+    other side of it use its pieces between the window corners: the long edge and its pieces
+    are each in one triangle only. Each such triangle ``(a, b, o)`` with the vertices
+    ``w1 .. wn`` lying on ``ab`` (within ``tol``, strictly between ``a`` and ``b``) becomes the
+    fan ``(a, w1, o), (w1, w2, o), ..., (wn, b, o)``: same surface, same orientation, and every
+    piece of the line now in two triangles. A mesh without open edges is returned as it is.
+
+    Parameters
+    ----------
+    v : (n, 3) float, m
+    t : (t, 3) int
+    c : (t,) int
+        Each triangle's value, kept by its pieces.
+    tol : float, m
+        Largest distance of a vertex from the edge it splits.
+
+    Returns
+    -------
+    triangles (t', 3) int, values (t',) int
+    """
+    for _ in range(rounds):
+        if not len(t):
+            break
+        e = np.sort(np.concatenate([t[:, [0, 1]], t[:, [1, 2]], t[:, [2, 0]]]), axis=1)
+        u, inv, cnt = np.unique(e, axis=0, return_inverse=True, return_counts=True)
+        open_ = cnt[inv.ravel()] == 1
+        if not open_.any():
+            break
+        nt = len(t)
+        cand = np.unique(u[cnt == 1].ravel())  # the T vertices end open edges themselves
+        P = v[cand]
+        new_t, new_c, done = [], [], np.zeros(nt, dtype=bool)
+        for j in np.flatnonzero(open_):
+            k, side = j % nt, j // nt
+            if done[k]:
+                continue
+            a, b, o = t[k, side], t[k, (side + 1) % 3], t[k, (side + 2) % 3]
+            ab = v[b] - v[a]
+            L2 = float(ab @ ab)
+            if L2 <= 0:
+                continue
+            s = (P - v[a]) @ ab / L2
+            d = np.linalg.norm(P - (v[a] + s[:, None] * ab), axis=1)
+            eps = tol / np.sqrt(L2)
+            on = (d <= tol) & (s > eps) & (s < 1 - eps) & (cand != a) & (cand != b) & (cand != o)
+            if not on.any():
+                continue
+            ws = cand[on][np.argsort(s[on], kind="stable")]
+            chain = [a, *ws.tolist(), b]
+            new_t.extend((chain[i], chain[i + 1], o) for i in range(len(chain) - 1))
+            new_c.extend([c[k]] * (len(chain) - 1))
+            done[k] = True
+        if not done.any():
+            break
+        t = np.concatenate([t[~done], np.asarray(new_t, dtype=t.dtype).reshape(-1, 3)])
+        c = np.concatenate([c[~done], np.asarray(new_c, dtype=c.dtype)])
+    return t, c
 
 
 def flip_caps(v: np.ndarray, t: np.ndarray, c: np.ndarray, rel: float = 1e-9, height: float = CAP_HEIGHT
