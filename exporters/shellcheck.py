@@ -9,9 +9,8 @@ from __future__ import annotations
 from typing import Sequence
 
 import numpy as np
-from scipy.spatial import cKDTree
 
-from lod2energy.geometry import signed_volume as _signed_volume
+from lod2energy.geometry import signed_volume as _signed_volume, split_at_points
 
 from .polygons import triangulate
 from .weld import clean_ring, weld
@@ -21,41 +20,6 @@ def signed_volume(vertices: np.ndarray, tris: np.ndarray) -> float:
     """Signed volume (m3) of a triangle mesh ``(t, 3)`` over ``vertices`` ``(n, 3)``; positive
     when outward oriented (taken about the vertices' centroid: local and map coordinates alike)."""
     return _signed_volume(np.asarray(vertices, dtype=np.float64), tris, origin="centroid")
-
-
-def _split_t_junctions(v: np.ndarray, polys: list[list[int]], tol: float,
-                       only_unmatched: bool = False) -> list[list[int]]:
-    """Insert into polygon edges the vertices lying on them (T-junctions), in order.
-
-    With ``only_unmatched`` only edges without a reversed twin are split (as EnergyPlus
-    does when a zone is not enclosed), so that shared edges and diagonals stay untouched.
-    """
-    tree = cKDTree(v)
-    directed = {(poly[k], poly[(k + 1) % len(poly)]) for poly in polys for k in range(len(poly))}
-    out = []
-    for poly in polys:
-        new = []
-        for k in range(len(poly)):
-            a, b = poly[k], poly[(k + 1) % len(poly)]
-            new.append(a)
-            if only_unmatched and (b, a) in directed:
-                continue
-            pa, pb = v[a], v[b]
-            d = pb - pa
-            L = float(np.linalg.norm(d))
-            if L <= tol:
-                continue
-            cand = tree.query_ball_point((pa + pb) / 2, L / 2 + tol)
-            on = []
-            for c in cand:
-                if c in (a, b):
-                    continue
-                t = float(np.dot(v[c] - pa, d) / (L * L))
-                if tol / L < t < 1 - tol / L and np.linalg.norm(pa + t * d - v[c]) <= tol:
-                    on.append((t, c))
-            new.extend(c for _, c in sorted(on))
-        out.append(new)
-    return out
 
 
 def check_closed_outward(polygons: Sequence[np.ndarray], tol: float = 1e-3,
@@ -87,7 +51,7 @@ def check_closed_outward(polygons: Sequence[np.ndarray], tol: float = 1e-3,
         k += len(p)
         if len(set(ring)) >= 3:
             polys.append(ring)
-    polys = _split_t_junctions(v, polys, t_tol, only_unmatched=True)
+    polys = split_at_points(v, polys, t_tol, only_unmatched=True)
     directed: dict[tuple[int, int], int] = {}
     for poly in polys:
         for i in range(len(poly)):

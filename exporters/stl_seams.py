@@ -11,7 +11,7 @@ from dataclasses import replace
 
 import numpy as np
 
-from .shellcheck import _split_t_junctions
+from lod2energy.geometry import split_at_points
 from .zones import ZoneShell
 
 #: A vertex this close (m) to an edge that has no twin (or an open triangle edge) is a T-junction:
@@ -27,7 +27,7 @@ def split_t_junctions(z: ZoneShell, tol: float = T_JUNCTION_TOL) -> ZoneShell:
     directed = {(r[k], r[(k + 1) % len(r)]) for r in rings for k in range(len(r))}
     if all((b, a) in directed for a, b in directed):
         return z
-    split = iter(_split_t_junctions(z.vertices, rings, tol, only_unmatched=True))
+    split = iter(split_at_points(z.vertices, rings, tol, only_unmatched=True))
     faces = tuple(replace(f, rings=tuple(tuple(next(split)) for _ in f.rings)) for f in z.faces)
     return replace(z, faces=faces)
 

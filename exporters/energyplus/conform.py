@@ -9,7 +9,9 @@ from dataclasses import replace
 import numpy as np
 
 from ..polygons import polygon_area3d
-from ..shellcheck import check_closed_outward, _split_t_junctions
+from lod2energy.geometry import split_at_points
+
+from ..shellcheck import check_closed_outward
 from ..weld import weld
 from ..zones import MIN_PIECE_AREA
 from .enclosure import (_collinear_many, enclosure_defects, eplus_degenerate_many, _on_line,
@@ -265,7 +267,7 @@ def conform(pieces: list[Piece], tol: float = 1e-5) -> list[Piece]:
     for p in pieces:
         polys.append(idx[k:k + len(p.points)].tolist())
         k += len(p.points)
-    polys = _split_t_junctions(v, polys, tol, only_unmatched=True)
+    polys = split_at_points(v, polys, tol, only_unmatched=True)
     out = []
     for p, poly in zip(pieces, polys):
         poly = [i for j, i in enumerate(poly) if i != poly[j - 1]]

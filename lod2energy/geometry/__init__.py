@@ -1,7 +1,8 @@
 """Shared numeric geometry on plain numpy arrays, one module per operation.
 
 - :mod:`~lod2energy.geometry.vectors`: cross products, Newell normals, plane bases, 2D projection;
-- :mod:`~lod2energy.geometry.snap`: vertex snapping (the one clustering of close points);
+- :mod:`~lod2energy.geometry.snap`: vertex snapping (the one clustering of close points), vertices put into the
+  ring edges they lie on (T-junctions);
 - :mod:`~lod2energy.geometry.triangulate`: ear clipping, constrained Delaunay, bulk triangulation;
 - :mod:`~lod2energy.geometry.intersect`: box pairs, segment/triangle tests, winding number, closest point on a triangle;
 - :mod:`~lod2energy.geometry.measure`: areas, signed volume, best-fit plane, planarity;
@@ -20,7 +21,7 @@ from lod2energy.geometry.measure import (
     best_fit_plane, plane_distance, ring_area_2d, signed_volume, triangle_areas, triangle_normals,
 )
 from lod2energy.geometry.simplify import collapse_short_edges, drop_collinear
-from lod2energy.geometry.snap import close_pairs, snap_map
+from lod2energy.geometry.snap import close_pairs, snap_map, split_at_points
 from lod2energy.geometry.triangulate import (
     SLIVER_RATIO, constrained_delaunay, ear_triangles, earcut_rings, lawson_cdt, triangulate_flat,
     triangulate_shell, triangulate_surface, triangulate_surfaces,
@@ -31,7 +32,7 @@ from lod2energy.geometry.vectors import (
 )
 
 __all__ = [
-    "cross_rows", "newell_normal", "polygon_normal", "best_fit_plane", "project_2d", "snap_map",
+    "cross_rows", "newell_normal", "polygon_normal", "best_fit_plane", "project_2d", "snap_map", "split_at_points",
     "triangulate_surface", "triangulate_surfaces", "triangulate_flat", "triangulate_shell", "triangle_normals",
     "triangle_areas", "signed_volume", "bbox_pairs", "closest_on_triangle", "segment_triangle_intersect", "triangle_pairs_intersect",
     "winding_number", "points_in_solid", "collapse_short_edges",

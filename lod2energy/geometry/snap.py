@@ -134,3 +134,56 @@ def snap_points(points: np.ndarray, snap_tol: float) -> np.ndarray:
             rep[i] = cands[0]
             kept[i] = False
     return rep
+
+
+def split_at_points(v: np.ndarray, polys: list[list[int]], tol: float, only_unmatched: bool = False,
+                    candidates=None) -> list[list[int]]:
+    """Insert into polygon edges the vertices lying on them (T-junctions), in order along each edge.
+
+    Parameters
+    ----------
+    v : (n, 3) float, m
+    polys : list of list of int
+        Rings as vertex indices into ``v``.
+    tol : float, m
+        Largest distance of a vertex from the edge it is inserted into (and from its ends).
+    only_unmatched : bool
+        Split only edges without a reversed twin (as EnergyPlus does when a zone is not
+        enclosed), so that shared edges and diagonals stay untouched.
+    candidates : iterable of int, optional
+        Only these vertices may be inserted (and not into a ring that already has them);
+        default every vertex.
+
+    Returns
+    -------
+    list of list of int
+        The rings with the vertices inserted.
+    """
+    tree = cKDTree(v)
+    allowed = None if candidates is None else {int(c) for c in candidates}
+    directed = {(poly[k], poly[(k + 1) % len(poly)]) for poly in polys for k in range(len(poly))}
+    out = []
+    for poly in polys:
+        new = []
+        inside = set(poly) if allowed is not None else ()
+        for k in range(len(poly)):
+            a, b = poly[k], poly[(k + 1) % len(poly)]
+            new.append(a)
+            if only_unmatched and (b, a) in directed:
+                continue
+            pa, pb = v[a], v[b]
+            d = pb - pa
+            L = float(np.linalg.norm(d))
+            if L <= tol:
+                continue
+            cand = tree.query_ball_point((pa + pb) / 2, L / 2 + tol)
+            on = []
+            for c in cand:
+                if c in (a, b) or (allowed is not None and (c not in allowed or c in inside)):
+                    continue
+                t = float(np.dot(v[c] - pa, d) / (L * L))
+                if tol / L < t < 1 - tol / L and np.linalg.norm(pa + t * d - v[c]) <= tol:
+                    on.append((t, c))
+            new.extend(c for _, c in sorted(on))
+        out.append(new)
+    return out

@@ -25,7 +25,7 @@ from typing import Mapping
 
 import numpy as np
 
-from lod2energy.geometry import newell_normal, plane_basis
+from lod2energy.geometry import newell_normal, plane_basis, split_at_points
 from lod2energy.model import BUILDING_TYPES, Building, Geometry, Shell, Solid, Surface, frozen_mapping
 
 #: Semantic types of openings (CityJSON's spelling; the CityGML reader writes the same).
@@ -192,28 +192,17 @@ def polygon_rings(poly, ids: np.ndarray, pts2: np.ndarray) -> list[list[int]] | 
 
 def _insert_on_edges(v: np.ndarray, faces: list[Surface], host: int, op: int, ids: list[int]) -> None:
     """Put each vertex of ``ids`` that lies inside an edge of another face into that edge."""
-    for k, f in enumerate(faces):
-        if k in (host, op):
-            continue
-        rings, moved = [], False
-        for r in f.rings:
-            rl = [int(i) for i in r]
-            for q in ids:
-                if q in rl:
-                    continue
-                for e in range(len(rl)):
-                    a, b = v[rl[e]], v[rl[(e + 1) % len(rl)]]
-                    ab = b - a
-                    L2 = float(ab @ ab)
-                    if L2 <= 0:
-                        continue
-                    t = float((v[q] - a) @ ab) / L2
-                    if 0 < t < 1 and np.linalg.norm(a + t * ab - v[q]) <= SNAP_TOL:
-                        rl.insert(e + 1, q)
-                        moved = True
-                        break
-            arr = np.asarray(rl, dtype=r.dtype)
-            arr.setflags(write=False)
-            rings.append(arr)
-        if moved:
-            faces[k] = Surface(tuple(rings), f.semantic)
+    others = [k for k in range(len(faces)) if k not in (host, op)]
+    flat = [[int(i) for i in r] for k in others for r in faces[k].rings]
+    split = iter(split_at_points(v, flat, SNAP_TOL, candidates=ids))
+    for k in others:
+        f = faces[k]
+        rings = [next(split) for _ in f.rings]
+        if any(len(n) != len(r) for n, r in zip(rings, f.rings)):
+            faces[k] = Surface(tuple(_ring(n, r.dtype) for n, r in zip(rings, f.rings)), f.semantic)
+
+
+def _ring(idx: list[int], dtype) -> np.ndarray:
+    arr = np.asarray(idx, dtype=dtype)
+    arr.setflags(write=False)
+    return arr
