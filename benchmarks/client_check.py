@@ -25,7 +25,7 @@ constructions) before the first day, so a one-day run checks every building in ~
 Usage (from the repository root)::
 
     python benchmarks/client_check.py [TILE ...] [--idf] [--run N] [--days D] [--jobs 2]
-                                      [--out FILE.md] [--jsonl FILE] [--keep DIR]
+                                      [--export-jobs J] [--out FILE.md] [--jsonl FILE] [--keep DIR]
                                       [--keep-failures DIR]
     python benchmarks/client_check.py --table ROWS.jsonl [...] --out FILE.md
 
@@ -46,6 +46,7 @@ import shutil
 import subprocess
 import sys
 import tempfile
+import threading
 import time
 from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
@@ -222,6 +223,8 @@ def check_tile(tile: Path, a, tmp: Path) -> dict:
     cmd = [sys.executable, "-m", "lod2energy", "export", str(tile), "-o", str(out), "--stl", "-q"]
     if a.idf:
         cmd.append("--idf")
+    if a.export_jobs is not None:
+        cmd += ["-j", str(a.export_jobs)]
     t0 = time.perf_counter()
     proc = subprocess.run(cmd, capture_output=True, text=True)
     dt = time.perf_counter() - t0
@@ -266,13 +269,14 @@ def table(rows: list[dict], run: bool) -> tuple[str, bool]:
         z, ze, v = sum(x["zones"] for x in ii), sum(x["enclosed"] for x in ii), sum(x["vol_ok"] for x in ii)
         lines.append(f"| {r['tile']} | {r['buildings']} | {r['rc']} | {r['seconds']} | {r['stl_pass']}/{r['stl']} | "
                      f"{r['idf_ok']}/{r['idf']} | {n} | {clean}/{n} | {z} | {ze}/{z} | {v}/{n} |")
-        bad |= r["stl_pass"] != r["stl"] or any(not x["ok"] for x in ii) or (run and n != r["idf"])
+        bad |= "error" in r or r["stl_pass"] != r["stl"] or any(not x["ok"] for x in ii) or (run and n != r["idf"])
         for k, val in zip(tot, (r["buildings"], r["stl"], r["stl_pass"], r["idf"], r["idf_ok"], n, clean, z, ze, v)):
             tot[k] += val
     lines.append(f"| **all** | {tot['b']} | | | {tot['stlp']}/{tot['stl']} | {tot['idfok']}/{tot['idf']} | "
                  f"{tot['run']} | {tot['clean']}/{tot['run']} | {tot['z']} | {tot['ze']}/{tot['z']} | "
                  f"{tot['v']}/{tot['run']} |")
-    fails = [f"- {r['tile']}: STL {x}" for r in rows for x in r["stl_fail"]]
+    fails = [f"- {r['tile']}: the check itself failed: {r['error']}" for r in rows if "error" in r]
+    fails += [f"- {r['tile']}: STL {x}" for r in rows for x in r["stl_fail"]]
     fails += [f"- {r['tile']}: `{x['id']}` ({x['zones']} zones): {'; '.join(x['reasons'])}"
               for r in rows for x in r.get("idfs", []) if not x["ok"]]
     errs = [x["vol_err"] for r in rows for x in r.get("idfs", []) if x["vol_err"] is not None]
@@ -290,6 +294,7 @@ def main(argv=None) -> int:
     ap.add_argument("--days", type=int, default=None,
                     help="simulate only the first D days of the year (input checks are the same)")
     ap.add_argument("--jobs", type=int, default=2, help="tiles checked at once")
+    ap.add_argument("--export-jobs", type=int, default=None, help="the export's own -j (default: its default)")
     ap.add_argument("--vol-tol", type=float, default=VOL_TOL, help="relative volume tolerance (0.005)")
     ap.add_argument("--keep", default=None, help="copy each tile's export folder here")
     ap.add_argument("--keep-failures", default=None, help="copy each failing IDF, its STL and .err here")
@@ -304,11 +309,19 @@ def main(argv=None) -> int:
         tiles = [Path(t) for t in a.tiles] or default_tiles()
         t0 = time.perf_counter()
         with tempfile.TemporaryDirectory(prefix="client_check_") as tmp:
+            lock = threading.Lock()
+
             def one(t):
-                r = check_tile(t, a, Path(tmp))
-                if a.jsonl:
-                    with open(a.jsonl, "a", encoding="utf-8") as fh:
+                try:
+                    r = check_tile(t, a, Path(tmp))
+                except Exception as e:  # noqa: BLE001 - one tile's crash is its row, the others go on
+                    r = {"tile": f"{t.parent.name}/{t.name}", "rc": -1, "seconds": 0, "buildings": 0,
+                         "error": f"{type(e).__name__}: {e}",
+                         "stl": 0, "stl_pass": 0, "stl_fail": [], "idf": 0, "idf_ok": 0, "idfs": []}
+                if a.jsonl:  # as each tile finishes, one whole line at a time (tiles run in threads)
+                    with lock, open(a.jsonl, "a", encoding="utf-8") as fh:
                         fh.write(json.dumps(r) + "\n")
+                        fh.flush()
                 return r
             with ThreadPoolExecutor(a.jobs) as ex:
                 rows = list(ex.map(one, tiles))

@@ -429,11 +429,13 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
                                     continue
                             yield (r.seq, near[r.seq], job)
 
-                    for task, res in ex.map(_context_or_record, ctx_tasks(), None):
+                    # the same budget per job as pass 1: an overrun stops the worker (replaced), the rest goes on
+                    for task, res in ex.map(_context_or_record, ctx_tasks(), timeout):
                         seq = task[1] if task[0] == "record" else task[0]
                         rec = records[seq]
                         if isinstance(res, (Overrun, Failure)):
-                            msg = res.message if isinstance(res, Failure) else f"timeout after {res.seconds} s"
+                            msg = (res.message if isinstance(res, Failure) else
+                                   f"timeout: not finished within {timeout:g} s (--timeout)")
                             res = [ExportRecord(n, False, "", (f"{n.upper()} not written: {msg}",)) for n in names]
                         for er in res:
                             rec = rec.with_export(er)

@@ -192,6 +192,36 @@ def test_a_100000_face_building_is_reported_timeout_and_the_others_exported(tmp_
     assert "huge" in page and len(page) < 500_000, len(page)  # one ring per downward face: > 1.2 MB
 
 
+def test_an_idf_context_job_past_the_timeout_is_stopped_and_the_neighbours_exported(tmp_path, capsys,
+                                                                                    monkeypatch):
+    """Pass 2 (the IDF writer with its neighbours) has the --timeout budget of pass 1: the
+    energy model of the middle box of a terraced row of 3 spins past it; its IDF is reported
+    not written (timeout), the other two are written (in-process: the patch reaches the job)."""
+    from lod2energy.exporters.energyplus import model as energy_model
+    real = energy_model.prepare_energy_model
+
+    def slow_for_b1(buildings, options, context=()):
+        buildings = list(buildings)
+        if context and any(str(b.id) == "b1" for b in buildings):
+            _spin(60.0)
+        return real(buildings, options, context)
+
+    monkeypatch.setattr(energy_model, "prepare_energy_model", slow_for_b1)
+    src = row_of_boxes_seq(tmp_path / "row.city.jsonl", n=3, touching=True)
+    out = tmp_path / "out"
+    rc = main(["export", src, "-o", str(out), "--idf", "--timeout", "3", "-j", "1", "-q"])
+    o, e = capsys.readouterr()
+    assert "Traceback" not in o + e and rc == 1
+    rows = {b["id"]: b for b in json.loads((out / "report.json").read_text())["buildings"]}
+    assert rows["b1"]["outcome"] == "done" and not rows["b1"]["idf_ok"]
+    assert not list(out.glob("**/b1*.idf"))
+    for bid in ("b0", "b2"):
+        assert rows[bid]["idf_ok"] and list(out.glob(f"**/{bid}*.idf")), bid
+    assert "IDF not written: timeout: not finished within 3 s (--timeout)" in e
+    csv_text = next(out.glob("*.csv")).read_text(encoding="utf-8")
+    assert "not finished within 3 s" in (out / "report.json").read_text() or "timeout" in csv_text
+
+
 # ----------------------------------------------------------------------------- time budget on Dask
 
 def _spin_and_tell(job):
