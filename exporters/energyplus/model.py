@@ -137,7 +137,7 @@ class EnergyModel:
         Shared faces (:func:`~lod2energy.exporters.energyplus.surfaces.find_party_faces`),
         none of a simpler envelope's.
     pieces : tuple of list of Piece
-        Each zone's written pieces.
+        Each zone's written pieces (empty for a neighbour's zones when the IDF has no shading).
     notes : mapping of int to tuple of str
         Building index -> what the stage changed (parts united or left out, unmatched openings).
     simpler : mapping of int to str
@@ -218,9 +218,15 @@ def prepare_energy_model(buildings: Iterable[Building], options, context: Iterab
             notes[next(bi for bi, zl in zones_of.items() if zi in zl)].append(
                 f"zone {zones[zi].object_id}: {unmatched} window/door face(s) fill no wall hole; written as wall")
     party = find_party_faces(zones) if options.party_walls else {}
-    pieces = [zone_pieces(z, zi, party, options.party_split) for zi, z in enumerate(zones)]
+    # a neighbour's pieces (and its simpler envelope) only show in the IDF as its shading
+    # surfaces; without shading they are not made (each would be made again for every
+    # building it neighbours: the bulk of the cost on terraced blocks)
+    n_own_zones = sum(len(zones_of[bi]) for bi in range(len(own)))
+    made = range(len(zones) if getattr(options, "shading", False) else n_own_zones)
+    pieces = [zone_pieces(z, zi, party, options.party_split) if zi in made else []
+              for zi, z in enumerate(zones)]
     simpler: dict[int, str] = {}
-    for zi in range(len(zones)):
+    for zi in made:
         found = enclosable(zones[zi], zi, pieces[zi])
         if found is not None:
             zones[zi], pieces[zi], simpler[zi] = found
