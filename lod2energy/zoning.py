@@ -362,3 +362,57 @@ def zone_levels(polygons: Sequence[tuple[np.ndarray, str]]) -> tuple[float, floa
     above = r[r[:, 1] > eave + 0.1]
     pitched = bool(len(above) and above[above[:, 3] >= FLAT_TILT, 2].sum() > 0.5 * above[:, 2].sum())
     return ground, max(eave, ground), float(allz.max()), pitched
+
+
+#: Offsets (m) tried above a storey's floor level for the plane of its section (one that passes
+#: through no vertex, so that every edge crossing it crosses it properly).
+SECTION_OFFSETS = (1e-4, 2e-4, 5e-4, 1e-3, 2e-3, 5e-3, 1e-2)
+
+
+def section_area(polygons: Sequence[np.ndarray], z: float) -> float:
+    """Area (m2) of the horizontal section of a closed shell just above height ``z``.
+
+    The plane is put :data:`SECTION_OFFSETS` above ``z`` (the first offset no vertex lies on),
+    so a horizontal surface at ``z`` (a lower roof, a step) is below it: the figure is the
+    floor area of a storey whose floor is at ``z``. Each polygon crossing the plane adds the
+    segment it leaves on it, from where its boundary comes down through the plane to where it
+    went up (the cap that would close the part below, as :func:`split_storeys` builds it), and
+    the area is the shoelace sum of those segments: no loops are chained, so a section that
+    would not close as a cap (what makes a storey cut fail) still has its area.
+
+    Parameters
+    ----------
+    polygons : sequence of (k, 3) float
+        The shell's planar polygons, counter-clockwise seen from outside, closed.
+    z : float, m
+
+    Returns
+    -------
+    float, m2
+        0 when the plane misses the shell.
+    """
+    polys = [np.asarray(p, dtype=np.float64) for p in polygons if len(p) >= 3]
+    if not polys:
+        return 0.0
+    allz = np.concatenate([p[:, 2] for p in polys])
+    c = float(z) + SECTION_OFFSETS[-1]
+    for d in SECTION_OFFSETS:
+        if not np.any(np.abs(allz - (float(z) + d)) < 1e-7):
+            c = float(z) + d
+            break
+    ref = np.concatenate([p[:, :2] for p in polys]).mean(axis=0)
+    area = 0.0
+    for p in polys:
+        above = p[:, 2] > c
+        if above.all() or not above.any():
+            continue
+        q = np.roll(p, -1, axis=0)
+        cross = np.nonzero(above != np.roll(above, -1))[0]
+        pts = [p[i, :2] + (c - p[i, 2]) / (q[i, 2] - p[i, 2]) * (q[i, :2] - p[i, :2]) - ref for i in cross]
+        ups = [not above[i] for i in cross]  # the boundary goes up through the plane here
+        k0 = ups.index(True)
+        order = list(range(k0, len(cross))) + list(range(k0))
+        for a, b in zip(order[::2], order[1::2]):  # (up, next down) pairs along the boundary
+            up, down = pts[a], pts[b]
+            area += 0.5 * float(down[0] * up[1] - up[0] * down[1])
+    return max(area, 0.0)

@@ -78,3 +78,46 @@ def test_benchmark_table_puts_the_reference_next_to_the_median_and_flags_the_ban
     assert "no published value" in next(x for x in text.splitlines() if "office" in x)
     far = bench.table([{**rows[0], "heating_kwh_m2": q * 2}], ref, 0.3)
     assert "**no**" in far
+
+
+TABULA_TYPE = {"SFH": "single-family", "TH": "terraced", "MFH": "multi-family", "AB": "apartment-block"}
+
+
+def test_dutch_rows_are_generic_existing_state_types_with_the_periods_of_their_code():
+    """Every hand-transcribed Dutch row: its code names its building type, TABULA period
+    ``NL.nn`` has the same years in every type, periods follow each other without a gap, and
+    within a type the need falls from period to period (older stock loses more)."""
+    import re
+
+    nl = [r for r in shipped() if r["country"] == "NL"]
+    assert {r["building_type"] for r in nl} == set(TABULA_TYPE.values())
+    by_period: dict = {}
+    for r in nl:
+        m = re.fullmatch(r"NL\.N\.(SFH|TH|MFH|AB)\.(\d\d)\.Gen\.ReEx\.001\.001", r["tabula_code"])
+        assert m, r["tabula_code"]
+        assert TABULA_TYPE[m.group(1)] == r["building_type"]
+        assert r["status"] == "transcribed" and r["climate"] == "Netherlands" and r["heating_days"] == "212"
+        assert float(r["reference_area_m2"]) > 0
+        by_period.setdefault(m.group(2), set()).add((int(r["period_start"]), int(r["period_end"])))
+    assert all(len(v) == 1 for v in by_period.values()), by_period
+    spans = [next(iter(by_period[k])) for k in sorted(by_period)]
+    assert all(b[0] == a[1] + 1 for a, b in zip(spans, spans[1:])), spans
+    for t in TABULA_TYPE.values():
+        q = [float(r["heating_kwh_m2"]) for r in sorted(nl, key=lambda r: int(r["period_start"]))
+             if r["building_type"] == t]
+        assert q == sorted(q, reverse=True), (t, q)
+
+
+@pytest.mark.parametrize("building_type", sorted(TABULA_TYPE.values()))
+def test_every_dutch_building_type_has_a_reference_up_to_2014(building_type):
+    """The benchmark finds a TABULA row for every Dutch residential building of the typology
+    built before 2015 (the multi-family and apartment rows also after)."""
+    bench = _module(REPO / "benchmarks" / "bench_energy.py", "bench_energy")
+    ref = bench.load_reference()
+    last = 2100 if building_type in ("multi-family", "apartment-block") else 2014
+    if building_type == "single-family":
+        last = 2005  # NL.N.SFH.05 / .06 not transcribed
+    missing = [y for y in range(1850, last + 1) if bench.reference_for(ref, "NL", building_type, y) is None]
+    assert not missing, (missing[:3], missing[-3:])
+    mfh = bench.reference_for(ref, "NL", "multi-family", 2011)
+    assert mfh["tabula_code"] == "NL.N.MFH.05.Gen.ReEx.001.001" and mfh["heating_kwh_m2"] == 59.0

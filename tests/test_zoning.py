@@ -129,3 +129,80 @@ def test_energyplus_reads_heating_per_storey_zone(tmp_path):
     assert res.stats["conditioned_floor_area_m2"] == pytest.approx(160.0)
     assert 20 < res.stats["heating_kwh_m2"] < 400
     assert res.stats["weather_distance_km"] < 50 and not any("km from the site" in w for w in res.warnings)
+
+
+def test_section_area_is_the_floor_of_a_storey_at_that_height():
+    pts = [p.points for p in _pieces(gabled_house(eaves=6.0, ridge=9.0))[1]]
+    ground = min(float(p[:, 2].min()) for p in pts)
+    assert zoning.section_area(pts, ground) == pytest.approx(80.0, rel=1e-6)  # the ground face is below the plane
+    assert zoning.section_area(pts, ground + 3.0) == pytest.approx(80.0, rel=1e-6)
+    assert zoning.section_area(pts, ground + 7.5) == pytest.approx(40.0, rel=1e-3)  # half way up the roof
+    assert zoning.section_area(pts, ground + 9.0) == 0.0  # the ridge: nothing above
+    top = [p.points for p in _pieces(box(10, 8, 6))[1]]
+    assert zoning.section_area(top, max(float(p[:, 2].max()) for p in top)) == 0.0  # a flat roof on the plane
+
+
+def _zone_floor_areas(path):
+    return {z.Name: float(z.Floor_Area) for z in _idf(path).idfobjects["ZONE"]}
+
+
+@pytest.mark.parametrize("make, storeys", [(lambda: box(10, 8, 8.4), 3), (lambda: box(10, 8, 2.8), 1),
+                                           (lambda: gabled_house(eaves=5.6, ridge=9.0), 2)])
+def test_whole_zone_floor_area_is_the_storeys_gross_floor_area(tmp_path, make, storeys):
+    """A zone kept whole gets the floor area of all its storeys (80 m2 footprint each), as its
+    storey zones would have: per-m2 loads and kWh/m2a do not change with the zoning."""
+    b = energy_ready(shifted(make()))
+    whole = energyplus.writer.write([b], tmp_path / "w", energyplus.options.IdfOptions(zoning="building"),
+                                    crs="EPSG:28992")[0]
+    split = energyplus.writer.write([b], tmp_path / "s", energyplus.options.IdfOptions(), crs="EPSG:28992")[0]
+    assert whole.ok and split.ok
+    (area,) = _zone_floor_areas(whole.path).values()
+    assert area == pytest.approx(80.0 * storeys, rel=1e-6)
+    assert whole.stats["zone_floor_area_m2"] == {whole.stats["conditioned_zones"][0]: area}
+    conditioned = sum(a for z, a in _zone_floor_areas(split.path).items()
+                      if z.upper() in {c.upper() for c in split.stats["conditioned_zones"]})
+    assert conditioned == pytest.approx(area, rel=0.005)
+    if storeys > 1:  # the storey zones themselves keep their floor surfaces' area
+        assert list(_zone_floor_areas(split.path).values()) == [pytest.approx(80.0)] * len(split.stats["zone_floor_area_m2"])
+
+
+def test_whole_zone_counts_the_attic_floor_only_when_the_attic_is_conditioned(tmp_path):
+    b = energy_ready(shifted(gabled_house(eaves=5.6, ridge=9.0)))
+    got = {}
+    for attic in ("unconditioned", "conditioned"):
+        res = energyplus.writer.write([b], tmp_path / attic, energyplus.options.IdfOptions(zoning="building", attic=attic),
+                                      crs="EPSG:28992")[0]
+        (got[attic],) = _zone_floor_areas(res.path).values()
+    # the attic floor is the section just above the eave: 80 m2 less a sliver of the roof pitch
+    assert got["unconditioned"] == pytest.approx(160.0) and got["conditioned"] == pytest.approx(240.0, rel=1e-3)
+
+
+def test_storey_zoning_that_stays_whole_gets_the_storeys_area(tmp_path, monkeypatch):
+    """The fallback of storey zoning (a cut that would not close) is a whole zone too."""
+    b = energy_ready(shifted(box(10, 8, 8.4)))
+    monkeypatch.setattr(zoning, "split_storeys", lambda *a, **k: None)
+    res = energyplus.writer.write([b], tmp_path, energyplus.options.IdfOptions(), crs="EPSG:28992")[0]
+    assert res.ok and res.stats["zones"] == 1
+    assert list(_zone_floor_areas(res.path).values()) == [pytest.approx(240.0)]
+    assert any("kept as one zone" in w for w in res.warnings)
+
+
+@pytest.mark.external
+def test_energyplus_uses_the_whole_zone_gross_floor_area(tmp_path):
+    """EnergyPlus takes the written Floor Area (its people and the reported kWh/m2a follow it)."""
+    import sqlite3
+    if energyplus.run.binary() is None:
+        pytest.skip("EnergyPlus not installed")
+    b = energy_ready(shifted(box(10, 8, 8.4), (212000.0, 490000.0, 0.0)))  # near Heino
+    res = energyplus.writer.write([b], tmp_path, energyplus.options.IdfOptions(zoning="building", run=True,
+                                                                               weather=str(EPW)), crs="EPSG:28992")[0]
+    assert res.ok, res.problems
+    assert res.stats["conditioned_floor_area_m2"] == pytest.approx(240.0)
+    assert res.stats["heating_kwh_m2"] == pytest.approx(res.heating_kwh / 240.0, abs=0.01)
+    sql = next(tmp_path.rglob("eplusout.sql"))
+    with sqlite3.connect(sql) as con:
+        (floor,), = con.execute("SELECT FloorArea FROM Zones").fetchall()
+        people = con.execute("SELECT SUM(NumberOfPeople) FROM NominalPeople").fetchone()[0]
+    assert floor == pytest.approx(240.0)
+    from lod2energy.thermal.use import use_conditions
+    assert people == pytest.approx(use_conditions("residential").people_per_m2 * 240.0, rel=1e-3)

@@ -87,6 +87,10 @@ def render_idf(zones: Sequence[ZoneShell], pieces: Sequence[list[Piece]], delta:
                openings: Sequence[Sequence["Opening"]] | None = None) -> tuple[str, dict, list[str]]:
     """IDF text for zones whose pieces are in a frame ``delta`` away from the file frame.
 
+    Each ``Zone``'s Floor Area is written (EnergyPlus's per-area loads and the reported
+    kWh/m2a use it): the area of its floor surfaces, plus, for a zone kept whole over several
+    storeys, the floor area of its upper storeys (:attr:`ZoneInfo.upper_floor_area`).
+
     ``zone_info`` (one per zone) gives each zone's use and whether it is conditioned: with
     ``options.use_loads`` its People, Lights, ElectricEquipment, schedules, setpoints,
     infiltration and ventilation come from :func:`lod2energy.thermal.use.use_conditions`; an
@@ -125,10 +129,12 @@ def render_idf(zones: Sequence[ZoneShell], pieces: Sequence[list[Piece]], delta:
                             "surface(s) written as Floor (EnergyPlus needs a floor in every zone)")
         zname = reg.name(z.object_id, 60)
         conditioned = info is None or info.conditioned
+        floor_area = sum(polygon_area3d(p.points) for p in zp if p.kind in ("ground", "floor"))
+        if info is not None and info.upper_floor_area > 0:
+            floor_area += info.upper_floor_area  # a whole zone over several storeys: their gross floor area
         zc = {"name": zname, "comment": comment_text(z.object_id),
               "volume": _fmt(max(_pieces_volume(zp), 0.0), 3),
-              "floor_area": _fmt(sum(polygon_area3d(p.points) for p in zp
-                                     if p.kind in ("ground", "floor")), 3),
+              "floor_area": _fmt(floor_area, 3),
               "conditioned": conditioned, "use": None, "infiltration": None,
               "building": info.building_id if info is not None else z.building_id}
         if options.use_loads and info is not None:

@@ -62,6 +62,11 @@ class ZoneInfo:
     conditioned : bool
     use : str
         Use type (:data:`lod2energy.thermal.use.USE_TYPES`).
+    upper_floor_area : float, m2
+        For a zone kept whole over several storeys (``--zoning building``, or a storey cut that
+        would not close): the gross floor area of its storeys above the lowest
+        (:func:`upper_floor_area`), which the IDF adds to the area of its floor surfaces as the
+        ``Zone``'s Floor Area. 0 for a storey zone and a one-storey zone.
     """
 
     building_id: str
@@ -69,6 +74,61 @@ class ZoneInfo:
     attic: bool
     conditioned: bool
     use: str
+    upper_floor_area: float = 0.0
+
+
+def _storey_plan(pieces: list[Piece], n_below: int, storey_height: float) -> tuple[float, float, float, int, bool]:
+    """``(ground, eave, ridge, storeys below the eave, attic)`` of a zone's pieces (m): the storeys
+    :func:`storey_zones` cuts it into and the ones :func:`upper_floor_area` counts."""
+    from lod2energy import zoning
+    from lod2energy.thermal.storeys import ATTIC_MIN_HEIGHT, MIN_STOREY_HEIGHT
+
+    ground, eave, ridge, pitched = zoning.zone_levels([(p.points, p.kind) for p in pieces])
+    n = max(1, int(round((eave - ground) / storey_height))) if storey_height > 0 else 1
+    n = min(n, max(n_below, 1)) if n_below else n
+    n = max(1, min(n, int((eave - ground) / MIN_STOREY_HEIGHT)))
+    attic = pitched and ridge - eave >= ATTIC_MIN_HEIGHT
+    return ground, eave, ridge, n, attic
+
+
+def upper_floor_area(pieces: list[Piece], n_below: int, storey_height: float, attic_mode: str) -> float:
+    """Gross floor area (m2) of the storeys above the lowest of a zone kept whole.
+
+    A zone that spans ``n`` storeys (counted as :func:`storey_zones` counts them: the storeys
+    under the eave split ``eave - ground`` evenly) has, besides its floor surfaces (the lowest
+    storey's floor), the floors of storeys ``2 .. n``: each the horizontal section of its
+    closed shell at that storey's floor level ``ground + k (eave - ground) / n``
+    (:func:`lod2energy.zoning.section_area`), and, with ``attic_mode == "conditioned"``, the
+    attic floor (the section at the eave) as a conditioned attic zone would have. These are
+    the floors storey zoning would write, so a building has the same conditioned floor area
+    whether it is cut into storey zones or kept whole. The sections follow the real shell
+    (a set-back top storey or a lower wing counts only where it is), which footprint x storeys
+    would not.
+
+    Parameters
+    ----------
+    pieces : list of Piece
+        The zone's final pieces (closed, outward).
+    n_below : int
+        Storeys under the eave of the building (:attr:`lod2energy.thermal.storeys.Storeys.below_eave`).
+    storey_height : float, m
+    attic_mode : {"unconditioned", "conditioned"}
+
+    Returns
+    -------
+    float, m2
+        0 for a one-storey zone without a conditioned attic.
+    """
+    from lod2energy import zoning
+
+    if not pieces:
+        return 0.0
+    ground, eave, _, n, attic = _storey_plan(pieces, n_below, storey_height)
+    levels = [ground + k * (eave - ground) / n for k in range(1, n)]
+    if attic and attic_mode == "conditioned":
+        levels.append(eave)
+    polys = [p.points for p in pieces]
+    return float(sum(zoning.section_area(polys, z) for z in levels))
 
 
 def storey_zones(zone: ZoneShell, zi: int, pieces: list[Piece], n_below: int, storey_height: float,
@@ -99,16 +159,11 @@ def storey_zones(zone: ZoneShell, zi: int, pieces: list[Piece], n_below: int, st
         enclosed), when it did.
     """
     from lod2energy import zoning
-    from lod2energy.thermal.storeys import ATTIC_MIN_HEIGHT, MIN_STOREY_HEIGHT
 
     single = [(zone, pieces, False)]
     if not pieces:
         return single, None
-    ground, eave, ridge, pitched = zoning.zone_levels([(p.points, p.kind) for p in pieces])
-    n = max(1, int(round((eave - ground) / storey_height))) if storey_height > 0 else 1
-    n = min(n, max(n_below, 1)) if n_below else n
-    n = max(1, min(n, int((eave - ground) / MIN_STOREY_HEIGHT)))
-    attic = pitched and ridge - eave >= ATTIC_MIN_HEIGHT
+    ground, eave, ridge, n, attic = _storey_plan(pieces, n_below, storey_height)
     allz = np.concatenate([p.points[:, 2] for p in pieces])
     horiz = [float(p.points[0, 2]) for p in pieces if np.ptp(p.points[:, 2]) <= 1e-6]
     spans = [(float(o.points[:, 2].min()), float(o.points[:, 2].max())) for o in openings]
@@ -159,9 +214,11 @@ def _written_zones(blist, zones, zones_of, pieces, options, openings):
                     notes[bi].append(note)
             else:
                 sz = [(zones[zi], pieces[zi], False)]
+            upper = (upper_floor_area(pieces[zi], st.below_eave, st.storey_height, options.attic)
+                     if len(sz) == 1 else 0.0)
             for k, (z, zp, attic) in enumerate(sz):
                 info = ZoneInfo(b.id, (k + 1 if not attic else None) if len(sz) > 1 else None, attic,
-                                not attic or options.attic == "conditioned", use.type)
+                                not attic or options.attic == "conditioned", use.type, upper)
                 out.append((z, zp, info, zi))  # zi: the source zone (its real openings)
         written_of[bi] = out
         bstats[bi] = {"use": use.type, "use_source": use.source, "storeys": st.count,
