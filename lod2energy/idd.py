@@ -231,28 +231,40 @@ def load_idd(path: str) -> Idd:
     return parse_idd(Path(path).read_text(encoding="latin-1"))
 
 
+_IDF_SEP = re.compile(r"([,;])")
+
+
 def parse_idf(text: str) -> list[IdfObject]:
-    """The objects of an IDF text, in order (comments removed, values stripped)."""
+    """The objects of an IDF text, in order (comments removed, values stripped).
+
+    A value may span lines (its pieces are joined, then stripped); an object's line is that
+    of its first non-blank piece (or of its ``;``).
+    """
     out: list[IdfObject] = []
     values: list[str] = []
     start = None
-    token: list[str] = []
+    token: list[str] = []  # the pieces of the value being read (each with a non-blank character)
+    split = _IDF_SEP.split
     for n, raw in enumerate(text.splitlines(), 1):
-        line = raw.split("!", 1)[0]
-        if not line.strip():
+        line = raw.partition("!")[0]
+        if not line or line.isspace():
             continue
-        for part in re.split(r"([,;])", line):
+        parts = split(line)
+        if len(parts) == 1:  # no separator: a piece of a value that goes on
+            if start is None:
+                start = n
+            token.append(line)
+            continue
+        for part in parts:
             if part == ",":
-                values.append("".join(token).strip())
+                values.append("".join(token).strip() if token else "")
                 token = []
             elif part == ";":
-                values.append("".join(token).strip())
+                values.append("".join(token).strip() if token else "")
                 token = []
-                if start is None:
-                    start = n
-                out.append(IdfObject(values[0], tuple(values[1:]), start))
+                out.append(IdfObject(values[0], tuple(values[1:]), n if start is None else start))
                 values, start = [], None
-            elif part.strip():
+            elif part and not part.isspace():
                 if start is None:
                     start = n
                 token.append(part)

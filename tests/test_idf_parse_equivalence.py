@@ -1,0 +1,77 @@
+"""The fast IDF reader (:func:`lod2energy.idd.parse_idf`) gives the same objects as the
+line-by-line reader it replaced, kept here as the reference: on IDF text as the writer
+writes it, and on random text of separators, comments, blanks and line breaks (values that
+span lines, objects with no ``;``, empty fields, a ``;`` alone on its line)."""
+from __future__ import annotations
+
+import random
+import re
+
+import pytest
+
+from lod2energy.idd import IdfObject, parse_idf
+
+
+def _ref_parse_idf(text: str) -> list[IdfObject]:
+    out: list[IdfObject] = []
+    values: list[str] = []
+    start = None
+    token: list[str] = []
+    for n, raw in enumerate(text.splitlines(), 1):
+        line = raw.split("!", 1)[0]
+        if not line.strip():
+            continue
+        for part in re.split(r"([,;])", line):
+            if part == ",":
+                values.append("".join(token).strip())
+                token = []
+            elif part == ";":
+                values.append("".join(token).strip())
+                token = []
+                if start is None:
+                    start = n
+                out.append(IdfObject(values[0], tuple(values[1:]), start))
+                values, start = [], None
+            elif part.strip():
+                if start is None:
+                    start = n
+                token.append(part)
+    if values or "".join(token).strip():
+        out.append(IdfObject((values + ["".join(token).strip()])[0], tuple(values[1:]), start or 0))
+    return out
+
+
+_WRITTEN = """!- Written by lod2energy
+Version, 25.2;
+
+Building,
+  B 1,     !- Name
+  0,                       !- North Axis {deg}
+  City;           !- Terrain
+BuildingSurface:Detailed,
+  Wall 1,                  !- Name
+  , , ,
+  4,                       !- Number of Vertices
+  1.000, 2.000, 3.000,     !- X,Y,Z 1 {m}
+  1.000
+  , 2.000, 3.000,
+  1.0e+00,2,3,
+  4, 5,
+  6
+;
+Output:Variable,*,Zone Mean Air Temperature,Hourly;
+"""
+
+
+def test_written_idf_text():
+    assert parse_idf(_WRITTEN) == _ref_parse_idf(_WRITTEN)
+    assert [o.cls for o in parse_idf(_WRITTEN)][-1] == "Output:Variable"
+
+
+@pytest.mark.parametrize("seed", range(40))
+def test_random_text(seed):
+    rng = random.Random(seed)
+    alphabet = [",", ";", "!", "\n", "\r\n", "\r", " ", "\t", "a", "B", "1.5", "-", "\x0c", "\u2028", "  x y "]
+    for _ in range(50):
+        text = "".join(rng.choice(alphabet) for _ in range(rng.randint(0, 80)))
+        assert parse_idf(text) == _ref_parse_idf(text), repr(text)
