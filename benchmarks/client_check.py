@@ -24,10 +24,15 @@ constructions) before the first day, so a one-day run checks every building in ~
 
 Usage (from the repository root)::
 
-    python benchmarks/client_check.py [TILE ...] [--idf] [--run N] [--days D] [--jobs 2]
+    python benchmarks/client_check.py [TILE ...] [--idf] [--cityjson] [--run N] [--days D] [--jobs 2]
                                       [--export-jobs J] [--out FILE.md] [--jsonl FILE] [--keep DIR]
                                       [--keep-failures DIR]
     python benchmarks/client_check.py --table ROWS.jsonl [...] --out FILE.md
+
+With ``--cityjson`` the energy CityJSON is written too, and each tile's row counts the
+buildings called compliant against the buildings each writer accepted (``<writer>_ok`` in
+``report.csv``, file present): the two must be equal (issue 19), every building on one side
+only is listed with the report's reason.
 
 Without TILE: every real CityJSON / CityJSONSeq file under ../shared/data and the real
 CityGML tiles of ``citygml-real`` (not the val3dity / QIE conformance files, but the
@@ -216,6 +221,33 @@ def check_idf(f: Path, a, tmp: Path, out: Path, idf_ok: bool | None) -> dict:
     return rec
 
 
+def compliance(rows: list[dict], out: Path, a) -> dict:
+    """Issue 19's count: buildings called compliant against what each writer accepted.
+
+    From the export's ``report.csv``: the buildings with ``compliant`` True, and per writer
+    asked for (STL always, IDF with ``--idf``, CityJSON with ``--cityjson``) the buildings
+    whose ``<writer>_ok`` is True and whose file is there. ``mismatch`` lists every building
+    on one side only (compliant but not accepted by a writer, or accepted but not compliant),
+    with the report's message (why it was not written).
+    """
+    compliant = {r["id"] for r in rows if r.get("compliant") == "True"}
+    writers = ["stl"] + (["idf"] if a.idf else []) + (["cityjson"] if a.cityjson else [])
+    files = {"stl": {p.stem for p in out.glob("*.stl")}, "idf": {p.stem for p in out.glob("*.idf")},
+             "cityjson": {p.stem for p in out.glob("*.json") if not p.name.startswith("report")}}
+    res = {"compliant": len(compliant), "mismatch": []}
+    for w in writers:
+        ok = {r["id"] for r in rows if r.get(f"{w}_ok") == "True"}
+        res[w] = len(ok)
+        for i in sorted(compliant ^ ok):
+            r = next(x for x in rows if x["id"] == i)
+            res["mismatch"].append(f"{i}: compliant {r.get('compliant')}, {w}_ok {r.get(f'{w}_ok')}, "
+                                   f"{r.get('outcome', '')}: {r.get('message', '')[:200]}")
+        # a file under a building's own name that the report does not count (or the reverse)
+        for i in sorted((ok - files[w]) if w != "cityjson" else set()):
+            res["mismatch"].append(f"{i}: {w}_ok True but no {w} file")
+    return res
+
+
 def check_tile(tile: Path, a, tmp: Path) -> dict:
     from lod2energy import openfoam
 
@@ -223,6 +255,8 @@ def check_tile(tile: Path, a, tmp: Path) -> dict:
     cmd = [sys.executable, "-m", "lod2energy", "export", str(tile), "-o", str(out), "--stl", "-q"]
     if a.idf:
         cmd.append("--idf")
+    if a.cityjson:
+        cmd.append("--cityjson")
     if a.export_jobs is not None:
         cmd += ["-j", str(a.export_jobs)]
     t0 = time.perf_counter()
@@ -233,6 +267,7 @@ def check_tile(tile: Path, a, tmp: Path) -> dict:
     report = out / "report.csv"
     rows = list(csv.DictReader(report.open())) if report.exists() else []
     row["buildings"] = len(rows)
+    row["compliance"] = compliance(rows, out, a)
     for stl in sorted(out.glob("*.stl")):
         row["stl"] += 1
         sc = openfoam.surface_check(stl)
@@ -279,6 +314,24 @@ def table(rows: list[dict], run: bool) -> tuple[str, bool]:
     fails += [f"- {r['tile']}: STL {x}" for r in rows for x in r["stl_fail"]]
     fails += [f"- {r['tile']}: `{x['id']}` ({x['zones']} zones): {'; '.join(x['reasons'])}"
               for r in rows for x in r.get("idfs", []) if not x["ok"]]
+    comp = [r for r in rows if r.get("compliance")]
+    if comp:
+        ws = [w for w in ("idf", "stl", "cityjson") if any(w in r["compliance"] for r in comp)]
+        lines += ["", "Buildings called compliant against the buildings each writer accepted (issue 19):", "",
+                  "| tile | buildings | compliant | " + " | ".join(f"{w} accepted" for w in ws) + " | equal |",
+                  "|---|---:|---:|" + "---:|" * len(ws) + "---|"]
+        for r in comp:
+            c = r["compliance"]
+            eq = not c["mismatch"] and all(c.get(w) == c["compliant"] for w in ws)
+            bad |= not eq
+            lines.append(f"| {r['tile']} | {r['buildings']} | {c['compliant']} | "
+                         + " | ".join(str(c.get(w, "")) for w in ws) + f" | {'yes' if eq else '**no**'} |")
+            fails += [f"- {r['tile']}: compliant vs accepted: {m}" for m in c["mismatch"]]
+        n_eq = sum(1 for r in comp if not r["compliance"]["mismatch"])
+        lines.append(f"| **all** | {sum(r['buildings'] for r in comp)} | "
+                     f"{sum(r['compliance']['compliant'] for r in comp)} | "
+                     + " | ".join(str(sum(r['compliance'].get(w, 0) for r in comp)) for w in ws)
+                     + f" | {n_eq}/{len(comp)} tiles |")
     errs = [x["vol_err"] for r in rows for x in r.get("idfs", []) if x["vol_err"] is not None]
     if errs:
         lines += ["", f"Zone volumes (EnergyPlus eio) against the STL shell: max deviation "
@@ -290,6 +343,8 @@ def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("tiles", nargs="*")
     ap.add_argument("--idf", action="store_true", help="also write IDFs")
+    ap.add_argument("--cityjson", action="store_true",
+                    help="also write the energy CityJSON (for the compliant-vs-accepted count)")
     ap.add_argument("--run", type=int, default=None, help="simulate the first N IDFs per tile (0: all)")
     ap.add_argument("--days", type=int, default=None,
                     help="simulate only the first D days of the year (input checks are the same)")
