@@ -15,6 +15,30 @@ from lod2energy.spool import Job, Spooled, load_spooled
 #: The one-file writers that take the buildings one at a time (a :class:`~lod2energy.spool.Spooled`
 #: sequence); the others get a list.
 STREAMED = ("cityjson", "geojson")
+#: The one-file writers that carry a building whatever its compliance (the city model, the GIS
+#: layer, each with the building's compliance status): a building in their file that is not
+#: energy-compliant is not *accepted* as an energy model, so that every writer accepts exactly
+#: the buildings called compliant (issue 19); its record says it is in the file, and why not.
+CARRIERS = ("cityjson", "geojson")
+#: How the problems of a building a writer left out or carried without accepting it begin: a
+#: decision of the final check, reported as a note, not a file that failed its self-check.
+NOT_ACCEPTED = ("left out: ", "in the file, not energy-compliant: ")
+
+
+def not_accepted(er: ExportRecord) -> bool:
+    """``er`` is a writer's by-design refusal of a building (left out, or carried as not
+    energy-compliant), not a written file that failed its self-check."""
+    return not er.ok and bool(er.problems) and er.problems[0].startswith(NOT_ACCEPTED)
+
+
+def accepted_only_if_compliant(er: ExportRecord, rec) -> ExportRecord:
+    """The record of carrier ``er.format`` for the building of ``rec`` (a BuildingRecord): ok
+    only when the building is energy-compliant; one in the file that is not gets ``ok`` False and
+    the final check's first reason."""
+    if not er.ok or er.format not in CARRIERS or rec.energy.compliant:
+        return er
+    why = (rec.energy.reasons or ("not energy-compliant",))[0]
+    return ExportRecord(er.format, False, er.path, (f"{NOT_ACCEPTED[1]}{why}",), er.extra, er.files)
 
 
 def stem_of(path: str) -> str:
@@ -66,16 +90,23 @@ def dataset_pass(w, options: ExportOptions, job: Job, records: dict, others: lis
     by_id: dict[str, list[int]] = {}
     for s in seqs:
         by_id.setdefault(records[s].id, []).append(s)
-    bad = None
+    bad, refused = None, []
     for ids, er in pairs:
         for bid in ids:
             for s in by_id.get(bid, ()):
-                records[s] = records[s].with_export(er)
+                es = accepted_only_if_compliant(er, records[s])
+                records[s] = records[s].with_export(es)
                 if journal is not None:
-                    journal.append({"kind": "dataset", "seq": s, "exports": [er.journal()]}, sync=False)
-        if not er.ok and bad is None:
-            bad = er
+                    journal.append({"kind": "dataset", "seq": s, "exports": [es.journal()]}, sync=False)
+                if not_accepted(es):
+                    refused.append((bid, es.problems[0]))
+                elif not es.ok and bad is None:
+                    bad = (bid, es)
     if journal is not None:
         journal.sync()
+    if refused and not quiet:
+        bid, why = refused[0]
+        print(f"lod2energy: note: {w.name.upper()}: {len(refused)} of {len(by_id)} buildings not accepted as "
+              f"energy models (see report.csv), e.g. {bid}: {why}", file=sys.stderr)
     if bad is not None:
-        err(f"{w.name.upper()} export {bad.path} failed its self-check: {'; '.join(bad.problems[:3])}")
+        err(bad[1].message(bad[0]))

@@ -403,8 +403,7 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
                         err(f"{input_path}: {rec.type} {rec.id}: {rec.repair.error}")
                     for e in rec.exports:
                         if not e.ok:
-                            err(f"{e.format.upper()} export {e.path or rec.id} failed its self-check: "
-                                 f"{'; '.join(e.problems[:3])}")
+                            err(e.message(rec.id))
                     records[seq] = rec
                     journal.append({"kind": "building", **rec.to_json()})
                     csv_rows.append(rec)
@@ -440,8 +439,7 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
                         for er in res:
                             rec = rec.with_export(er)
                             if not er.ok:
-                                err(f"{er.format.upper()} export {er.path or rec.id} failed its self-check: "
-                                     f"{'; '.join(er.problems[:3])}")
+                                err(er.message(rec.id))
                         records[seq] = rec
                         journal.append({"kind": "context", "seq": seq, "exports": [e.journal() for e in res]})
             except BaseException:

@@ -251,6 +251,16 @@ class ExportRecord:
             out[k] = v
         return out
 
+    def message(self, bid: str) -> str:
+        """The user's line for an export of building ``bid`` that is not ok: a written file that
+        failed its self-check, or an export that wrote no file (and why)."""
+        fmt = self.format.upper()
+        head = f"{fmt} NOT WRITTEN"
+        if self.path and not (self.problems and self.problems[0].upper().startswith(head)):
+            return f"{fmt} export {self.path} failed its self-check: {'; '.join(self.problems[:3])}"
+        why = [q[len(head) + 2:] if q.upper().startswith(head + ": ") else q for q in self.problems[:3]]
+        return f"{fmt} export {bid} not written: {'; '.join(why) or 'no file'}"
+
     def to_json(self) -> dict:
         d = {"ok": self.ok, "path": self.path, "problems": list(self.problems)}
         d.update(_untimed(self.values()))

@@ -19,20 +19,29 @@ from lod2energy.validate.checks import validate_building
 TOL = dataclasses.replace(DEFAULT, sliver_area=0.3)
 
 
-def chamfered(dx: float = 0.0, bid: str = "chamfered"):
-    """A 10 x 8 x 6 m box whose top corner (10, 8, 6) is cut off by a 0.22 m2 triangle."""
+def _chamfered_data(dx: float = 0.0):
+    """Vertices (m), faces and semantic indices (0 ground, 1 roof, 2 wall) of a 10 x 8 x 6 m box
+    whose top corner (10, 8, 6) is cut off by a 0.22 m2 triangle."""
     v = [(0, 0, 0), (10, 0, 0), (10, 8, 0), (0, 8, 0), (0, 0, 6), (10, 0, 6), (0, 8, 6),
          (9.5, 8, 6), (10, 7.5, 6), (10, 8, 5.5)]
-    v = [(x + dx, y, z) for x, y, z in v]
     f = [[0, 3, 2, 1], [4, 5, 8, 7, 6], [0, 1, 5, 4], [1, 2, 9, 8, 5], [2, 3, 6, 7, 9], [3, 0, 4, 6], [7, 8, 9]]
-    return building(v, f, semantics=[0, 1, 2, 2, 2, 2, 2], bid=bid)
+    return [(x + dx, y, z) for x, y, z in v], f, [0, 1, 2, 2, 2, 2, 2]
+
+
+def _box_data(dx: float = 30.0):
+    v = [(0, 0, 0), (10, 0, 0), (10, 8, 0), (0, 8, 0), (0, 0, 6), (10, 0, 6), (10, 8, 6), (0, 8, 6)]
+    f = [[0, 3, 2, 1], [4, 5, 6, 7], [0, 1, 5, 4], [1, 2, 6, 5], [2, 3, 7, 6], [3, 0, 4, 7]]
+    return [(x + dx, y, z) for x, y, z in v], f, [0, 1, 2, 2, 2, 2]
+
+
+def chamfered(dx: float = 0.0, bid: str = "chamfered"):
+    v, f, sem = _chamfered_data(dx)
+    return building(v, f, semantics=sem, bid=bid)
 
 
 def plain_box(dx: float = 30.0, bid: str = "box"):
-    v = [(0, 0, 0), (10, 0, 0), (10, 8, 0), (0, 8, 0), (0, 0, 6), (10, 0, 6), (10, 8, 6), (0, 8, 6)]
-    v = [(x + dx, y, z) for x, y, z in v]
-    f = [[0, 3, 2, 1], [4, 5, 6, 7], [0, 1, 5, 4], [1, 2, 6, 5], [2, 3, 7, 6], [3, 0, 4, 7]]
-    return building(v, f, semantics=[0, 1, 2, 2, 2, 2], bid=bid)
+    v, f, sem = _box_data(dx)
+    return building(v, f, semantics=sem, bid=bid)
 
 
 def test_a_valid_building_with_a_kept_sliver_is_written_as_not_compliant(tmp_path):
@@ -55,3 +64,56 @@ def test_a_valid_building_with_a_kept_sliver_is_written_as_not_compliant(tmp_pat
              if not o.get("parents")}
     assert flags == {"chamfered": False, "box": True}
     assert sum(flags.values()) == sum(r.energy.compliant for _, r in prepared)
+
+
+def _doc_of(**buildings) -> dict:
+    """A CityJSON 2.0 document (1 mm grid) of ``id=(vertices, faces, semantics)`` (one Solid each)."""
+    types = [{"type": "GroundSurface"}, {"type": "RoofSurface"}, {"type": "WallSurface"}]
+    verts, objs = [], {}
+    for bid, (v, f, sem) in buildings.items():
+        base = len(verts)
+        verts += [[round(c * 1000) for c in p] for p in v]
+        objs[bid] = {"type": "Building", "attributes": {"yearOfConstruction": 1975},
+                     "geometry": [{"type": "Solid", "lod": "2.2",
+                                   "boundaries": [[[[base + i for i in face]] for face in f]],
+                                   "semantics": {"surfaces": types, "values": [sem]}}]}
+    return {"type": "CityJSON", "version": "2.0",
+            "transform": {"scale": [0.001, 0.001, 0.001], "translate": [85000.0, 447000.0, 0.0]},
+            "metadata": {"referenceSystem": "https://www.opengis.net/def/crs/EPSG/0/7415"},
+            "CityObjects": objs, "vertices": verts}
+
+
+def test_every_writer_accepts_exactly_the_buildings_called_compliant(tmp_path, capsys):
+    """Issue 19: the energy CityJSON carries the not-compliant building (nothing lost), but does not
+    accept it as an energy model: compliant, cityjson_ok and stl_ok count the same buildings, and
+    the user reads a note, not a self-check failure."""
+    from lod2energy.options import ExportOptions, RunOptions
+    from lod2energy.pipeline import export
+    src = tmp_path / "two.city.json"
+    src.write_text(json.dumps(_doc_of(chamfered=_chamfered_data(), box=_box_data())), encoding="utf-8")
+    out = tmp_path / "o"
+    opts = ExportOptions(("cityjson", "stl"), dataclasses.replace(PrepareOptions(), tol=TOL), html=False)
+    res = export(str(src), str(out), opts, RunOptions(jobs=1))
+    err = capsys.readouterr().err
+    rows = {r["id"]: r for r in json.loads((out / "report.json").read_text())["buildings"]}
+    assert set(rows) == {"chamfered", "box"}
+    compliant = {i for i, r in rows.items() if r["compliant"]}
+    assert compliant == {"box"}
+    for fmt in ("cityjson", "stl"):
+        assert {i for i, r in rows.items() if r["exports"].get(fmt, {}).get("ok")} == compliant, fmt
+    # the not-compliant building is still in the file, with its status, and says why it is not accepted
+    doc = json.loads((out / "two.energy.city.json").read_text())
+    assert doc["CityObjects"]["chamfered"]["attributes"]["+energyCompliance"]["compliant"] is False
+    why = rows["chamfered"]["exports"]["cityjson"]["problems"][0]
+    assert why.startswith("in the file, not energy-compliant: ") and "sliver" in why
+    assert "failed its self-check" not in err and "not accepted as energy models" in err
+    assert res.exit_code == 1  # a building is not compliant
+
+
+def test_an_export_record_says_whether_a_file_failed_or_none_was_written():
+    from lod2energy.records import ExportRecord
+    failed = ExportRecord("idf", False, "/o/b.idf", ("zone z1 not enclosed",))
+    assert failed.message("b") == "IDF export /o/b.idf failed its self-check: zone z1 not enclosed"
+    unwritten = ExportRecord("idf", False, "", ("IDF not written: timeout: not finished within 5 s (--timeout)",))
+    assert unwritten.message("b") == "IDF export b not written: timeout: not finished within 5 s (--timeout)"
+    assert ExportRecord("stl", False).message("b") == "STL export b not written: no file"
