@@ -10,6 +10,8 @@ What is written (through :mod:`lod2energy.io.cityjson`'s writer):
   by the CityJSON Extension ``Energy`` shipped in ``lod2energy/data/extensions/<v>/`` and
   referenced under the document's ``"extensions"`` (relative URL ``energy.ext.json``; the
   extension file is copied next to the output);
+- the input's terrain (``TINRelief`` city objects) as read, after the buildings, on the same
+  grid (:mod:`lod2energy.exporters.cityjson_terrain`);
 - CityJSON version: the input's by default, else ``version`` ("1.0", "1.1", "2.0").
 
 Self-check (:func:`self_check`): re-parse the file, validate it against the official
@@ -50,6 +52,7 @@ from .cityjson_schema import (  # noqa: F401 - the schema helpers, importable fr
     _schema_valid_fast, _validators, _worth_compiling, extension_problems, extension_schema,
     load_extension_beside,
 )
+from .cityjson_terrain import is_terrain, n_faces, prepare_terrain, terrain_problem
 from .cityjson_version import fix_cityobject, fix_document, fix_header, model_for  # noqa: F401
 from .result import ExportResult
 from .run_results import result_attributes
@@ -135,7 +138,10 @@ def write(path: str, model: CityModel, buildings: Iterable[Building], version: s
     model : CityModel
         File-level data of the input (metadata, transform, extensions, version).
     buildings : iterable of Building
-        Output of label + U-value stages (``provenance["thermal"]`` present).
+        Output of label + U-value stages (``provenance["thermal"]`` present). Terrain
+        features (``TINRelief``, :mod:`lod2energy.exporters.cityjson_terrain`) among them are
+        written as they were read and listed in ``ExportResult.terrain``; other
+        non-buildings are left out (``skipped``).
     version : str, optional
         "1.0", "1.1" or "2.0"; default: the input's version.
     lod : str, optional
@@ -160,6 +166,7 @@ def write(path: str, model: CityModel, buildings: Iterable[Building], version: s
         return ExportResult((), path, False, ("CityJSONSeq needs CityJSON 1.1 or 2.0",), version=version)
     skipped: list[tuple[str, str]] = []
     written: list[str] = []
+    terrain: list[tuple[str, int]] = []
     if not isinstance(buildings, Sequence):
         buildings = list(buildings)
     m, notes = model_for(model, version)
@@ -170,6 +177,14 @@ def write(path: str, model: CityModel, buildings: Iterable[Building], version: s
     def prepared() -> Iterator[Building]:
         # one building at a time: a lazy sequence (the export's spool) is never all in memory
         for b in buildings:
+            if is_terrain(b):  # the input's terrain, carried as read (one object: bounded memory)
+                why = terrain_problem(b)
+                if why is not None:
+                    skipped.append((b.id, why))
+                    continue
+                terrain.append((b.id, n_faces(b)))
+                yield prepare_terrain(b)
+                continue
             blod = lod if lod is not None else (b.provenance.get("thermal") or {}).get("lod")
             # checked as it will be read back: coordinates on the file's grid (a repaired vertex
             # off the grid moves by up to scale/2, which can tip a face over a tolerance)
@@ -201,7 +216,7 @@ def write(path: str, model: CityModel, buildings: Iterable[Building], version: s
         ids = tuple(written)
         why = e.strerror if isinstance(e, OSError) and e.strerror else e
         return ExportResult(ids, path, False, (f"cannot write {path}: {why}",), version=version,
-                            skipped=tuple(skipped))
+                            skipped=tuple(skipped), terrain=tuple(terrain))
     ids = tuple(written)
     try:
         problems = self_check(tmp, extension=extension_schema(version), tol=tol)
@@ -212,13 +227,14 @@ def write(path: str, model: CityModel, buildings: Iterable[Building], version: s
     except OSError as e:
         _remove(tmp)
         return ExportResult(ids, path, False, (f"cannot write {path}: {e.strerror or e}",), version=version,
-                            skipped=tuple(skipped))
+                            skipped=tuple(skipped), terrain=tuple(terrain))
     if problems:
         return ExportResult(ids, target, False,
                             tuple(problems) + (f"failed its self-check: kept as {base}{INVALID_SUFFIX}",),
-                            version=version, skipped=tuple(skipped), extension_path=ext_path, notes=tuple(notes))
+                            version=version, skipped=tuple(skipped), extension_path=ext_path, notes=tuple(notes),
+                            terrain=tuple(terrain))
     return ExportResult(ids, path, True, (), version=version, skipped=tuple(skipped), extension_path=ext_path,
-                        notes=tuple(notes))
+                        notes=tuple(notes), terrain=tuple(terrain))
 
 
 def _remove(p: str) -> None:

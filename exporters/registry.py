@@ -178,7 +178,8 @@ def _write_stl(buildings, outdir, options, *, crs=None, context=(), model=None, 
 
 def _write_cityjson(buildings, outdir, options, *, crs=None, context=(), model=None, stem="out", tol=None,
                     frame=None):
-    """One Energy-ADE CityJSON for all ``buildings``: a record for each, ok or left out."""
+    """One Energy-ADE CityJSON for all ``buildings``: a record for each, ok or left out; the
+    input's terrain (TINRelief) it carries gets no record but the results' ``terrain``."""
     from lod2energy.exporters import cityjson
     if not isinstance(buildings, Sequence):
         buildings = list(buildings)  # a Sequence (the spool) is streamed, never all in memory
@@ -187,24 +188,35 @@ def _write_cityjson(buildings, outdir, options, *, crs=None, context=(), model=N
     ok = bool(getattr(res, "ok", False))
     skipped = dict(getattr(res, "skipped", ()) or ())
     files = _files(str(res.path), getattr(res, "extension_path", "") or "") if ok else ()
+    terrain = tuple(getattr(res, "terrain", ()) or ())
+    carried = {str(t[0]) for t in terrain}
     out = []
     for bid, btype in getattr(buildings, "heads", None) or [(b.id, b.type) for b in buildings]:
-        if bid in skipped and btype != "Building":
+        if (bid in skipped or bid in carried) and btype != "Building":
             continue  # terrain, vegetation ...: not part of the energy model, never a failure
         if bid in skipped:
             out.append(((bid,), ExportRecord("cityjson", False, path, (f"left out: {skipped[bid]}",))))
         else:
             out.append(((bid,), ExportRecord("cityjson", ok, str(res.path),
                                               tuple(getattr(res, "problems", ()) or ())[:3], {}, files)))
-    return WriteResults(out, tuple(getattr(res, "notes", ()) or ()))
+    notes = tuple(getattr(res, "notes", ()) or ())
+    summary = None
+    if terrain:
+        faces = sum(int(t[1]) for t in terrain)
+        summary = {"format": "cityjson", "path": str(res.path), "ok": ok, "objects": len(terrain),
+                   "faces": faces, "ids": [str(t[0]) for t in terrain]}
+    return WriteResults(out, notes, summary)
 
 
 class WriteResults(list):
-    """The ``(building ids, ExportRecord)`` pairs of one write, with the writer's notes for the user."""
+    """The ``(building ids, ExportRecord)`` pairs of one write, with the writer's notes for the user
+    and, for a file that carries the input's terrain, ``terrain``: a dict (format, path, ok,
+    objects, faces, ids) for the report (None otherwise)."""
 
-    def __init__(self, items=(), notes: tuple[str, ...] = ()):
+    def __init__(self, items=(), notes: tuple[str, ...] = (), terrain: dict | None = None):
         super().__init__(items)
         self.notes = notes
+        self.terrain = terrain
 
 
 @dataclass(frozen=True)

@@ -6,7 +6,7 @@ from typing import Any, Mapping
 
 #: Fields only the CityJSON writer fills; :meth:`ExportResult.to_dict` leaves them out while
 #: they hold their defaults, so the other writers' dictionaries keep their keys.
-_CITYJSON_FIELDS = ("version", "skipped", "extension_path", "notes")
+_CITYJSON_FIELDS = ("version", "skipped", "extension_path", "notes", "terrain")
 
 
 @dataclass(frozen=True)
@@ -43,6 +43,9 @@ class ExportResult:
         The Energy extension file written next to the output (CityJSON writer).
     notes : tuple of str
         Changes made to the input's header to fit the target version (CityJSON writer).
+    terrain : tuple of (str, int)
+        ``(id, faces)`` of the terrain objects (``TINRelief``) carried into the file, with
+        the number of faces (triangles) of each (CityJSON writer).
     """
 
     building_ids: tuple[str, ...]
@@ -60,6 +63,7 @@ class ExportResult:
     skipped: tuple[tuple[str, str], ...] = ()
     extension_path: str | None = None
     notes: tuple[str, ...] = ()
+    terrain: tuple[tuple[str, int], ...] = ()
 
     def to_dict(self) -> dict:
         d = {k: getattr(self, k) for k in self.__dataclass_fields__
@@ -71,7 +75,7 @@ class ExportResult:
         d["stats"] = dict(self.stats)
         if self.not_enclosed is not None:
             d["not_enclosed"] = list(self.not_enclosed)
-        for k in ("skipped", "notes"):
+        for k in ("skipped", "notes", "terrain"):
             if k in d:
                 d[k] = [list(x) if isinstance(x, tuple) else x for x in d[k]]
         return d

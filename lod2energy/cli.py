@@ -305,7 +305,7 @@ def cmd_export(a) -> int:
     opts = export_options(a)
     res = export(a.input, a.output, opts, RunOptions(a.jobs, a.dask, a.resume, a.quiet))
     if not a.quiet and res.records and res.exit_code in (EXIT_OK, EXIT_INVALID):
-        print_export_summary(res.records, opts.formats, a.output)
+        print_export_summary(res.records, opts.formats, a.output, res.terrain)
     return res.exit_code
 
 

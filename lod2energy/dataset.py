@@ -55,7 +55,14 @@ def dataset_pass(w, options: ExportOptions, job: Job, records: dict, others: lis
     """Writer ``w`` of one file for all buildings (CityJSON, IDF / STL in dataset mode, the CFD
     case): the buildings are loaded from the spool in input order; every record of ``records``
     (seq -> BuildingRecord) in the file gets the writer's export record, also appended to
-    ``journal`` (a :class:`~lod2energy.journal.Journal`; a ``dataset`` line per building)."""
+    ``journal`` (a :class:`~lod2energy.journal.Journal`; a ``dataset`` line per building, and a
+    ``terrain`` line when the file carries the input's terrain).
+
+    Returns
+    -------
+    dict or None
+        The terrain the file carries (format, path, ok, objects, faces, ids), else None.
+    """
     wopts = options.writer_options(w.name)
     if w.name == "cityjson":
         seqs = [s for s, r in sorted(records.items()) if r.outcome == "done" and r.assessed]
@@ -87,6 +94,9 @@ def dataset_pass(w, options: ExportOptions, job: Job, records: dict, others: lis
     for note in getattr(pairs, "notes", ()) or ():
         if not quiet:
             print(f"lod2energy: note: {note}", file=sys.stderr)
+    terrain = getattr(pairs, "terrain", None)
+    if terrain and journal is not None:  # the input's terrain the file carries, for the report
+        journal.append({"kind": "terrain", **terrain}, sync=False)
     by_id: dict[str, list[int]] = {}
     for s in seqs:
         by_id.setdefault(records[s].id, []).append(s)
@@ -110,3 +120,4 @@ def dataset_pass(w, options: ExportOptions, job: Job, records: dict, others: lis
               f"energy models (see report.csv), e.g. {bid}: {why}", file=sys.stderr)
     if bad is not None:
         err(bad[1].message(bad[0]))
+    return terrain or None

@@ -14,6 +14,8 @@ Lines (each a JSON object with a ``kind``):
   building's neighbours (IDF party walls, shading, ``--run``), for building ``seq``;
 - ``{"kind": "dataset", "seq": I, "exports": [...]}`` - a writer of one file for all
   buildings (CityJSON, GeoJSON, IDF / STL in dataset mode, the CFD case), for building ``seq``;
+- ``{"kind": "terrain", "format": F, "path": P, "ok": B, "objects": N, "faces": T, "ids": [...]}`` -
+  the input's terrain (``TINRelief`` objects) a one-file writer carried (the energy CityJSON);
 - ``{"kind": "dataset_error", "code": C, "message": M}`` - a file-level problem;
 - ``{"kind": "end", "interrupted": null | "SIGINT" | "SIGTERM"}`` - the run's last line.
 
@@ -180,3 +182,19 @@ def records_of(path: str | os.PathLike, start: int = 0) -> dict:
                     rec = rec.with_export(ExportRecord.from_journal(e))
                 out[s] = rec
     return out
+
+
+def terrain_of(path: str | os.PathLike, start: int = 0) -> list[dict]:
+    """The ``terrain`` lines from byte ``start`` on (this run's), without their ``kind``: one
+    per format, a later line replacing an earlier one, in the order the formats first came."""
+    out: dict[str, dict] = {}
+    with open(path, "rb") as f:
+        f.seek(start)
+        for raw in f:
+            try:
+                d = json.loads(raw)
+            except (json.JSONDecodeError, UnicodeDecodeError):
+                continue  # a torn last line
+            if isinstance(d, dict) and d.get("kind") == "terrain":
+                out[str(d.get("format"))] = {k: v for k, v in d.items() if k != "kind"}
+    return list(out.values())

@@ -262,6 +262,9 @@ class ExportOutcome:
     interrupted: str | None = None
     report: str = ""
     dataset_errors: tuple[str, ...] = ()
+    #: The input's terrain (TINRelief objects) the one-file writers carried: one dict per file
+    #: (format, path, ok, objects, faces, ids), as in ``report.json``'s ``terrain``.
+    terrain: tuple[dict, ...] = ()
 
 
 def _neighbours(records: list[BuildingRecord], halo: float) -> dict[int, list[int]]:
@@ -346,6 +349,7 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
             prev_c[int(ln["seq"])] = ln
     records: dict[int, BuildingRecord] = {}
     others: list[int] = []
+    terrain: list[dict] = []  # the input's terrain the one-file writers carried
     reused: set[int] = set()
     dataset_errors: list[str] = []
     interrupted = None
@@ -455,7 +459,9 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
             for w in chosen:
                 if scope[w.name] != "dataset" or unusable:
                     continue
-                dataset_pass(w, options, job, records, others, model, input_path, run.quiet, journal)
+                carried = dataset_pass(w, options, job, records, others, model, input_path, run.quiet, journal)
+                if carried:
+                    terrain.append(carried)
     except KeyboardInterrupt:
         interrupted = ("SIGINT", EXIT_SIGINT)
     except Interrupted as e:
@@ -474,7 +480,8 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
     if interrupted:
         print(f"lod2energy: error: interrupted by {interrupted[0]}: report.json has the {len(rows)} objects done so far; "
               f"run again with --resume to continue", file=sys.stderr)
-        return ExportOutcome(interrupted[1], tuple(rows), interrupted[0], report, tuple(dataset_errors))
+        return ExportOutcome(interrupted[1], tuple(rows), interrupted[0], report, tuple(dataset_errors),
+                             tuple(terrain))
     for m in dataset_errors:
         err(m)
     worst = EXIT_OK
@@ -484,7 +491,7 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
             worst = EXIT_INVALID
     if dataset_errors:
         worst = EXIT_UNUSABLE
-    return ExportOutcome(worst, tuple(rows), None, report, tuple(dataset_errors))
+    return ExportOutcome(worst, tuple(rows), None, report, tuple(dataset_errors), tuple(terrain))
 
 
 def _context_or_record(task):

@@ -100,7 +100,7 @@ def _dump(obj) -> str:
 
 
 def write_reports(out: str, input_path: str, model, rows: Iterable[BuildingRecord], dataset_errors: list[str],
-                   interrupted, inputs) -> str:
+                   interrupted, inputs, terrain: Sequence[dict] = ()) -> str:
     """report.json and report.csv from the records, in input order (no timing in them).
 
     Both are written one building at a time: ``report.json`` is the bytes of ``json.dump(doc,
@@ -110,10 +110,16 @@ def write_reports(out: str, input_path: str, model, rows: Iterable[BuildingRecor
     ----------
     rows : iterable of BuildingRecord
         In input order; iterated twice when it is a sequence, else kept as a list.
+    terrain : sequence of dict
+        The input's terrain the one-file writers carried (format, path, ok, objects, faces,
+        ids): ``report.json``'s ``terrain``, left out when there is none.
     """
     if not isinstance(rows, Sequence):
         rows = list(rows)
-    doc = {"input_file": input_path, "output_dir": out, **frame_entry(model), "buildings": _ROWS}
+    doc = {"input_file": input_path, "output_dir": out, **frame_entry(model)}
+    if terrain:
+        doc["terrain"] = [dict(t) for t in terrain]
+    doc["buildings"] = _ROWS
     if dataset_errors:
         doc["dataset_errors"] = [{"code": 901, "info": m} for m in dataset_errors]
     if interrupted:
@@ -139,10 +145,10 @@ def write_reports_from_journal(out: str, input_path: str, model, journal_path: s
                                dataset_errors: list[str], interrupted, inputs) -> str:
     """:func:`write_reports` from this run's lines of the journal (:func:`lod2energy.journal.records_of`
     from byte ``start``): what the journal says was done is what the report says."""
-    from lod2energy.journal import records_of
+    from lod2energy.journal import records_of, terrain_of
     recs = records_of(journal_path, start)
     return write_reports(out, input_path, model, [recs[s] for s in sorted(recs)], dataset_errors,
-                         interrupted, inputs)
+                         interrupted, inputs, terrain_of(journal_path, start))
 
 
 def json_ready(doc):
@@ -177,8 +183,10 @@ def write_html_report(report_path: str, input_path: str, records: dict, spool: s
         return ""
 
 
-def print_export_summary(records: Iterable[BuildingRecord], formats: Iterable[str], outdir: str) -> None:
-    """The table ``lod2energy export`` prints."""
+def print_export_summary(records: Iterable[BuildingRecord], formats: Iterable[str], outdir: str,
+                         terrain: Iterable[dict] = ()) -> None:
+    """The table ``lod2energy export`` prints, then a line for each file that carries the
+    input's terrain (``terrain``: :attr:`lod2energy.pipeline.ExportOutcome.terrain`)."""
     formats = [f for f in FORMATS if f in set(formats)]
     b = [r for r in records if r.type == "Building" or r.assessed]
     n = len(b)
@@ -189,4 +197,6 @@ def print_export_summary(records: Iterable[BuildingRecord], formats: Iterable[st
     timeouts = sum(r.outcome == "timeout" for r in b)
     print(f"{n:>9} {comp:>9} {rep:>8}  " + "  ".join(f"{c:>8}" for c in cells)
           + (f"  ({timeouts} timeout)" if timeouts else ""))
+    for t in terrain:
+        print(f"terrain: {t['objects']} TINRelief object(s), {t['faces']} faces, carried into {t['path']}")
     print(f"report: {os.path.join(outdir, 'report.json')} and report.csv")
