@@ -110,7 +110,8 @@ def _on_segment(a: np.ndarray, b: np.ndarray, c: np.ndarray, tol: float = EPLUS_
     return _on_line(a, b, c, tol)
 
 
-def _split_on_own_edge(pieces: list[Piece], tol: float = EPLUS_POINT_TOL) -> list[Piece] | None:
+def _split_on_own_edge(pieces: list[Piece], tol: float = EPLUS_POINT_TOL,
+                       clean: dict | None = None) -> list[Piece] | None:
     """Split the first piece with a vertex EnergyPlus sees on another of its edges.
 
     A thin piece ``(.., a, b, .., c, ..)`` whose vertex ``c`` lies within ``tol`` of its
@@ -119,11 +120,13 @@ def _split_on_own_edge(pieces: list[Piece], tol: float = EPLUS_POINT_TOL) -> lis
     across ``ab``), the part ``(b, .., c)`` and the part ``(c, .., a)``; parts with fewer
     than 3 vertices are left out. Internal edges ``b-c`` and ``c-a`` are shared by two
     parts, so the shell stays closed. Returns None when no piece has such a vertex.
+    ``clean`` (``id(piece) -> piece``) holds pieces already scanned without a hit: they are
+    skipped (a Piece is immutable) and the pieces scanned now without a hit are added.
     """
     for pi, p in enumerate(pieces):
         q = p.points
         k = len(q)
-        if k < 4:
+        if k < 4 or (clean is not None and clean.get(id(p)) is p):
             continue
         for i in range(k):
             ib = (i + 1) % k
@@ -135,6 +138,8 @@ def _split_on_own_edge(pieces: list[Piece], tol: float = EPLUS_POINT_TOL) -> lis
                 q2 = q[[(j + m) % k for m in range((i - j) % k + 1)]]
                 new = [replace(p, points=x) for x in (tri, q1, q2) if len(x) >= 3]
                 return pieces[:pi] + new + pieces[pi + 1:]
+        if clean is not None:
+            clean[id(p)] = p  # held here, so its id is not reused while the dict lives
     return None
 
 
@@ -183,11 +188,27 @@ def _eplus_conform(pieces: list[Piece], tol: float, split: bool) -> list[Piece]:
         return tuple(np.round(x, 6).tolist())
 
     out = list(pieces)
+    # pieces already scanned without a hit (immutable, so they stay so): the scans below skip
+    # them and find the same first hit as a scan of every piece
+    tri_clean: dict[int, Piece] = {}
+    own_clean: dict[int, Piece] = {}
+    edge_memo: dict[int, tuple[Piece, dict]] = {}
+
+    def edges_of(p):
+        """``{(key of a vertex, key of the next): first index}`` of piece ``p`` (memoised)."""
+        m = edge_memo.get(id(p))
+        if m is None or m[0] is not p:
+            k = [key(x) for x in p.points]
+            d: dict = {}
+            for i in range(len(k)):
+                d.setdefault((k[i], k[(i + 1) % len(k)]), i)
+            m = edge_memo[id(p)] = (p, d)
+        return m[1]
     for _ in range(4 * len(pieces) + 8):
         hit = None
         for pi, p in enumerate(out):
             q = p.points
-            if len(q) != 3:
+            if len(q) != 3 or tri_clean.get(id(p)) is p:
                 continue
             for i in range(3):
                 a, b, c = q[i], q[(i + 1) % 3], q[(i + 2) % 3]
@@ -196,8 +217,9 @@ def _eplus_conform(pieces: list[Piece], tol: float, split: bool) -> list[Piece]:
                     break
             if hit:
                 break
+            tri_clean[id(p)] = p
         if hit is None:
-            parts = _split_on_own_edge(out, tol) if split else None
+            parts = _split_on_own_edge(out, tol, own_clean) if split else None
             if parts is None:
                 break
             out = parts
@@ -208,12 +230,10 @@ def _eplus_conform(pieces: list[Piece], tol: float, split: bool) -> list[Piece]:
         for qi, p in enumerate(out):
             if qi == pi:
                 continue
-            q = p.points
-            for i in range(len(q)):
-                if key(q[i]) == kb and key(q[(i + 1) % len(q)]) == ka:
-                    nb = (qi, i)
-                    break
-            if nb:
+            edges = edges_of(p)
+            i = edges.get((kb, ka))
+            if i is not None:
+                nb = (qi, i)
                 break
         if nb is None:
             break  # no neighbour across ab: leave the zone as it is

@@ -102,7 +102,7 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
     bboxes = np.array([_bbox(b) for b in blist])
     used: set[str] = set()
 
-    def render(g, path, split_pieces):
+    def render(g, path, split_pieces, simpler=None):
         gb = [blist[i] for i in g]
         offset = local_origin(gb)
         zi = [z for i in g for z in zones_of[i]]
@@ -112,6 +112,17 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
         if split_pieces is None and options.zoning == "building":
             wl = [(zones[i], zone_pieces(zones[i], i, party, False), w[2], i)
                   for i, w in zip(zi, [w for j in g for w in written_of[j]])]
+        elif split_pieces is None or simpler is not None:
+            # storey zones cut again: from the zones with whole party walls, or from ``simpler``
+            # (zone index -> a simpler envelope, :data:`energy_model.FALLBACKS`, no party walls)
+            zs, ps = list(zones), list(pieces)
+            for i in zi:
+                if simpler is not None:
+                    zs[i], ps[i] = simpler[i], zone_pieces(simpler[i], i, {}, False)
+                else:
+                    ps[i] = zone_pieces(zones[i], i, party, False)
+            wo, _, _ = _written_zones(gb, zs, [zones_of[j] for j in g], ps, options, openings)
+            wl = [w for k in range(len(g)) for w in wo[k]]
         else:
             wl = [w for j in g for w in written_of[j]]
         g_site, g_warn, g_stats = _group_site(gb, crs, frame, site, station)
@@ -152,6 +163,20 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
             offset, stats, warns = render(g, path, None)
             problems = self_check(path)
             warns = list(warns) + ["party walls not split: the split zone fails EnergyPlus's enclosure test"]
+        if any("not fully enclosed" in p for p in problems):
+            # the file's coordinates (rounded, in the file's frame) can fail the enclosure test
+            # the zone's pieces passed: the first simpler envelope whose file passes
+            for make in energy_model.FALLBACKS:
+                simpler = {i: make(zones[i]) for j in g for i in zones_of[j]}
+                if any(z is None for z in simpler.values()):
+                    continue
+                offset, stats, warns = render(g, path, None, simpler)
+                problems = self_check(path)
+                if not problems:
+                    warns = list(warns) + [f"written with a simpler envelope ({energy_model._fallback_name(make)}, "
+                                           "party walls as outdoor walls): the written zone failed EnergyPlus's "
+                                           "enclosure test"]
+                    break
         notes = [w for i in g for w in merge_notes[i]]
         warns = notes + list(warns)
         res = ExportResult(ids, str(path), not problems, tuple(problems),
