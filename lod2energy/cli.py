@@ -76,7 +76,6 @@ def build_parser() -> argparse.ArgumentParser:
     add_validate_parser(sub)
     add_repair_parser(sub)
     add_export_parser(sub)
-    from lod2energy.viz.view import add_view_parser
     add_view_parser(sub)
     return p
 
@@ -117,6 +116,21 @@ def add_repair_parser(sub) -> argparse.ArgumentParser:
     r.add_argument("-q", "--quiet", action="store_true")
     _add_tolerances(r)
     return r
+
+
+def add_view_parser(subparsers) -> argparse.ArgumentParser:
+    """Add ``view FILE [--id ID] [-o OUTDIR] [--no-open]`` to the CLI's subparsers."""
+    v = subparsers.add_parser("view", help="write and open the report panel of one building",
+                              description="Validate, repair and label one building of FILE and write its "
+                              "report panel (input and repaired renders, face-adjacency graph, defects) "
+                              "as a self-contained HTML page; opens it when a display is present.")
+    v.add_argument("input", metavar="FILE")
+    v.add_argument("--id", default=None, help="building (or BuildingPart) id (default: the first building)")
+    v.add_argument("-o", "--output", default=".", metavar="OUTDIR", help="folder of the page (default .)")
+    v.add_argument("--no-open", action="store_true", help="do not open a browser")
+    v.add_argument("--lod", default=None, help="LoD of the envelope (default: the highest)")
+    v.add_argument("--timeout", type=float, default=30.0, help="repair budget per building, s")
+    return v
 
 
 def add_export_parser(sub) -> argparse.ArgumentParser:
@@ -309,8 +323,13 @@ def cmd_export(a) -> int:
     return res.exit_code
 
 
-def _commands() -> dict:
+def cmd_view(a) -> int:
+    """``lod2energy view``: :func:`lod2energy.viz.view.cmd_view`, imported only when it runs."""
     from lod2energy.viz.view import cmd_view
+    return cmd_view(a)
+
+
+def _commands() -> dict:
     return {"validate": cmd_validate, "repair": cmd_repair, "export": cmd_export, "view": cmd_view}
 
 
