@@ -14,7 +14,7 @@ import time
 from collections import Counter
 
 from lod2energy import __version__
-from lod2energy.config import Tolerances
+from lod2energy.config import USE_TYPES, Tolerances
 from lod2energy.errors import Lod2EnergyError
 from lod2energy.safe_write import UnsafeWriteError
 
@@ -167,7 +167,6 @@ def add_export_parser(sub) -> argparse.ArgumentParser:
     e.add_argument("--merge-parts", action="store_true")
     e.add_argument("--no-html", action="store_true", help="do not write OUTDIR/report.html")
     e.add_argument("-q", "--quiet", action="store_true")
-    from lod2energy.thermal.use import USE_TYPES
     g = e.add_argument_group("energy model (IDF)")
     g.add_argument("--zoning", choices=("storey", "building"), default="storey",
                    help="one thermal zone per storey (default) or per Building/BuildingPart")
