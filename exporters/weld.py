@@ -4,9 +4,10 @@ from __future__ import annotations
 from typing import Sequence
 
 import numpy as np
-from scipy.cluster.hierarchy import DisjointSet
 
 from lod2energy.geometry import close_pairs
+
+# scipy is imported in the functions that use it: importing lod2energy stays cheap (issue 13)
 
 
 def weld(points: np.ndarray, tol: float) -> tuple[np.ndarray, np.ndarray]:
@@ -35,6 +36,7 @@ def weld(points: np.ndarray, tol: float) -> tuple[np.ndarray, np.ndarray]:
     pairs = close_pairs(p, tol)
     if len(pairs) == 0:
         return p.copy(), np.arange(len(p))
+    from scipy.cluster.hierarchy import DisjointSet
     ds = DisjointSet(range(len(p)))
     for a, b in pairs:
         ds.merge(int(a), int(b))

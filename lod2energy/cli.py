@@ -14,7 +14,7 @@ import time
 from collections import Counter
 
 from lod2energy import __version__
-from lod2energy.config import Tolerances
+from lod2energy.config import USE_TYPES, Tolerances
 from lod2energy.errors import Lod2EnergyError
 from lod2energy.safe_write import UnsafeWriteError
 
@@ -76,7 +76,6 @@ def build_parser() -> argparse.ArgumentParser:
     add_validate_parser(sub)
     add_repair_parser(sub)
     add_export_parser(sub)
-    from lod2energy.viz.view import add_view_parser
     add_view_parser(sub)
     return p
 
@@ -119,6 +118,21 @@ def add_repair_parser(sub) -> argparse.ArgumentParser:
     return r
 
 
+def add_view_parser(subparsers) -> argparse.ArgumentParser:
+    """Add ``view FILE [--id ID] [-o OUTDIR] [--no-open]`` to the CLI's subparsers."""
+    v = subparsers.add_parser("view", help="write and open the report panel of one building",
+                              description="Validate, repair and label one building of FILE and write its "
+                              "report panel (input and repaired renders, face-adjacency graph, defects) "
+                              "as a self-contained HTML page; opens it when a display is present.")
+    v.add_argument("input", metavar="FILE")
+    v.add_argument("--id", default=None, help="building (or BuildingPart) id (default: the first building)")
+    v.add_argument("-o", "--output", default=".", metavar="OUTDIR", help="folder of the page (default .)")
+    v.add_argument("--no-open", action="store_true", help="do not open a browser")
+    v.add_argument("--lod", default=None, help="LoD of the envelope (default: the highest)")
+    v.add_argument("--timeout", type=float, default=30.0, help="repair budget per building, s")
+    return v
+
+
 def add_export_parser(sub) -> argparse.ArgumentParser:
     """``lod2energy export`` and its options (groups: formats, thermal, run)."""
     e = sub.add_parser("export", help="validate, repair, label, assign U-values and export",
@@ -153,7 +167,6 @@ def add_export_parser(sub) -> argparse.ArgumentParser:
     e.add_argument("--merge-parts", action="store_true")
     e.add_argument("--no-html", action="store_true", help="do not write OUTDIR/report.html")
     e.add_argument("-q", "--quiet", action="store_true")
-    from lod2energy.thermal.use import USE_TYPES
     g = e.add_argument_group("energy model (IDF)")
     g.add_argument("--zoning", choices=("storey", "building"), default="storey",
                    help="one thermal zone per storey (default) or per Building/BuildingPart")
@@ -309,8 +322,13 @@ def cmd_export(a) -> int:
     return res.exit_code
 
 
-def _commands() -> dict:
+def cmd_view(a) -> int:
+    """``lod2energy view``: :func:`lod2energy.viz.view.cmd_view`, imported only when it runs."""
     from lod2energy.viz.view import cmd_view
+    return cmd_view(a)
+
+
+def _commands() -> dict:
     return {"validate": cmd_validate, "repair": cmd_repair, "export": cmd_export, "view": cmd_view}
 
 

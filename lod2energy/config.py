@@ -1,4 +1,7 @@
-"""Frozen tolerances shared by every stage (val3dity's names and defaults)."""
+"""Frozen tolerances shared by every stage (val3dity's names and defaults), and the use types.
+
+Nothing here imports numpy: the command line builds its parser from this module alone.
+"""
 from __future__ import annotations
 
 from dataclasses import dataclass
@@ -63,3 +66,7 @@ class Tolerances:
 
 
 DEFAULT = Tolerances()
+
+USE_TYPES = ("residential", "office", "retail", "education", "health", "hospitality", "industry", "other")
+"""Building use types: the choices of ``export --use`` and the results of
+:func:`lod2energy.thermal.use.building_use` (which documents how attributes map to them)."""

@@ -28,7 +28,6 @@ from dataclasses import replace
 from functools import partial
 
 import numpy as np
-from shapely.geometry.polygon import orient
 
 from lod2energy.config import DEFAULT
 from lod2energy.exporters.energyplus.enclosure import eplus_merge
@@ -43,6 +42,7 @@ from lod2energy.repair.unpinch import unpinch
 #: Footprint simplification (m) of :func:`block_zone`: above EnergyPlus's 1.27 cm tolerance.
 BLOCK_SIMPLIFY = 0.05
 _SEMANTIC = {"roof": "RoofSurface", "wall": "WallSurface", "ground": "GroundSurface"}
+# shapely is imported in the functions that use it: importing lod2energy stays cheap (issue 13)
 
 
 def _mesh(zone: ZoneShell) -> PolyMesh:
@@ -220,6 +220,7 @@ def block_zone(zone: ZoneShell, simplify: float = BLOCK_SIMPLIFY, opening: float
     hull : bool
         Use the footprint's convex hull.
     """
+    from shapely.geometry.polygon import orient
     m = _mesh(zone)
     fp = footprint_polygon(m, simplify=simplify)
     if fp is None:

@@ -10,9 +10,8 @@
 from __future__ import annotations
 
 import numpy as np
-from scipy.sparse import coo_matrix
-from scipy.sparse.csgraph import connected_components
-from scipy.spatial import cKDTree
+
+# scipy is imported in the functions that use it: importing lod2energy stays cheap (issue 13)
 
 __all__ = ["snap_map", "close_pairs", "snap_points", "first_occurrence"]
 
@@ -31,6 +30,7 @@ def close_pairs(points: np.ndarray, tol: float, groups: np.ndarray | None = None
     -------
     (p, 2) int
     """
+    from scipy.spatial import cKDTree
     pairs = cKDTree(points).query_pairs(tol, output_type="ndarray")
     if groups is not None and len(pairs):
         pairs = pairs[groups[pairs[:, 0]] == groups[pairs[:, 1]]]
@@ -66,6 +66,8 @@ def snap_map(points: np.ndarray, tol: float, groups: np.ndarray | None = None) -
     pairs = close_pairs(p, tol, groups)
     if len(pairs) == 0:
         return np.arange(n, dtype=np.intp)
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import connected_components
     g = coo_matrix((np.ones(len(pairs)), (pairs[:, 0], pairs[:, 1])), shape=(n, n))
     _, lab = connected_components(g, directed=False)
     first = np.full(lab.max() + 1, n, dtype=np.intp)
@@ -113,6 +115,7 @@ def snap_points(points: np.ndarray, snap_tol: float) -> np.ndarray:
     if n < 2 or not snap_tol or snap_tol <= 0 or not np.isfinite(pts).all():
         return rep
     tol2 = snap_tol * snap_tol
+    from scipy.spatial import cKDTree
     # slightly larger radius for the tree, exact val3dity test below
     pairs = cKDTree(pts).query_pairs(snap_tol * (1 + 1e-9) + 1e-300, output_type="ndarray")
     if len(pairs) == 0:
@@ -159,6 +162,7 @@ def split_at_points(v: np.ndarray, polys: list[list[int]], tol: float, only_unma
     list of list of int
         The rings with the vertices inserted.
     """
+    from scipy.spatial import cKDTree
     tree = cKDTree(v)
     allowed = None if candidates is None else {int(c) for c in candidates}
     directed = {(poly[k], poly[(k + 1) % len(poly)]) for poly in polys for k in range(len(poly))}

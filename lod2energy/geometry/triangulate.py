@@ -12,8 +12,6 @@ from __future__ import annotations
 from typing import Sequence
 
 import numpy as np
-import shapely
-from scipy.spatial import Delaunay
 
 from lod2energy.geometry.vectors import _cross, cross2 as _cross2, newell_normal, project_2d
 
@@ -22,6 +20,7 @@ try:  # mapbox_earcut is a declared dependency; keep import errors readable
 except ImportError:  # pragma: no cover
     _earcut = None
 
+# shapely and scipy are imported in the functions that use them: importing lod2energy stays cheap (issue 13)
 __all__ = ["triangulate_surface", "triangulate_surfaces", "triangulate_flat", "triangulate_shell",
            "earcut_rings", "ear_triangles", "constrained_delaunay", "lawson_cdt", "SLIVER_RATIO"]
 
@@ -476,6 +475,8 @@ def _delaunay_if_conforming(pts: np.ndarray, ring_ends) -> np.ndarray | None:
         s = pts[o]
         if ((s[1:, 0] == s[:-1, 0]) & (s[1:, 1] == s[:-1, 1])).any():
             return None  # a ring touching another at a vertex: leave it to the general path
+    import shapely
+    from scipy.spatial import Delaunay
     try:
         dt = Delaunay(pts)
     except Exception:  # Qhull refuses degenerate input

@@ -5,9 +5,10 @@ Coplanar hull triangles are merged back into convex polygons so the face count s
 from __future__ import annotations
 
 import numpy as np
-from scipy.spatial import ConvexHull, QhullError
 
 from lod2energy.polymesh import PolyMesh, merge_coplanar, triangles_to_mesh
+
+# scipy is imported in the functions that use it: importing lod2energy stays cheap (issue 13)
 
 
 def convex_hull(m: PolyMesh) -> PolyMesh | None:
@@ -15,6 +16,7 @@ def convex_hull(m: PolyMesh) -> PolyMesh | None:
     used = np.unique([i for f in m.faces for r in f.rings for i in r])
     if len(used) < 4:
         return None
+    from scipy.spatial import ConvexHull, QhullError
     P = m.vertices[used]
     try:
         h = ConvexHull(P)

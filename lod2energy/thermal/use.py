@@ -34,10 +34,10 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Mapping
 
+from lod2energy.config import USE_TYPES
 from lod2energy.errors import ParameterError
 from lod2energy.model import Building
 
-USE_TYPES = ("residential", "office", "retail", "education", "health", "hospitality", "industry", "other")
 USE_KEYS = ("function", "usage", "gebruiksdoel", "b3_gebruiksdoel", "building", "building_function",
             "buildingFunction", "use")
 DATA = Path(__file__).resolve().parent / "data"

@@ -27,13 +27,13 @@ from fractions import Fraction
 from typing import Sequence
 
 import numpy as np
-import shapely
-from scipy.spatial import cKDTree
 
 from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.geometry import constrained_delaunay, cross_rows as _cross, plane_bases
 from lod2energy.model import Shell
 from lod2energy.validate.snap import snapped_ids
+
+# shapely and scipy are imported in the functions that use them: importing lod2energy stays cheap (issue 13)
 
 INFO_104_TRIANGLE = " outer ring (a triangle) is collapsed to a line"
 INFO_104_RING = "ring self-intersects or is collapsed to a line"
@@ -340,6 +340,7 @@ def check_polygons_multi(items: Sequence[tuple[np.ndarray, Shell]], tol: Toleran
         planar = code == 0
 
     # ---- 104 on projected rings, 208, GEOS
+    import shapely
     pf = np.nonzero(planar)[0]
     if len(pf):
         rsel = np.nonzero(planar[ring_face])[0]
@@ -424,6 +425,7 @@ def _snap_shells(V: np.ndarray, flat: np.ndarray, pos_shell: np.ndarray, offsets
     pts = V[used]
     if not np.isfinite(pts).all():
         return flat.copy()
+    from scipy.spatial import cKDTree
     pairs = cKDTree(pts).query_pairs(snap_tol * (1 + 1e-9) + 1e-300, output_type="ndarray")
     if len(pairs):  # pairs across vertex arrays (neighbouring buildings) do not matter
         grp = np.searchsorted(offsets, used, side="right")

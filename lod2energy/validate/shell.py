@@ -23,14 +23,13 @@ from dataclasses import dataclass
 from typing import Sequence
 
 import numpy as np
-from scipy.sparse import coo_matrix
-from scipy.sparse.csgraph import connected_components
-from scipy.spatial import cKDTree
 
 from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.geometry import bbox_pairs, triangle_pairs_intersect, triangulate_flat
 from lod2energy.model import Shell
 from lod2energy.validate.snap import snapped_ids
+
+# scipy is imported in the functions that use it: importing lod2energy stays cheap (issue 13)
 
 
 def _fmt(x: float) -> str:
@@ -138,6 +137,9 @@ def shell_meshes_multi(items: Sequence[tuple[np.ndarray, Shell]], tol: Tolerance
     rep = None
     chain = np.zeros(n, dtype=bool)
     if tol.snap_tol > 0 and n > 1:
+        from scipy.sparse import coo_matrix
+        from scipy.sparse.csgraph import connected_components
+        from scipy.spatial import cKDTree
         pairs = cKDTree(V).query_pairs(tol.snap_tol * (1 + 1e-9), output_type="ndarray")
         if len(pairs):
             d = V[pairs[:, 0]] - V[pairs[:, 1]]
@@ -358,6 +360,9 @@ def check_shells_multi(items: Sequence[tuple[np.ndarray, Shell, bool]], tol: Tol
 def check_meshes(vertices: np.ndarray, meshes: Sequence[ShellMesh], vol: np.ndarray
                  ) -> list[list[tuple[int | None, int, str]]]:
     """Shell checks on already snapped and triangulated shells (see :func:`check_shells`)."""
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import connected_components
+
     S = len(meshes)
     out: list[list] = [[] for _ in range(S)]
     if S == 0:

@@ -7,7 +7,7 @@ from lod2energy.viz.report import (  # noqa: F401
     DEFAULT_CAP, keep, render_report_html, write_report_html,
 )
 
-_VIEW = ("add_view_parser", "cmd_view", "write_report_for", "prepare_outputs")
+_VIEW = ("cmd_view", "write_report_for", "prepare_outputs")
 
 
 def __getattr__(name):
@@ -19,4 +19,4 @@ def __getattr__(name):
     raise AttributeError(f"module 'lod2energy.viz' has no attribute {name!r}")
 
 __all__ = ["DEFAULT_CAP", "keep", "render_report_html", "write_report_html", "write_report_for",
-           "add_view_parser", "cmd_view"]
+           "cmd_view"]

@@ -89,20 +89,6 @@ def view(path, building_id: str | None = None, outdir=".", *, tol: Tolerances = 
     return out
 
 
-def add_view_parser(subparsers) -> None:
-    """Add ``view FILE [--id ID] [-o OUTDIR] [--no-open]`` to the CLI's subparsers."""
-    v = subparsers.add_parser("view", help="write and open the report panel of one building",
-                              description="Validate, repair and label one building of FILE and write its "
-                              "report panel (input and repaired renders, face-adjacency graph, defects) "
-                              "as a self-contained HTML page; opens it when a display is present.")
-    v.add_argument("input", metavar="FILE")
-    v.add_argument("--id", default=None, help="building (or BuildingPart) id (default: the first building)")
-    v.add_argument("-o", "--output", default=".", metavar="OUTDIR", help="folder of the page (default .)")
-    v.add_argument("--no-open", action="store_true", help="do not open a browser")
-    v.add_argument("--lod", default=None, help="LoD of the envelope (default: the highest)")
-    v.add_argument("--timeout", type=float, default=30.0, help="repair budget per building, s")
-
-
 def cmd_view(args) -> int:
     """Run ``lod2energy view``; prints the page's path. 0 on success, 2 on unusable input."""
     try:
