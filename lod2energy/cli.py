@@ -2,7 +2,8 @@
 
 Exit codes (all commands):
   0  everything valid / written and self-checked
-  1  some building invalid, not repaired, or an export failed its self-check
+  1  some building invalid, not repaired, not energy-compliant (export), or an export failed
+     its self-check or was not written
   2  unusable input (unreadable file, unknown format or version) or a usage error
 """
 from __future__ import annotations
@@ -22,7 +23,8 @@ EXIT_OK, EXIT_INVALID, EXIT_UNUSABLE = 0, 1, 2
 
 EXIT_HELP = """exit codes:
   0  all buildings valid (validate) / repaired (repair) / exported and self-checked (export)
-  1  some building invalid, left unrepaired, or an export failed its self-check
+  1  some building invalid, left unrepaired, not energy-compliant (export), or an export
+     failed its self-check or was not written
   2  unusable input (unreadable, malformed, unknown format or version) or usage error"""
 
 
