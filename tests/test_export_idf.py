@@ -311,3 +311,28 @@ def test_a_zone_without_ground_label_gets_its_downward_face_as_floor():
     assert energyplus.zones.with_floor(out) == (out, 0)                                   # a floor already: unchanged
     steep = [energyplus.pieces.Piece(np.array([(0, 0, 0), (1, 0, 0), (1, 1, 2.5)], float), "wall", "Outdoors", 0.3, 0)]
     assert energyplus.zones.with_floor(steep)[1] == 0                                     # EnergyPlus would not take it
+
+
+def test_a_written_zone_failing_the_enclosure_check_is_written_with_a_simpler_envelope(tmp_path, monkeypatch):
+    """The zone's pieces passed, but the file's (rounded) coordinates fail the enclosure test:
+    the writer tries the simpler envelopes and keeps the first whose file passes, saying so."""
+    from lod2energy.exporters.energyplus import writer
+    real = writer.self_check
+    calls = []
+
+    def flaky(path):  # the first file written (the zone as cut) fails as EnergyPlus would see it
+        calls.append(path)
+        if len(calls) == 1:
+            return ["zone Z: EnergyPlus would find it not fully enclosed: 1 edge(s) not shared by exactly two surfaces"]
+        return real(path)
+
+    monkeypatch.setattr(writer, "self_check", flaky)
+    b = energy_ready(gabled_house())
+    (res,) = writer.write([b], tmp_path)
+    assert res.ok and len(calls) >= 2, res.problems
+    assert any(w.startswith("written with a simpler envelope (") for w in res.warnings), res.warnings
+    assert real(res.path) == []
+    # and with every check failing, the file is reported with the check's problems, not hidden
+    monkeypatch.setattr(writer, "self_check", lambda path: ["zone Z: EnergyPlus would find it not fully enclosed"])
+    (bad,) = writer.write([b], tmp_path / "bad")
+    assert not bad.ok and "not fully enclosed" in bad.problems[0]
