@@ -163,6 +163,21 @@ def records_of(path: str | os.PathLike, start: int = 0) -> dict:
     from lod2energy.records import BuildingRecord, ExportRecord
 
     out: dict = {}
+    for d in _lines(path, start):
+        kind = d.get("kind")
+        if kind == "building":
+            out[int(d["seq"])] = BuildingRecord.from_json(d)
+        elif kind in ("context", "dataset") and int(d["seq"]) in out:
+            s = int(d["seq"])
+            rec = out[s]
+            for e in d.get("exports") or ():
+                rec = rec.with_export(ExportRecord.from_journal(e))
+            out[s] = rec
+    return out
+
+
+def _lines(path: str | os.PathLike, start: int = 0):
+    """The journal's JSON object lines from byte ``start`` on (a torn last line skipped)."""
     with open(path, "rb") as f:
         f.seek(start)
         for raw in f:
@@ -170,31 +185,15 @@ def records_of(path: str | os.PathLike, start: int = 0) -> dict:
                 d = json.loads(raw)
             except (json.JSONDecodeError, UnicodeDecodeError):
                 continue  # a torn last line
-            if not isinstance(d, dict):
-                continue
-            kind = d.get("kind")
-            if kind == "building":
-                out[int(d["seq"])] = BuildingRecord.from_json(d)
-            elif kind in ("context", "dataset") and int(d["seq"]) in out:
-                s = int(d["seq"])
-                rec = out[s]
-                for e in d.get("exports") or ():
-                    rec = rec.with_export(ExportRecord.from_journal(e))
-                out[s] = rec
-    return out
+            if isinstance(d, dict):
+                yield d
 
 
 def terrain_of(path: str | os.PathLike, start: int = 0) -> list[dict]:
     """The ``terrain`` lines from byte ``start`` on (this run's), without their ``kind``: one
     per format, a later line replacing an earlier one, in the order the formats first came."""
     out: dict[str, dict] = {}
-    with open(path, "rb") as f:
-        f.seek(start)
-        for raw in f:
-            try:
-                d = json.loads(raw)
-            except (json.JSONDecodeError, UnicodeDecodeError):
-                continue  # a torn last line
-            if isinstance(d, dict) and d.get("kind") == "terrain":
-                out[str(d.get("format"))] = {k: v for k, v in d.items() if k != "kind"}
+    for d in _lines(path, start):
+        if d.get("kind") == "terrain":
+            out[str(d.get("format"))] = {k: v for k, v in d.items() if k != "kind"}
     return list(out.values())
