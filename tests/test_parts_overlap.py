@@ -269,3 +269,30 @@ def test_a_real_overlap_with_walls_a_hair_apart_is_clipped(bid):
     total = sum(part_volume(cb, p) for p in parts)
     left = sum(r[2] for r in rec["left"])
     assert total - left == pytest.approx(_union_volume(cb), rel=1e-3)
+
+
+def test_surfaces_beside_the_objects_own_solid_are_not_made_a_second_solid():
+    """An object with a Solid and, at the same LoD, a MultiSurface of (part of) the same volume,
+    open: repairing the surfaces into a solid would make the object overlap itself (601); they
+    are left as they are and the solid alone is the envelope."""
+    verts, surfs = [], []
+    for poly, st in zip(box_polygons(10, 8, 6), BOX_SEMANTICS):
+        ring = []
+        for p in poly[0]:
+            t = tuple(float(x) for x in p)
+            if t not in verts:
+                verts.append(t)
+            ring.append(verts.index(t))
+        surfs.append(Surface.from_lists([ring], SEM_INDEX[st]))
+    solid = Geometry("Solid", "2", (Solid((Shell(tuple(surfs)),)),), SEM)
+    open_surfaces = Geometry("MultiSurface", "2", (Solid((Shell(tuple(surfs[1:])),)),), SEM)  # no ground
+    b = Building("B", "Building", np.array(verts), (CityObject("B", "Building", (open_surfaces, solid), {}),))
+    tol = Tolerances(overlap_tol=-1.0)
+    rb = repair_building(b, tol=tol, timeout=20, lod="2")
+    from lod2energy.validate.solid import check_parts_overlap
+    assert check_parts_overlap(rb, tol) == []
+    assert [g.type for g in rb.objects[0].geometries] == ["MultiSurface", "Solid"]
+    # the open surfaces alone (no solid beside them) are still repaired into a solid
+    alone = Building("C", "Building", np.array(verts), (CityObject("C", "Building", (open_surfaces,), {}),))
+    ra = repair_building(alone, tol=tol, timeout=20, lod="2")
+    assert [g.type for g in ra.objects[0].geometries] == ["Solid"]

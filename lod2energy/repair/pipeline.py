@@ -214,10 +214,15 @@ def _targets(b: Building, lod: str | None) -> list[tuple[int, int, Geometry]]:
     for oi, o in enumerate(b.objects):
         if o.type not in BUILDING_TYPES:
             continue
+        solid_lods = {g.lod for g in o.geometries if g.type in ("Solid", "CompositeSolid") and g.solids}
         for gi, g in enumerate(o.geometries):
             if not g.is_polygonal or not g.solids:
                 continue
             if lod is not None and g.lod != lod:
+                continue
+            if g.type not in ("Solid", "CompositeSolid") and g.lod in solid_lods:
+                # the object's surfaces beside its own solid of the same LoD (another encoding
+                # of that volume): made into a second solid they would overlap it (601)
                 continue
             if lod is None and not _bounds_volume(g, o.geometries):
                 continue
