@@ -23,7 +23,7 @@ import os
 from dataclasses import dataclass
 from typing import Any, Callable, Iterable, Sequence
 
-from lod2energy.records import ExportRecord, FileRecord
+from lod2energy.records import LEFT_OUT, ExportRecord, FileRecord
 
 
 @dataclass(frozen=True)
@@ -195,7 +195,7 @@ def _write_cityjson(buildings, outdir, options, *, crs=None, context=(), model=N
         if (bid in skipped or bid in carried) and btype != "Building":
             continue  # terrain, vegetation ...: not part of the energy model, never a failure
         if bid in skipped:
-            out.append(((bid,), ExportRecord("cityjson", False, path, (f"left out: {skipped[bid]}",))))
+            out.append(((bid,), ExportRecord("cityjson", False, path, (f"{LEFT_OUT}{skipped[bid]}",))))
         else:
             out.append(((bid,), ExportRecord("cityjson", ok, str(res.path),
                                               tuple(getattr(res, "problems", ()) or ())[:3], {}, files)))
@@ -276,7 +276,7 @@ def _write_geojson(buildings, outdir, options, *, crs=None, context=(), model=No
     left = dict(res.left_out or {})
     for bid, _ in res.seen:  # the buildings the writer was given, in order (it streams them)
         if bid in left:
-            out.append(((bid,), ExportRecord("geojson", False, res.path, (f"left out: {left[bid]}",))))
+            out.append(((bid,), ExportRecord("geojson", False, res.path, (f"{LEFT_OUT}{left[bid]}",))))
         else:
             out.append(((bid,), ExportRecord("geojson", res.ok, res.path, tuple(res.problems)[:3], {}, files)))
     return WriteResults(out)

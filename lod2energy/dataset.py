@@ -7,7 +7,7 @@ import sys
 
 from lod2energy.model import CityModel
 from lod2energy.options import ExportOptions
-from lod2energy.records import ExportRecord
+from lod2energy.records import NOT_COMPLIANT, ExportRecord
 from lod2energy.repair_file import with_repair_attributes
 from lod2energy.reports import err
 from lod2energy.spool import Job, Spooled, load_spooled
@@ -20,25 +20,16 @@ STREAMED = ("cityjson", "geojson")
 #: energy-compliant is not *accepted* as an energy model, so that every writer accepts exactly
 #: the buildings called compliant (issue 19); its record says it is in the file, and why not.
 CARRIERS = ("cityjson", "geojson")
-#: How the problems of a building a writer left out or carried without accepting it begin: a
-#: decision of the final check, reported as a note, not a file that failed its self-check.
-NOT_ACCEPTED = ("left out: ", "in the file, not energy-compliant: ")
-
-
-def not_accepted(er: ExportRecord) -> bool:
-    """``er`` is a writer's by-design refusal of a building (left out, or carried as not
-    energy-compliant), not a written file that failed its self-check."""
-    return not er.ok and bool(er.problems) and er.problems[0].startswith(NOT_ACCEPTED)
 
 
 def accepted_only_if_compliant(er: ExportRecord, rec) -> ExportRecord:
     """The record of carrier ``er.format`` for the building of ``rec`` (a BuildingRecord): ok
     only when the building is energy-compliant; one in the file that is not gets ``ok`` False and
-    the final check's first reason."""
+    the final check's first reason (:data:`lod2energy.records.NOT_COMPLIANT`)."""
     if not er.ok or er.format not in CARRIERS or rec.energy.compliant:
         return er
     why = (rec.energy.reasons or ("not energy-compliant",))[0]
-    return ExportRecord(er.format, False, er.path, (f"{NOT_ACCEPTED[1]}{why}",), er.extra, er.files)
+    return ExportRecord(er.format, False, er.path, (f"{NOT_COMPLIANT}{why}",), er.extra, er.files)
 
 
 def stem_of(path: str) -> str:
@@ -108,7 +99,7 @@ def dataset_pass(w, options: ExportOptions, job: Job, records: dict, others: lis
                 records[s] = records[s].with_export(es)
                 if journal is not None:
                     journal.append({"kind": "dataset", "seq": s, "exports": [es.journal()]}, sync=False)
-                if not_accepted(es):
+                if es.refused:
                     refused.append((bid, es.problems[0]))
                 elif not es.ok and bad is None:
                     bad = (bid, es)

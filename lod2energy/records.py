@@ -211,6 +211,13 @@ def run_figures(results: Mapping) -> dict:
     return fig
 
 
+#: How the first problem of a writer's by-design refusal of a building begins: left out of the
+#: file, or carried in it but not accepted as an energy model (issue 19). A decision of the final
+#: check, reported as a note - not a written file that failed its self-check.
+LEFT_OUT = "left out: "
+NOT_COMPLIANT = "in the file, not energy-compliant: "
+
+
 @dataclass(frozen=True)
 class ExportRecord:
     """What one writer did for one building.
@@ -250,6 +257,11 @@ class ExportRecord:
                 out.update(run_figures(results))
             out[k] = v
         return out
+
+    @property
+    def refused(self) -> bool:
+        """Not ok by the writer's design (:data:`LEFT_OUT`, :data:`NOT_COMPLIANT`), not by a failure."""
+        return not self.ok and bool(self.problems) and self.problems[0].startswith((LEFT_OUT, NOT_COMPLIANT))
 
     def message(self, bid: str) -> str:
         """The user's line for an export of building ``bid`` that is not ok: a written file that

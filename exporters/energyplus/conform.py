@@ -110,8 +110,24 @@ def _on_segment(a: np.ndarray, b: np.ndarray, c: np.ndarray, tol: float = EPLUS_
     return _on_line(a, b, c, tol)
 
 
+class _PieceMemo:
+    """Values per Piece object (a Piece holds arrays, so it is not hashable): keyed by identity,
+    each piece held here so that its id is not reused while the memo lives. Pieces are
+    immutable, so what was found for one stays true."""
+
+    def __init__(self):
+        self._d: dict[int, tuple[Piece, object]] = {}
+
+    def get(self, p: Piece, default=None):
+        m = self._d.get(id(p))
+        return m[1] if m is not None and m[0] is p else default
+
+    def put(self, p: Piece, value=True) -> None:
+        self._d[id(p)] = (p, value)
+
+
 def _split_on_own_edge(pieces: list[Piece], tol: float = EPLUS_POINT_TOL,
-                       clean: dict | None = None) -> list[Piece] | None:
+                       clean: _PieceMemo | None = None) -> list[Piece] | None:
     """Split the first piece with a vertex EnergyPlus sees on another of its edges.
 
     A thin piece ``(.., a, b, .., c, ..)`` whose vertex ``c`` lies within ``tol`` of its
@@ -120,13 +136,13 @@ def _split_on_own_edge(pieces: list[Piece], tol: float = EPLUS_POINT_TOL,
     across ``ab``), the part ``(b, .., c)`` and the part ``(c, .., a)``; parts with fewer
     than 3 vertices are left out. Internal edges ``b-c`` and ``c-a`` are shared by two
     parts, so the shell stays closed. Returns None when no piece has such a vertex.
-    ``clean`` (``id(piece) -> piece``) holds pieces already scanned without a hit: they are
-    skipped (a Piece is immutable) and the pieces scanned now without a hit are added.
+    ``clean`` holds the pieces already scanned without a hit: they are skipped, and the pieces
+    scanned now without a hit are added.
     """
     for pi, p in enumerate(pieces):
         q = p.points
         k = len(q)
-        if k < 4 or (clean is not None and clean.get(id(p)) is p):
+        if k < 4 or (clean is not None and clean.get(p)):
             continue
         for i in range(k):
             ib = (i + 1) % k
@@ -139,7 +155,7 @@ def _split_on_own_edge(pieces: list[Piece], tol: float = EPLUS_POINT_TOL,
                 new = [replace(p, points=x) for x in (tri, q1, q2) if len(x) >= 3]
                 return pieces[:pi] + new + pieces[pi + 1:]
         if clean is not None:
-            clean[id(p)] = p  # held here, so its id is not reused while the dict lives
+            clean.put(p)
     return None
 
 
@@ -190,25 +206,23 @@ def _eplus_conform(pieces: list[Piece], tol: float, split: bool) -> list[Piece]:
     out = list(pieces)
     # pieces already scanned without a hit (immutable, so they stay so): the scans below skip
     # them and find the same first hit as a scan of every piece
-    tri_clean: dict[int, Piece] = {}
-    own_clean: dict[int, Piece] = {}
-    edge_memo: dict[int, tuple[Piece, dict]] = {}
+    tri_clean, own_clean, edge_memo = _PieceMemo(), _PieceMemo(), _PieceMemo()
 
     def edges_of(p):
         """``{(key of a vertex, key of the next): first index}`` of piece ``p`` (memoised)."""
-        m = edge_memo.get(id(p))
-        if m is None or m[0] is not p:
+        d = edge_memo.get(p)
+        if d is None:
             k = [key(x) for x in p.points]
-            d: dict = {}
+            d = {}
             for i in range(len(k)):
                 d.setdefault((k[i], k[(i + 1) % len(k)]), i)
-            m = edge_memo[id(p)] = (p, d)
-        return m[1]
+            edge_memo.put(p, d)
+        return d
     for _ in range(4 * len(pieces) + 8):
         hit = None
         for pi, p in enumerate(out):
             q = p.points
-            if len(q) != 3 or tri_clean.get(id(p)) is p:
+            if len(q) != 3 or tri_clean.get(p):
                 continue
             for i in range(3):
                 a, b, c = q[i], q[(i + 1) % 3], q[(i + 2) % 3]
@@ -217,7 +231,7 @@ def _eplus_conform(pieces: list[Piece], tol: float, split: bool) -> list[Piece]:
                     break
             if hit:
                 break
-            tri_clean[id(p)] = p
+            tri_clean.put(p)
         if hit is None:
             parts = _split_on_own_edge(out, tol, own_clean) if split else None
             if parts is None:

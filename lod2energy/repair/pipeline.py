@@ -25,7 +25,7 @@ import numpy as np
 
 from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.model import (
-    BUILDING_TYPES, Building, FeatureError, Geometry, frozen_mapping, lod_key,
+    BUILDING_TYPES, SURFACE_TYPES, Building, FeatureError, Geometry, frozen_mapping, lod_key,
 )
 from lod2energy.polymesh import PolyMesh, compact, face_area, topology
 from lod2energy.repair.accept import grid_rounding, is_repaired, output_grid, repair_verdict, val3dity_codes
@@ -214,13 +214,13 @@ def _targets(b: Building, lod: str | None) -> list[tuple[int, int, Geometry]]:
     for oi, o in enumerate(b.objects):
         if o.type not in BUILDING_TYPES:
             continue
-        solid_lods = {g.lod for g in o.geometries if g.type in ("Solid", "CompositeSolid") and g.solids}
+        solid_lods = {g.lod for g in o.geometries if g.is_volumetric and g.solids}
         for gi, g in enumerate(o.geometries):
             if not g.is_polygonal or not g.solids:
                 continue
             if lod is not None and g.lod != lod:
                 continue
-            if g.type not in ("Solid", "CompositeSolid") and g.lod in solid_lods:
+            if g.type in SURFACE_TYPES and g.lod in solid_lods:
                 # the object's surfaces beside its own solid of the same LoD (another encoding
                 # of that volume): made into a second solid they would overlap it (601)
                 continue
