@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import os
 import sys
+from dataclasses import dataclass
 
 from lod2energy.model import CityModel
 from lod2energy.options import ExportOptions
@@ -41,19 +42,43 @@ def stem_of(path: str) -> str:
     return os.path.splitext(base)[0]
 
 
-def dataset_pass(w, options: ExportOptions, job: Job, records: dict, others: list[int], model: CityModel,
-                  input_path: str, quiet: bool, journal=None) -> None:
-    """Writer ``w`` of one file for all buildings (CityJSON, IDF / STL in dataset mode, the CFD
-    case): the buildings are loaded from the spool in input order; every record of ``records``
-    (seq -> BuildingRecord) in the file gets the writer's export record, also appended to
-    ``journal`` (a :class:`~lod2energy.journal.Journal`; a ``dataset`` line per building, and a
-    ``terrain`` line when the file carries the input's terrain).
+@dataclass(frozen=True)
+class DatasetResult:
+    """What one writer of one file did (:func:`dataset_write`), before the records have it.
 
-    Returns
-    -------
-    dict or None
-        The terrain the file carries (format, path, ok, objects, faces, ids), else None.
+    ``pairs``: ``[(building ids, ExportRecord)]``; ``notes``: the writer's notes;
+    ``seqs``: the records the file is for;
+    ``terrain``: the input's terrain the file carries (format, path, ok, objects, faces, ids)
+    or None; ``error``: the line to print when the writer failed as a whole, else None.
     """
+
+    name: str
+    seqs: tuple[int, ...] = ()
+    pairs: tuple = ()
+    notes: tuple[str, ...] = ()
+    terrain: dict | None = None
+    error: str | None = None
+
+
+#: The one-file writers that may run beside the neighbour pass (:class:`lod2energy.executor.Beside`):
+#: they read nothing the neighbour pass writes, unless the IDFs are simulated (``--run``: the
+#: CityJSON and GeoJSON carry the run's figures).
+BESIDE = ("cityjson", "geojson")
+
+
+def beside_ok(options: ExportOptions) -> bool:
+    """True when the one-file writers :data:`BESIDE` need nothing of the neighbour pass."""
+    return not ("idf" in options.formats and getattr(options.writer_options("idf"), "run", False))
+
+
+def dataset_write(w, options: ExportOptions, job: Job, records: dict, others: list[int], model: CityModel,
+                  input_path: str) -> DatasetResult:
+    """Writer ``w`` of one file for all buildings (CityJSON, IDF / STL in dataset mode, the CFD
+    case), the buildings loaded from the spool in input order. Writes the file; changes no record
+    (:func:`dataset_apply` does). ``w`` may be a writer's name."""
+    if isinstance(w, str):
+        from lod2energy.exporters.registry import writers
+        w = writers((w,))[0]
     wopts = options.writer_options(w.name)
     if w.name == "cityjson":
         seqs = [s for s, r in sorted(records.items()) if r.outcome == "done" and r.assessed]
@@ -78,21 +103,37 @@ def dataset_pass(w, options: ExportOptions, job: Job, records: dict, others: lis
         pairs = w.write(w.prepare(bs, wopts), job.outdir, wopts, crs=job.crs, model=model, stem=stem_of(input_path),
                         tol=options.prepare.tol, frame=job.frame, **kw)
     except Exception as e:  # noqa: BLE001 - reported for every building of the file
-        pairs = [((records[s].id,), ExportRecord(w.name, False, "", (f"{w.name.upper()} not written: "
-                                                                      f"{type(e).__name__}: {e}",)))
-                 for s in seqs]
-        err(f"{w.name.upper()} export failed: {type(e).__name__}: {e}")
-    for note in getattr(pairs, "notes", ()) or ():
+        why = f"{type(e).__name__}: {e}"
+        return DatasetResult(w.name, tuple(seqs), tuple(((records[s].id,), ExportRecord(w.name, False, "", (
+            f"{w.name.upper()} not written: {why}",))) for s in seqs), error=f"{w.name.upper()} export failed: {why}")
+    return DatasetResult(w.name, tuple(seqs), tuple(pairs), tuple(getattr(pairs, "notes", ()) or ()),
+                         getattr(pairs, "terrain", None) or None)
+
+
+def dataset_apply(res: DatasetResult, records: dict, quiet: bool, journal=None) -> dict | None:
+    """Give every record of ``records`` (seq -> BuildingRecord) in the file of ``res`` the
+    writer's export record, also appended to ``journal`` (a :class:`~lod2energy.journal.Journal`;
+    a ``dataset`` line per building, and a ``terrain`` line when the file carries the input's
+    terrain); print the writer's notes and its first failure.
+
+    Returns
+    -------
+    dict or None
+        The terrain the file carries (format, path, ok, objects, faces, ids), else None.
+    """
+    name = res.name
+    if res.error is not None:
+        err(res.error)
+    for note in res.notes:
         if not quiet:
             print(f"lod2energy: note: {note}", file=sys.stderr)
-    terrain = getattr(pairs, "terrain", None)
-    if terrain and journal is not None:  # the input's terrain the file carries, for the report
-        journal.append({"kind": "terrain", **terrain}, sync=False)
+    if res.terrain and journal is not None:  # the input's terrain the file carries, for the report
+        journal.append({"kind": "terrain", **res.terrain}, sync=False)
     by_id: dict[str, list[int]] = {}
-    for s in seqs:
+    for s in res.seqs:
         by_id.setdefault(records[s].id, []).append(s)
     bad, refused = None, []
-    for ids, er in pairs:
+    for ids, er in res.pairs:
         for bid in ids:
             for s in by_id.get(bid, ()):
                 es = accepted_only_if_compliant(er, records[s])
@@ -107,8 +148,22 @@ def dataset_pass(w, options: ExportOptions, job: Job, records: dict, others: lis
         journal.sync()
     if refused and not quiet:
         bid, why = refused[0]
-        print(f"lod2energy: note: {w.name.upper()}: {len(refused)} of {len(by_id)} buildings not accepted as "
+        print(f"lod2energy: note: {name.upper()}: {len(refused)} of {len(by_id)} buildings not accepted as "
               f"energy models (see report.csv), e.g. {bid}: {why}", file=sys.stderr)
     if bad is not None:
         err(bad[1].message(bad[0]))
-    return terrain or None
+    return res.terrain or None
+
+
+def dataset_pass(w, options: ExportOptions, job: Job, records: dict, others: list[int], model: CityModel,
+                 input_path: str, quiet: bool, journal=None) -> dict | None:
+    """:func:`dataset_write` then :func:`dataset_apply`: writer ``w``'s file and its records."""
+    return dataset_apply(dataset_write(w, options, job, records, others, model, input_path), records, quiet,
+                         journal)
+
+
+def write_beside(task: tuple) -> tuple[DatasetResult, ...]:
+    """The job of a :class:`lod2energy.executor.Beside` process: ``(writer names, options, job,
+    records, others, model, input_path)`` -> one :class:`DatasetResult` per writer, in order."""
+    names, options, job, records, others, model, input_path = task
+    return tuple(dataset_write(n, options, job, records, others, model, input_path) for n in names)

@@ -24,7 +24,7 @@ from dataclasses import dataclass, replace
 from typing import Iterator
 
 from lod2energy.config import DEFAULT, Tolerances
-from lod2energy.dataset import dataset_pass
+from lod2energy.dataset import BESIDE, DatasetResult, beside_ok, dataset_apply, dataset_pass, write_beside
 from lod2energy.errors import ParameterError
 from lod2energy.interrupt import EXIT_INVALID, EXIT_OK, EXIT_SIGINT, EXIT_UNUSABLE, Interrupted, Signals
 from lod2energy.model import Building, CityModel, FeatureError, frozen_mapping
@@ -307,7 +307,7 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
         Exit code 0 (all exported and self-checked), 1 (some building not), 2 (unusable
         input), 130 / 143 (interrupted by SIGINT / SIGTERM; the report has what was done).
     """
-    from lod2energy.executor import Failure, Overrun, make_executor
+    from lod2energy.executor import Beside, Failure, Overrun, ProcessPoolExecutor, make_executor
     from lod2energy.exporters.registry import writers
     from lod2energy.io import read
     from lod2energy.journal import JOURNAL_NAME, Journal, header
@@ -354,6 +354,7 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
     dataset_errors: list[str] = []
     interrupted = None
     own = executor is None
+    beside, side = None, []  # the one-file writers' process beside pass 2 (Beside), if any, and their names
     tick, close_bar = progress(run.quiet, os.path.basename(input_path))
     timeout = options.job_timeout
     try:
@@ -412,6 +413,11 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
                     journal.append({"kind": "building", **rec.to_json()})
                     csv_rows.append(rec)
                 close_bar()
+                # the one-file writers that need nothing of pass 2 run beside it, in a process of their own
+                unusable = bool(dataset_errors) and not any(r.outcome == "done" for r in records.values())
+                side = [w.name for w in chosen if scope[w.name] == "dataset" and w.name in BESIDE]
+                if side and not unusable and isinstance(ex, ProcessPoolExecutor) and beside_ok(options):
+                    beside = Beside(write_beside, (tuple(side), options, job, records, others, model, input_path))
 
                 # ---- pass 2: writers that need the neighbours, one building at a time
                 ctx_writers = [w for w in chosen if scope[w.name] == "context"]
@@ -456,10 +462,14 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
 
             # ---- pass 3: one file for all buildings (none for a file that could not be read)
             unusable = bool(dataset_errors) and not any(r.outcome == "done" for r in records.values())
+            done_beside = _beside_results(beside, side)
             for w in chosen:
                 if scope[w.name] != "dataset" or unusable:
                     continue
-                carried = dataset_pass(w, options, job, records, others, model, input_path, run.quiet, journal)
+                if w.name in done_beside:
+                    carried = dataset_apply(done_beside[w.name], records, run.quiet, journal)
+                else:
+                    carried = dataset_pass(w, options, job, records, others, model, input_path, run.quiet, journal)
                 if carried:
                     terrain.append(carried)
     except KeyboardInterrupt:
@@ -468,6 +478,8 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
         interrupted = (e.name, e.code)
     finally:
         close_bar()
+        if beside is not None and beside.cancel():  # interrupted: its file is not finished
+            sweep_stale(out)  # its temporaries go
     rows = [records[s] for s in sorted(records)]
     csv_rows.close()
     journal.sync()
@@ -492,6 +504,18 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
     if dataset_errors:
         worst = EXIT_UNUSABLE
     return ExportOutcome(worst, tuple(rows), None, report, tuple(dataset_errors), tuple(terrain))
+
+
+def _beside_results(beside, names) -> dict:
+    """Writer name -> :class:`~lod2energy.dataset.DatasetResult` of the :class:`Beside` process
+    (empty without one); a process that failed as a whole is a failed result for each writer."""
+    if beside is None:
+        return {}
+    from lod2energy.executor import Failure
+    res = beside.result()
+    if isinstance(res, Failure):  # every writer of the process, as dataset_write reports a failed writer
+        return {n: DatasetResult(n, error=f"{n.upper()} export failed: {res.message}") for n in names}
+    return {r.name: r for r in res}
 
 
 def _context_or_record(task):

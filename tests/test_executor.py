@@ -13,7 +13,7 @@ from pathlib import Path
 import pytest
 
 from lod2energy.cli import main
-from lod2energy.executor import Failure, InProcessExecutor, Overrun, ProcessPoolExecutor
+from lod2energy.executor import Beside, Failure, InProcessExecutor, Overrun, ProcessPoolExecutor
 
 from conftest import shared_path
 from spine_inputs import huge_building_line, row_of_boxes_seq, terraced_subset, tree_bytes
@@ -118,6 +118,37 @@ def _runs_agree(src: str, fmt_args: list[str], variants: list[list[str]], tmp_pa
         for k in first:
             assert t[k] == first[k], f"{k} differs between executors"
     return first
+
+
+def _dies(x):
+    os._exit(3)
+
+
+def test_a_job_beside_the_pool_returns_its_result_or_its_failure():
+    assert Beside(_square, 7).result() == 49
+    bad = Beside(_boom, 2).result()
+    assert isinstance(bad, Failure) and bad.message == "ValueError: bad 2"
+    dead = Beside(_dies, 0).result()
+    assert isinstance(dead, Failure) and "exit code 3" in dead.message
+
+
+def test_a_job_beside_the_pool_is_stopped_by_cancel_and_only_once():
+    job = Beside(_sleepy, 60)
+    t0 = time.monotonic()
+    assert job.cancel() is True
+    assert time.monotonic() - t0 < 30 and not job.proc.is_alive()
+    assert job.cancel() is False
+    done = Beside(_square, 3)
+    assert done.result() == 9 and done.cancel() is False
+
+
+def test_the_one_file_writers_wait_for_pass_2_only_when_the_idfs_are_run():
+    from lod2energy.dataset import beside_ok
+    from lod2energy.exporters.energyplus.options import IdfOptions
+    from lod2energy.options import ExportOptions
+    assert beside_ok(ExportOptions(formats=("idf", "stl", "cityjson")))
+    assert not beside_ok(ExportOptions(formats=("idf", "cityjson"), idf=IdfOptions(run=True)))
+    assert beside_ok(ExportOptions(formats=("stl", "cityjson"), idf=IdfOptions(run=True)))
 
 
 ALL = ["--idf", "--stl", "--cityjson"]
@@ -353,3 +384,47 @@ def test_resume_redoes_a_building_whose_file_changed(tmp_path, capsys):
     stl.write_bytes(good[:-10])
     assert _export([src, "--stl", "--resume"], out, capsys) == 0
     assert stl.read_bytes() == good
+
+
+def _journal_kinds(out: Path) -> list[str]:
+    p = out / "report.jsonl"
+    if not p.exists():
+        return []
+    kinds = []
+    for ln in p.read_text().splitlines():
+        try:
+            kinds.append(json.loads(ln).get("kind"))
+        except ValueError:
+            pass  # a line being written
+    return kinds
+
+
+def test_sigterm_in_pass_2_with_the_cityjson_beside_leaves_no_temporary_and_resume_completes(tmp_path):
+    # enough buildings that the CityJSON is still being written when pass 2 starts
+    src = row_of_boxes_seq(tmp_path / "row.city.jsonl", n=60)
+    out = tmp_path / "out"
+    cmd = [sys.executable, "-m", "lod2energy", "export", src, "-o", str(out), *ALL, "-q"]
+    env = {**os.environ, "PYTHONUNBUFFERED": "1"}
+    assert subprocess.run(cmd + ["-j", "1"], env=env, capture_output=True).returncode == 0
+    ref = tree_bytes(out, skip=(".lod2energy", "report.jsonl"))
+    shutil.rmtree(out)
+
+    p = subprocess.Popen(cmd + ["-j", "2"], env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    t0 = time.monotonic()
+    while "context" not in _journal_kinds(out) and time.monotonic() - t0 < 120 and p.poll() is None:
+        time.sleep(0.02)
+    assert p.poll() is None, "the run ended before pass 2 could be interrupted"
+    p.send_signal(signal.SIGTERM)
+    _, err = p.communicate(timeout=120)
+    assert p.returncode == 143, err
+    assert "Traceback" not in err
+    left = [f.name for f in out.iterdir() if f.name.startswith(".") and f.name != ".lod2energy"]
+    assert left == [], f"temporaries left in OUTDIR: {left}"
+    assert not [f.name for f in out.iterdir() if f.name.endswith(".invalid")]
+
+    r = subprocess.run(cmd + ["-j", "2", "--resume"], env=env, capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    got = tree_bytes(out, skip=(".lod2energy", "report.jsonl"))
+    assert sorted(got) == sorted(ref)
+    for k in ref:
+        assert got[k] == ref[k], f"{k} differs after --resume"
