@@ -48,6 +48,10 @@ class Failure:
     message: str
 
 
+#: Jobs in flight or done but waiting for an earlier one, per worker: enough that one slow
+#: building (a repair of seconds) does not leave the other workers idle behind it.
+WINDOW_PER_JOB = 32
+
 #: A job is stopped after ``timeout`` s of CPU time or ``WALL_FACTOR * timeout`` s of wall time.
 WALL_FACTOR = 10.0
 
@@ -198,12 +202,12 @@ class ProcessPoolExecutor(Executor):
     jobs : int
         Worker processes (default: all cores).
     window : int, optional
-        Jobs in flight or waiting to be yielded in order (default ``4 * jobs``).
+        Jobs in flight or waiting to be yielded in order (default ``WINDOW_PER_JOB * jobs``).
     """
 
     def __init__(self, jobs: int | None = None, window: int | None = None):
         self.jobs = max(1, int(jobs or default_jobs()))
-        self.window = max(self.jobs, int(window or 4 * self.jobs))
+        self.window = max(self.jobs, int(window or WINDOW_PER_JOB * self.jobs))
         method = "fork" if "fork" in mp.get_all_start_methods() else "spawn"
         self._ctx = mp.get_context(method)
         self._workers: list[_Worker] = []

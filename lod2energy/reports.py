@@ -164,19 +164,21 @@ def write_html_report(report_path: str, input_path: str, records: dict, spool: s
     prepared ones of the spool; a page that cannot be written costs one line, never the export."""
     import json
     try:
-        from lod2energy.viz.report import panel_ids, read_buildings, write_report_html
+        from lod2energy.viz.report import panel_ids, read_for_page, write_report_html
         from lod2energy.viz import data as viz_data
         with open(report_path, encoding="utf-8") as f:
             doc = json.load(f)
-        src = read_buildings(input_path) if os.path.isfile(input_path) else {}
         ids, _ = panel_ids(viz_data.rows(doc))
         wanted = set(ids)
+        # the panels' buildings whole, the others' footprints only: memory bounded by the panels
+        src, footprints = read_for_page(input_path, wanted) if os.path.isfile(input_path) else ({}, {})
         outputs = {}
         for s, r in sorted(records.items()):
             if r.id in wanted and r.outcome == "done" and os.path.exists(spool_path(spool, s)):
                 outputs[r.id] = load_spooled(spool, s)
         path = os.path.join(out, "report.html")
-        write_report_html(doc, path, inputs=src, outputs=outputs, tol=tol, root=out, input_files=list(inputs))
+        write_report_html(doc, path, inputs=src, outputs=outputs, tol=tol, root=out, input_files=list(inputs),
+                          footprints=footprints)
         return path
     except Exception as e:  # noqa: BLE001 - the page is a view of the report, not an output to check
         err(f"report.html not written: {type(e).__name__}: {e}")

@@ -285,3 +285,24 @@ def test_every_plot_is_an_svg_image_and_heating_colours_the_plan(tmp_path):
     assert html.count("data-heat-fill=") == 2 and 'id="by-heat"' in html and 'id="plot-heating"' in html
     values = sorted(float(v) for v in re.findall(r'data-value="([0-9.]+)"', html))
     assert values == pytest.approx(sorted(r.heating_kwh_m2 for r in rs), abs=1e-3)
+
+
+def test_the_page_of_a_large_file_keeps_only_its_panels_whole_and_draws_the_same_plan(tmp_path):
+    """read_for_page: the panels' buildings whole, every other one as its footprint only; the
+    page drawn from those is the page drawn from every building of the file."""
+    from lod2energy.viz.report import plan_footprint, read_buildings, read_for_page
+    src = str(shared_path("denhaag", "DenHaag_01.city.json"))
+    every = read_buildings(src)
+    ids = sorted(every)
+    wanted = set(ids[:5]) | {"no-such-building"}
+    keep, fps = read_for_page(src, wanted)
+    assert sorted(keep) == ids[:5]
+    assert sorted(fps) == ids[5:] and not set(fps) & set(keep)
+    for i in ids[5:40]:
+        want = plan_footprint(every[i])
+        assert len(fps[i]) == len(want) and all(np.array_equal(a, b) for a, b in zip(fps[i], want))
+    rows = [{"id": i, "valid": True, "errors": [], "repair": {"stage": "valid"}} for i in ids]
+    report = {"input_file": src, "buildings": rows}
+    whole = render_report_html(report, inputs=every)
+    light = render_report_html(report, inputs=keep, footprints=fps)
+    assert light == whole and "<svg" in light

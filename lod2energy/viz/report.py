@@ -44,18 +44,30 @@ def _heat_colour(v: float, lo: float, hi: float) -> str:
     return to_hex(colormaps["YlOrRd"](0.15 + 0.85 * float(np.clip(t, 0, 1))))
 
 
-def _plan(rs: list[D.Row], inputs: dict, outputs: dict, panels: set[str]) -> tuple[str, dict]:
+def plan_footprint(b: Building) -> list[np.ndarray]:
+    """The footprint of ``b`` on the plan view, ``[(k, 2) float, m]``: its ground faces
+    (:func:`lod2energy.viz.render.footprint`), or for a mesh over ``MAX_PANEL_FACES`` faces (one
+    that timed out, say) the convex hull of its vertices; empty when it cannot be drawn."""
+    try:
+        return R.footprint(b) if _n_faces(b) <= MAX_PANEL_FACES else _hull(b)
+    except Exception:  # noqa: BLE001 - a building whose footprint cannot be drawn is left off the plan
+        return []
+
+
+def _plan(rs: list[D.Row], inputs: dict, outputs: dict, panels: set[str],
+          footprints: dict | None = None) -> tuple[str, dict]:
+    footprints = footprints or {}
     heat = [r.heating_kwh_m2 for r in rs if r.heating_kwh_m2 is not None]
     lo, hi = (float(np.percentile(heat, 5)), float(np.percentile(heat, 95))) if heat else (0.0, 0.0)
     items = []
     for r in rs:
-        b = inputs.get(r.id) or outputs.get(r.id)
-        if b is None:
-            continue
-        try:  # a huge mesh (one that timed out, say): its hull, not one ring per downward face
-            fp = R.footprint(b) if _n_faces(b) <= MAX_PANEL_FACES else _hull(b)
-        except Exception:  # noqa: BLE001 - a building whose footprint cannot be drawn is left off the plan
-            fp = []
+        if r.id in footprints:
+            fp = footprints[r.id]
+        else:
+            b = inputs.get(r.id) or outputs.get(r.id)
+            if b is None:
+                continue
+            fp = plan_footprint(b)
         title = f"{r.id}: {r.status}" + (f", stage {r.stage}" if r.stage else "")
         it = {"id": r.id, "footprint": fp, "status": r.status, "fill": D.STATUS_COLOURS[r.status],
               "href": "#" + R.slug(r.id) if r.id in panels else None, "title": title}
@@ -148,16 +160,18 @@ def _row_json(r: D.Row) -> dict:
 
 
 def render_report_html(report: dict, *, inputs: dict | None = None, outputs: dict | None = None,
-                       cap: int = DEFAULT_CAP, tol: Tolerances = DEFAULT, title: str | None = None) -> str:
+                       cap: int = DEFAULT_CAP, tol: Tolerances = DEFAULT, title: str | None = None,
+                       footprints: dict | None = None) -> str:
     """The page as a string (see :func:`write_report_html`)."""
     import jinja2
-    inputs, outputs = dict(inputs or {}), dict(outputs or {})
+    inputs, outputs, footprints = dict(inputs or {}), dict(outputs or {}), dict(footprints or {})
     rs = D.rows(report)
     fd = D.figure_data(rs)
     ids, left_out = panel_ids(rs, cap)
     by_id = {r.id: r for r in rs}
     panels = [_panel(by_id[i], inputs.get(i), outputs.get(i), tol) for i in ids]
-    plan, plan_info = _plan(rs, inputs, outputs, set(ids)) if (inputs or outputs) else ("", {})
+    drawn = inputs or outputs or footprints
+    plan, plan_info = _plan(rs, inputs, outputs, set(ids), footprints) if drawn else ("", {})
     plots = {"stages": F.plot_stages(fd["stages"]), "histograms": F.plot_histograms(fd["iou"], fd["displacement"]),
              "compliance": F.plot_compliance(fd["compliance"]), "validity": F.plot_validity(fd["validity_by_code"]),
              "heating": F.plot_heating(fd["heating_by_typology"])}
@@ -178,7 +192,7 @@ def render_report_html(report: dict, *, inputs: dict | None = None, outputs: dic
                       src=src, src_name=os.path.basename(src), fd=fd, plots=plots, plan=plan, plan_info=plan_info, panels=panels,
                       left_out=left_out, cap=cap, n=len(rs), statuses=D.STATUSES, colours=D.STATUS_COLOURS,
                       graph_colours=R.GRAPH_COLOURS, data_json=blob, conditions=D.CONDITIONS,
-                      has_geometry=bool(inputs or outputs))
+                      has_geometry=bool(drawn))
 
 
 def _json_default(o):
@@ -190,7 +204,8 @@ def _json_default(o):
 
 
 def write_report_html(report: dict, path, *, inputs: dict | None = None, outputs: dict | None = None,
-                      cap: int = DEFAULT_CAP, tol: Tolerances = DEFAULT, root=None, input_files=()) -> Path:
+                      cap: int = DEFAULT_CAP, tol: Tolerances = DEFAULT, root=None, input_files=(),
+                      footprints: dict | None = None) -> Path:
     """Write ``report.html`` for a report of ``export``, ``repair --report`` or ``validate --report``.
 
     Parameters
@@ -202,6 +217,9 @@ def write_report_html(report: dict, path, *, inputs: dict | None = None, outputs
     inputs, outputs : dict of id -> Building, optional
         The buildings as read and as repaired/labelled; without them the page has tables and
         plots but no plan view and no renders.
+    footprints : dict of id -> list of (k, 2) float, optional
+        Plan footprints (:func:`plan_footprint`, m) of buildings not in ``inputs``: a large
+        file's plan without all its buildings in memory (:func:`read_for_page`).
     cap : int
         Panels of a large file (see the module docstring).
     root : path-like, optional
@@ -214,7 +232,7 @@ def write_report_html(report: dict, path, *, inputs: dict | None = None, outputs
     Path of the written page.
     """
     from lod2energy.safe_write import write_text
-    html = render_report_html(report, inputs=inputs, outputs=outputs, cap=cap, tol=tol)
+    html = render_report_html(report, inputs=inputs, outputs=outputs, cap=cap, tol=tol, footprints=footprints)
     root = root if root is not None else os.path.dirname(os.path.abspath(path))
     return write_text(path, html, root=root, inputs=list(input_files))
 
@@ -226,6 +244,27 @@ def keep(features, into: dict):
         if isinstance(f, Building):
             into[f.id] = f
         yield f
+
+
+def read_for_page(path: str, wanted: set[str]) -> tuple[dict[str, Building], dict[str, list]]:
+    """The buildings of a file the page draws in full (ids in ``wanted``) and the plan footprint
+    (:func:`plan_footprint`) of every other, read one at a time: memory grows with the panels
+    and the footprints, not with the file."""
+    from lod2energy.io import read
+    model, feats = read(path)
+    keep: dict[str, Building] = {}
+    fps: dict[str, list] = {}
+    if model is None:
+        return keep, fps
+    for f in feats:
+        if not isinstance(f, Building):
+            continue
+        if f.id in wanted:
+            keep[f.id] = f
+            fps.pop(f.id, None)
+        elif f.id not in keep:
+            fps[f.id] = plan_footprint(f)
+    return keep, fps
 
 
 def read_buildings(path: str) -> dict[str, Building]:
