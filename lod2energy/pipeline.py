@@ -52,30 +52,10 @@ def repair_one(b: Building, tol: Tolerances, timeout: float = 30.0, merge_parts:
     return repair_building(b, tol=tol, timeout=timeout, merge_parts=merge_parts, lod=lod)
 
 
+#: The digest of a geometry state (one home: :func:`lod2energy.validate.memo.geometry_key`).
 def _geometry_key(b: Building) -> bytes:
-    """Digest of the geometry state of ``b``: vertices and polygon structure, not labels
-    (what :func:`lod2energy.validate.checks.validate_building` looks at)."""
-    import hashlib
-
-    import numpy as np
-    h = hashlib.blake2b(digest_size=16)
-    h.update(np.ascontiguousarray(b.vertices, dtype=float).tobytes())
-    h.update(repr(tuple(b.provenance.get("input_errors", ()) or ())).encode())
-    for o in b.objects:
-        h.update(f"|o{o.id}|{o.type}".encode("utf-8", "surrogatepass"))
-        for g in o.geometries:
-            h.update(f"|g{g.type}|{g.lod}".encode())
-            if g.raw is not None:
-                h.update(repr(g.raw).encode("utf-8", "surrogatepass"))
-            for so in g.solids:
-                h.update(b"|S")
-                for sh in so.shells:
-                    h.update(b"|H")
-                    for sf in sh.surfaces:
-                        h.update(b"|F")
-                        for r in sf.rings:
-                            h.update(np.ascontiguousarray(r, dtype=np.int64).tobytes() + b";")
-    return h.digest()
+    from lod2energy.validate.memo import geometry_key
+    return geometry_key(b)
 
 
 def final_check(b: Building, defects, lod: str | None, tol: Tolerances = DEFAULT) -> str | None:
@@ -155,6 +135,10 @@ def prepare_building(b: Building, options: PrepareOptions = PrepareOptions(), se
     # pollute sums over the report's columns
     thermal = ThermalRecord() if repair.error else ThermalRecord.from_block(tb.provenance.get("thermal"))
     tb = tb.with_provenance(energy=frozen_mapping(energy.to_json()))
+    # the verdicts of the input and the final geometry travel with the building (the spool):
+    # the one-file writers and the report page read them instead of validating again
+    from lod2energy.validate.memo import carry
+    tb = carry(tb, [(b, before), (tb, after)], tol)
     bbox = None
     if len(tb.vertices):
         import numpy as np

@@ -40,9 +40,14 @@ def spool_building(job: Job, seq: int, b: Building) -> None:
 
 
 def load_spooled(spool: str, seq: int) -> Building:
-    """The building spooled as object ``seq``."""
+    """The building spooled as object ``seq``; the validation verdicts it carries are
+    remembered in this process (:func:`lod2energy.validate.memo.learn`)."""
+    from lod2energy.validate.memo import learn
     with open(spool_path(spool, seq), "rb") as f:
-        return pickle.load(f)
+        b = pickle.load(f)
+    if isinstance(b, Building):
+        learn(b)
+    return b
 
 
 class Spooled(Sequence):

@@ -23,7 +23,7 @@ from __future__ import annotations
 
 from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.model import MULTISOLID_TYPES, Building, Geometry
-from lod2energy.validate import polygon, shell as shell_checks, solid as solid_checks
+from lod2energy.validate import memo, polygon, shell as shell_checks, solid as solid_checks
 from lod2energy.validate.defect import Defect
 from lod2energy.validate.instance import template_geometry
 
@@ -138,8 +138,26 @@ def validate_buildings(buildings, tol: Tolerances = DEFAULT) -> list[list[Defect
     Returns
     -------
     list (one per building) of list of Defect
+
+    Notes
+    -----
+    A building whose geometry was validated before at ``tol`` (in this process, or in the job
+    whose spooled building this process read) gets that verdict without a second validation
+    (:mod:`lod2energy.validate.memo`).
     """
     buildings = list(buildings)
+    keys = [memo.verdict_key(b, tol) for b in buildings]
+    outs = [memo.recall(k) for k in keys]
+    todo = [i for i, o in enumerate(outs) if o is None]
+    if todo:
+        for i, found in zip(todo, _validate_all([buildings[i] for i in todo], tol)):
+            memo.remember(keys[i], found)
+            outs[i] = found
+    return outs
+
+
+def _validate_all(buildings: list, tol: Tolerances) -> list[list[Defect]]:
+    """:func:`validate_buildings` without the memory: every building validated here."""
     entries, owner = [], []
     for bi, b in enumerate(buildings):
         for o in b.objects:

@@ -38,6 +38,8 @@ def envelope_extent(b: Building, lod: str | None) -> float:
     if not idx or not len(b.vertices):
         return 0.0
     p = b.vertices[np.unique(np.concatenate(idx))]
+    if not len(p):  # rings without a vertex
+        return 0.0
     return float((p.max(axis=0) - p.min(axis=0)).max())
 
 
