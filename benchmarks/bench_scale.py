@@ -31,7 +31,9 @@ size on a ``dask.distributed`` LocalCluster of 2 worker processes through the Py
 Measured per row: wall s; CPU s of the whole process tree (the larger of
 ``getrusage(RUSAGE_CHILDREN)`` around the subprocess and the sum of the per-process CPU times
 psutil last saw while sampling every 0.2 s; for the Dask row, psutil only, over this process and
-the cluster's); peak RSS of the process tree (sum over the live processes, sampled every 0.2 s);
+the cluster's); peak RSS of the process tree (sum over the live processes, sampled every 0.2 s)
+and peak PSS (the same sum of each process's proportional set size, ``/proc/PID/smaps_rollup``:
+pages a forked worker shares with its parent counted once, not once per process);
 ``os.getloadavg()`` at start and end; the exit code and the outcome counts of the command's own
 report. ``buildings/CPU-s`` is the per-core rate and the figure to compare on a loaded machine;
 the 1 -> 2 worker speed-up is of wall time and means little when the load average exceeds the
@@ -175,6 +177,7 @@ class TreeSampler:
         import psutil
         self.root = psutil.Process(pid)
         self.peak = 0
+        self.peak_pss = 0
         self.cpu: dict[tuple[int, float], float] = {}
         self.base = exclude_cpu_of
         self._stop = threading.Event()
@@ -186,16 +189,18 @@ class TreeSampler:
             procs = [self.root] + self.root.children(recursive=True)
         except psutil.Error:
             return
-        rss = 0
+        rss = pss = 0
         for q in procs:
             try:
                 with q.oneshot():
                     rss += q.memory_info().rss
                     t = q.cpu_times()
                     self.cpu[(q.pid, q.create_time())] = t.user + t.system
+                pss += _pss(q.pid)
             except psutil.Error:
                 pass
         self.peak = max(self.peak, rss)
+        self.peak_pss = max(self.peak_pss, pss)
 
     def _loop(self) -> None:
         while not self._stop.is_set():
@@ -220,6 +225,24 @@ class TreeSampler:
     def peak_mb(self) -> float:
         return self.peak / 2 ** 20
 
+    @property
+    def peak_pss_mb(self) -> float:
+        return self.peak_pss / 2 ** 20
+
+
+def _pss(pid: int) -> int:
+    """Proportional set size (bytes) of ``pid``: its private pages plus its share of the pages it
+    shares (a forked worker's copy-on-write pages are counted once over the tree, not once per
+    process as the RSS sum counts them). 0 where ``/proc/PID/smaps_rollup`` cannot be read."""
+    try:
+        with open(f"/proc/{pid}/smaps_rollup", encoding="ascii") as f:
+            for line in f:
+                if line.startswith("Pss:"):
+                    return int(line.split()[1]) * 1024
+    except (OSError, ValueError, IndexError):
+        pass
+    return 0
+
 
 def measure(cmd: list[str]) -> dict:
     """Wall s, CPU s and peak RSS MB of the process tree of ``cmd``, its exit code and last stderr line."""
@@ -234,7 +257,8 @@ def measure(cmd: list[str]) -> dict:
     ru_cpu = (ru1.ru_utime - ru0.ru_utime) + (ru1.ru_stime - ru0.ru_stime)
     lines = err.strip().splitlines()
     return {"wall_s": wall, "cpu_s": max(ru_cpu, s.cpu_seconds), "cpu_rusage_s": ru_cpu,
-            "cpu_psutil_s": s.cpu_seconds, "peak_mb": s.peak_mb, "rc": proc.returncode,
+            "cpu_psutil_s": s.cpu_seconds, "peak_mb": s.peak_mb, "peak_pss_mb": s.peak_pss_mb,
+            "rc": proc.returncode,
             "load": [load0, os.getloadavg()[0]], "stderr": lines[-1:] if lines else []}
 
 
@@ -412,18 +436,20 @@ def table(rows: list[dict]) -> list[str]:
         last[(r["revision"], r["set"], r["input"], r["command"], r["workers"], r["note"].startswith("Dask"))] = r
     base = {(k[0], k[1], k[2], k[3]): r["wall_s"] for k, r in last.items() if r["workers"] == 1 and not k[5]}
     out = ["| code | input | buildings | command | workers | wall s | CPU s | buildings/CPU-s | "
-           "buildings/s per worker (wall) | speed-up 1->2 (wall) | peak RSS MB (tree) | load avg | exit | "
+           "buildings/s per worker (wall) | speed-up 1->2 (wall) | peak RSS MB (tree) | peak PSS MB (tree) | "
+           "load avg | exit | "
            "outcomes | note |",
-           "|---|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---|---:|---|---|"]
+           "|---|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---|---:|---|---|"]
     for k, r in last.items():
         n = r.get("buildings") or 0
         cpu = r.get("cpu_s") or 0.0
         b = base.get(k[:4])
         sp = f"{b / r['wall_s']:.2f}x" if b and r["workers"] > 1 else ""
         oc = ", ".join(f"{v} {k2}" for k2, v in sorted(r.get("outcomes", {}).items()))
+        pss = f"{r['peak_pss_mb']:.0f}" if r.get("peak_pss_mb") else ""
         out.append(f"| {r['revision']} | {r['input']} | {n:,} | {r['command']} | {r['workers']} | "
                    f"{r['wall_s']:.1f} | {cpu:.1f} | {n / cpu if cpu else 0:.1f} | "
-                   f"{n / r['wall_s'] / r['workers']:.1f} | {sp} | {r['peak_mb']:.0f} | "
+                   f"{n / r['wall_s'] / r['workers']:.1f} | {sp} | {r['peak_mb']:.0f} | {pss} | "
                    f"{r['load'][0]:.1f} -> {r['load'][1]:.1f} | {r['rc']} | {oc} | {r['note']} |")
     return out
 

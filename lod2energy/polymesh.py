@@ -120,6 +120,9 @@ def planarity(V: np.ndarray, f: Face) -> tuple[float, float]:
 
 
 _TRI_CACHE: dict = {}
+#: Faces whose triangles are kept per process: enough for the faces of the buildings a job
+#: handles, small enough that a worker's memory does not grow with the file (cleared when full).
+TRI_CACHE_FACES = 8192
 
 
 def triangulate_face(V: np.ndarray, f: Face) -> np.ndarray:
@@ -138,7 +141,7 @@ def triangulate_face(V: np.ndarray, f: Face) -> np.ndarray:
         return hit
     t = _triangulate_face(V, f)
     t.setflags(write=False)
-    if len(_TRI_CACHE) > 100000:
+    if len(_TRI_CACHE) >= TRI_CACHE_FACES:
         _TRI_CACHE.clear()
     _TRI_CACHE[key] = t
     return t
