@@ -404,9 +404,29 @@ def test_links_planted_under_every_output_name_are_refused_and_not_followed(tmp_
 
 # ----------------------------------------------------------------------------- half files
 
-def _full_disk_for(suffixes: tuple[str, ...], monkeypatch) -> list[str]:
-    """os.fsync raising ENOSPC for the temporaries of files ending in ``suffixes``."""
-    hit: list[str] = []
+class _Hits:
+    """Names the fake full disk refused, in a file: the workers and the one-file writers' process
+    are forked children, whose lists the test would not see."""
+
+    def __init__(self, path: Path):
+        self.path = path
+
+    def append(self, name: str) -> None:
+        with open(self.path, "a", encoding="utf-8") as f:
+            f.write(name + "\n")
+
+    def names(self) -> list[str]:
+        return self.path.read_text(encoding="utf-8").split() if self.path.exists() else []
+
+    def __bool__(self) -> bool:
+        return bool(self.names())
+
+
+def _full_disk_for(suffixes: tuple[str, ...], monkeypatch, log: Path | None = None) -> _Hits:
+    """os.fsync raising ENOSPC for the temporaries of files ending in ``suffixes`` (in this
+    process and in its forked children); the refused names are logged in ``log``."""
+    import tempfile
+    hit = _Hits(log if log is not None else Path(tempfile.mkdtemp()) / "full_disk_hits.txt")
     real = os.fsync
 
     def fsync(fd):

@@ -227,11 +227,6 @@ def export_problem(b: Building, lod: str | None, tol: Tolerances, *, defects: It
     why = acceptance_problem(snapped, lod)
     if why is not None:
         return why
-    if snapped is b and defects is None and not keep_other_lods:
-        # the verdict of this very geometry, when it was validated before (the job's final
-        # check, carried with the spooled building): the same judgement, not a second validation
-        from lod2energy.validate import memo
-        defects = memo.recall(memo.verdict_key(b, tol))
     if snapped is b and defects is not None and not keep_other_lods:
         bad = energy_defects(b, defects, lod)
     else:
