@@ -154,3 +154,54 @@ def lawson_cdt(pts: np.ndarray, ring_ends, max_flips: int | None = None) -> np.n
             if k not in constrained and len(edge_tris.get(k, ())) == 2:
                 stack.append(k)
     return np.asarray(tris, dtype=np.intp).reshape(-1, 3)
+
+
+_EDGE_TABLE_MAX = 2048
+
+
+def _delaunay_if_conforming_table(pts: np.ndarray, ring_ends) -> np.ndarray | None:
+    """(cd06ee6) Inside triangles of the Delaunay triangulation when it contains all ring edges, else None.
+
+    Duplicate points are found by a lexicographic sort, the ring edges looked up in an
+    (n, n) incidence table (small n), the same answers as ``np.unique`` / ``np.isin``.
+    """
+    n = len(pts)
+    if n > 1:
+        o = np.lexsort((pts[:, 1], pts[:, 0]))
+        s = pts[o]
+        if ((s[1:, 0] == s[:-1, 0]) & (s[1:, 1] == s[:-1, 1])).any():
+            return None  # a ring touching another at a vertex: leave it to the general path
+    import shapely
+    from scipy.spatial import Delaunay
+    try:
+        dt = Delaunay(pts)
+    except Exception:  # Qhull refuses degenerate input
+        return None
+    tri = dt.simplices
+    ends = np.asarray(ring_ends, dtype=np.intp)
+    sizes = np.diff(ends, prepend=0)
+    i = np.arange(n)
+    j = i + 1
+    j[ends - 1] = ends - sizes
+    if n <= _EDGE_TABLE_MAX:
+        tab = np.zeros((n, n), dtype=bool)
+        a, b, c = tri[:, 0], tri[:, 1], tri[:, 2]
+        for u, v in ((a, b), (b, c), (a, c)):
+            tab[u, v] = True
+            tab[v, u] = True
+        if not tab[i, j].all():
+            return None
+    else:
+        simp = np.sort(tri, axis=1)
+        have = np.concatenate([simp[:, 0] * n + simp[:, 1], simp[:, 1] * n + simp[:, 2], simp[:, 0] * n + simp[:, 2]])
+        if not np.isin(np.minimum(i, j) * n + np.maximum(i, j), have).all():
+            return None
+    c = pts[tri].mean(axis=1)
+    bounds = [0] + ends.tolist()
+    poly = shapely.Polygon(pts[:bounds[1]], [pts[bounds[k]:bounds[k + 1]] for k in range(1, len(bounds) - 1)])
+    inside = shapely.contains_xy(poly, c[:, 0], c[:, 1])
+    tri = tri[inside].astype(np.intp)
+    a, b, cc = pts[tri[:, 0]], pts[tri[:, 1]], pts[tri[:, 2]]
+    cw = (b[:, 0] - a[:, 0]) * (cc[:, 1] - a[:, 1]) - (b[:, 1] - a[:, 1]) * (cc[:, 0] - a[:, 0]) < 0
+    tri[cw] = tri[cw][:, [0, 2, 1]]
+    return tri

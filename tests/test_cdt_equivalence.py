@@ -80,3 +80,50 @@ def test_constrained_delaunay_is_unchanged_on_grid_and_nan():
     bad = g.copy()
     bad[3] = np.nan
     assert _same(tri._delaunay_if_conforming(bad, ends), ref._delaunay_if_conforming(bad, ends))
+
+
+def _odd_rings(seed: int, count: int):
+    """The polygons of :func:`_polygons` with ring ends the set-based test does not take: an
+    empty ring, ends short of or past the points, signed zeros that are duplicate points."""
+    rng = np.random.default_rng(seed)
+    for i, (pts, ends) in enumerate(_polygons(seed, count)):
+        kind = i % 4
+        if kind == 0:
+            ends = np.r_[ends[:1], ends]  # an empty ring
+        elif kind == 1 and len(pts) > 4:
+            ends = ends.copy()
+            ends[-1] -= int(rng.integers(1, 3))  # trailing points outside every ring
+        elif kind == 2:
+            pts = np.r_[pts, [[0.0, 0.0], [-0.0, 0.0]]]
+            ends = np.r_[ends[:-1], len(pts)]
+        yield pts, ends
+
+
+def _outcome(f, pts, ends):
+    try:
+        return f(pts, ends)
+    except Exception as e:  # noqa: BLE001 - the same failure is part of the same answer
+        return type(e)
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_set_based_conforming_test_matches_the_table_one(seed):
+    # _delaunay_if_conforming (sets of points and edges) against the code of cd06ee6 (the code
+    # before it, failures included: an empty ring indexes past the edge table) on ordinary
+    # polygons and on ring ends it hands over; and against the reference on the ordinary ones
+    ordinary = list(_polygons(200 + seed, 120))
+    for pts, ends in ordinary + list(_odd_rings(300 + seed, 120)):
+        got = _outcome(tri._delaunay_if_conforming, pts, ends)
+        want = _outcome(ref._delaunay_if_conforming_table, pts, ends)
+        if isinstance(want, type):
+            assert got is want
+        else:
+            assert not isinstance(got, type) and _same(got, want)
+    for pts, ends in ordinary:
+        assert _same(tri._delaunay_if_conforming(pts, ends), ref._delaunay_if_conforming(pts, ends))
+
+
+def test_signed_zero_points_are_duplicates():
+    sq = np.array([[0.0, 0.0], [1, 0], [1, 1], [0, 1], [-0.0, 0.0], [0.5, 0.5]])
+    assert tri._delaunay_if_conforming(sq, np.array([4, 6])) is None
+    assert tri._delaunay_if_conforming(sq[:4], np.array([4])) is not None

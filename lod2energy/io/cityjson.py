@@ -121,6 +121,10 @@ def _lod_string(lod: Any) -> str | None:
     return s
 
 
+_INT = {int}
+"""The exact type of a vertex index :meth:`_Collector.ring` takes without looking at each."""
+
+
 class _Collector:
     """Collects the vertex indices a feature uses, then remaps them to 0..n-1."""
 
@@ -132,6 +136,9 @@ class _Collector:
     def ring(self, ring: Any, where: str) -> list[int]:
         if not isinstance(ring, list):
             raise InputError(f"{where}: a ring must be an array of vertex indices")
+        if set(map(type, ring)) <= _INT and (not ring or (min(ring) >= 0 and max(ring) < self.n)):
+            self.used.extend(ring)  # plain in-range ints (nearly always): the loop below finds nothing
+            return ring
         for i in ring:
             if not isinstance(i, int) or isinstance(i, bool):
                 raise InputError(f"{where}: vertex index {i!r} is not an integer")
