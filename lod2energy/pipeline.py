@@ -462,8 +462,9 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
         interrupted = (e.name, e.code)
     finally:
         close_bar()
-        if beside is not None and beside.cancel():  # interrupted: its file is not finished
-            sweep_stale(out)  # its temporaries go
+        stopped = beside is not None and beside.cancel()  # interrupted: its file is not finished
+        if stopped or interrupted:
+            sweep_stale(out)  # the temporaries of the processes stopped mid-write go
     rows = [records[s] for s in sorted(records)]
     csv_rows.close()
     journal.sync()
