@@ -75,10 +75,7 @@ def dataset_write(w, options: ExportOptions, job: Job, records: dict, others: li
                   input_path: str) -> DatasetResult:
     """Writer ``w`` of one file for all buildings (CityJSON, IDF / STL in dataset mode, the CFD
     case), the buildings loaded from the spool in input order. Writes the file; changes no record
-    (:func:`dataset_apply` does). ``w`` may be a writer's name."""
-    if isinstance(w, str):
-        from lod2energy.exporters.registry import writers
-        w = writers((w,))[0]
+    (:func:`dataset_apply` does)."""
     wopts = options.writer_options(w.name)
     if w.name == "cityjson":
         seqs = [s for s, r in sorted(records.items()) if r.outcome == "done" and r.assessed]
@@ -163,7 +160,7 @@ def dataset_pass(w, options: ExportOptions, job: Job, records: dict, others: lis
 
 
 def write_beside(task: tuple) -> tuple[DatasetResult, ...]:
-    """The job of a :class:`lod2energy.executor.Beside` process: ``(writer names, options, job,
+    """The job of a :class:`lod2energy.executor.Beside` process: ``(writers, options, job,
     records, others, model, input_path)`` -> one :class:`DatasetResult` per writer, in order."""
-    names, options, job, records, others, model, input_path = task
-    return tuple(dataset_write(n, options, job, records, others, model, input_path) for n in names)
+    ws, options, job, records, others, model, input_path = task
+    return tuple(dataset_write(w, options, job, records, others, model, input_path) for w in ws)

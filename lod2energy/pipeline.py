@@ -35,6 +35,7 @@ from lod2energy.reports import (
 )
 from lod2energy.spool import Job, load_spooled, reusable, spool_building
 from lod2energy.validate import checks as _checks
+from lod2energy.validate.memo import carry, geometry_key
 
 
 # ============================================================================ one building
@@ -52,10 +53,8 @@ def repair_one(b: Building, tol: Tolerances, timeout: float = 30.0, merge_parts:
     return repair_building(b, tol=tol, timeout=timeout, merge_parts=merge_parts, lod=lod)
 
 
-#: The digest of a geometry state (one home: :func:`lod2energy.validate.memo.geometry_key`).
-def _geometry_key(b: Building) -> bytes:
-    from lod2energy.validate.memo import geometry_key
-    return geometry_key(b)
+#: The digest of a geometry state (its one home is :mod:`lod2energy.validate.memo`).
+_geometry_key = geometry_key
 
 
 def final_check(b: Building, defects, lod: str | None, tol: Tolerances = DEFAULT) -> str | None:
@@ -137,7 +136,6 @@ def prepare_building(b: Building, options: PrepareOptions = PrepareOptions(), se
     tb = tb.with_provenance(energy=frozen_mapping(energy.to_json()))
     # the verdicts of the input and the final geometry travel with the building (the spool):
     # the one-file writers and the report page read them instead of validating again
-    from lod2energy.validate.memo import carry
     tb = carry(tb, [(b, before), (tb, after)], tol)
     bbox = None
     if len(tb.vertices):
@@ -338,7 +336,7 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
     dataset_errors: list[str] = []
     interrupted = None
     own = executor is None
-    beside, side = None, []  # the one-file writers' process beside pass 2 (Beside), if any, and their names
+    beside, side = None, []  # the one-file writers' process beside pass 2 (Beside), if any, and its writers
     tick, close_bar = progress(run.quiet, os.path.basename(input_path))
     timeout = options.job_timeout
     try:
@@ -399,7 +397,7 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
                 close_bar()
                 # the one-file writers that need nothing of pass 2 run beside it, in a process of their own
                 unusable = bool(dataset_errors) and not any(r.outcome == "done" for r in records.values())
-                side = [w.name for w in chosen if scope[w.name] == "dataset" and w.name in BESIDE]
+                side = [w for w in chosen if scope[w.name] == "dataset" and w.name in BESIDE]
                 if side and not unusable and isinstance(ex, ProcessPoolExecutor) and beside_ok(options):
                     beside = Beside(write_beside, (tuple(side), options, job, records, others, model, input_path))
 
@@ -444,8 +442,8 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
                 if own:
                     ex.close()
 
-            # ---- pass 3: one file for all buildings (none for a file that could not be read)
-            unusable = bool(dataset_errors) and not any(r.outcome == "done" for r in records.values())
+            # ---- pass 3: one file for all buildings (none for a file that could not be read;
+            # ``unusable`` is of pass 1, which alone sets the outcomes and the file's errors)
             done_beside = _beside_results(beside, side)
             for w in chosen:
                 if scope[w.name] != "dataset" or unusable:
@@ -491,7 +489,7 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
     return ExportOutcome(worst, tuple(rows), None, report, tuple(dataset_errors), tuple(terrain))
 
 
-def _beside_results(beside, names) -> dict:
+def _beside_results(beside, writers) -> dict:
     """Writer name -> :class:`~lod2energy.dataset.DatasetResult` of the :class:`Beside` process
     (empty without one); a process that failed as a whole is a failed result for each writer."""
     if beside is None:
@@ -499,7 +497,7 @@ def _beside_results(beside, names) -> dict:
     from lod2energy.executor import Failure
     res = beside.result()
     if isinstance(res, Failure):  # every writer of the process, as dataset_write reports a failed writer
-        return {n: DatasetResult(n, error=f"{n.upper()} export failed: {res.message}") for n in names}
+        return {w.name: DatasetResult(w.name, error=f"{w.name.upper()} export failed: {res.message}") for w in writers}
     return {r.name: r for r in res}
 
 
