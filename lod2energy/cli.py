@@ -341,7 +341,9 @@ def main(argv: list[str] | None = None) -> int:
         parser.print_help(sys.stderr)
         return EXIT_UNUSABLE
     t0 = time.perf_counter()
+    from lod2energy.executor import one_blas_thread
     from lod2energy.interrupt import Interrupted, Signals
+    one_blas_thread()  # parallel across buildings, not inside one
     try:
         with Signals():  # SIGTERM ends every command as ^C does: one line, exit 143
             rc = _commands()[a.command](a)

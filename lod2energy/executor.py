@@ -71,6 +71,33 @@ class BuildingTimeout(BaseException):
     ``except Exception`` of the job swallows it)."""
 
 
+#: The thread-count variables of the BLAS / OpenMP libraries numpy and scipy load.
+_BLAS_THREAD_VARS = ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS")
+
+
+def one_blas_thread() -> None:
+    """Limit this process's BLAS / OpenMP thread pools to one thread, unless the user chose.
+
+    lod2energy runs in parallel across buildings (a process a core); its linear algebra is on
+    small arrays, where extra BLAS threads only spin and take the other workers' cores. Before
+    numpy is imported the environment does it (for every library loaded later, scipy's own
+    OpenBLAS too, and every child); after, ``threadpoolctl`` limits the libraries loaded by then.
+    Called by the CLI, every pool worker and the one-file writers' process. A thread count the
+    user set in the environment is left alone.
+    """
+    if any(v in os.environ for v in _BLAS_THREAD_VARS):
+        return
+    for v in _BLAS_THREAD_VARS:
+        os.environ[v] = "1"
+    if "numpy" in sys.modules:
+        try:
+            import scipy.linalg  # noqa: F401 - load scipy's BLAS too, so that it is limited
+            from threadpoolctl import threadpool_limits
+        except ImportError:  # pragma: no cover - declared dependencies
+            return
+        threadpool_limits(limits=1)
+
+
 def default_jobs() -> int:
     """All cores this process may use."""
     try:
@@ -152,6 +179,7 @@ class InProcessExecutor(Executor):
 
 def _worker_loop(conn) -> None:
     """A pool worker: receive ``(index, fn, arg)``, send back ``(index, ok, result)``."""
+    one_blas_thread()
     signal.signal(signal.SIGINT, signal.SIG_IGN)  # the parent handles ^C and stops us
     signal.signal(signal.SIGTERM, signal.SIG_DFL)
     while True:
@@ -294,6 +322,7 @@ class ProcessPoolExecutor(Executor):
 
 def _beside_main(conn, fn, arg) -> None:
     """The process of a :class:`Beside` job: ``fn(arg)``, then ``(ok, result)`` to the parent."""
+    one_blas_thread()
     signal.signal(signal.SIGINT, signal.SIG_IGN)  # the parent handles ^C and stops us
     signal.signal(signal.SIGTERM, signal.SIG_DFL)
     try:
