@@ -341,7 +341,7 @@ def main(argv: list[str] | None = None) -> int:
         parser.print_help(sys.stderr)
         return EXIT_UNUSABLE
     t0 = time.perf_counter()
-    from lod2energy.executor import one_blas_thread
+    from lod2energy.threads import one_blas_thread
     from lod2energy.interrupt import Interrupted, Signals
     one_blas_thread()  # parallel across buildings, not inside one
     try:

@@ -32,6 +32,7 @@ from multiprocessing.connection import Connection, wait
 from typing import Any, Callable, Iterable, Iterator
 
 import lod2energy.records  # noqa: F401 - makes Building picklable in every process
+from lod2energy.threads import one_blas_thread
 
 
 @dataclass(frozen=True)
@@ -69,33 +70,6 @@ def _cpu_seconds(pid: int) -> float:
 class BuildingTimeout(BaseException):
     """Raised inside an in-process job by the ``SIGALRM`` guard (a BaseException, so that no
     ``except Exception`` of the job swallows it)."""
-
-
-#: The thread-count variables of the BLAS / OpenMP libraries numpy and scipy load.
-_BLAS_THREAD_VARS = ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS")
-
-
-def one_blas_thread() -> None:
-    """Limit this process's BLAS / OpenMP thread pools to one thread, unless the user chose.
-
-    lod2energy runs in parallel across buildings (a process a core); its linear algebra is on
-    small arrays, where extra BLAS threads only spin and take the other workers' cores. Before
-    numpy is imported the environment does it (for every library loaded later, scipy's own
-    OpenBLAS too, and every child); after, ``threadpoolctl`` limits the libraries loaded by then.
-    Called by the CLI, every pool worker and the one-file writers' process. A thread count the
-    user set in the environment is left alone.
-    """
-    if any(v in os.environ for v in _BLAS_THREAD_VARS):
-        return
-    for v in _BLAS_THREAD_VARS:
-        os.environ[v] = "1"
-    if "numpy" in sys.modules:
-        try:
-            import scipy.linalg  # noqa: F401 - load scipy's BLAS too, so that it is limited
-            from threadpoolctl import threadpool_limits
-        except ImportError:  # pragma: no cover - declared dependencies
-            return
-        threadpool_limits(limits=1)
 
 
 def default_jobs() -> int:
@@ -236,8 +210,7 @@ class ProcessPoolExecutor(Executor):
     def __init__(self, jobs: int | None = None, window: int | None = None):
         self.jobs = max(1, int(jobs or default_jobs()))
         self.window = max(self.jobs, int(window or WINDOW_PER_JOB * self.jobs))
-        method = "fork" if "fork" in mp.get_all_start_methods() else "spawn"
-        self._ctx = mp.get_context(method)
+        self._ctx = mp.get_context("fork" if "fork" in mp.get_all_start_methods() else "spawn")
         self._workers: list[_Worker] = []
 
     def _spawn(self) -> _Worker:
@@ -351,8 +324,7 @@ class Beside:
     """
 
     def __init__(self, fn: Callable[[Any], Any], arg: Any):
-        method = "fork" if "fork" in mp.get_all_start_methods() else "spawn"
-        ctx = mp.get_context(method)
+        ctx = mp.get_context("fork" if "fork" in mp.get_all_start_methods() else "spawn")
         self._conn, child = ctx.Pipe(duplex=False)
         for stream in (sys.stdout, sys.stderr):  # nothing buffered here is written twice
             try:
