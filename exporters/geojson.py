@@ -251,7 +251,8 @@ def write(buildings: Iterable[Building], path: str | os.PathLike, *, crs: Any = 
     from lod2energy.safe_write import atomic_write
     from lod2energy.site import SiteError
 
-    by_id = {r.id: r for r in records or ()}
+    records = records or ()
+    by_id = {r.id: i for i, r in enumerate(records)}  # the index: a record may be rebuilt when read
     ids, left_out, seen = [], {}, []
     name = Path(path).name[:-len(SUFFIX)] if str(path).endswith(SUFFIX) else Path(path).stem
     head = _dumps({"type": "FeatureCollection", "name": name, "features": []})
@@ -271,7 +272,8 @@ def write(buildings: Iterable[Building], path: str | os.PathLike, *, crs: Any = 
                 left_out[str(b.id)] = "no face with a projected area"
                 continue
             f.write(("," if ids else "") + _dumps({"type": "Feature", "id": str(b.id),
-                                                  "properties": properties(b, by_id.get(str(b.id)), use, lod, run),
+                                                  "properties": properties(b, records[by_id[str(b.id)]] if str(b.id) in by_id else None,
+                                                                         use, lod, run),
                                                   "geometry": geom}))
             ids.append(str(b.id))
         f.write("]}\n")

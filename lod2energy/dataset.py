@@ -8,7 +8,7 @@ from dataclasses import dataclass
 
 from lod2energy.model import CityModel
 from lod2energy.options import ExportOptions
-from lod2energy.records import NOT_COMPLIANT, ExportRecord
+from lod2energy.records import NOT_COMPLIANT, ExportRecord, RecordStore
 from lod2energy.repair_file import with_repair_attributes
 from lod2energy.reports import err
 from lod2energy.spool import Job, Spooled, load_spooled
@@ -71,14 +71,14 @@ def beside_ok(options: ExportOptions) -> bool:
     return not ("idf" in options.formats and getattr(options.writer_options("idf"), "run", False))
 
 
-def dataset_write(w, options: ExportOptions, job: Job, records: dict, others: list[int], model: CityModel,
+def dataset_write(w, options: ExportOptions, job: Job, records: RecordStore, others: list[int], model: CityModel,
                   input_path: str) -> DatasetResult:
     """Writer ``w`` of one file for all buildings (CityJSON, IDF / STL in dataset mode, the CFD
     case), the buildings loaded from the spool in input order. Writes the file; changes no record
     (:func:`dataset_apply` does)."""
     wopts = options.writer_options(w.name)
     if w.name == "cityjson":
-        seqs = [s for s, r in sorted(records.items()) if r.outcome == "done" and r.assessed]
+        seqs = [s for s, r in records.in_order() if r.outcome == "done" and r.assessed]
         from lod2energy.exporters.run_results import with_run_results  # the IDF runs' figures
         energy = set(seqs)
 
@@ -88,26 +88,27 @@ def dataset_write(w, options: ExportOptions, job: Job, records: dict, others: li
         # read from the spool one at a time as the writer streams the file
         bs = Spooled(job.spool, seqs + sorted(others), load)
     else:
-        seqs = [s for s, r in sorted(records.items()) if r.outcome == "done" and r.energy.geometry_ready]
+        seqs = [s for s, r in records.in_order() if r.outcome == "done" and r.energy.geometry_ready]
         if w.name in STREAMED:
             bs = Spooled(job.spool, seqs)
         else:
             bs = [load_spooled(job.spool, s) for s in seqs]
             if w.name == "cfd":  # the file's terrain (TINRelief) is the case's ground
                 bs += [load_spooled(job.spool, s) for s in sorted(others)]
-    kw = {"records": [records[s] for s in seqs]} if getattr(w, "records", False) else {}
+    kw = {"records": records.ordered(seqs)} if getattr(w, "records", False) else {}
     try:
         pairs = w.write(w.prepare(bs, wopts), job.outdir, wopts, crs=job.crs, model=model, stem=stem_of(input_path),
                         tol=options.prepare.tol, frame=job.frame, **kw)
     except Exception as e:  # noqa: BLE001 - reported for every building of the file
         why = f"{type(e).__name__}: {e}"
-        return DatasetResult(w.name, tuple(seqs), tuple(((records[s].id,), ExportRecord(w.name, False, "", (
-            f"{w.name.upper()} not written: {why}",))) for s in seqs), error=f"{w.name.upper()} export failed: {why}")
+        return DatasetResult(w.name, tuple(seqs), tuple(((r.id,), ExportRecord(w.name, False, "", (
+            f"{w.name.upper()} not written: {why}",))) for r in records.ordered(seqs)),
+            error=f"{w.name.upper()} export failed: {why}")
     return DatasetResult(w.name, tuple(seqs), tuple(pairs), tuple(getattr(pairs, "notes", ()) or ()),
                          getattr(pairs, "terrain", None) or None)
 
 
-def dataset_apply(res: DatasetResult, records: dict, quiet: bool, journal=None) -> dict | None:
+def dataset_apply(res: DatasetResult, records: RecordStore, quiet: bool, journal=None) -> dict | None:
     """Give every record of ``records`` (seq -> BuildingRecord) in the file of ``res`` the
     writer's export record, also appended to ``journal`` (a :class:`~lod2energy.journal.Journal`;
     a ``dataset`` line per building, and a ``terrain`` line when the file carries the input's
@@ -127,14 +128,15 @@ def dataset_apply(res: DatasetResult, records: dict, quiet: bool, journal=None) 
     if res.terrain and journal is not None:  # the input's terrain the file carries, for the report
         journal.append({"kind": "terrain", **res.terrain}, sync=False)
     by_id: dict[str, list[int]] = {}
-    for s in res.seqs:
-        by_id.setdefault(records[s].id, []).append(s)
+    for s, r in zip(res.seqs, records.ordered(res.seqs)):
+        by_id.setdefault(r.id, []).append(s)
     bad, refused = None, []
     for ids, er in res.pairs:
         for bid in ids:
             for s in by_id.get(bid, ()):
-                es = accepted_only_if_compliant(er, records[s])
-                records[s] = records[s].with_export(es)
+                rec = records[s]
+                es = accepted_only_if_compliant(er, rec)
+                records[s] = rec.with_export(es)
                 if journal is not None:
                     journal.append({"kind": "dataset", "seq": s, "exports": [es.journal()]}, sync=False)
                 if es.refused:
@@ -152,7 +154,7 @@ def dataset_apply(res: DatasetResult, records: dict, quiet: bool, journal=None) 
     return res.terrain or None
 
 
-def dataset_pass(w, options: ExportOptions, job: Job, records: dict, others: list[int], model: CityModel,
+def dataset_pass(w, options: ExportOptions, job: Job, records: RecordStore, others: list[int], model: CityModel,
                  input_path: str, quiet: bool, journal=None) -> dict | None:
     """:func:`dataset_write` then :func:`dataset_apply`: writer ``w``'s file and its records."""
     return dataset_apply(dataset_write(w, options, job, records, others, model, input_path), records, quiet,

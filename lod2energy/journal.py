@@ -141,7 +141,7 @@ def read_lines(path: str | os.PathLike) -> Iterator[dict]:
                 yield d
 
 
-def records_of(path: str | os.PathLike, start: int = 0) -> dict:
+def records_of(path: str | os.PathLike, start: int = 0) -> "RecordStore":
     """The buildings' records as the journal's lines from byte ``start`` on tell them.
 
     Each ``building`` line is a record (a later one for the same ``seq`` replaces it); the
@@ -157,12 +157,12 @@ def records_of(path: str | os.PathLike, start: int = 0) -> dict:
 
     Returns
     -------
-    dict of int to BuildingRecord
-        ``seq`` -> record (insertion order: as the lines came, not sorted).
+    RecordStore
+        ``seq`` -> record (insertion order: as the lines came, not sorted), kept compact.
     """
-    from lod2energy.records import BuildingRecord, ExportRecord
+    from lod2energy.records import BuildingRecord, ExportRecord, RecordStore
 
-    out: dict = {}
+    out = RecordStore()
     for d in _lines(path, start):
         kind = d.get("kind")
         if kind == "building":

@@ -21,7 +21,7 @@ from __future__ import annotations
 import os
 import sys
 from dataclasses import dataclass, replace
-from typing import Iterator
+from typing import Iterator, Sequence
 
 from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.dataset import BESIDE, DatasetResult, beside_ok, dataset_apply, dataset_pass, write_beside
@@ -29,7 +29,9 @@ from lod2energy.errors import ParameterError
 from lod2energy.interrupt import EXIT_INVALID, EXIT_OK, EXIT_SIGINT, EXIT_UNUSABLE, Interrupted, Signals
 from lod2energy.model import Building, CityModel, FeatureError, frozen_mapping
 from lod2energy.options import ExportOptions, PrepareOptions, RunOptions, ladder_budget, prepare_options, resolve
-from lod2energy.records import _untimed, BuildingRecord, ComplianceRecord, ExportRecord, RepairRecord, ThermalRecord
+from lod2energy.records import (
+    _untimed, BuildingRecord, ComplianceRecord, ExportRecord, RecordStore, RepairRecord, ThermalRecord,
+)
 from lod2energy.reports import (
     CsvRows, err, note_frame, progress, refuse_overwriting_inputs, write_html_report, write_reports_from_journal,
 )
@@ -240,7 +242,8 @@ class ExportOutcome:
     """What :func:`export` did: exit code, records in input order, the interruption if any."""
 
     exit_code: int
-    records: tuple[BuildingRecord, ...] = ()
+    #: In input order; a lazy sequence (:class:`~lod2energy.records.RecordSequence`) of an export.
+    records: Sequence[BuildingRecord] = ()
     interrupted: str | None = None
     report: str = ""
     dataset_errors: tuple[str, ...] = ()
@@ -249,21 +252,19 @@ class ExportOutcome:
     terrain: tuple[dict, ...] = ()
 
 
-def _neighbours(records: list[BuildingRecord], halo: float) -> dict[int, list[int]]:
-    """For each record, the seqs of the other records whose box comes within ``halo`` (m)
-    of its own, in input order (a spatial index over the boxes' plan views)."""
+def _neighbours(boxes: list[tuple[int, tuple[float, ...]]], halo: float) -> dict[int, list[int]]:
+    """For each ``(seq, bbox)`` (the record's box, m), the seqs of the others whose box comes
+    within ``halo`` (m) of its own, in input order (a spatial index over the boxes' plan views)."""
     import numpy as np
     from shapely import STRtree, box
-    if not records:
+    if not boxes:
         return {}
-    boxes = [box(r.bbox[0], r.bbox[1], r.bbox[3], r.bbox[4]) for r in records]
-    tree = STRtree(boxes)
-    seqs = np.array([r.seq for r in records])
+    tree = STRtree([box(b[0], b[1], b[3], b[4]) for _, b in boxes])
+    seqs = np.array([s for s, _ in boxes])
     out = {}
-    for i, r in enumerate(records):
-        q = box(r.bbox[0] - halo, r.bbox[1] - halo, r.bbox[3] + halo, r.bbox[4] + halo)
-        hits = tree.query(q)
-        out[r.seq] = sorted(int(seqs[j]) for j in hits if j != i)
+    for i, (s, b) in enumerate(boxes):
+        hits = tree.query(box(b[0] - halo, b[1] - halo, b[3] + halo, b[4] + halo))
+        out[s] = sorted(int(seqs[j]) for j in hits if j != i)
     return out
 
 
@@ -322,14 +323,14 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
     journal = Journal(os.path.join(out, JOURNAL_NAME), out, inputs,
                       header(input_path, options.fingerprint()), resume=run.resume)
     csv_rows = CsvRows(os.path.join(out, "report.csv"), out, inputs)  # a row as each building finishes
-    prev_b: dict[int, BuildingRecord] = {}
+    prev_b = RecordStore()  # the journal's records of an earlier run (--resume)
     prev_c: dict[int, dict] = {}
     for ln in journal.previous():
         if ln.get("kind") == "building":
             prev_b[int(ln["seq"])] = BuildingRecord.from_json(ln)
         elif ln.get("kind") == "context":
             prev_c[int(ln["seq"])] = ln
-    records: dict[int, BuildingRecord] = {}
+    records = RecordStore()  # seq -> record, compact: the parent's memory hardly grows with the file
     others: list[int] = []
     terrain: list[dict] = []  # the input's terrain the one-file writers carried
     reused: set[int] = set()
@@ -357,9 +358,9 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
                             yield (seq, "record", rec, job)
                         elif not item.is_building:
                             yield (seq, "other", item, job)
-                        elif run.resume and reusable(prev_b.get(seq), item, job, per_building):
+                        elif run.resume and reusable(prev := prev_b.get(seq), item, job, per_building):
                             reused.add(seq)
-                            yield (seq, "record", prev_b[seq], job)
+                            yield (seq, "record", prev, job)
                         else:
                             yield (seq, "building", item, job)
 
@@ -404,21 +405,21 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
                 # ---- pass 2: writers that need the neighbours, one building at a time
                 ctx_writers = [w for w in chosen if scope[w.name] == "context"]
                 if ctx_writers:
-                    ready = [r for _, r in sorted(records.items())
+                    ready = [(s, r.bbox) for s, r in records.in_order()
                              if r.outcome == "done" and r.energy.geometry_ready and r.bbox is not None]
                     halo = max(w.halo(options.writer_options(w.name)) for w in ctx_writers)
                     near = _neighbours(ready, halo)
                     names = [w.name for w in ctx_writers]
 
                     def ctx_tasks():
-                        for r in ready:
-                            p = prev_c.get(r.seq)
-                            if run.resume and r.seq in reused and p is not None:
+                        for s, _ in ready:
+                            p = prev_c.get(s)
+                            if run.resume and s in reused and p is not None:
                                 ers = [ExportRecord.from_journal(e) for e in p.get("exports", [])]
                                 if {e.format for e in ers} >= set(names) and all(e.intact() for e in ers):
-                                    yield ("record", r.seq, ers)
+                                    yield ("record", s, ers)
                                     continue
-                            yield (r.seq, near[r.seq], job)
+                            yield (s, near[s], job)
 
                     # the same budget per job as pass 1: an overrun stops the worker (replaced), the rest goes on
                     for task, res in ex.map(_context_or_record, ctx_tasks(), timeout):
@@ -463,7 +464,7 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
         stopped = beside is not None and beside.cancel()  # interrupted: its file is not finished
         if stopped or interrupted:
             sweep_stale(out)  # the temporaries of the processes stopped mid-write go
-    rows = [records[s] for s in sorted(records)]
+    rows = records.ordered()
     csv_rows.close()
     journal.sync()
     report = write_reports_from_journal(out, input_path, model, str(journal.path), journal.run_start,
@@ -475,8 +476,7 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
     if interrupted:
         print(f"lod2energy: error: interrupted by {interrupted[0]}: report.json has the {len(rows)} objects done so far; "
               f"run again with --resume to continue", file=sys.stderr)
-        return ExportOutcome(interrupted[1], tuple(rows), interrupted[0], report, tuple(dataset_errors),
-                             tuple(terrain))
+        return ExportOutcome(interrupted[1], rows, interrupted[0], report, tuple(dataset_errors), tuple(terrain))
     for m in dataset_errors:
         err(m)
     worst = EXIT_OK
@@ -486,7 +486,7 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
             worst = EXIT_INVALID
     if dataset_errors:
         worst = EXIT_UNUSABLE
-    return ExportOutcome(worst, tuple(rows), None, report, tuple(dataset_errors), tuple(terrain))
+    return ExportOutcome(worst, rows, None, report, tuple(dataset_errors), tuple(terrain))
 
 
 def _beside_results(beside, writers) -> dict:

@@ -13,7 +13,7 @@ from typing import Iterable, Sequence
 from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.model import CityModel
 from lod2energy.options import FORMATS
-from lod2energy.records import CSV_FIELDS, BuildingRecord
+from lod2energy.records import CSV_FIELDS, BuildingRecord, RecordStore
 from lod2energy.safe_write import atomic_write, check_target, json_default
 from lod2energy.spool import load_spooled, spool_path
 
@@ -147,8 +147,8 @@ def write_reports_from_journal(out: str, input_path: str, model, journal_path: s
     from byte ``start``): what the journal says was done is what the report says."""
     from lod2energy.journal import records_of, terrain_of
     recs = records_of(journal_path, start)
-    return write_reports(out, input_path, model, [recs[s] for s in sorted(recs)], dataset_errors,
-                         interrupted, inputs, terrain_of(journal_path, start))
+    return write_reports(out, input_path, model, recs.ordered(), dataset_errors, interrupted, inputs,
+                         terrain_of(journal_path, start))
 
 
 def json_ready(doc):
@@ -158,7 +158,7 @@ def json_ready(doc):
     return json.loads(json.dumps(doc, default=json_default))
 
 
-def write_html_report(report_path: str, input_path: str, records: dict, spool: str, out: str,
+def write_html_report(report_path: str, input_path: str, records: RecordStore, spool: str, out: str,
                       tol: Tolerances = DEFAULT, inputs=()) -> str:
     """``OUTDIR/report.html`` (:mod:`lod2energy.viz`) from the report, the input buildings and the
     prepared ones of the spool; a page that cannot be written costs one line, never the export."""
@@ -173,7 +173,7 @@ def write_html_report(report_path: str, input_path: str, records: dict, spool: s
         # the panels' buildings whole, the others' footprints only: memory bounded by the panels
         src, footprints = read_for_page(input_path, wanted) if os.path.isfile(input_path) else ({}, {})
         outputs = {}
-        for s, r in sorted(records.items()):
+        for s, r in records.in_order():
             if r.id in wanted and r.outcome == "done" and os.path.exists(spool_path(spool, s)):
                 outputs[r.id] = load_spooled(spool, s)
         path = os.path.join(out, "report.html")
@@ -190,13 +190,19 @@ def print_export_summary(records: Iterable[BuildingRecord], formats: Iterable[st
     """The table ``lod2energy export`` prints, then a line for each file that carries the
     input's terrain (``terrain``: :attr:`lod2energy.pipeline.ExportOutcome.terrain`)."""
     formats = [f for f in FORMATS if f in set(formats)]
-    b = [r for r in records if r.type == "Building" or r.assessed]
-    n = len(b)
-    comp = sum(bool(r.energy.compliant) for r in b)
+    n = comp = rep = timeouts = 0
+    ok = dict.fromkeys(formats, 0)
+    for r in records:  # one pass: ``records`` may rebuild each record as it is read
+        if not (r.type == "Building" or r.assessed):
+            continue
+        n += 1
+        comp += bool(r.energy.compliant)
+        rep += r.repair.stage not in ("", "valid", "none", "irreparable")
+        timeouts += r.outcome == "timeout"
+        for f in formats:
+            ok[f] += bool(r.export(f) and r.export(f).ok)
     print(f"{'buildings':>9} {'compliant':>9} {'repaired':>8}  " + "  ".join(f"{f} ok" for f in formats))
-    rep = sum(1 for r in b if r.repair.stage not in ("", "valid", "none", "irreparable"))
-    cells = [f"{sum(bool(r.export(f) and r.export(f).ok) for r in b)}/{n}" for f in formats]
-    timeouts = sum(r.outcome == "timeout" for r in b)
+    cells = [f"{ok[f]}/{n}" for f in formats]
     print(f"{n:>9} {comp:>9} {rep:>8}  " + "  ".join(f"{c:>8}" for c in cells)
           + (f"  ({timeouts} timeout)" if timeouts else ""))
     for t in terrain:

@@ -193,7 +193,8 @@ def test_one_file_writers_hold_one_building_at_a_time(delft_export, monkeypatch)
     a = build_parser().parse_args(["export", str(DELFT), "-o", str(out), "--stl", "--cityjson", "--geojson"])
     opts = resolve(export_options(a), model)
     job = Job(opts, str(out), str(out / ".lod2energy" / "spool"), model.crs)
-    records = {r.seq: r for r in res.records}
+    from lod2energy.records import RecordStore
+    records = RecordStore({r.seq: r for r in res.records})
     before = {n: (out / n).read_bytes() for n in ("delft_subset.energy.city.json", "delft_subset.footprints.geojson")}
     for name in ("cityjson", "geojson"):
         dataset.dataset_pass(writer(name), opts, job, records, [], model, str(DELFT), True)
