@@ -1,0 +1,135 @@
+"""The IDF writer's and self-check's shortcuts give what the full computations give.
+
+- :func:`exporters.shellcheck._surely_outward` (the closed-shell check's volume sign without
+  triangulating) only says "positive" when the earcut volume is positive, so the check's
+  problems are those of the full computation;
+- :func:`exporters.energyplus.openings.window_for` (one containment test when the ratio, not
+  the piece's shape, limits the window) equals the 24-step bisection.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from lod2energy.exporters import polygons, shellcheck
+
+
+def _prism(outline: np.ndarray, z0: float, z1: float) -> list[np.ndarray]:
+    """Closed outward prism over a counter-clockwise outline (k, 2): floor, roof, walls."""
+    k = len(outline)
+    lo = np.column_stack([outline, np.full(k, z0)])
+    hi = np.column_stack([outline, np.full(k, z1)])
+    faces = [lo[::-1].copy(), hi.copy()]
+    for i in range(k):
+        j = (i + 1) % k
+        faces.append(np.array([lo[i], lo[j], hi[j], hi[i]]))
+    return faces
+
+
+def _shells(rng) -> list[list[np.ndarray]]:
+    out = []
+    for i in range(80):
+        k = 3 + i % 6
+        ang = np.sort(rng.random(k)) * 2 * np.pi
+        r = 0.2 + rng.random(k) * 8 if i % 3 else np.full(k, 4.0)
+        outline = np.column_stack([r * np.cos(ang), r * np.sin(ang)])  # star-shaped: convex or not
+        h = [3.0, 0.05, 1e-4, 0.0][i % 4]  # down to a flat (zero-volume) shell
+        faces = _prism(outline, 0.0, h)
+        noise = [0.0, 1e-4, 2e-3][i % 3]  # non-planar faces: triangulations differ in volume
+        faces = [f + rng.normal(0, noise, f.shape) * (f[:, 2:3] > 0) for f in faces]
+        faces = [np.round(f + [85000.0, 447000.0, 0.0], 3) - [85000.0, 447000.0, 0.0] for f in faces]
+        out.append(faces)
+        out.append([f[::-1].copy() for f in faces])  # inward: a negative volume
+    # an L-shaped prism (a non-convex floor and roof)
+    out.append(_prism(np.array([[0, 0], [4, 0], [4, 1], [1, 1], [1, 3], [0, 3]], dtype=float), 0, 2.5))
+    return out
+
+
+def _earcut_volume(polys: list[np.ndarray]) -> float:
+    """The volume check_closed_outward computes (earcut triangles, signed volume about the centroid)."""
+    allp = np.concatenate(polys)
+    v, idx = shellcheck.weld(allp, 1e-3)
+    rings, k = [], 0
+    for p in polys:
+        ring = shellcheck.clean_ring(idx[k:k + len(p)].tolist())
+        k += len(p)
+        if len(set(ring)) >= 3:
+            rings.append(ring)
+    rings = shellcheck.split_at_points(v, rings, 0.0127, only_unmatched=True)
+    tris = [[r[i] for i in t] for r in rings for t in polygons.triangulate(v[r], [len(r)])]
+    return shellcheck.signed_volume(v, np.asarray(tris, dtype=np.intp).reshape(-1, 3)), v, rings
+
+
+def test_surely_outward_only_when_the_earcut_volume_is_positive():
+    rng = np.random.default_rng(13)
+    said = 0
+    for faces in _shells(rng):
+        vol, v, rings = _earcut_volume(faces)
+        if shellcheck._surely_outward(v, rings):
+            said += 1
+            assert vol > 0
+    assert said >= 10  # the shortcut is taken (on the convex outward shells)
+
+
+def test_closed_outward_problems_same_without_the_shortcut(monkeypatch):
+    rng = np.random.default_rng(7)
+    shells = _shells(rng)
+    got = [shellcheck.check_closed_outward(f) for f in shells]
+    monkeypatch.setattr(shellcheck, "_surely_outward", lambda v, polys: False)
+    ref = [shellcheck.check_closed_outward(f) for f in shells]
+    assert got == ref
+    assert any("not outward" in " ".join(p) for p in ref) and any(not p for p in ref)
+
+
+def test_surely_outward_refuses_a_ring_that_winds_twice():
+    # a pentagram: every turn to the left, two turns in all (earcut's triangles need not cover it)
+    ang = np.arange(5) * 4 * np.pi / 5
+    star = np.column_stack([np.cos(ang), np.sin(ang), np.zeros(5)])
+    v = np.vstack([star, [[0.0, 0.0, 1.0]]])
+    rings = [[0, 1, 2, 3, 4]] + [[i, 5, (i + 1) % 5][::-1] for i in range(5)]
+    assert not shellcheck._surely_outward(v, rings)
+
+
+@pytest.mark.parametrize("wwr", [0.05, 0.3, 0.85, 0.97])
+def test_window_for_same_as_the_bisection(wwr):
+    from shapely.geometry import Polygon, box
+
+    from exporters.energyplus.openings import window_for
+
+    def ref(piece, wwr):  # window_for before the shortcut: always the bisection
+        area = polygons.polygon_area3d(piece)
+        n = polygons.unit(polygons.newell_normal(piece))
+        u, v = polygons.plane_basis(n)
+        c0 = piece.mean(axis=0)
+        xy = np.column_stack([(piece - c0) @ u, (piece - c0) @ v])
+        poly = Polygon(xy)
+        cen = np.asarray(poly.centroid.coords[0])
+        w, h = np.ptp(xy[:, 0]), np.ptp(xy[:, 1])
+        lo_t, hi_t = 0.0, 1.0
+        for _ in range(24):
+            t = (lo_t + hi_t) / 2
+            r = box(cen[0] - t * w / 2, cen[1] - t * h / 2, cen[0] + t * w / 2, cen[1] + t * h / 2)
+            lo_t, hi_t = (t, hi_t) if poly.contains(r) else (lo_t, t)
+        t = min(math.sqrt(wwr * area / (w * h)), 0.95 * lo_t)
+        if t <= 0:
+            return None
+        hw, hh = t * w / 2, t * h / 2
+        rect = np.array([[cen[0] - hw, cen[1] + hh], [cen[0] - hw, cen[1] - hh],
+                         [cen[0] + hw, cen[1] - hh], [cen[0] + hw, cen[1] + hh]])
+        return c0 + rect[:, :1] * u + rect[:, 1:2] * v
+
+    rng = np.random.default_rng(21)
+    for i in range(80):
+        w, h = rng.random(2) * 10 + 0.1
+        top = h * (1 + 3 * rng.random() * (i % 2))       # rectangles and steep gables
+        shift = w * rng.random() * (i % 3 == 2)          # leaning (parallelogram-like) pieces
+        p = np.array([[0.0, 0, 0], [w, 0, 0], [w + shift, 0, h], [shift, 0, top]])
+        if i % 5 == 4:
+            p = np.array([[0.0, 0, 0], [w, 0, 0], [w / 2, 0, top], [w / 4, 0, top * 0.9]])
+        ang = rng.random() * 6.28
+        rot = np.array([[np.cos(ang), -np.sin(ang), 0], [np.sin(ang), np.cos(ang), 0], [0, 0, 1]])
+        p = np.round(p @ rot.T + [85000.0, 447000.0, 1.0], 4) - [85000.0, 447000.0, 0.0]
+        got, exp = window_for(p, wwr), ref(p, wwr)
+        assert (got is None and exp is None) or np.array_equal(got, exp), i
