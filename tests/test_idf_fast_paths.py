@@ -133,3 +133,18 @@ def test_window_for_same_as_the_bisection(wwr):
         p = np.round(p @ rot.T + [85000.0, 447000.0, 1.0], 4) - [85000.0, 447000.0, 0.0]
         got, exp = window_for(p, wwr), ref(p, wwr)
         assert (got is None and exp is None) or np.array_equal(got, exp), i
+
+
+def test_union_roots_same_as_scipy_disjoint_set():
+    from scipy.cluster.hierarchy import DisjointSet
+
+    from lod2energy.exporters.weld import _union_roots
+
+    rng = np.random.default_rng(5)
+    for n in (1, 2, 7, 40, 300):
+        for m in (0, n // 2, 2 * n, 5 * n):
+            pairs = rng.integers(0, n, size=(m, 2)).tolist()
+            ds = DisjointSet(range(n))
+            for a, b in pairs:
+                ds.merge(a, b)
+            assert _union_roots(n, pairs) == [ds[i] for i in range(n)]
