@@ -148,3 +148,55 @@ def test_union_roots_same_as_scipy_disjoint_set():
             for a, b in pairs:
                 ds.merge(a, b)
             assert _union_roots(n, pairs) == [ds[i] for i in range(n)]
+
+
+def _ref_area(p):  # zoning._area before its fast path
+    if len(p) < 3:
+        return 0.0
+    return 0.5 * float(np.linalg.norm(np.cross(p - p[0], np.roll(p, -1, axis=0) - p[0]).sum(axis=0)))
+
+
+def _ref_clip(poly, c, keep_above):  # zoning._clip before its fast path
+    from lod2energy.zoning import DECIMALS, ON_PLANE
+
+    out = []
+    n = len(poly)
+    s = (poly[:, 2] - c) if keep_above else (c - poly[:, 2])
+    s = np.where(np.abs(s) <= ON_PLANE, 0.0, s)
+    for i in range(n):
+        a, b = poly[i], poly[(i + 1) % n]
+        sa, sb = s[i], s[(i + 1) % n]
+        if sa >= 0:
+            out.append(a if sa > 0 else np.array([a[0], a[1], c]))
+        if (sa > 0 > sb) or (sa < 0 < sb):
+            p, q = (a, b) if tuple(a) <= tuple(b) else (b, a)
+            t = (c - p[2]) / (q[2] - p[2])
+            x = p + t * (q - p)
+            out.append(np.round(np.array([x[0], x[1], c]), DECIMALS))
+    if len(out) < 3:
+        return np.zeros((0, 3))
+    o = np.array(out)
+    keep = np.ones(len(o), bool)
+    for i in range(len(o)):
+        if np.all(np.abs(o[i] - o[i - 1]) < 1e-9):
+            keep[i] = False
+    o = o[keep]
+    return o if len(o) >= 3 else np.zeros((0, 3))
+
+
+def test_zoning_area_and_clip_same_bits():
+    from lod2energy import zoning
+
+    rng = np.random.default_rng(17)
+    for i in range(400):
+        k = 1 + i % 9
+        p = rng.random((k, 3)) * [30, 30, 12] + np.array([85000.0, 447000.0, 0.0]) * (i % 2)
+        if i % 7 == 0 and k > 2:
+            p[2] = p[1]  # a repeated vertex
+        if i % 5 == 0:
+            p[:, 2] = np.round(p[:, 2])  # vertices on a cut
+        assert zoning._area(p) == _ref_area(p)
+        for c in (0.0, 3.0, 6.0, 13.0):
+            for above in (True, False):
+                got, exp = zoning._clip(p, c, above), _ref_clip(p, c, above)
+                assert got.shape == exp.shape and np.array_equal(got, exp), (i, c, above)
