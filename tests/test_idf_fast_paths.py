@@ -200,3 +200,28 @@ def test_zoning_area_and_clip_same_bits():
             for above in (True, False):
                 got, exp = zoning._clip(p, c, above), _ref_clip(p, c, above)
                 assert got.shape == exp.shape and np.array_equal(got, exp), (i, c, above)
+
+
+def test_idd_classes_built_on_first_use_equal_the_eager_parse():
+    from lod2energy.exporters import energyplus
+    from lod2energy.idd import check_idf, parse_idd, parse_idf
+
+    from _idd_reference import parse_idd_reference
+
+    p = energyplus.run.idd_path()
+    if p is None:
+        pytest.skip("no Energy+.idd installed")
+    text = p.read_text(encoding="latin-1")
+    lazy, eager = parse_idd(text), parse_idd_reference(text)
+    assert lazy.version == eager.version and list(lazy.classes) == list(eager.classes)
+    name = "BUILDINGSURFACE:DETAILED"
+    first = lazy.classes[name]
+    assert first == eager.classes[name] and lazy.classes[name] is first  # built once, then kept
+    assert all(lazy.classes[k] == c for k, c in eager.classes.items())  # every class, any order of use
+    assert lazy == eager
+    # the unique / required objects come from the classes as read: the same problems
+    bad = "Version, 1.0;\nTimestep, 4;\nTimestep, 6;\nZone, Z;\nNotAnObject, 1;\n"
+    fresh = parse_idd(text)
+    assert check_idf(parse_idf(bad), fresh) == check_idf(parse_idf(bad), eager)
+    assert any("unique" in x for x in check_idf(parse_idf(bad), fresh))
+    assert any("required object" in x for x in check_idf(parse_idf(bad), fresh))
