@@ -225,3 +225,31 @@ def test_idd_classes_built_on_first_use_equal_the_eager_parse():
     assert check_idf(parse_idf(bad), fresh) == check_idf(parse_idf(bad), eager)
     assert any("unique" in x for x in check_idf(parse_idf(bad), fresh))
     assert any("required object" in x for x in check_idf(parse_idf(bad), fresh))
+
+
+def test_self_check_still_flags_non_planar_and_tiny_surfaces(tmp_path):
+    import re
+
+    from export_helpers import energy_ready
+    from factories import box
+
+    from lod2energy.exporters import energyplus
+
+    res = energyplus.writer.write([energy_ready(box())], tmp_path, energyplus.options.IdfOptions(wwr=0.0))
+    text = open(res[0].path).read()
+    assert energyplus.check.self_check(res[0].path) == []
+    roof = re.search(r"BuildingSurface:Detailed,\s*\n\s*(\S+Roof1),.*?;\n", text, flags=re.S)
+    verts = re.findall(r"^\s*(-?[\d.]+), (-?[\d.]+), (-?[\d.]+)[,;]", roof.group(0), flags=re.M)
+    x, y, z = verts[0]
+    # one roof corner 5 cm up: out of plane by more than 2 x PIECE_PLANAR
+    bent = roof.group(0).replace(f"{x}, {y}, {z}", f"{x}, {y}, {float(z) + 0.05:.3f}", 1)
+    (tmp_path / "bent.idf").write_text(text.replace(roof.group(0), bent))
+    problems = energyplus.check.self_check(tmp_path / "bent.idf")
+    assert any(f"surface {roof.group(1)}: non-planar for EnergyPlus (0.0" in p for p in problems)
+    # every roof corner on the first one: no area
+    flat = roof.group(0)
+    for a, b, c in verts[1:]:
+        flat = flat.replace(f"{a}, {b}, {c}", f"{x}, {y}, {z}", 1)
+    (tmp_path / "flat.idf").write_text(text.replace(roof.group(0), flat))
+    problems = energyplus.check.self_check(tmp_path / "flat.idf")
+    assert any(f"surface {roof.group(1)}: degenerate for EnergyPlus (4 vertices)" in p for p in problems)
