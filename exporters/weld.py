@@ -36,16 +36,38 @@ def weld(points: np.ndarray, tol: float) -> tuple[np.ndarray, np.ndarray]:
     pairs = close_pairs(p, tol)
     if len(pairs) == 0:
         return p.copy(), np.arange(len(p))
-    from scipy.cluster.hierarchy import DisjointSet
-    ds = DisjointSet(range(len(p)))
-    for a, b in pairs:
-        ds.merge(int(a), int(b))
-    roots = np.array([ds[i] for i in range(len(p))])
+    roots = np.array(_union_roots(len(p), pairs.tolist()))
     _, index = np.unique(roots, return_inverse=True)
     welded = np.zeros((index.max() + 1, 3))
     np.add.at(welded, index, p)
     welded /= np.bincount(index)[:, None]
     return welded, index
+
+
+def _union_roots(n: int, pairs: list) -> list[int]:
+    """The root of each of ``n`` elements after merging ``pairs`` in order, as
+    ``scipy.cluster.hierarchy.DisjointSet(range(n))`` with ``merge(a, b)`` for each pair
+    picks it: the root of the larger subset becomes the parent, the root inserted first
+    (the smaller index) on equal sizes. Path halving as there (it does not change roots).
+    On lists: a fraction of the cost of the dictionaries there."""
+    parent = list(range(n))
+    size = [1] * n
+
+    def find(x):
+        while x != parent[x]:
+            parent[x] = parent[parent[x]]
+            x = parent[x]
+        return x
+
+    for a, b in pairs:
+        xr, yr = find(a), find(b)
+        if xr == yr:
+            continue
+        if (size[xr], yr) < (size[yr], xr):
+            xr, yr = yr, xr
+        parent[yr] = xr
+        size[xr] += size[yr]
+    return [find(i) for i in range(n)]
 
 
 def clean_ring(ring: Sequence[int]) -> list[int]:

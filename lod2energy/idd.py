@@ -23,6 +23,7 @@ from __future__ import annotations
 import functools
 import math
 import re
+from collections.abc import Mapping
 from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
@@ -135,7 +136,7 @@ def parse_idd(text: str) -> Idd:
     """Parse the text of an ``Energy+.idd``."""
     m = re.search(r"!IDD_Version\s+(\S+)", text)
     version = m.group(1) if m else ""
-    classes: dict[str, ClassDef] = {}
+    as_read: dict[str, dict] = {}  # upper-case name -> the class as read (name, fields, attributes)
     cur: dict | None = None
     fld: dict | None = None
 
@@ -149,17 +150,7 @@ def parse_idd(text: str) -> Idd:
         nonlocal cur
         close_field()
         if cur is not None:
-            fields = tuple(FieldDef(
-                name=f["name"], numeric=f["numeric"],
-                type=f.get("type") or ("real" if f["numeric"] else "alpha"),
-                required=f.get("required", False), keys=tuple(f.get("keys", ())),
-                minimum=f.get("minimum"), maximum=f.get("maximum"),
-                min_exclusive=f.get("min_exclusive", False), max_exclusive=f.get("max_exclusive", False),
-                autosizable=f.get("autosizable", False), autocalculatable=f.get("autocalculatable", False),
-                default=f.get("default")) for f in cur["fields"])
-            first = next((i for i, f in enumerate(cur["fields"]) if f.get("begin_ext")), len(fields))
-            classes[cur["name"].upper()] = ClassDef(cur["name"], fields, cur.get("extensible", 0), first,
-                                                    cur.get("unique", False), cur.get("required", False))
+            as_read[cur["name"].upper()] = cur  # complete: the parser no longer holds it
         cur = None
 
     def attribute(attr: str):
@@ -222,7 +213,62 @@ def parse_idd(text: str) -> Idd:
         if sep:
             attribute(attr)
     close_class()
-    return Idd(version, classes)
+    return Idd(version, _Classes(as_read))
+
+
+def _class_def(cur: dict) -> ClassDef:
+    """The :class:`ClassDef` of a class as :func:`parse_idd` read it."""
+    fields = tuple(FieldDef(
+        name=f["name"], numeric=f["numeric"],
+        type=f.get("type") or ("real" if f["numeric"] else "alpha"),
+        required=f.get("required", False), keys=tuple(f.get("keys", ())),
+        minimum=f.get("minimum"), maximum=f.get("maximum"),
+        min_exclusive=f.get("min_exclusive", False), max_exclusive=f.get("max_exclusive", False),
+        autosizable=f.get("autosizable", False), autocalculatable=f.get("autocalculatable", False),
+        default=f.get("default")) for f in cur["fields"])
+    first = next((i for i, f in enumerate(cur["fields"]) if f.get("begin_ext")), len(fields))
+    return ClassDef(cur["name"], fields, cur.get("extensible", 0), first,
+                    cur.get("unique", False), cur.get("required", False))
+
+
+class _Classes(Mapping):
+    """``{upper-case class name: ClassDef}`` of a parsed IDD, each :class:`ClassDef` built the
+    first time it is asked for (a file uses a few dozen of the IDD's ~850 classes, and building
+    all their ~66,000 field definitions was a third of reading the IDD). What is built depends
+    only on the class as read, which nothing changes after :func:`parse_idd`: a class built
+    later is the one it would have built at once."""
+
+    def __init__(self, raw: dict[str, dict]):
+        self._raw = raw
+        self._built: dict[str, ClassDef] = {}
+
+    def __getitem__(self, key: str) -> ClassDef:
+        c = self._built.get(key)
+        if c is None:
+            c = self._built[key] = _class_def(self._raw[key])
+        return c
+
+    def __iter__(self):
+        return iter(self._raw)
+
+    def __len__(self) -> int:
+        return len(self._raw)
+
+    def __contains__(self, key) -> bool:
+        return key in self._raw
+
+    def flags(self) -> list[tuple[str, bool, bool]]:
+        """``(name, unique, required)`` of the ``\\unique-object`` / ``\\required-object``
+        classes, in IDD order, without building any class."""
+        return [(c["name"], c.get("unique", False), c.get("required", False)) for c in self._raw.values()
+                if c.get("unique") or c.get("required")]
+
+
+def _class_flags(idd: Idd) -> list[tuple[str, bool, bool]]:
+    """``(name, unique, required)`` of the classes that are unique or required, in IDD order."""
+    if isinstance(idd.classes, _Classes):
+        return idd.classes.flags()
+    return [(c.name, c.unique, c.required) for c in idd.classes.values() if c.unique or c.required]
 
 
 @lru_cache(maxsize=None)
@@ -340,9 +386,9 @@ def check_idf(objects: list[IdfObject], idd: Idd, max_problems: int = 20) -> lis
             got = ".".join(o.fields[0].split(".")[:2])
             if got != want:
                 problems.append(f"line {o.line}: Version {o.fields[0]} but the IDD is {idd.version}")
-    for c in idd.classes.values():
-        if c.unique and seen.get(c.name, 0) > 1:
-            problems.append(f"{c.name} appears {seen[c.name]} times (a unique object)")
-        if c.required and not seen.get(c.name):
-            problems.append(f"required object {c.name} is missing")
+    for name, unique, required in _class_flags(idd):
+        if unique and seen.get(name, 0) > 1:
+            problems.append(f"{name} appears {seen[name]} times (a unique object)")
+        if required and not seen.get(name):
+            problems.append(f"required object {name} is missing")
     return problems[:max_problems]

@@ -20,6 +20,7 @@ surface.
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from typing import Any, Sequence
 
@@ -150,6 +151,12 @@ def _clip(poly: np.ndarray, c: float, keep_above: bool) -> np.ndarray:
     n = len(poly)
     s = (poly[:, 2] - c) if keep_above else (c - poly[:, 2])
     s = np.where(np.abs(s) <= ON_PLANE, 0.0, s)
+    if n and poly.dtype == np.float64 and bool(np.all(s > 0)):
+        # every vertex on the kept side: the loop below would keep each one as it is
+        o = poly.copy()
+        keep = ~np.all(np.abs(o - np.concatenate((o[-1:], o[:-1]))) < 1e-9, axis=1)  # o[i] - o[i - 1]
+        o = o[keep]
+        return o if len(o) >= 3 else np.zeros((0, 3))
     for i in range(n):
         a, b = poly[i], poly[(i + 1) % n]
         sa, sb = s[i], s[(i + 1) % n]
@@ -173,9 +180,20 @@ def _clip(poly: np.ndarray, c: float, keep_above: bool) -> np.ndarray:
 
 
 def _area(p: np.ndarray) -> float:
+    """Area (m2) of a polygon (k, 3): half the length of the summed cross products about its
+    first vertex."""
     if len(p) < 3:
         return 0.0
-    return 0.5 * float(np.linalg.norm(np.cross(p - p[0], np.roll(p, -1, axis=0) - p[0]).sum(axis=0)))
+    if not (type(p) is np.ndarray and p.dtype == np.float64 and p.ndim == 2 and p.shape[1] == 3):
+        return 0.5 * float(np.linalg.norm(np.cross(p - p[0], np.roll(p, -1, axis=0) - p[0]).sum(axis=0)))
+    # the same in np.cross's operation order, np.roll as one concatenation and the norm as
+    # np.linalg.norm takes it (sqrt of the dot product): the same bits without their overhead
+    a = p - p[0]
+    b = np.concatenate((p[1:], p[:1])) - p[0]
+    a0, a1, a2 = a[:, 0], a[:, 1], a[:, 2]
+    b0, b1, b2 = b[:, 0], b[:, 1], b[:, 2]
+    s = np.stack((a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0), axis=1).sum(axis=0)
+    return 0.5 * math.sqrt(float(s.dot(s)))
 
 
 def _key(p: np.ndarray) -> tuple:

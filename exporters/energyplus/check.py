@@ -6,12 +6,12 @@ from pathlib import Path
 import numpy as np
 
 from lod2energy.errors import ExportError
-from ..polygons import polygon_area3d
+from ..polygons import newell_normal
 from ..shellcheck import check_closed_outward
 from ..zones import MIN_PIECE_AREA
 from .conform import PIECE_PLANAR
 from .enclosure import enclosure_defects, eplus_degenerate_many
-from .pieces import _planar_dev
+from .pieces import _planar_dev_of
 from . import run as eplus_run
 
 
@@ -143,10 +143,15 @@ def self_check(path: str | Path, run: bool = False, weather: str | Path | None =
             problems.append(f"surface {name}: unreadable vertices")
             continue
         degen = next(degenerate)
-        if len(pts) < 3 or polygon_area3d(pts) <= MIN_PIECE_AREA or degen:
+        if len(pts) < 3 or degen:
             problems.append(f"surface {name}: degenerate for EnergyPlus ({len(pts)} vertices)")
-        elif _planar_dev(pts) > 2 * PIECE_PLANAR:
-            problems.append(f"surface {name}: non-planar for EnergyPlus ({_planar_dev(pts):.4f} m out of plane)")
+        else:
+            # polygon_area3d and _planar_dev of the surface from its one Newell normal
+            nn = newell_normal(pts)
+            if 0.5 * float(np.linalg.norm(nn)) <= MIN_PIECE_AREA:
+                problems.append(f"surface {name}: degenerate for EnergyPlus ({len(pts)} vertices)")
+            elif (dev := _planar_dev_of(pts, nn)) > 2 * PIECE_PLANAR:
+                problems.append(f"surface {name}: non-planar for EnergyPlus ({dev:.4f} m out of plane)")
         by_zone.setdefault(zone.upper(), []).append(pts)
     for w in objs.get("FENESTRATIONSURFACE:DETAILED", []):
         name, base = w.get("Name"), w.get("Building Surface Name")

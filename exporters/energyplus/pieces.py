@@ -159,7 +159,13 @@ def _as_written(pieces: list[Piece]) -> list[Piece]:
 
 def _planar_dev(q: np.ndarray) -> float:
     """Largest distance (m) of the points ``(k, 3)`` to their Newell plane."""
-    n = unit(newell_normal(q))
+    return _planar_dev_of(q, newell_normal(q))
+
+
+def _planar_dev_of(q: np.ndarray, normal: np.ndarray) -> float:
+    """:func:`_planar_dev` of ``q`` whose :func:`newell_normal` is ``normal`` (given when the
+    caller has it)."""
+    n = unit(normal)
     return float(np.max(np.abs((q - q.mean(axis=0)) @ n))) if np.any(n) else 0.0
 
 

@@ -58,7 +58,15 @@ def _upper_left_first_ref(points: np.ndarray, n: np.ndarray) -> np.ndarray:
 
 def _fmt(x: float, nd: int = WRITE_DECIMALS) -> str:
     s = f"{x:.{nd}f}"
-    return "0" if s in ("-0." + "0" * nd, "0." + "0" * nd) else s.rstrip("0").rstrip(".")
+    zeros = _ZEROS.get(nd)
+    if zeros is None:
+        zeros = _ZEROS[nd] = ("-0." + "0" * nd, "0." + "0" * nd)
+    return "0" if s in zeros else s.rstrip("0").rstrip(".")
+
+
+#: ``("-0.000", "0.000")`` by number of decimals: the texts :func:`_fmt` writes as "0" (built
+#: once, not per number; a pure function of ``nd``, so never stale).
+_ZEROS: dict[int, tuple[str, str]] = {}
 
 
 def _vertex_lines(points: np.ndarray) -> list[str]:
