@@ -148,6 +148,11 @@ def _ring_centroid(p: np.ndarray, n_hat: np.ndarray) -> tuple[float, np.ndarray]
 def face_metrics(vertices: np.ndarray, surface: Surface) -> tuple[float, np.ndarray, np.ndarray]:
     """Area, unit normal and area centroid of one (planar) polygon with holes.
 
+    A pure function of the polygon's ring coordinates: the same polygon is measured by the
+    labelling, the U-value volume and the acceptance check, so the answers are kept in a
+    bounded cache keyed by the coordinates themselves (their bytes, dtype, shape and strides,
+    ring by ring), never by the identity of ``vertices`` (see :func:`clear_face_cache`).
+
     Parameters
     ----------
     vertices : (n, 3) float
@@ -159,22 +164,46 @@ def face_metrics(vertices: np.ndarray, surface: Surface) -> tuple[float, np.ndar
     -------
     area : float, m2
     normal : (3,) float
-        Unit normal from the outer ring (zeros for a degenerate face).
+        Unit normal from the outer ring (zeros for a degenerate face); a new array each call.
     centroid : (3,) float, m
-        Area centroid (holes subtracted).
+        Area centroid (holes subtracted); a new array each call.
     """
-    outer = vertices[surface.outer]
+    rings = [vertices[r] for r in surface.rings]
+    key = tuple((p.dtype.str, p.shape, p.strides, p.tobytes()) for p in rings)
+    hit = _FACE_CACHE.get(key)
+    if hit is None:
+        hit = _face_metrics(rings)
+        if len(_FACE_CACHE) >= FACE_CACHE_SIZE:
+            _FACE_CACHE.clear()
+        _FACE_CACHE[key] = hit
+    area, n_hat, centroid = hit
+    return area, n_hat.copy(), centroid.copy()
+
+
+#: Most polygons :func:`face_metrics` remembers (the cache is emptied when it is full).
+FACE_CACHE_SIZE = 8192
+_FACE_CACHE: dict = {}
+
+
+def clear_face_cache() -> None:
+    """Forget every polygon :func:`face_metrics` remembers."""
+    _FACE_CACHE.clear()
+
+
+def _face_metrics(rings: list[np.ndarray]) -> tuple[float, np.ndarray, np.ndarray]:
+    """:func:`face_metrics` of a polygon given as its rings' coordinates ``[(k, 3) float, ...]``."""
+    outer = rings[0]
     origin = outer.mean(axis=0) if len(outer) else np.zeros(3)
+    vec = 0.5 * newell_normal(outer) if len(outer) >= 3 else np.zeros(3)
     outer = outer - origin
-    vec = 0.5 * newell_normal(vertices[surface.outer]) if len(outer) >= 3 else np.zeros(3)
     norm = math.sqrt(float(vec.dot(vec)))  # np.linalg.norm of a (3,) float64 vector, the same bits
     if norm < 1e-15:
         return 0.0, np.zeros(3), origin
     n_hat = vec / norm
     a0, c0 = _ring_centroid(outer, n_hat)
     area, moment = abs(a0), abs(a0) * c0
-    for r in surface.inners:
-        p = vertices[r] - origin
+    for r in rings[1:]:
+        p = r - origin
         ai, ci = _ring_centroid(p, n_hat)
         area -= abs(ai)
         moment = moment - abs(ai) * ci

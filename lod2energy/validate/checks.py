@@ -56,7 +56,20 @@ def validate_geometries(vertices, items, tol: Tolerances = DEFAULT) -> list[list
     -------
     list (one per item) of list of Defect
     """
-    return _validate_entries([(vertices, coid, gi, g) for coid, gi, g in items], tol)
+    return _validate_entries_remembered([(vertices, coid, gi, g) for coid, gi, g in items], tol)
+
+
+def _validate_entries_remembered(entries, tol: Tolerances) -> list[list[Defect]]:
+    """:func:`_validate_entries` with the geometry-level memory (:func:`memo.entry_key`): an
+    entry whose exact input was checked before in this process gets that answer."""
+    keys = [memo.entry_key(v, coid, gi, g, tol) for v, coid, gi, g in entries]
+    outs = [memo.recall_entry(k) for k in keys]
+    todo = [i for i, o in enumerate(outs) if o is None]
+    if todo:
+        for i, found in zip(todo, _validate_entries([entries[i] for i in todo], tol)):
+            memo.remember_entry(keys[i], found)
+            outs[i] = found
+    return outs
 
 
 def _validate_entries(entries, tol: Tolerances) -> list[list[Defect]]:
@@ -165,7 +178,7 @@ def _validate_all(buildings: list, tol: Tolerances) -> list[list[Defect]]:
                 if g.is_polygonal:
                     entries.append((b.vertices, o.id, gi, g))
                     owner.append(bi)
-    batch = iter(_validate_entries(entries, tol))
+    batch = iter(_validate_entries_remembered(entries, tol))
     outs, ok_parts = [], []
     for b in buildings:
         out = [Defect(int(c), loc, msg) for c, loc, msg in b.provenance.get("input_errors", ())]

@@ -26,6 +26,9 @@ from lod2energy.validate.defect import Defect
 #: Verdicts kept per process (least recently used dropped first).
 MAX_ENTRIES = 4096
 _MEMORY: "OrderedDict[bytes, tuple[Defect, ...]]" = OrderedDict()
+#: Verdicts of single geometries (:func:`entry_key`): the repair asks again about the
+#: geometries the whole-building validation just checked.
+_ENTRIES: "OrderedDict[bytes, tuple[Defect, ...]]" = OrderedDict()
 
 
 def geometry_key(b) -> bytes:
@@ -50,6 +53,53 @@ def geometry_key(b) -> bytes:
                         for r in sf.rings:
                             h.update(np.ascontiguousarray(r, dtype=np.int64).tobytes() + b";")
     return h.digest()
+
+
+def entry_key(vertices, coid: str, gi: int, g, tol) -> bytes:
+    """Digest of one geometry's input to the geometry-level checks (levels 1xx-5xx of
+    :func:`lod2energy.validate.checks.validate_geometries`): the vertex array bit for bit (with
+    its dtype and shape), the object id and geometry index (they are in the locations), the
+    geometry's type, LoD and raw input, every ring's vertex indices with the solid / shell /
+    surface / ring structure, and the tolerances."""
+    import numpy as np
+    h = hashlib.blake2b(digest_size=16)
+    v = np.asarray(vertices)
+    h.update(f"{v.dtype.str}{v.shape}|o{coid}|g{gi}|{g.type}|{g.lod}|".encode("utf-8", "surrogatepass"))
+    h.update(np.ascontiguousarray(v).tobytes())
+    if g.raw is not None:
+        h.update(repr(g.raw).encode("utf-8", "surrogatepass"))
+    shape, rings = [len(g.solids)], []
+    for so in g.solids:
+        shape.append(len(so.shells))
+        for sh in so.shells:
+            shape.append(len(sh.surfaces))
+            for sf in sh.surfaces:
+                shape.append(len(sf.rings))
+                for r in sf.rings:
+                    shape.append(len(r))
+                    rings.append(r)
+    h.update(np.asarray(shape, dtype=np.int64).tobytes() + b"|")
+    if rings:
+        h.update(np.ascontiguousarray(np.concatenate(rings), dtype=np.int64).tobytes())
+    h.update(repr(tol).encode())
+    return h.digest()
+
+
+def recall_entry(key: bytes) -> list[Defect] | None:
+    """The remembered defects of the geometry of :func:`entry_key` ``key`` (a new list), or None."""
+    found = _ENTRIES.get(key)
+    if found is None:
+        return None
+    _ENTRIES.move_to_end(key)
+    return list(found)
+
+
+def remember_entry(key: bytes, defects: Iterable[Defect]) -> None:
+    """Keep the defects of the geometry of :func:`entry_key` ``key``."""
+    _ENTRIES[key] = tuple(defects)
+    _ENTRIES.move_to_end(key)
+    while len(_ENTRIES) > MAX_ENTRIES:
+        _ENTRIES.popitem(last=False)
 
 
 def verdict_key(b, tol) -> bytes | None:
@@ -99,5 +149,6 @@ def learn(b) -> None:
 
 
 def forget() -> None:
-    """Empty this process's memory (tests, benchmarks)."""
+    """Empty this process's memory, building and geometry verdicts (tests, benchmarks)."""
     _MEMORY.clear()
+    _ENTRIES.clear()
