@@ -302,33 +302,10 @@ def test_keep_corners_batched_same_pieces():
 
 
 def test_window_for_same_with_vectorised_box():
-    import math
-
-    from shapely.geometry import Polygon, box
 
     from exporters.energyplus.openings import window_for
 
-    def ref(piece, wwr):  # the bisection with shapely.geometry.box
-        area = polygons.polygon_area3d(piece)
-        n = polygons.unit(polygons.newell_normal(piece))
-        u, v = polygons.plane_basis(n)
-        c0 = piece.mean(axis=0)
-        xy = np.column_stack([(piece - c0) @ u, (piece - c0) @ v])
-        poly = Polygon(xy)
-        cen = np.asarray(poly.centroid.coords[0])
-        w, h = np.ptp(xy[:, 0]), np.ptp(xy[:, 1])
-        lo_t, hi_t = 0.0, 1.0
-        for _ in range(24):
-            t = (lo_t + hi_t) / 2
-            r = box(cen[0] - t * w / 2, cen[1] - t * h / 2, cen[0] + t * w / 2, cen[1] + t * h / 2)
-            lo_t, hi_t = (t, hi_t) if poly.contains(r) else (lo_t, t)
-        t = min(math.sqrt(wwr * area / (w * h)), 0.95 * lo_t)
-        if t <= 0:
-            return None
-        hw, hh = t * w / 2, t * h / 2
-        rect = np.array([[cen[0] - hw, cen[1] + hh], [cen[0] - hw, cen[1] - hh],
-                         [cen[0] + hw, cen[1] - hh], [cen[0] + hw, cen[1] + hh]])
-        return c0 + rect[:, :1] * u + rect[:, 1:2] * v
+    from _window_reference import bisection_window as ref
 
     rng = np.random.default_rng(4)
     for i in range(60):

@@ -63,11 +63,18 @@ def _validate_entries_remembered(entries, tol: Tolerances) -> list[list[Defect]]
     """:func:`_validate_entries` with the geometry-level memory (:func:`memo.entry_key`): an
     entry whose exact input was checked before in this process gets that answer."""
     keys = [memo.entry_key(v, coid, gi, g, tol) for v, coid, gi, g in entries]
-    outs = [memo.recall_entry(k) for k in keys]
+    return _remembered(entries, keys, lambda todo: _validate_entries(todo, tol), memo.recall_entry,
+                       memo.remember_entry)
+
+
+def _remembered(items: list, keys: list, compute, recall, remember) -> list:
+    """``compute(items)`` (a list of answers, one per item) through a memory: the items whose
+    key ``recall`` knows get that answer; the others are computed together and ``remember`` ed."""
+    outs = [recall(k) for k in keys]
     todo = [i for i, o in enumerate(outs) if o is None]
     if todo:
-        for i, found in zip(todo, _validate_entries([entries[i] for i in todo], tol)):
-            memo.remember_entry(keys[i], found)
+        for i, found in zip(todo, compute([items[i] for i in todo])):
+            remember(keys[i], found)
             outs[i] = found
     return outs
 
@@ -160,13 +167,7 @@ def validate_buildings(buildings, tol: Tolerances = DEFAULT) -> list[list[Defect
     """
     buildings = list(buildings)
     keys = [memo.verdict_key(b, tol) for b in buildings]
-    outs = [memo.recall(k) for k in keys]
-    todo = [i for i, o in enumerate(outs) if o is None]
-    if todo:
-        for i, found in zip(todo, _validate_all([buildings[i] for i in todo], tol)):
-            memo.remember(keys[i], found)
-            outs[i] = found
-    return outs
+    return _remembered(buildings, keys, lambda todo: _validate_all(todo, tol), memo.recall, memo.remember)
 
 
 def _validate_all(buildings: list, tol: Tolerances) -> list[list[Defect]]:
