@@ -109,3 +109,101 @@ def test_collector_ring_is_the_loop(seed):
     assert 200 < errors < 2800
     assert _ring_outcome(cityjson._Collector.ring, cityjson._Collector(5), (1, 2))[0].endswith(
         "a ring must be an array of vertex indices")
+
+
+# ----------------------------------------------------------------------------- value_problem's bulk pass
+
+def _ref_value_problem(value, max_depth=shape.MAX_DEPTH):
+    """``io.shape.value_problem`` as it was before its bulk pass (the walk alone)."""
+    from collections.abc import Mapping
+    stack = [(value, 0, "")]
+    while stack:
+        v, d, where = stack.pop()
+        if isinstance(v, list):
+            if d >= max_depth:
+                return f"nested more than {max_depth} levels deep{where and ' in ' + where}"
+            if not _ref_plain_numbers(v):
+                stack.extend((x, d + 1, where) for x in v)
+        elif isinstance(v, Mapping):
+            if d >= max_depth:
+                return f"nested more than {max_depth} levels deep{where and ' in ' + where}"
+            for k, x in v.items():
+                if len(k) > shape.MAX_STRING:
+                    return f"a key of {len(k)} characters"
+                stack.append((x, d + 1, where or repr(k[:40])))
+        elif isinstance(v, float):
+            if not math.isfinite(v):
+                return f"a number out of range ({v!r}){where and ' in ' + where}"
+        elif isinstance(v, int) and not isinstance(v, bool):
+            if abs(v) > shape.MAX_NUMBER:
+                return f"an integer out of range ({len(str(abs(v)))} digits){where and ' in ' + where}"
+        elif isinstance(v, str):
+            if len(v) > shape.MAX_STRING:
+                return f"a string of {len(v)} characters{where and ' in ' + where}"
+    return None
+
+
+def _values(rng, depth: int):
+    """A random JSON-like value: CityObject-like dicts, nested boundaries, odd leaves."""
+    r = rng.random()
+    if depth <= 0 or r < 0.25:
+        k = int(rng.integers(0, 8))
+        if k == 0:
+            return int(rng.integers(-10, 10))
+        if k == 1:
+            return float(rng.standard_normal() * 10.0 ** float(rng.uniform(-5, 308)))
+        if k == 2:
+            return "s" * int(rng.integers(0, 4))
+        if k == 3:
+            return None
+        if k == 4:
+            return bool(rng.integers(0, 2))
+        return _ODD[int(rng.integers(0, len(_ODD)))] if rng.random() < 0.3 else int(rng.integers(0, 100))
+    if r < 0.55:
+        return {f"k{i}": _values(rng, depth - 1) for i in range(int(rng.integers(0, 4)))}
+    n = int(rng.integers(0, 5))
+    if rng.random() < 0.4:  # a ring of indices
+        return [int(x) for x in rng.integers(0, 1000, n)]
+    return [_values(rng, depth - 1) for _ in range(n)]
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_value_problem_is_the_walk(seed):
+    rng = np.random.default_rng(seed)
+    found = {None: 0, "problem": 0}
+    for _ in range(400):
+        v = _values(rng, int(rng.integers(0, 7)))
+        for depth in (3, 5, shape.MAX_DEPTH):
+            want = _ref_value_problem(v, depth)
+            assert shape.value_problem(v, depth) == want, (v, depth)
+            found["problem" if want else None] += 1
+    assert found[None] > 100 and found["problem"] > 50  # both outcomes were compared
+
+
+def test_value_problem_edge_cases():
+    deep = [1]
+    for _ in range(60):
+        deep = [deep]
+    cases = [deep, {"a": deep}, [[]] * 3, {"x" * (shape.MAX_STRING + 1): 1}, {1: 2}, ["x" * (shape.MAX_STRING + 1)],
+             [1.5e308, 1.5e308], [[1.5e308], [1.5e308]], [10 ** 400], [[1, 2], [3, -10 ** 400]], [[0.5, math.nan]],
+             {"a": {"b": [math.inf]}}, [True, [False]], (1, 2), [(1, 2)], [_Small.ONE], {"a": _Small.ONE},
+             [[1, 2, 3], [4.5, 6.5]], {"boundaries": [[[0, 1, 2]], [[2, 3, 4]]], "lod": "2.2"}]
+    for v in cases:
+        for depth in (2, 4, shape.MAX_DEPTH):
+            try:
+                want = _ref_value_problem(v, depth)
+            except TypeError:  # a non-string key: both raise
+                with pytest.raises(TypeError):
+                    shape.value_problem(v, depth)
+                continue
+            assert shape.value_problem(v, depth) == want, (v, depth)
+
+
+def test_sound_clears_real_cityobjects():
+    """The bulk pass answers alone for sound CityObjects (else it would save nothing)."""
+    co = {"type": "Building", "attributes": {"h": 3.5, "n": 4, "ok": True, "s": "x"},
+          "geometry": [{"type": "Solid", "lod": "2.2", "boundaries": [[[[0, 1, 2, 3]], [[3, 2, 1, 0]]]],
+                        "semantics": {"surfaces": [{"type": "RoofSurface"}], "values": [[0, None]]}}]}
+    assert shape._sound(co, shape.MAX_DEPTH)
+    assert not shape._sound(co, 3)
+    assert not shape._sound({"a": [math.nan]}, shape.MAX_DEPTH)
