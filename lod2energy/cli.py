@@ -220,7 +220,6 @@ def _print_validate_table(rows: list[dict]) -> None:
 
 def cmd_validate(a) -> int:
     from lod2energy.io import read
-    from lod2energy.reports import frame_entry, note_frame
     from lod2energy.validate.report import validate_features
 
     tol = _tolerances(a)
@@ -238,13 +237,17 @@ def cmd_validate(a) -> int:
         if getattr(a, "html", None):
             from lod2energy.viz.report import keep
             feats = keep(feats, html_inputs)
-        note_frame(path, model)
+        geographic = getattr(model, "frame", None) is not None
+        if geographic:  # lod2energy.reports (records, options, spool) loads only for a geographic CRS
+            from lod2energy.reports import frame_entry, note_frame
+            note_frame(path, model)
         tick, close = _progress(a.quiet, os.path.basename(path))
         try:
             rep = validate_features(model, feats, path, tol, a.lod, tick)
         finally:
             close()
-        rep.update(frame_entry(model))
+        if geographic:
+            rep.update(frame_entry(model))
         reports.append(rep)
         for e in rep["dataset_errors"]:
             _err(e["info"] if path in e["info"] else f"{path}: {e['info']}")

@@ -23,10 +23,16 @@ from lod2energy.geometry import bbox_pairs, cross_rows as _cross, signed_volume,
 from lod2energy.model import Building, Geometry, Solid
 from lod2energy.validate.shell import shell_meshes, shell_meshes_multi
 
-try:
-    import manifold3d as _m3d
-except ImportError:  # pragma: no cover - declared dependency
-    _m3d = None
+
+def _m3d():
+    """manifold3d, imported on first use: a validation that never compares two solids' volumes
+    does not load it (issue 13: ``validate``'s start-up)."""
+    try:
+        import manifold3d
+    except ImportError:  # pragma: no cover - declared dependency
+        raise ImportError("manifold3d is required for checks 401-404, 501-503, 601") from None
+    return manifold3d
+
 
 VOLUME_EPS = DEFAULT.volume_eps
 """Default of ``Tolerances.volume_eps``: shared volumes at or under this (m3) count as touching."""
@@ -60,16 +66,15 @@ def to_manifold(vertices: np.ndarray, tris: np.ndarray, origin: np.ndarray):
     manifold3d.Manifold or None
         None when manifold3d rejects the mesh.
     """
-    if _m3d is None:  # pragma: no cover
-        raise ImportError("manifold3d is required for checks 401-404, 501-503, 601")
+    m3d = _m3d()
     tris = np.asarray(tris, dtype=np.intp)
     if len(tris) == 0:
         return None
     used, inv = np.unique(tris, return_inverse=True)
     pts = np.ascontiguousarray(vertices[used] - origin, dtype=np.float64)
-    mesh = _m3d.Mesh64(vert_properties=pts, tri_verts=np.ascontiguousarray(inv.reshape(-1, 3), dtype=np.uint64))
-    man = _m3d.Manifold(mesh)
-    if man.status() != _m3d.Error.NoError or man.is_empty():
+    mesh = m3d.Mesh64(vert_properties=pts, tri_verts=np.ascontiguousarray(inv.reshape(-1, 3), dtype=np.uint64))
+    man = m3d.Manifold(mesh)
+    if man.status() != m3d.Error.NoError or man.is_empty():
         return None
     return man
 
@@ -97,7 +102,7 @@ def _geometry_manifold(vertices: np.ndarray, g: Geometry, tol: Tolerances, origi
         mans.append(m)
     if not mans:
         return None
-    return mans[0] if len(mans) == 1 else _m3d.Manifold.batch_boolean(mans, _m3d.OpType.Add)
+    return mans[0] if len(mans) == 1 else _m3d().Manifold.batch_boolean(mans, _m3d().OpType.Add)
 
 
 def _overlap_by_vertices(vertices: np.ndarray, t1: np.ndarray, t2: np.ndarray) -> bool:
@@ -265,7 +270,7 @@ def check_multisolid(vertices: np.ndarray, geometry: Geometry, tol: Tolerances =
             out.append((i, 501, f"solid #{i} and solid #{j}"))
     if out or geometry.type != "CompositeSolid":
         return out
-    union = _m3d.Manifold.batch_boolean(mans, _m3d.OpType.Add)
+    union = _m3d().Manifold.batch_boolean(mans, _m3d().OpType.Add)
     n = _positive_parts(union, tol)
     if n != 1:
         out.append((None, 503, f"CompositeSolid is formed of {n} parts"))
