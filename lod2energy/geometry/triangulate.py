@@ -373,8 +373,6 @@ def triangulate_shell(vertices: np.ndarray, shell, rings_map: np.ndarray | None 
     return triangulate_surfaces(vertices, ringsets)
 
 
-
-
 # ----------------------------------------------------------------------------- constrained Delaunay
 
 def _incircle_d(adx: float, ady: float, bdx: float, bdy: float, cdx: float, cdy: float) -> float:
@@ -478,7 +476,8 @@ def _delaunay_if_conforming(pts: np.ndarray, ring_ends) -> np.ndarray | None:
     except Exception:  # Qhull refuses degenerate input
         return None
     ends = np.asarray(ring_ends, dtype=np.intp)
-    if len(ends) == 0 or ends[-1] != n or ends[0] < 1 or (np.diff(ends) <= 0).any():
+    el = ends.tolist()
+    if len(ends) == 0 or el[-1] != n or el[0] < 1 or any(a >= b for a, b in zip(el, el[1:])):
         if not _has_ring_edges_np(tri, ends, n):
             return None
     else:
@@ -488,18 +487,19 @@ def _delaunay_if_conforming(pts: np.ndarray, ring_ends) -> np.ndarray | None:
             have.add(b * n + c if b < c else c * n + b)
             have.add(a * n + c if a < c else c * n + a)
         start = 0
-        for end in ends.tolist():
+        for end in el:
             for i in range(start, end):
                 j = i + 1 if i + 1 < end else start
                 if (i * n + j if i < j else j * n + i) not in have:
                     return None
             start = end
-    c = pts[tri].mean(axis=1)
-    bounds = [0] + ends.tolist()
+    P = pts[tri]  # (t, 3, 2) corners: centroids (their mean) and orientations from one gather
+    c = P.mean(axis=1)
+    bounds = [0] + el
     poly = shapely.Polygon(pts[:bounds[1]], [pts[bounds[k]:bounds[k + 1]] for k in range(1, len(bounds) - 1)])
     inside = shapely.contains_xy(poly, c[:, 0], c[:, 1])
-    tri = tri[inside].astype(np.intp)
-    a, b, cc = pts[tri[:, 0]], pts[tri[:, 1]], pts[tri[:, 2]]
+    tri, P = tri[inside].astype(np.intp), P[inside]
+    a, b, cc = P[:, 0], P[:, 1], P[:, 2]
     cw = (b[:, 0] - a[:, 0]) * (cc[:, 1] - a[:, 1]) - (b[:, 1] - a[:, 1]) * (cc[:, 0] - a[:, 0]) < 0
     tri[cw] = tri[cw][:, [0, 2, 1]]
     return tri
