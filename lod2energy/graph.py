@@ -152,7 +152,7 @@ def _empty_graph(face_ids=()) -> FaceGraph:
 def face_graph(vertices: np.ndarray, surfaces: Sequence[Surface], tol: Tolerances = DEFAULT,
                z_range: tuple[float, float] | None = None, face_ids: Sequence | None = None,
                shell_of_face: np.ndarray | None = None,
-               vertex_groups: np.ndarray | None = None) -> FaceGraph:
+               vertex_groups: np.ndarray | None = None, face_offset: np.ndarray | None = None) -> FaceGraph:
     """Build the face-adjacency graph of a set of polygons.
 
     Parameters
@@ -172,6 +172,9 @@ def face_graph(vertices: np.ndarray, surfaces: Sequence[Surface], tol: Tolerance
         Faces of different shells never share mesh edges (BuildingParts stay apart).
     vertex_groups : (n,) int, optional
         Vertices of different groups never snap together (see :func:`snap_ids`).
+    face_offset : (N,) int, optional
+        Added to each face's ring indices (faces of many buildings, each indexing its own
+        vertices, over their stacked ``vertices``); default 0.
     """
     nf = len(surfaces)
     face_ids = tuple(face_ids) if face_ids is not None else tuple(range(nf))
@@ -181,11 +184,6 @@ def face_graph(vertices: np.ndarray, surfaces: Sequence[Surface], tol: Tolerance
     # only the vertices the faces use snap: an unused vertex (the input's, kept in the vertex
     # list after a repair) must not chain two vertices of the shell into one
     canon = np.arange(len(V))
-    ring_arrays = [np.asarray(r, dtype=np.intp) for s in surfaces for r in s.rings]
-    used = np.unique(np.concatenate(ring_arrays)) if ring_arrays and len(V) else np.zeros(0, np.intp)
-    if len(used):
-        groups = None if vertex_groups is None else np.asarray(vertex_groups)[used]
-        canon[used] = used[snap_ids(V[used], tol.snap_tol, groups)]
     shell_of_face = np.zeros(nf, np.intp) if shell_of_face is None else np.asarray(shell_of_face)
 
     # flatten every ring: element arrays (vertex id, ring id), ring arrays (face, is_outer)
@@ -198,7 +196,14 @@ def face_graph(vertices: np.ndarray, surfaces: Sequence[Surface], tol: Tolerance
     ring_face = np.asarray(ring_face, np.intp)
     ring_outer = np.asarray(ring_outer, bool)
     lens = np.fromiter((len(r) for r in rings), np.intp, len(rings))
-    flat = canon[np.concatenate(rings)] if lens.sum() else np.zeros(0, np.intp)
+    ids = np.concatenate([np.asarray(r, dtype=np.intp) for r in rings]) if rings else np.zeros(0, np.intp)
+    if face_offset is not None and len(ids):
+        ids = ids + np.repeat(np.asarray(face_offset, dtype=np.intp)[ring_face], lens)
+    used = np.unique(ids) if rings and len(V) else np.zeros(0, np.intp)
+    if len(used):
+        groups = None if vertex_groups is None else np.asarray(vertex_groups)[used]
+        canon[used] = used[snap_ids(V[used], tol.snap_tol, groups)]
+    flat = canon[ids] if lens.sum() else np.zeros(0, np.intp)
     rid = np.repeat(np.arange(len(rings)), lens)
     # drop consecutive repeats (cyclically) after snapping
     starts = np.cumsum(lens) - lens
@@ -338,7 +343,7 @@ def building_graphs(buildings: Sequence[Building], lod: str | None = None,
     -------
     list of FaceGraph, one per building (same values as :func:`building_graph`)
     """
-    surfaces, ids, shell_of, zlo, zhi, groups = [], [], [], [], [], []
+    surfaces, ids, shell_of, zlo, zhi, groups, offsets = [], [], [], [], [], [], []
     v_off, f_bounds, s_bounds, v_bounds = [], [], [], []
     nv = ns = 0
     for bi, b in enumerate(buildings):
@@ -358,7 +363,8 @@ def building_graphs(buildings: Sequence[Building], lod: str | None = None,
             z0, z1 = float(z.min()), float(z.max())
         else:
             z0 = z1 = 0.0
-        surfaces.extend(Surface(tuple(r + nv for r in sf.rings), sf.semantic) for sf in bs)
+        surfaces.extend(bs)  # their rings index b.vertices: face_graph adds the offset in one pass
+        offsets.extend([nv] * len(bs))
         zlo.extend([z0] * len(bs))
         zhi.extend([z1] * len(bs))
         groups.append(np.full(len(b.vertices), bi, np.intp))
@@ -371,7 +377,7 @@ def building_graphs(buildings: Sequence[Building], lod: str | None = None,
         return [_empty_graph() for _ in buildings]
     V = np.vstack([b.vertices for b in buildings]) if buildings else np.zeros((0, 3))
     g = face_graph(V, surfaces, tol, (np.asarray(zlo), np.asarray(zhi)), ids, np.asarray(shell_of, np.intp),
-                   np.concatenate(groups))
+                   np.concatenate(groups), np.asarray(offsets, np.intp))
     if len(buildings) == 1:
         return [g]
     # split: faces are contiguous per building; mesh edges are sorted by shell (hence building)
