@@ -207,3 +207,51 @@ def test_sound_clears_real_cityobjects():
     assert shape._sound(co, shape.MAX_DEPTH)
     assert not shape._sound(co, 3)
     assert not shape._sound({"a": [math.nan]}, shape.MAX_DEPTH)
+
+
+# ----------------------------------------------------------------------------- rings built once
+
+def _ring_dump(geometries):
+    out = []
+    for g in geometries:
+        out.append((g.type, g.lod, None if g.raw is None else repr(dict(g.raw)), repr(g.semantic_surfaces)))
+        for so in g.solids:
+            for sh in so.shells:
+                for s in sh.surfaces:
+                    out.append(s.semantic)
+                    out.extend((r.dtype.str, r.shape, r.flags.writeable, r.tobytes()) for r in s.rings)
+    return out
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_reader_builds_each_ring_once_with_the_same_arrays(seed):
+    """``build_feature`` parses rings as lists and makes each array once in the remap: the
+    same arrays (values, dtype, read-only) as parsing to arrays and remapping those."""
+    rng = np.random.default_rng(seed)
+    nv = 60
+    verts = rng.uniform(0, 10, (nv, 3))
+
+    def ring():
+        return [int(x) for x in rng.choice(nv, int(rng.integers(0, 6)), replace=False)]
+
+    def surfaces():
+        return [[ring() for _ in range(int(rng.integers(1, 3)))] for _ in range(int(rng.integers(0, 5)))]
+
+    geoms = [{"type": "MultiSurface", "lod": "2", "boundaries": surfaces(),
+              "semantics": {"surfaces": [{"type": "RoofSurface"}], "values": [0, None, 0]}},
+             {"type": "Solid", "lod": 2.2, "boundaries": [surfaces(), surfaces()]},
+             {"type": "CompositeSolid", "lod": "2.2", "boundaries": [[surfaces()], [surfaces()]],
+              "semantics": {"surfaces": [{"type": "WallSurface"}], "values": [[[0, 0]], [[None]]]}},
+             {"type": "MultiPoint", "lod": "1", "boundaries": ring()},
+             {"type": "MultiLineString", "lod": "1", "boundaries": [ring(), ring()]}]
+    cos = {"b": {"type": "Building", "geometry": geoms}}
+    got = cityjson.build_feature("b", ["b"], cos, verts)
+    col = cityjson._Collector(nv)
+    parsed = [cityjson._parse_geometry(g, col, f"coid=b|geom={i}") for i, g in enumerate(geoms)]
+    used = np.unique(np.asarray(col.used, dtype=np.intp))
+    lut = np.full(nv, -1, dtype=np.intp)
+    lut[used] = np.arange(len(used))
+    want = [cityjson._remap_geometry(g, lut) for g in parsed]
+    assert _ring_dump(got.root.geometries) == _ring_dump(want)
+    assert np.array_equal(got.vertices, verts[used])
+    assert sum(isinstance(x, tuple) and x[0] == np.dtype(np.intp).str for x in _ring_dump(want)) > 5

@@ -168,7 +168,8 @@ def _sem_at(values: Any, *idx: int) -> int | None:
     return v if isinstance(v, int) and not isinstance(v, bool) else None
 
 
-def _parse_surfaces(surfs: Any, col: _Collector, where: str, values: Any, prefix: tuple) -> tuple[Surface, ...]:
+def _parse_surfaces(surfs: Any, col: _Collector, where: str, values: Any, prefix: tuple,
+                    arrays: bool = True) -> tuple[Surface, ...]:
     if not isinstance(surfs, list):
         raise InputError(f"{where}: expected an array of surfaces")
     out = []
@@ -176,11 +177,17 @@ def _parse_surfaces(surfs: Any, col: _Collector, where: str, values: Any, prefix
         if not isinstance(s, list):
             raise InputError(f"{where}|face={fi}: a surface must be an array of rings")
         rings = [col.ring(r, f"{where}|face={fi}") for r in s]
-        out.append(Surface.from_lists(rings, _sem_at(values, *prefix, fi)))
+        out.append(Surface.from_lists(rings, _sem_at(values, *prefix, fi)) if arrays
+                   else Surface(tuple(rings), _sem_at(values, *prefix, fi)))
     return tuple(out)
 
 
-def _parse_geometry(g: Any, col: _Collector, where: str) -> Geometry:
+def _parse_geometry(g: Any, col: _Collector, where: str, arrays: bool = True) -> Geometry:
+    """The :class:`Geometry` of CityJSON geometry ``g``; its rings' vertex indices go through ``col``.
+
+    With ``arrays=False`` the rings stay the file's lists of ints, for :func:`_remap_geometry`
+    to turn into arrays once (the reader's path: no ring array is built twice, issue 13).
+    """
     if not isinstance(g, Mapping):
         raise InputError(f"{where}: geometry is not an object")
     gtype = g.get("type")
@@ -210,12 +217,12 @@ def _parse_geometry(g: Any, col: _Collector, where: str) -> Geometry:
         return Geometry(gtype, lod, raw=frozen_mapping(g))
     sem_surfaces, values = _semantic_values(g.get("semantics"), gtype)
     if gtype in SURFACE_TYPES:
-        shell = Shell(_parse_surfaces(b, col, where, values, ()))
+        shell = Shell(_parse_surfaces(b, col, where, values, (), arrays))
         solids = (Solid((shell,)),)
     elif gtype == "Solid":
         shells = []
         for hi, sh in enumerate(b):
-            shells.append(Shell(_parse_surfaces(sh, col, f"{where}|shell={hi}", values, (hi,))))
+            shells.append(Shell(_parse_surfaces(sh, col, f"{where}|shell={hi}", values, (hi,), arrays)))
         solids = (Solid(tuple(shells)),)
     else:
         solids_l = []
@@ -224,7 +231,8 @@ def _parse_geometry(g: Any, col: _Collector, where: str) -> Geometry:
                 raise InputError(f"{where}|solid={si}: a solid must be an array of shells")
             shells = []
             for hi, sh in enumerate(so):
-                shells.append(Shell(_parse_surfaces(sh, col, f"{where}|solid={si}|shell={hi}", values, (si, hi))))
+                shells.append(Shell(_parse_surfaces(sh, col, f"{where}|solid={si}|shell={hi}", values, (si, hi),
+                                                    arrays)))
             solids_l.append(Solid(tuple(shells)))
         solids = tuple(solids_l)
     extra = {k: v for k, v in g.items() if k in ("texture", "material")}
@@ -336,7 +344,8 @@ def build_feature(root_id: str, ids: list[str], cos: Mapping[str, Any], vertices
         geoms_raw = co.get("geometry") or []
         if not isinstance(geoms_raw, list):
             raise InputError(f"coid={oid}: 'geometry' is not an array")
-        geoms = tuple(_parse_geometry(g, col, f"coid={oid}|geom={gi}") for gi, g in enumerate(geoms_raw))
+        geoms = tuple(_parse_geometry(g, col, f"coid={oid}|geom={gi}", arrays=False)
+                      for gi, g in enumerate(geoms_raw))
         extra = {k: v for k, v in co.items()
                  if k not in ("type", "geometry", "attributes", "parents", "children")}
         objs.append(CityObject(oid, otype, geoms, frozen_mapping(co.get("attributes") or {}),
