@@ -30,7 +30,9 @@ from lod2energy.model import (
 from lod2energy.polymesh import PolyMesh, compact, face_area, topology
 from lod2energy.repair.accept import grid_rounding, is_repaired, output_grid, repair_verdict, val3dity_codes
 from lod2energy.repair.alphashape import alpha_repair
-from lod2energy.repair.cleanup import clean_rings, cleanup, desliver, drop_degenerate, merge_slivers, snap_vertices
+from lod2energy.repair.cleanup import (
+    clean_rings, cleanup, desliver, drop_degenerate, invalid_surfaces, merge_slivers, snap_vertices,
+)
 from lod2energy.repair.convert import geometry_of_mesh, mesh_of_geometry
 from lod2energy.repair.footprint import extrude_footprint
 from lod2energy.repair.holefill import fill_holes
@@ -62,14 +64,24 @@ def _valid_or_none(m: PolyMesh | None, lod, tol: Tolerances) -> PolyMesh | None:
 # ----------------------------------------------------------------------------- the ladder
 
 def _input_defects(V: np.ndarray, g: Geometry, coid: str, gi: int, m: PolyMesh, tol: Tolerances) -> list[int]:
+    """val3dity codes of geometry ``gi`` of ``coid`` and the ladder's own (``shell_defects``
+    of ``m``, its mesh, once snapped)."""
     codes = {d.code for d in validate_geometry(V, coid, gi, g, tol)}
-    sd = shell_defects(snap_vertices(m, tol.snap_tol), tol)
+    s = snap_vertices(m, tol.snap_tol)
+    invalid = None
+    if s is m and len(g.solids) == 1 and len(g.solids[0].shells) == 1:
+        # m is this one shell as it is (renumbered in order): the validator's polygon verdict
+        # on it, just computed, is the one shell_defects asks for
+        invalid = invalid_surfaces(V, g.solids[0].shells[0], tol)
+    sd = shell_defects(s, tol, invalid=invalid)
     if g.is_volumetric:
         codes |= {c if c < 1000 else 1003 for _, c, _ in sd}
     else:
         codes |= set(energy_codes(sd))
-    if not sd and topology(m).boundary:
-        codes.add(1001)  # closed only once vertices are snapped: exporters need shared vertices
+    # closed only once vertices are snapped (exporters need shared vertices); when snapping
+    # left m as it is, shell_defects found no boundary edge of m
+    if not sd and s is not m and topology(m).boundary:
+        codes.add(1001)
     return sorted(codes)
 
 
