@@ -109,7 +109,9 @@ def prepare_building(b: Building, options: PrepareOptions = PrepareOptions(), se
     unclipped = rb
     if not options.merge_parts and rb.is_building:  # no volume counted twice (issue 19 item 1)
         from lod2energy.repair.parts import clip_overlapping_parts
-        rb, parts_energy = clip_overlapping_parts(rb, tol, lod)
+        # no defect but 601 on the input: the validator's overlap check of it ran, found these
+        known = [d.location for d in before] if rb is b and all(d.code == 601 for d in before) else None
+        rb, parts_energy = clip_overlapping_parts(rb, tol, lod, overlaps=known)
         if parts_energy:
             extra["parts_energy"] = parts_energy
     repair = RepairRecord.from_info({**repair_info(rb), **extra})

@@ -169,3 +169,32 @@ def test_real_shells_same_verdicts(rel, n):
                     assert fast == validity.shell_defects(m, tol)
                 seen += 1
     assert seen > 10 or "3dbag" in rel  # 3DBAG shells repeat vertices: snapping changes them
+
+
+def test_known_overlaps_same_pairs():
+    """The 601 locations the validator found on a building (no other defect) give the pairs
+    overlap_pairs finds by itself, on real multi-part buildings."""
+    rel = "denhaag/DenHaag_01.city.json"
+    if not (DATA / rel).exists():
+        pytest.skip(f"shared data not available: {rel}")
+    import itertools
+
+    from lod2energy.io import read
+    from lod2energy.model import Building
+    from lod2energy.repair.parts import clip_overlapping_parts, overlap_pairs
+    from lod2energy.validate.checks import validate_building
+    _, it = read(str(DATA / rel))
+    with_pairs = 0
+    for b in itertools.islice((x for x in it if isinstance(x, Building)), 80):
+        before = validate_building(b, DEFAULT)
+        if not all(d.code == 601 for d in before):
+            continue
+        known = [d.location for d in before]
+        ref = overlap_pairs(b, DEFAULT)
+        assert overlap_pairs(b, DEFAULT, known) == ref
+        with_pairs += bool(ref)
+        if ref:
+            nb, rec = clip_overlapping_parts(b, DEFAULT, overlaps=known)
+            nb0, rec0 = clip_overlapping_parts(b, DEFAULT)
+            assert rec == rec0 and (nb is b) == (nb0 is b)
+    assert with_pairs > 0
