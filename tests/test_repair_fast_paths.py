@@ -198,3 +198,65 @@ def test_known_overlaps_same_pairs():
             nb0, rec0 = clip_overlapping_parts(b, DEFAULT)
             assert rec == rec0 and (nb is b) == (nb0 is b)
     assert with_pairs > 0
+
+
+def _reference_self_intersections(V, tris, owner):
+    """The one-shell test as it was before the batch (one triangle_pairs_intersect call)."""
+    from lod2energy.geometry import triangle_pairs_intersect
+    if len(tris) < 2:
+        return np.zeros((0, 2), dtype=np.int64)
+    origin = V[tris[0, 0]]
+    pairs = validity._candidate_pairs(V[tris] - origin)
+    if len(pairs) == 0:
+        return pairs
+    pairs = pairs[owner[pairs[:, 0]] != owner[pairs[:, 1]]]
+    if len(pairs) == 0:
+        return pairs
+    return pairs[triangle_pairs_intersect(V - origin, tris, pairs)]
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_self_intersections_batch_same_pairs(seed):
+    """Shells tested together find, shell by shell, the pairs each finds alone."""
+    rng = np.random.default_rng(seed)
+    items = []
+    for k in range(7):
+        n = int(rng.integers(1, 60))
+        V = rng.uniform(0, 5, size=(n + 3, 3))
+        if k % 2:
+            V = np.round(V, 1) + np.array([85000.0, 447000.0, 0.0])  # touching, coplanar, far away
+        tris = rng.integers(0, len(V), size=(n, 3))
+        owner = rng.integers(0, max(1, n // 2), size=n)
+        items.append((V, tris, owner))
+    got = validity.self_intersections_many(items)
+    hits = 0
+    for (V, tris, owner), g in zip(items, got):
+        ref = _reference_self_intersections(V, tris, owner)
+        assert g.dtype == ref.dtype and np.array_equal(g, ref)
+        assert np.array_equal(validity.self_intersections(V, tris, owner), ref)
+        hits += len(ref)
+    assert hits > 0
+
+
+@pytest.mark.parametrize("rel,n", REAL, ids=[r[0].split("/")[-1] for r in REAL])
+def test_real_shells_batch_same_defects(rel, n):
+    """shell_defects_many of a building's shells (valid and broken, as the ladder gets them)
+    answers as shell_defects shell by shell."""
+    if not (DATA / rel).exists():
+        pytest.skip(f"shared data not available: {rel}")
+    import itertools
+
+    from lod2energy.io import read
+    from lod2energy.model import Building
+    tol = DEFAULT
+    _, it = read(str(DATA / rel))
+    some_306 = False
+    for b in itertools.islice((x for x in it if isinstance(x, Building)), n):
+        shells = [(snap_vertices(mesh_of_geometry(b.vertices, g), tol.snap_tol), None)
+                  for o in b.objects for g in o.geometries if g.is_polygonal and g.solids]
+        if not shells:
+            continue
+        got = validity.shell_defects_many(shells, tol)
+        ref = [validity.shell_defects(m, tol) for m, _ in shells]
+        assert got == ref
+        some_306 |= any(c == 306 for r in ref for _, c, _ in r)

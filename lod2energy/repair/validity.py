@@ -156,6 +156,24 @@ def shell_defects(m: PolyMesh, tol: Tolerances = DEFAULT, first_only: bool = Fal
     return out
 
 
+def shell_defects_many(items, tol: Tolerances = DEFAULT) -> list[list[tuple[int | None, int, str]]]:
+    """:func:`shell_defects` of several shells (``[(mesh, invalid)]``, ``invalid`` as there)
+    with their self-intersection tests in one batch (:func:`self_intersections_many`)."""
+    outs, todo = [], []
+    for m, invalid in items:
+        out = shell_defects(m, tol, self_intersection=False, invalid=invalid)
+        outs.append(out)
+        # shell_defects tests crossings only once every other check passed (405 aside)
+        if all(c == 405 for _, c, _ in out):
+            tris, owner = triangulate_mesh(m)
+            todo.append((len(outs) - 1, m.vertices, tris, owner))
+    found = self_intersections_many([t[1:] for t in todo])
+    for (k, _, _, owner), pairs in zip(todo, found):
+        if len(pairs):
+            outs[k].append((int(owner[pairs[0][0]]), 306, f"{len(pairs)} crossing triangle pairs"))
+    return outs
+
+
 def is_closed_solid(m: PolyMesh, tol: Tolerances = DEFAULT) -> bool:
     """True when :func:`shell_defects` finds nothing."""
     return not shell_defects(m, tol, first_only=True)
@@ -253,16 +271,47 @@ def self_intersections(V: np.ndarray, tris: np.ndarray, owner: np.ndarray) -> np
     (p, 2) int
         Indices into ``tris``.
     """
+    return self_intersections_many([(V, tris, owner)])[0]
+
+
+def self_intersections_many(items) -> list[np.ndarray]:
+    """:func:`self_intersections` of several shells ``[(V, tris, owner)]``, their candidate
+    pairs tested in one call (each shell in its own local coordinates, as alone: the test is
+    row by row).
+
+    Returns
+    -------
+    list of (p, 2) int
+        Per shell, indices into its ``tris``.
+    """
     from lod2energy.geometry import triangle_pairs_intersect
-    if len(tris) < 2:
-        return np.zeros((0, 2), dtype=np.int64)
-    origin = V[tris[0, 0]]
-    T = V[tris] - origin
-    pairs = _candidate_pairs(T)
-    if len(pairs) == 0:
-        return pairs
-    pairs = pairs[owner[pairs[:, 0]] != owner[pairs[:, 1]]]
-    if len(pairs) == 0:
-        return pairs
-    hit = triangle_pairs_intersect(V - origin, tris, pairs)
-    return pairs[hit]
+    outs = [np.zeros((0, 2), dtype=np.int64) for _ in items]
+    local, tri_sets, pair_sets, where = [], [], [], []
+    nv = nt = 0
+    for k, (V, tris, owner) in enumerate(items):
+        if len(tris) < 2:
+            continue
+        origin = V[tris[0, 0]]
+        T = V[tris] - origin
+        pairs = _candidate_pairs(T)
+        if len(pairs) == 0:
+            outs[k] = pairs
+            continue
+        pairs = pairs[owner[pairs[:, 0]] != owner[pairs[:, 1]]]
+        if len(pairs) == 0:
+            outs[k] = pairs
+            continue
+        local.append(V - origin)
+        tri_sets.append(np.asarray(tris) + nv)
+        pair_sets.append(pairs + nt)
+        where.append((k, pairs))
+        nv += len(V)
+        nt += len(tris)
+    if not where:
+        return outs
+    hit = triangle_pairs_intersect(np.vstack(local), np.vstack(tri_sets), np.vstack(pair_sets))
+    start = 0
+    for k, pairs in where:
+        outs[k] = pairs[hit[start:start + len(pairs)]]
+        start += len(pairs)
+    return outs
