@@ -260,3 +260,23 @@ def test_real_shells_batch_same_defects(rel, n):
         ref = [validity.shell_defects(m, tol) for m, _ in shells]
         assert got == ref
         some_306 |= any(c == 306 for r in ref for _, c, _ in r)
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_shell_verdict_is_the_renumbered_mesh_verdict(seed):
+    """The polygon validator answers alike on a building's shell and on its mesh (the shell's
+    vertices only, renumbered in order): what _input_defects relies on to reuse the verdict."""
+    from lod2energy.model import Geometry, Shell, Solid, Surface
+    rng = np.random.default_rng(seed)
+    m = _random_mesh(rng, np.array([85000.0, 447000.0, 2.0]) if seed % 2 else np.zeros(3))
+    # the building's array: the mesh's points among unused ones
+    n = len(m.vertices)
+    pos = np.sort(rng.choice(3 * n, size=n, replace=False))
+    V = rng.uniform(-50, 50, size=(3 * n, 3))
+    V[pos] = m.vertices
+    shell = Shell(tuple(Surface.from_lists([[int(pos[i]) for i in r] for r in f.rings]) for f in m.faces))
+    g = Geometry("Solid", "2", (Solid((shell,)),))
+    mesh = mesh_of_geometry(V, g)
+    found = dict(invalid_polygons(mesh, DEFAULT))
+    assert found  # non-planar and degenerate faces among them
+    assert dict(invalid_surfaces(V, shell, DEFAULT)) == found
