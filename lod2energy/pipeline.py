@@ -37,7 +37,7 @@ from lod2energy.reports import (
 )
 from lod2energy.spool import Job, load_spooled, reusable, spool_building
 from lod2energy.validate import checks as _checks
-from lod2energy.validate.memo import carry, geometry_key
+from lod2energy.validate.memo import carry, geometry_key, recall, verdict_key
 
 
 # ============================================================================ one building
@@ -109,7 +109,11 @@ def prepare_building(b: Building, options: PrepareOptions = PrepareOptions(), se
     unclipped = rb
     if not options.merge_parts and rb.is_building:  # no volume counted twice (issue 19 item 1)
         from lod2energy.repair.parts import clip_overlapping_parts
-        rb, parts_energy = clip_overlapping_parts(rb, tol, lod)
+        # the validator's verdict of this geometry (the input's, or the repair's of its result):
+        # with no defect but 601 its overlap check ran and found these
+        verdict = before if rb is b else recall(verdict_key(rb, tol))
+        known = None if verdict is None or any(d.code != 601 for d in verdict) else [d.location for d in verdict]
+        rb, parts_energy = clip_overlapping_parts(rb, tol, lod, overlaps=known)
         if parts_energy:
             extra["parts_energy"] = parts_energy
     repair = RepairRecord.from_info({**repair_info(rb), **extra})

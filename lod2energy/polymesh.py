@@ -10,6 +10,7 @@ from __future__ import annotations
 
 from collections import defaultdict
 from dataclasses import dataclass, field
+from itertools import accumulate
 
 import numpy as np
 
@@ -158,8 +159,9 @@ def _triangulate_face(V: np.ndarray, f: Face) -> np.ndarray:
         n = np.array([0, 0, 1.0])
     B = plane_basis(n)
     idx = np.array([i for r in rings for i in r], dtype=np.int64)
-    P2 = (V[idx] - V[idx].mean(axis=0)) @ B.T
-    ends = np.cumsum([len(r) for r in rings]).astype(np.uint32)
+    P = V[idx]
+    P2 = (P - P.mean(axis=0)) @ B.T
+    ends = np.fromiter(accumulate(len(r) for r in rings), dtype=np.uint32, count=len(rings))
     t = earcut_rings(P2, ends)
     if len(t):
         p, q, r = P2[t[:, 0]], P2[t[:, 1]], P2[t[:, 2]]

@@ -141,10 +141,10 @@ def envelope_problems(b: Building, energy=None) -> list[str]:
                 vol = 0.0
                 for s in sh.surfaces:
                     for r in s.rings:
-                        ids = inv[r]
-                        for a, c in zip(ids, np.roll(ids, -1)):
-                            if a != c:
-                                edges[(int(a), int(c))] = edges.get((int(a), int(c)), 0) + 1
+                        ids = inv[r].tolist()
+                        for e in zip(ids, ids[1:] + ids[:1]):
+                            if e[0] != e[1]:
+                                edges[e] = edges.get(e, 0) + 1
                     ar, n, cen = face_metrics(b.vertices, s)
                     vol += float((cen - origin) @ (n * ar)) / 3.0
                 bad = [e for e, k in edges.items() if k != 1 or edges.get((e[1], e[0]), 0) != 1]

@@ -180,8 +180,14 @@ def drop_degenerate(m: PolyMesh, area_eps: float = 1e-10) -> PolyMesh:
 def invalid_polygons(m: PolyMesh, tol: Tolerances) -> dict[int, set[int]]:
     """Faces the project's polygon validator rejects: ``{face_index: {codes}}``."""
     shell = Shell(tuple(Surface.from_lists([list(r) for r in f.rings]) for f in m.faces))
+    return invalid_surfaces(m.vertices, shell, tol)
+
+
+def invalid_surfaces(vertices: np.ndarray, shell: Shell, tol: Tolerances) -> dict[int, set[int]]:
+    """:func:`invalid_polygons` of a shell of a building (``vertices`` (n, 3), m): the
+    validator's answer is kept per shell, so a shell it checked is not checked again."""
     out: dict[int, set[int]] = defaultdict(set)
-    for fi, code, _ in check_polygons(m.vertices, shell, tol):
+    for fi, code, _ in check_polygons(vertices, shell, tol):
         if fi is not None:
             out[int(fi)].add(int(code))
     return out

@@ -8,6 +8,7 @@ same LoD and the parts keep their attributes but lose that geometry.
 from __future__ import annotations
 
 from dataclasses import replace
+from typing import Sequence
 
 import numpy as np
 
@@ -185,14 +186,19 @@ def merge_parts(b: Building, ids, tol: Tolerances = DEFAULT, lod=None, into: str
 SNAP_BACK = 0.25
 
 
-def overlap_pairs(b: Building, tol: Tolerances = DEFAULT) -> dict[tuple[str, str], float | None]:
+def overlap_pairs(b: Building, tol: Tolerances = DEFAULT, overlaps: Sequence[str] | None = None
+                  ) -> dict[tuple[str, str], float | None]:
     """val3dity 601 pairs of ``b`` (at ``tol.overlap_tol``): ``{(id_a, id_b): shared m3}``.
 
     The shared volume is manifold3d's intersection volume (None when a solid is rejected).
+    ``overlaps``: the locations of the 601 defects of ``b`` at ``tol`` when the validator
+    already found them (:func:`lod2energy.validate.solid.check_parts_overlap` otherwise).
     """
-    from lod2energy.validate.solid import check_parts_overlap
+    if overlaps is None:
+        from lod2energy.validate.solid import check_parts_overlap
+        overlaps = [loc for loc, _code, _info in check_parts_overlap(b, tol)]
     out: dict[tuple[str, str], float | None] = {}
-    for loc, _code, _info in check_parts_overlap(b, tol):
+    for loc in overlaps:
         a, c = (s.split("|", 1)[0].removeprefix("coid=") for s in loc.split("&&", 1))
         out[(a, c)] = None
     if not out:
@@ -440,7 +446,8 @@ def _valid_on_grid(b: Building, part_id: str, lod, tol: Tolerances) -> bool:
 
 
 def clip_overlapping_parts(b: Building, tol: Tolerances = DEFAULT, lod=None,
-                           min_volume: float = ENERGY_OVERLAP) -> tuple[Building, dict]:
+                           min_volume: float = ENERGY_OVERLAP, overlaps: Sequence[str] | None = None
+                           ) -> tuple[Building, dict]:
     """``b`` with no volume shared by two BuildingParts: the preparation stage in front of the
     writers, so that the energy model (zones) counts no volume twice and the written parts
     are val3dity-601-free.
@@ -467,6 +474,9 @@ def clip_overlapping_parts(b: Building, tol: Tolerances = DEFAULT, lod=None,
         The LoD of the parts' solids (default: the building's default LoD).
     min_volume : float, m3
         Shared volumes up to this are left (numerical noise for the heat balance).
+    overlaps : sequence of str, optional
+        Locations of the 601 defects of ``b`` at ``tol`` when the validator already found
+        them (see :func:`overlap_pairs`).
 
     Returns
     -------
@@ -481,7 +491,7 @@ def clip_overlapping_parts(b: Building, tol: Tolerances = DEFAULT, lod=None,
     lod = lod if lod is not None else b.default_lod()
     if len(_part_meshes_all(b, lod)) < 2:
         return b, {}
-    pairs = {k: v for k, v in overlap_pairs(b, tol).items() if v is not None and v > min_volume}
+    pairs = {k: v for k, v in overlap_pairs(b, tol, overlaps).items() if v is not None and v > min_volume}
     if not pairs:
         return b, {}
     order = {o.id: k for k, (o, *_rest) in enumerate(_part_meshes_all(b, lod))}

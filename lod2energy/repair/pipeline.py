@@ -30,7 +30,9 @@ from lod2energy.model import (
 from lod2energy.polymesh import PolyMesh, compact, face_area, topology
 from lod2energy.repair.accept import grid_rounding, is_repaired, output_grid, repair_verdict, val3dity_codes
 from lod2energy.repair.alphashape import alpha_repair
-from lod2energy.repair.cleanup import clean_rings, cleanup, desliver, drop_degenerate, merge_slivers, snap_vertices
+from lod2energy.repair.cleanup import (
+    clean_rings, cleanup, desliver, drop_degenerate, invalid_surfaces, merge_slivers, snap_vertices,
+)
 from lod2energy.repair.convert import geometry_of_mesh, mesh_of_geometry
 from lod2energy.repair.footprint import extrude_footprint
 from lod2energy.repair.holefill import fill_holes
@@ -42,7 +44,7 @@ from lod2energy.repair.plausible import closed_volume, implausible, not_hollow
 from lod2energy.repair.refill import close, refill
 from lod2energy.repair.roofs import ROOF_MODEL_MAX_DISPLACEMENT, roof_model
 from lod2energy.repair.unpinch import unpinch
-from lod2energy.repair.validity import energy_codes, shell_defects
+from lod2energy.repair.validity import energy_codes, shell_defects, shell_defects_many
 from lod2energy.validate.checks import validate_building, validate_geometry
 
 STAGES = ("valid", "cleanup", "orientation", "holefill", "refill", "roofs", "alphashape", "footprint",
@@ -61,16 +63,32 @@ def _valid_or_none(m: PolyMesh | None, lod, tol: Tolerances) -> PolyMesh | None:
 
 # ----------------------------------------------------------------------------- the ladder
 
-def _input_defects(V: np.ndarray, g: Geometry, coid: str, gi: int, m: PolyMesh, tol: Tolerances) -> list[int]:
-    codes = {d.code for d in validate_geometry(V, coid, gi, g, tol)}
-    sd = shell_defects(snap_vertices(m, tol.snap_tol), tol)
-    if g.is_volumetric:
-        codes |= {c if c < 1000 else 1003 for _, c, _ in sd}
-    else:
-        codes |= set(energy_codes(sd))
-    if not sd and topology(m).boundary:
-        codes.add(1001)  # closed only once vertices are snapped: exporters need shared vertices
-    return sorted(codes)
+def _input_defects(V: np.ndarray, items, tol: Tolerances) -> list[list[int]]:
+    """val3dity codes of each geometry ``(g, coid, gi, m)`` of a building (vertices ``V``) and
+    the ladder's own (``shell_defects`` of ``m``, its mesh, once snapped; the shells'
+    self-intersection tests in one batch)."""
+    codes, shells = [], []
+    for g, coid, gi, m in items:
+        codes.append({d.code for d in validate_geometry(V, coid, gi, g, tol)})
+        s = snap_vertices(m, tol.snap_tol)
+        invalid = None
+        if s is m and len(g.solids) == 1 and len(g.solids[0].shells) == 1:
+            # m is this one shell as it is (renumbered in order): the validator's polygon
+            # verdict on it, just computed, is the one shell_defects asks for
+            invalid = invalid_surfaces(V, g.solids[0].shells[0], tol)
+        shells.append((s, invalid))
+    out = []
+    for (g, _, _, m), c, (s, _), sd in zip(items, codes, shells, shell_defects_many(shells, tol)):
+        if g.is_volumetric:
+            c |= {x if x < 1000 else 1003 for _, x, _ in sd}
+        else:
+            c |= set(energy_codes(sd))
+        # closed only once vertices are snapped (exporters need shared vertices); when
+        # snapping left m as it is, shell_defects found no boundary edge of m
+        if not sd and s is not m and topology(m).boundary:
+            c.add(1001)
+        out.append(sorted(c))
+    return out
 
 
 def ladder(m: PolyMesh, lod, tol: Tolerances, deadline: float) -> tuple[str, PolyMesh | None, list[str]]:
@@ -309,14 +327,19 @@ def _repair_building(b: Building, tol: Tolerances, timeout: float, merge_parts: 
     per_geom = []
     defects_before: set[int] = set()
     changed = False
-    for oi, gi, g in targets:
+    meshes = [mesh_of_geometry(b.vertices, g) for _, _, g in targets]
+    whys = [implausible(m) if m.faces else None for m in meshes]
+    checked = [k for k, (m, why) in enumerate(zip(meshes, whys))
+               if not (why is not None and not np.isfinite(m.vertices).all())]
+    found = dict(zip(checked, _input_defects(
+        b.vertices, [(targets[k][2], b.objects[targets[k][0]].id, targets[k][1], meshes[k]) for k in checked], tol)))
+    for k, (oi, gi, g) in enumerate(targets):
         o = b.objects[oi]
-        m = mesh_of_geometry(b.vertices, g)
-        why = implausible(m) if m.faces else None
-        if why is not None and not np.isfinite(m.vertices).all():
-            codes = sorted({d.code for d in validate_geometry(b.vertices, o.id, gi, g, tol)})
+        m, why = meshes[k], whys[k]
+        if k in found:
+            codes = found[k]
         else:
-            codes = _input_defects(b.vertices, g, o.id, gi, m, tol)
+            codes = sorted({d.code for d in validate_geometry(b.vertices, o.id, gi, g, tol)})
         defects_before |= set(codes)
         entry = {"object": o.id, "geometry": gi, "lod": g.lod, "type": g.type,
                  "n_faces_before": m.n_faces, "defects_before": codes}
