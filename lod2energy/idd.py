@@ -103,6 +103,11 @@ class ClassDef:
         looks fields up tens of thousands of times a file); callers must not modify it."""
         return {f.name.upper(): i for i, f in enumerate(self.fields)}
 
+    @functools.cached_property
+    def plain_tail(self) -> int | None:
+        """:func:`_plain_tail` of the class, found on first use and kept."""
+        return _plain_tail(self)
+
 
 @dataclass(frozen=True)
 class Idd:
@@ -342,6 +347,82 @@ def _field_problem(f: FieldDef, v: str) -> str | None:
     return None
 
 
+def _plain_real(f: FieldDef) -> bool:
+    """Is any finite number a valid value of field ``f`` (a real with no bounds), so that
+    :func:`_field_problem` finds nothing in a value ``float`` reads as finite?"""
+    return (f.numeric and f.type != "integer" and f.minimum is None and f.maximum is None)
+
+
+def _plain_tail(c: ClassDef) -> int | None:
+    """Index of the first field from which every field of an extensible class (its repeated
+    group included) is :func:`_plain_real` (vertex coordinates), or None."""
+    if not c.extensible:
+        return None
+    k = len(c.fields)
+    while k > 0 and _plain_real(c.fields[k - 1]):
+        k -= 1
+    return k if k <= c.first_extensible else None
+
+
+#: :func:`_object_problems` of objects without a coordinate list, by class, IDD version and fields
+#: (an IDF repeats them from file to file: materials, schedules, output requests); a pure
+#: function of its key, so never stale. Emptied when full.
+_OBJECT_MEMO: dict[tuple, tuple[ClassDef, tuple[str, ...]]] = {}
+_OBJECT_MEMO_SIZE = 4096
+
+
+def _object_problems(idd: Idd, c: ClassDef, fields: tuple[str, ...]) -> tuple[str, ...]:
+    """What :func:`check_idf` reports for one object of class ``c`` (each problem without its
+    ``line N:`` prefix, in the order found; all of them)."""
+    tail = c.plain_tail
+    if tail is not None and len(fields) > tail:
+        head, rest = fields[:tail], fields[tail:]
+        try:  # the common case: every value of the coordinate list a finite number
+            clean = all(map(math.isfinite, map(float, rest)))
+        except ValueError:
+            clean = False
+        if clean:
+            return _fields_problems(idd, c, fields, len(head))
+        return _fields_problems(idd, c, fields, len(fields))
+    key = (id(c), idd.version, fields)
+    hit = _OBJECT_MEMO.get(key)
+    if hit is not None and hit[0] is c:  # the entry holds its class: its id is not reused
+        return hit[1]
+    found = _fields_problems(idd, c, fields, len(fields))
+    if len(_OBJECT_MEMO) >= _OBJECT_MEMO_SIZE:
+        _OBJECT_MEMO.clear()
+    _OBJECT_MEMO[key] = (c, found)
+    return found
+
+
+def _fields_problems(idd: Idd, c: ClassDef, fields: tuple[str, ...], n_checked: int) -> tuple[str, ...]:
+    """The problems of one object, its values checked one by one up to ``n_checked`` (those
+    after it known to be fine)."""
+    problems: list[str] = []
+    if not c.extensible and len(fields) > len(c.fields):
+        return (f"{c.name} has {len(fields)} fields, the IDD defines {len(c.fields)}",)
+    if c.extensible and len(fields) > c.first_extensible and (len(fields) - c.first_extensible) % c.extensible:
+        problems.append(f"{c.name} ends inside a group of {c.extensible} extensible fields")
+    for i, f in enumerate(c.fields[:c.first_extensible]):
+        v = fields[i] if i < len(fields) else ""
+        if f.required and not v and f.default is None:
+            problems.append(f"{c.name}: required field {f.name!r} is empty")
+    for i in range(n_checked):
+        v = fields[i]
+        if not v:
+            continue
+        f = c.field(i)
+        why = _field_problem(f, v)
+        if why:
+            problems.append(f"{c.name}, {f.name}: {why}")
+    if c.name == "Version" and fields and idd.version:
+        want = ".".join(idd.version.split(".")[:2])
+        got = ".".join(fields[0].split(".")[:2])
+        if got != want:
+            problems.append(f"Version {fields[0]} but the IDD is {idd.version}")
+    return tuple(problems)
+
+
 def check_idf(objects: list[IdfObject], idd: Idd, max_problems: int = 20) -> list[str]:
     """Problems EnergyPlus's input processor would report for these objects (empty: none).
 
@@ -355,37 +436,21 @@ def check_idf(objects: list[IdfObject], idd: Idd, max_problems: int = 20) -> lis
     """
     problems: list[str] = []
     seen: dict[str, int] = {}
+    classes = idd.classes
     for o in objects:
         if len(problems) >= max_problems:
             break
-        c = idd.classes.get(o.cls.upper())
+        c = classes.get(o.cls.upper())
         if c is None:
             problems.append(f"line {o.line}: unknown object {o.cls!r}")
             continue
         seen[c.name] = seen.get(c.name, 0) + 1
-        if not c.extensible and len(o.fields) > len(c.fields):
-            problems.append(f"line {o.line}: {c.name} has {len(o.fields)} fields, the IDD defines {len(c.fields)}")
-            continue
-        if c.extensible and len(o.fields) > c.first_extensible and (len(o.fields) - c.first_extensible) % c.extensible:
-            problems.append(f"line {o.line}: {c.name} ends inside a group of {c.extensible} extensible fields")
-        for i, f in enumerate(c.fields[:c.first_extensible]):
-            v = o.fields[i] if i < len(o.fields) else ""
-            if f.required and not v and f.default is None:
-                problems.append(f"line {o.line}: {c.name}: required field {f.name!r} is empty")
-        for i, v in enumerate(o.fields):
-            if not v:
-                continue
-            f = c.field(i)
-            why = _field_problem(f, v)
-            if why:
-                problems.append(f"line {o.line}: {c.name}, {f.name}: {why}")
+        found = _object_problems(idd, c, o.fields)
+        if found:
+            for why in found:
+                problems.append(f"line {o.line}: {why}")
                 if len(problems) >= max_problems:
                     break
-        if c.name == "Version" and o.fields and idd.version:
-            want = ".".join(idd.version.split(".")[:2])
-            got = ".".join(o.fields[0].split(".")[:2])
-            if got != want:
-                problems.append(f"line {o.line}: Version {o.fields[0]} but the IDD is {idd.version}")
     for name, unique, required in _class_flags(idd):
         if unique and seen.get(name, 0) > 1:
             problems.append(f"{name} appears {seen[name]} times (a unique object)")

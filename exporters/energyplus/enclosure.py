@@ -26,6 +26,7 @@ The steps follow EnergyPlus 9-25:
 from __future__ import annotations
 
 import math
+import threading
 from dataclasses import dataclass
 from typing import Sequence
 
@@ -388,6 +389,14 @@ def _insert_collinear(face: np.ndarray, uniq: np.ndarray, tol: float) -> np.ndar
     return pts
 
 
+#: Verdicts of :func:`enclosure_defects` by the exact content of its input (the writer tests
+#: a zone's pieces in :func:`conform.eplus_enclose`, then the same values again in
+#: :func:`model.enclosable`); a pure function of the vertex bits, so never stale.
+_DEFECTS_MEMO: dict[tuple, list[BadEdge]] = {}
+_DEFECTS_MEMO_SIZE = 64
+_DEFECTS_LOCK = threading.Lock()
+
+
 def enclosure_defects(surfaces: Sequence[np.ndarray], tol: float = POINT_TOL) -> list[BadEdge]:
     """Edges of a zone EnergyPlus would find not shared by exactly two surfaces.
 
@@ -404,7 +413,21 @@ def enclosure_defects(surfaces: Sequence[np.ndarray], tol: float = POINT_TOL) ->
         both counts (what EnergyPlus lists in its warning) or, when none fails both, those
         that fail the second count.
     """
-    faces = eplus_vertices_many([np.asarray(s, dtype=np.float64) for s in surfaces])
+    arrs = [np.asarray(s, dtype=np.float64) for s in surfaces]
+    key = (float(tol),) + tuple((a.shape, a.tobytes()) for a in arrs)
+    found = _DEFECTS_MEMO.get(key)
+    if found is None:
+        found = _enclosure_defects(arrs, tol)
+        with _DEFECTS_LOCK:
+            if len(_DEFECTS_MEMO) >= _DEFECTS_MEMO_SIZE:
+                _DEFECTS_MEMO.pop(next(iter(_DEFECTS_MEMO)), None)  # the oldest
+            _DEFECTS_MEMO[key] = found
+    return list(found)
+
+
+def _enclosure_defects(arrs: list[np.ndarray], tol: float) -> list[BadEdge]:
+    """:func:`enclosure_defects` of float64 ``(k_i, 3)`` arrays, computed."""
+    faces = eplus_vertices_many(arrs)
     first = _edges_not_two(faces, tol)
     if not first:
         return []

@@ -202,8 +202,13 @@ def zone_pieces(zone: ZoneShell, zi: int, party: dict, split: bool = True) -> li
                 pieces.append(Piece(p, f.kind, boundary, f.u_value, f.index))
     if split and any(party.get((zi, fi)) for fi in range(len(zone.faces))):
         pieces = conform(pieces)
-    # after the enclosure candidates too: merging vertices can bend a piece out of plane
-    return _as_written(keep_corners(eplus_enclose(keep_corners(_as_written(pieces)))))
+    # after the enclosure candidates too: merging vertices can bend a piece out of plane;
+    # keep_corners of its own output is that output (a piece it keeps passes its test again, a
+    # fan triangle it wrote is a non-degenerate triangle, which it keeps), so pieces that
+    # passed the enclosure test as they were are not tested a second time
+    kept = keep_corners(_as_written(pieces))
+    enclosed = eplus_enclose(kept)
+    return _as_written(kept if enclosed is kept else keep_corners(enclosed))
 
 
 def _whole_face(zone: ZoneShell, face: ZoneFace, overlaps: list) -> list[tuple[np.ndarray, str]]:

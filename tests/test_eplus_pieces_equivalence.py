@@ -1,0 +1,76 @@
+"""The IDF writer's zone pieces skip work that cannot change them:
+
+- :func:`conform.keep_corners` of its own output is that output (so :func:`surfaces.zone_pieces`
+  runs it once when the enclosure test passes the pieces as they are);
+- :func:`enclosure.enclosure_defects` remembers its verdicts by the exact bits of its input:
+  a remembered verdict is the computed one.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from lod2energy.exporters.energyplus import enclosure
+from lod2energy.exporters.energyplus.conform import keep_corners
+from lod2energy.exporters.energyplus.pieces import Piece, _as_written
+
+
+def _rings(rng, n=400):
+    """Rings keep_corners keeps and rings it fans: planar and bent, with corners EnergyPlus
+    finds collinear in its projection, spikes, near-coincident and repeated vertices."""
+    out = []
+    for i in range(n):
+        k = 3 + i % 7
+        ang = np.sort(rng.random(k)) * 2 * np.pi
+        r = 0.05 + rng.random(k) * 6
+        q = np.column_stack([r * np.cos(ang), r * np.sin(ang), np.zeros(k)])
+        tilt = rng.random()
+        if i % 5 == 0:  # a wall a fraction of a degree off vertical
+            q = np.column_stack([q[:, 0], q[:, 2] + q[:, 1] * 1e-3, q[:, 1]])
+        elif i % 5 == 1:
+            q[:, 2] = q[:, 0] * tilt
+        if i % 4 == 0:
+            q[:, 2] += rng.normal(0, [0.0, 1e-3, 2e-2][i % 3], k)  # out of plane
+        if i % 6 == 0:  # a vertex on the middle of an edge (collinear in 3D)
+            q = np.insert(q, 1, (q[0] + q[1]) / 2, axis=0)
+        if i % 7 == 0:  # a corner 1e-4 off the line through its neighbours
+            m = (q[0] + q[1]) / 2 + [0, 0, 5e-3 * (i % 2)]
+            q = np.insert(q, 1, m, axis=0)
+        if i % 9 == 0:
+            q = np.insert(q, 2, q[2] + 1e-3, axis=0)  # near-coincident
+        if i % 11 == 0:
+            q = np.insert(q, 2, q[2], axis=0)  # repeated
+        out.append(q + np.array([85000.0, 447000.0, 2.0]) * (i % 2))
+    return out
+
+
+def test_keep_corners_of_its_output_is_its_output():
+    rng = np.random.default_rng(3)
+    pieces = [Piece(q, "wall", "Outdoors", 1.0, i) for i, q in enumerate(_rings(rng))]
+    once = keep_corners(_as_written(pieces))
+    assert len(once) > len(pieces)  # some pieces were fanned into triangles
+    twice = keep_corners(once)
+    assert len(twice) == len(once)
+    assert all(a is b for a, b in zip(twice, once))
+
+
+def test_enclosure_verdicts_remembered_are_the_computed_ones():
+    rng = np.random.default_rng(5)
+    rings = _rings(rng, 120)
+    zones = [[np.round(q, 4) for q in rings[i:i + 6]] for i in range(0, 120, 6)]
+    box = [np.array(f, dtype=float) for f in (
+        [[0, 0, 0], [0, 1, 0], [1, 1, 0], [1, 0, 0]], [[0, 0, 1], [1, 0, 1], [1, 1, 1], [0, 1, 1]],
+        [[0, 0, 0], [1, 0, 0], [1, 0, 1], [0, 0, 1]], [[1, 0, 0], [1, 1, 0], [1, 1, 1], [1, 0, 1]],
+        [[1, 1, 0], [0, 1, 0], [0, 1, 1], [1, 1, 1]], [[0, 1, 0], [0, 0, 0], [0, 0, 1], [0, 1, 1]])]
+    zones += [box, box[:-1]]
+    enclosure._DEFECTS_MEMO.clear()
+    for z in zones + zones:
+        got = enclosure.enclosure_defects([q.copy() for q in z])
+        exp = enclosure._enclosure_defects([np.asarray(q, dtype=np.float64) for q in z], enclosure.POINT_TOL)
+        assert len(got) == len(exp)
+        for a, b in zip(got, exp):
+            assert np.array_equal(a.start, b.start) and np.array_equal(a.end, b.end)
+            assert (a.count, a.surfaces) == (b.count, b.surfaces)
+    assert enclosure.enclosure_defects(box) == [] and enclosure.enclosure_defects(box[:-1])
+    # the same values in another frame or tolerance are another key
+    assert enclosure.enclosure_defects([q + 1e-3 for q in box[:-1]], 0.0127)
+    assert 0 < len(enclosure._DEFECTS_MEMO) <= enclosure._DEFECTS_MEMO_SIZE
