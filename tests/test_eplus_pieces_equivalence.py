@@ -74,3 +74,50 @@ def test_enclosure_verdicts_remembered_are_the_computed_ones():
     # the same values in another frame or tolerance are another key
     assert enclosure.enclosure_defects([q + 1e-3 for q in box[:-1]], 0.0127)
     assert 0 < len(enclosure._DEFECTS_MEMO) <= enclosure._DEFECTS_MEMO_SIZE
+
+
+def test_vertices_and_degenerate_together_as_apart():
+    rng = np.random.default_rng(11)
+    rings = _rings(rng)
+    # rings the coincident test shortens below 3 vertices, and ones it leaves at 3 exactly
+    rings += [np.array([[0, 0, 0], [0.004, 0, 0], [0.008, 0.001, 0]], float),
+              np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0.003, 0.002, 0]], float),
+              np.array([[0, 0, 0], [1, 0, 0], [0.5, 0.001, 0], [0.002, 0, 0]], float),
+              np.array([[0, 0, 0], [0, 0, 0]], float), np.zeros((0, 3))]
+    faces, degen = enclosure.eplus_vertices_and_degenerate(rings)
+    assert degen == enclosure.eplus_degenerate_many(rings) and any(degen) and not all(degen)
+    exp = enclosure.eplus_vertices_many(rings)
+    assert len(faces) == len(exp)
+    assert all(a.shape == b.shape and np.array_equal(a, b) for a, b in zip(faces, exp))
+    zone = rings[:30]
+    assert len(enclosure.face_defects(faces[:30])) == len(enclosure._enclosure_defects(zone, enclosure.POINT_TOL))
+
+
+def test_surely_sized_and_planar_only_when_the_tests_pass():
+    from lod2energy.exporters.energyplus.check import _surely_sized_and_planar
+    from lod2energy.exporters.energyplus.conform import PIECE_PLANAR
+    from lod2energy.exporters.energyplus.pieces import _planar_dev_of
+    from lod2energy.exporters.polygons import newell_normal
+    from lod2energy.exporters.zones import MIN_PIECE_AREA
+
+    rng = np.random.default_rng(13)
+    rings = []
+    for i in range(3000):
+        k = 3 + i % 9
+        ang = np.sort(rng.random(k)) * 2 * np.pi
+        r = np.full(k, 1.0)
+        q = np.column_stack([r * np.cos(ang), r * np.sin(ang), np.zeros(k)])
+        area_target = MIN_PIECE_AREA * (1 + rng.normal(0, 1e-3)) if i % 3 == 0 else 10 ** rng.uniform(-5, 3)
+        q *= np.sqrt(area_target / max(0.5 * np.linalg.norm(newell_normal(q)), 1e-300))
+        bend = 2 * PIECE_PLANAR * (1 + rng.normal(0, 1e-4)) if i % 3 == 1 else rng.uniform(0, 0.03)
+        q[:, 2] = np.where(np.arange(k) % 2, bend, -bend) * (k > 3)
+        rot, _ = np.linalg.qr(rng.normal(size=(3, 3)))
+        rings.append(np.round(q @ rot + rng.uniform(-200, 200, 3), 4))
+    sure = _surely_sized_and_planar(rings)
+    n_pass = 0
+    for q, s in zip(rings, sure):
+        nn = newell_normal(q)
+        ok = 0.5 * float(np.linalg.norm(nn)) > MIN_PIECE_AREA and _planar_dev_of(q, nn) <= 2 * PIECE_PLANAR
+        n_pass += ok
+        assert ok or not s
+    assert sum(sure) > 0.9 * n_pass > 300  # it decides almost every passing ring

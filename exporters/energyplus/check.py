@@ -10,7 +10,7 @@ from ..polygons import newell_normal
 from ..shellcheck import check_closed_outward
 from ..zones import MIN_PIECE_AREA
 from .conform import PIECE_PLANAR
-from .enclosure import enclosure_defects, eplus_degenerate_many
+from .enclosure import eplus_vertices_and_degenerate, face_defects
 from .pieces import _planar_dev_of
 from . import run as eplus_run
 
@@ -86,6 +86,51 @@ def read_checked_idf(path: str | Path) -> tuple[dict[str, list[_Record]], list[s
     return out, problems
 
 
+#: Machine epsilon of float64.
+_EPS = float(np.finfo(np.float64).eps)
+
+
+def _surely_sized_and_planar(rings: list[np.ndarray]) -> list[bool]:
+    """Per ring (``(k, 3)`` float64, k >= 3, m): does it certainly pass the self-check's area
+    test (half its :func:`polygons.newell_normal` longer than ``MIN_PIECE_AREA``) and
+    planarity test (:func:`pieces._planar_dev_of` at most ``2 x PIECE_PLANAR``)? False
+    when it cannot tell; the caller then runs the tests themselves.
+
+    The same formulas on all rings at once; sums run in another order than one ring at a
+    time (``np.add.reduceat`` against numpy's pairwise sums), so each result carries a
+    bound of that difference: a sum of ``k`` terms is off by at most ``k eps sum|t|`` either
+    way; the unit normal by that over the normal's length; the centroid by ``k eps max|p|``.
+    A ring is passed only when its values clear both thresholds by more than the bounds
+    (several times over).
+    """
+    if not rings:
+        return []
+    lens = np.fromiter((len(r) for r in rings), dtype=np.intp, count=len(rings))
+    P = np.concatenate(rings)
+    starts = np.concatenate(([0], np.cumsum(lens)[:-1]))
+    ring_of = np.repeat(np.arange(len(rings)), lens)
+    nxt = np.arange(1, len(P) + 1)
+    nxt[starts + lens - 1] = starts
+    Q = P[nxt]
+    # Newell's textbook sums (polygons.newell_normal): component c sums
+    # (p - q)[A[c]] * (p + q)[B[c]]
+    t = (P - Q)[:, [1, 2, 0]] * (P + Q)[:, [2, 0, 1]]
+    nn = np.add.reduceat(t, starts, axis=0)
+    err_nn = 4.0 * lens * _EPS * np.add.reduceat(np.abs(t), starts, axis=0).max(axis=1) + 1e-300
+    nlen = np.sqrt(np.sum(nn * nn, axis=1))
+    area = 0.5 * nlen
+    sized = area - (2.0 * err_nn + 8 * _EPS * area) > MIN_PIECE_AREA
+    n = nn / np.where(nlen > 0, nlen, 1.0)[:, None]
+    cen = np.add.reduceat(P, starts, axis=0) / lens[:, None]
+    rel = P - cen[ring_of]
+    dev = np.maximum.reduceat(np.abs(np.sum(rel * n[ring_of], axis=1)), starts)
+    reach = np.maximum.reduceat(np.sqrt(np.sum(rel * rel, axis=1)), starts)
+    scale = np.maximum.reduceat(np.abs(P).max(axis=1), starts)
+    err_dev = (reach * (8.0 * err_nn / np.where(nlen > 0, nlen, 1.0) + 16 * _EPS)
+               + 8.0 * lens * _EPS * scale + 1e-12)
+    return (sized & (dev + err_dev <= 2 * PIECE_PLANAR)).tolist()
+
+
 def _fmt_point(p: np.ndarray) -> str:
     return "(" + ", ".join(f"{x:.3f}" for x in p) + ")"
 
@@ -98,7 +143,8 @@ def self_check(path: str | Path, run: bool = False, weather: str | Path | None =
     ranges and choices, as EnergyPlus's input processor checks them); each zone's shell is
     rebuilt from its ``BuildingSurface:Detailed`` vertices and must be closed and outward
     (every edge used once in each direction after T-junction splitting, positive volume) and
-    pass EnergyPlus's own enclosure test (:func:`enclosure.enclosure_defects`);
+    pass EnergyPlus's own enclosure test (:func:`enclosure.enclosure_defects`, on the vertices
+    EnergyPlus keeps of each surface: :func:`enclosure.eplus_vertices_and_degenerate`);
     every surface must reference an existing zone and construction, every window an
     existing wall, and names must be unique. With ``run=True`` EnergyPlus runs too (needs
     ``weather``): zero severe errors and no zone "not fully enclosed".
@@ -129,9 +175,12 @@ def self_check(path: str | Path, run: bool = False, weather: str | Path | None =
         except (KeyError, TypeError, ValueError):
             vertices.append(None)
     # EnergyPlus's degenerate test on every readable surface at once (the same verdicts as one
-    # surface at a time)
+    # surface at a time), with the vertices EnergyPlus keeps of each for its enclosure test
     readable = [p for p in vertices if p is not None]
-    degenerate = iter(eplus_degenerate_many(readable))
+    kept, degen_of = eplus_vertices_and_degenerate(readable)
+    degenerate = iter(degen_of)
+    sure = iter(_surely_sized_and_planar([p for p, d in zip(readable, degen_of) if len(p) >= 3 and not d]))
+    kept_of: dict[int, np.ndarray] = {id(p): q for p, q in zip(readable, kept)}
     for s, pts in zip(surfaces, vertices):
         name, zone, cons = s.get("Name"), s.get("Zone Name"), s.get("Construction Name")
         names[name.upper()] = names.get(name.upper(), 0) + 1
@@ -145,6 +194,8 @@ def self_check(path: str | Path, run: bool = False, weather: str | Path | None =
         degen = next(degenerate)
         if len(pts) < 3 or degen:
             problems.append(f"surface {name}: degenerate for EnergyPlus ({len(pts)} vertices)")
+        elif next(sure):
+            pass  # certainly larger than MIN_PIECE_AREA and within 2 x PIECE_PLANAR of its plane
         else:
             # polygon_area3d and _planar_dev of the surface from its one Newell normal
             nn = newell_normal(pts)
@@ -167,7 +218,7 @@ def self_check(path: str | Path, run: bool = False, weather: str | Path | None =
             continue
         for p in check_closed_outward(by_zone[z]):
             problems.append(f"zone {z}: {p}")
-        bad = enclosure_defects(by_zone[z])
+        bad = face_defects([kept_of[id(p)] for p in by_zone[z]])
         if bad:
             e = bad[0]
             problems.append(f"zone {z}: EnergyPlus would find it not fully enclosed: {len(bad)} edge(s) not "

@@ -188,6 +188,30 @@ def eplus_degenerate_many(surfaces: Sequence[np.ndarray]) -> list[bool]:
     return [len(q) - len(c) < 3 for q, c in zip(keeps, _collinear_many(keeps))]
 
 
+def eplus_vertices_and_degenerate(surfaces: Sequence[np.ndarray]) -> tuple[list[np.ndarray], list[bool]]:
+    """:func:`eplus_vertices_many` and :func:`eplus_degenerate_many` of the same surfaces,
+    their shared work done once.
+
+    The coincident test with a floor of 1 (degenerate) and of 3 (vertices) keeps the same
+    vertices whenever the first keeps at least 3 (the trailing drop stops where it stops
+    for both, or at 3 for the floor of 3), so the collinear test runs once on those.
+    """
+    keeps = [_drop_coincident(s, 1) for s in surfaces]
+    cols = _collinear_many(keeps)
+    degenerate = [len(q) - len(c) < 3 for q, c in zip(keeps, cols)]
+    short = [i for i, q in enumerate(keeps) if len(q) < 3]
+    if short:
+        redo = eplus_vertices_many([surfaces[i] for i in short])
+    faces: list[np.ndarray] = []
+    for q, drop in zip(keeps, cols):
+        if drop and len(q) - len(drop) >= 3:
+            q = np.delete(q, drop, axis=0)
+        faces.append(q)
+    for i, q in zip(short, redo if short else ()):
+        faces[i] = q
+    return faces, degenerate
+
+
 def eplus_vertices(points: np.ndarray) -> np.ndarray:
     """A surface's vertices as EnergyPlus keeps them, (k, 3) -> (k', 3).
 
@@ -427,7 +451,12 @@ def enclosure_defects(surfaces: Sequence[np.ndarray], tol: float = POINT_TOL) ->
 
 def _enclosure_defects(arrs: list[np.ndarray], tol: float) -> list[BadEdge]:
     """:func:`enclosure_defects` of float64 ``(k_i, 3)`` arrays, computed."""
-    faces = eplus_vertices_many(arrs)
+    return face_defects(eplus_vertices_many(arrs), tol)
+
+
+def face_defects(faces: Sequence[np.ndarray], tol: float = POINT_TOL) -> list[BadEdge]:
+    """:func:`enclosure_defects` of surfaces given as EnergyPlus keeps them
+    (:func:`eplus_vertices_many` of the zone's surfaces, float64 ``(k_i, 3)``)."""
     first = _edges_not_two(faces, tol)
     if not first:
         return []
