@@ -285,12 +285,61 @@ def load_idd(path: str) -> Idd:
 _IDF_SEP = re.compile(r"([,;])")
 
 
+#: Line breaks of ``str.splitlines`` other than ``\n``: a text with none of them is read by
+#: :func:`_parse_idf_plain`.
+_ODD_BREAK = re.compile("[\r\x0b\x0c\x1c\x1d\x1e\x85\u2028\u2029]")
+_COMMENT = re.compile(r"!.*")
+_FIRST_PIECE = re.compile(r"[^\s,]")
+
+
 def parse_idf(text: str) -> list[IdfObject]:
     """The objects of an IDF text, in order (comments removed, values stripped).
 
     A value may span lines (its pieces are joined, then stripped); an object's line is that
     of its first non-blank piece (or of its ``;``).
     """
+    if _ODD_BREAK.search(text) is None:
+        out = _parse_idf_plain(text)
+        if out is not None:
+            return out
+    return _parse_idf_lines(text)
+
+
+def _parse_idf_plain(text: str) -> list[IdfObject] | None:
+    """:func:`parse_idf` of a text whose lines end in ``\n`` only, every value on one line and
+    nothing but blanks and comments after the last ``;`` (what the writer writes), on the
+    whole text at once; None for any other text.
+
+    With comments removed (line breaks kept), each object is the text before a ``;`` and its
+    values its ``,``-separated parts, stripped: a part's non-blank characters lie on one line,
+    so the line reader's joined pieces are that line's part. Its line is that of the first
+    character neither blank nor ``,`` (the first non-blank piece), or of the ``;``.
+    """
+    body = _COMMENT.sub("", text)
+    chunks = body.split(";")
+    if chunks.pop().strip():
+        return None  # an object without its ";"
+    out: list[IdfObject] = []
+    pos = counted = 0
+    line = 1
+    find, count = _FIRST_PIECE.search, body.count
+    for chunk in chunks:
+        values = [v.strip() for v in chunk.split(",")]
+        if "\n" in chunk:
+            for v in values:
+                if "\n" in v:
+                    return None  # a value over several lines
+        m = find(chunk)
+        at = pos + (m.start() if m is not None else len(chunk))
+        line += count("\n", counted, at)
+        counted = at
+        out.append(IdfObject(values[0], tuple(values[1:]), line))
+        pos += len(chunk) + 1
+    return out
+
+
+def _parse_idf_lines(text: str) -> list[IdfObject]:
+    """:func:`parse_idf` line by line (any text)."""
     out: list[IdfObject] = []
     values: list[str] = []
     start = None
