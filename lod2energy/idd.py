@@ -246,6 +246,7 @@ class _Classes(Mapping):
     def __init__(self, raw: dict[str, dict]):
         self._raw = raw
         self._built: dict[str, ClassDef] = {}
+        self._flags: list[tuple[str, bool, bool]] | None = None
 
     def __getitem__(self, key: str) -> ClassDef:
         c = self._built.get(key)
@@ -262,11 +263,21 @@ class _Classes(Mapping):
     def __contains__(self, key) -> bool:
         return key in self._raw
 
+    def get(self, key, default=None):
+        """``Mapping.get`` without its exception round trip (the self-check asks once per object)."""
+        c = self._built.get(key)
+        if c is not None:
+            return c
+        return self[key] if key in self._raw else default
+
     def flags(self) -> list[tuple[str, bool, bool]]:
         """``(name, unique, required)`` of the ``\\unique-object`` / ``\\required-object``
-        classes, in IDD order, without building any class."""
-        return [(c["name"], c.get("unique", False), c.get("required", False)) for c in self._raw.values()
-                if c.get("unique") or c.get("required")]
+        classes, in IDD order, without building any class (found once: the classes as read
+        do not change)."""
+        if self._flags is None:
+            self._flags = [(c["name"], c.get("unique", False), c.get("required", False)) for c in self._raw.values()
+                           if c.get("unique") or c.get("required")]
+        return list(self._flags)
 
 
 def _class_flags(idd: Idd) -> list[tuple[str, bool, bool]]:
