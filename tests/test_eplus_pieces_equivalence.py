@@ -93,10 +93,9 @@ def test_vertices_and_degenerate_together_as_apart():
     assert len(enclosure.face_defects(faces[:30])) == len(enclosure._enclosure_defects(zone, enclosure.POINT_TOL))
 
 
-def test_surely_sized_and_planar_only_when_the_tests_pass():
-    from lod2energy.exporters.energyplus.check import _surely_sized_and_planar
+def test_surely_planar_only_when_the_tests_pass():
     from lod2energy.exporters.energyplus.conform import PIECE_PLANAR
-    from lod2energy.exporters.energyplus.pieces import _planar_dev_of
+    from lod2energy.exporters.energyplus.pieces import _planar_dev_of, _surely_planar
     from lod2energy.exporters.polygons import newell_normal
     from lod2energy.exporters.zones import MIN_PIECE_AREA
 
@@ -113,7 +112,8 @@ def test_surely_sized_and_planar_only_when_the_tests_pass():
         q[:, 2] = np.where(np.arange(k) % 2, bend, -bend) * (k > 3)
         rot, _ = np.linalg.qr(rng.normal(size=(3, 3)))
         rings.append(np.round(q @ rot + rng.uniform(-200, 200, 3), 4))
-    sure = _surely_sized_and_planar(rings)
+    # as the self-check tests a surface: area and twice the piece tolerance
+    sure = _surely_planar(rings, 2 * PIECE_PLANAR, MIN_PIECE_AREA)
     n_pass = 0
     for q, s in zip(rings, sure):
         nn = newell_normal(q)
@@ -121,3 +121,94 @@ def test_surely_sized_and_planar_only_when_the_tests_pass():
         n_pass += ok
         assert ok or not s
     assert sum(sure) > 0.9 * n_pass > 300  # it decides almost every passing ring
+    # as keep_corners tests a piece: the tolerance alone (tiny and zero-area rings too)
+    rings += [np.zeros((4, 3)), np.array([[0, 0, 0], [1, 0, 0], [2, 0, 0], [3, 0, 1e-9]]),
+              np.array([[0, 0, 0], [1e-9, 0, 0], [1e-9, 1e-9, 0.02], [0, 1e-9, 0]])]
+    sure = _surely_planar(rings, PIECE_PLANAR)
+    n_pass = 0
+    for q, s in zip(rings, sure):
+        ok = _planar_dev_of(q, newell_normal(q)) <= PIECE_PLANAR
+        n_pass += ok
+        assert ok or not s
+    assert sum(sure) > 0.9 * n_pass > 300
+
+
+def test_degenerate_given_collinear_same_verdicts():
+    from lod2energy.exporters.energyplus.conform import _degenerate_given
+
+    rings = _rings(np.random.default_rng(17))
+    rings += [np.array([[0, 0, 0], [0.004, 0, 0], [0.008, 0.001, 0]], float),
+              np.array([[0, 0, 0], [1, 0, 0], [0.5, 0.001, 0], [0.002, 0, 0]], float)]
+    got = _degenerate_given(rings, enclosure._collinear_many(rings))
+    assert got == enclosure.eplus_degenerate_many(rings) and any(got)
+
+
+def _ref_find_party_faces(zones, plane_tol=0.05, min_area=0.01, angle_cos=0.985):
+    """surfaces.find_party_faces before its face pairs were filtered all at once."""
+    import shapely
+
+    from lod2energy.exporters.energyplus.pieces import _face_frame
+    from lod2energy.exporters.energyplus.surfaces import _shapely_poly
+    from lod2energy.exporters.polygons import plane_basis
+
+    boxes = np.array([[*z.vertices.min(axis=0), *z.vertices.max(axis=0)] if len(z.vertices)
+                      else [np.inf] * 3 + [-np.inf] * 3 for z in zones])
+    frames = {}
+
+    def zone_frames(zi):
+        if zi not in frames:
+            fr = []
+            for f in zones[zi].faces:
+                pts, ends, n, c = _face_frame(zones[zi], f)
+                fr.append((pts, ends, n, c, float(n @ c), pts.min(axis=0), pts.max(axis=0)))
+            frames[zi] = fr
+        return frames[zi]
+
+    out = {}
+    lo, hi = boxes[:, :3], boxes[:, 3:]
+    for a in range(len(zones)):
+        cand = np.nonzero(np.all(lo[a] <= hi + plane_tol, axis=1) & np.all(hi[a] >= lo - plane_tol, axis=1))[0]
+        for b in cand[cand > a]:
+            if zones[a].building_id == zones[b].building_id and zones[a].object_id == zones[b].object_id:
+                continue
+            for ia, (pa, ea, na, ca, da, mina, maxa) in enumerate(zone_frames(a)):
+                for ib, (pb, eb, nb, cb, db, minb, maxb) in enumerate(zone_frames(int(b))):
+                    if float(na @ nb) > -angle_cos:
+                        continue
+                    if np.any(mina > maxb + plane_tol) or np.any(maxa < minb - plane_tol):
+                        continue
+                    if abs(da + db) > plane_tol or np.max(np.abs((pb - ca) @ na)) > plane_tol:
+                        continue
+                    u, v = plane_basis(na)
+                    inter = shapely.intersection(_shapely_poly(pa, ea, ca, u, v), _shapely_poly(pb, eb, ca, u, v))
+                    if inter.area < min_area:
+                        continue
+                    out.setdefault((a, ia), []).append((int(b), inter))
+                    ub, vb = plane_basis(nb)
+                    out.setdefault((int(b), ib), []).append(
+                        (a, shapely.intersection(_shapely_poly(pb, eb, cb, ub, vb), _shapely_poly(pa, ea, cb, ub, vb))))
+    return out
+
+
+def test_party_faces_same_as_pair_by_pair():
+    from factories import box
+
+    from export_helpers import energy_ready
+    from lod2energy.exporters.energyplus.surfaces import find_party_faces
+    from lod2energy.exporters.zones import local_origin, zone_shells
+
+    rng = np.random.default_rng(19)
+    bs = []
+    x = 0.0
+    for i in range(10):  # a terrace: touching or a few mm apart, offset, different heights
+        dx = float(rng.uniform(4, 9))
+        b = box(dx=dx, dz=float(rng.uniform(3, 12)), id=f"b{i}",
+                origin=(x + [0.0, 0.004, -0.003, 0.0, 0.2][i % 5], float(rng.uniform(-2, 2)), 0.0))
+        bs.append(energy_ready(b))
+        x += dx
+    origin = local_origin(bs)
+    zones = [z for b in bs for z in zone_shells(b, origin)]
+    got, exp = find_party_faces(zones), _ref_find_party_faces(zones)
+    assert got.keys() == exp.keys() and len(got) > 4
+    for k in exp:
+        assert [(b, g.wkb) for b, g in got[k]] == [(b, g.wkb) for b, g in exp[k]]

@@ -11,7 +11,7 @@ from ..shellcheck import check_closed_outward
 from ..zones import MIN_PIECE_AREA
 from .conform import PIECE_PLANAR
 from .enclosure import eplus_vertices_and_degenerate, face_defects
-from .pieces import _planar_dev_of
+from .pieces import _planar_dev_of, _surely_planar
 from . import run as eplus_run
 
 
@@ -86,51 +86,6 @@ def read_checked_idf(path: str | Path) -> tuple[dict[str, list[_Record]], list[s
     return out, problems
 
 
-#: Machine epsilon of float64.
-_EPS = float(np.finfo(np.float64).eps)
-
-
-def _surely_sized_and_planar(rings: list[np.ndarray]) -> list[bool]:
-    """Per ring (``(k, 3)`` float64, k >= 3, m): does it certainly pass the self-check's area
-    test (half its :func:`polygons.newell_normal` longer than ``MIN_PIECE_AREA``) and
-    planarity test (:func:`pieces._planar_dev_of` at most ``2 x PIECE_PLANAR``)? False
-    when it cannot tell; the caller then runs the tests themselves.
-
-    The same formulas on all rings at once; sums run in another order than one ring at a
-    time (``np.add.reduceat`` against numpy's pairwise sums), so each result carries a
-    bound of that difference: a sum of ``k`` terms is off by at most ``k eps sum|t|`` either
-    way; the unit normal by that over the normal's length; the centroid by ``k eps max|p|``.
-    A ring is passed only when its values clear both thresholds by more than the bounds
-    (several times over).
-    """
-    if not rings:
-        return []
-    lens = np.fromiter((len(r) for r in rings), dtype=np.intp, count=len(rings))
-    P = np.concatenate(rings)
-    starts = np.concatenate(([0], np.cumsum(lens)[:-1]))
-    ring_of = np.repeat(np.arange(len(rings)), lens)
-    nxt = np.arange(1, len(P) + 1)
-    nxt[starts + lens - 1] = starts
-    Q = P[nxt]
-    # Newell's textbook sums (polygons.newell_normal): component c sums
-    # (p - q)[A[c]] * (p + q)[B[c]]
-    t = (P - Q)[:, [1, 2, 0]] * (P + Q)[:, [2, 0, 1]]
-    nn = np.add.reduceat(t, starts, axis=0)
-    err_nn = 4.0 * lens * _EPS * np.add.reduceat(np.abs(t), starts, axis=0).max(axis=1) + 1e-300
-    nlen = np.sqrt(np.sum(nn * nn, axis=1))
-    area = 0.5 * nlen
-    sized = area - (2.0 * err_nn + 8 * _EPS * area) > MIN_PIECE_AREA
-    n = nn / np.where(nlen > 0, nlen, 1.0)[:, None]
-    cen = np.add.reduceat(P, starts, axis=0) / lens[:, None]
-    rel = P - cen[ring_of]
-    dev = np.maximum.reduceat(np.abs(np.sum(rel * n[ring_of], axis=1)), starts)
-    reach = np.maximum.reduceat(np.sqrt(np.sum(rel * rel, axis=1)), starts)
-    scale = np.maximum.reduceat(np.abs(P).max(axis=1), starts)
-    err_dev = (reach * (8.0 * err_nn / np.where(nlen > 0, nlen, 1.0) + 16 * _EPS)
-               + 8.0 * lens * _EPS * scale + 1e-12)
-    return (sized & (dev + err_dev <= 2 * PIECE_PLANAR)).tolist()
-
-
 def _fmt_point(p: np.ndarray) -> str:
     return "(" + ", ".join(f"{x:.3f}" for x in p) + ")"
 
@@ -179,7 +134,8 @@ def self_check(path: str | Path, run: bool = False, weather: str | Path | None =
     readable = [p for p in vertices if p is not None]
     kept, degen_of = eplus_vertices_and_degenerate(readable)
     degenerate = iter(degen_of)
-    sure = iter(_surely_sized_and_planar([p for p, d in zip(readable, degen_of) if len(p) >= 3 and not d]))
+    sure = iter(_surely_planar([p for p, d in zip(readable, degen_of) if len(p) >= 3 and not d],
+                               2 * PIECE_PLANAR, MIN_PIECE_AREA))
     kept_of: dict[int, np.ndarray] = {id(p): q for p, q in zip(readable, kept)}
     for s, pts in zip(surfaces, vertices):
         name, zone, cons = s.get("Name"), s.get("Zone Name"), s.get("Construction Name")
