@@ -212,3 +212,26 @@ def test_party_faces_same_as_pair_by_pair():
     assert got.keys() == exp.keys() and len(got) > 4
     for k in exp:
         assert [(b, g.wkb) for b, g in got[k]] == [(b, g.wkb) for b, g in exp[k]]
+
+
+def test_drop_coincident_all_at_once_as_one_by_one():
+    rng = np.random.default_rng(29)
+    rings = _rings(rng)
+    C = enclosure.COINCIDENT
+    for i in range(600):  # consecutive and closing distances at and around the threshold
+        k = 2 + i % 7
+        q = np.cumsum(rng.normal(0, 1, (k, 3)), axis=0) + rng.uniform(-300, 300, 3)
+        j = i % k
+        step = C * (1 + [0.0, 1e-16, -1e-16, 1e-12, -1e-12, 1e-3][i % 6])
+        direction = rng.normal(size=3)
+        direction /= np.linalg.norm(direction)
+        if i % 2:
+            q[j] = q[j - 1] + step * direction  # around the threshold (the closing pair when j = 0)
+        rings.append(q)
+    rings += [np.zeros((0, 3)), np.zeros((1, 3)), np.array([[0, 0, 0], [np.nan, 0, 0], [1, 1, 0]])]
+    for floor in (1, 3):
+        got = enclosure._drop_coincident_many(rings, floor)
+        exp = [enclosure._drop_coincident(q, floor) for q in rings]
+        for a, b in zip(got, exp):
+            assert a.shape == b.shape and np.array_equal(a, b, equal_nan=True)
+    assert sum(len(a) < len(q) for a, q in zip(got, rings)) > 20  # some vertices were dropped

@@ -14,7 +14,7 @@ from lod2energy.geometry import split_at_points
 from ..shellcheck import check_closed_outward
 from ..weld import weld
 from ..zones import MIN_PIECE_AREA
-from .enclosure import (_collinear_many, _drop_coincident, enclosure_defects, eplus_degenerate_many, _on_line,
+from .enclosure import (_collinear_many, _drop_coincident_many, enclosure_defects, eplus_degenerate_many, _on_line,
                         snap_polygons)
 from .options import WRITE_DECIMALS
 from .pieces import Piece, _planar_dev, _surely_planar
@@ -64,7 +64,7 @@ def _degenerate_given(rings: list[np.ndarray], collinear: list[list[int]]) -> li
     """:func:`enclosure.eplus_degenerate_many` of ``rings`` whose :func:`_collinear_many` is
     ``collinear``: the coincident test keeps every vertex of most rings, and then the
     collinear test it runs is that one (the same rows, the same verdicts)."""
-    keeps = [_drop_coincident(q, 1) for q in rings]
+    keeps = _drop_coincident_many(rings, 1)
     redo = [k for k, (q, kq) in enumerate(zip(rings, keeps)) if len(kq) != len(q)]
     cols = list(collinear)
     for k, c in zip(redo, _collinear_many([keeps[k] for k in redo])):
