@@ -28,13 +28,18 @@ def upper_left_first(points: np.ndarray) -> np.ndarray:
     n = unit(newell_normal(points))
     if n.dtype != np.float64 or n.shape != (3,) or points.ndim != 2:
         return _upper_left_first_ref(points, n)
-    up = np.array([0.0, 0.0, 1.0]) - n[2] * n
-    if _norm(up) < 1e-6:
-        up = np.array([0.0, 1.0, 0.0]) - n[1] * n
-    up = unit(up)
+    # [0, 0, 1] - n[2] * n on floats (the same products and differences); its length once,
+    # for the test and for unit()
+    n0, n1, n2 = n.tolist()
+    up = np.array([0.0 - n2 * n0, 0.0 - n2 * n1, 1.0 - n2 * n2])
+    length = _norm(up)
+    if length < 1e-6:
+        up = np.array([0.0 - n1 * n0, 1.0 - n1 * n1, 0.0 - n1 * n2])
+        length = _norm(up)
+    if length > 0:
+        up = up / length
     # np.cross(up, n) written out on floats in its operation order (same bits)
     u0, u1, u2 = up.tolist()
-    n0, n1, n2 = n.tolist()
     right = np.array([u1 * n2 - u2 * n1, u2 * n0 - u0 * n2, u0 * n1 - u1 * n0])
     h = points @ up
     cand = np.nonzero(h >= h.max() - 1e-3)[0]
