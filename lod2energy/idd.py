@@ -103,6 +103,11 @@ class ClassDef:
         looks fields up tens of thousands of times a file); callers must not modify it."""
         return {f.name.upper(): i for i, f in enumerate(self.fields)}
 
+    @functools.cached_property
+    def plain_tail(self) -> int | None:
+        """:func:`_plain_tail` of the class, found on first use and kept."""
+        return _plain_tail(self)
+
 
 @dataclass(frozen=True)
 class Idd:
@@ -241,6 +246,7 @@ class _Classes(Mapping):
     def __init__(self, raw: dict[str, dict]):
         self._raw = raw
         self._built: dict[str, ClassDef] = {}
+        self._flags: list[tuple[str, bool, bool]] | None = None
 
     def __getitem__(self, key: str) -> ClassDef:
         c = self._built.get(key)
@@ -257,11 +263,21 @@ class _Classes(Mapping):
     def __contains__(self, key) -> bool:
         return key in self._raw
 
+    def get(self, key, default=None):
+        """``Mapping.get`` without its exception round trip (the self-check asks once per object)."""
+        c = self._built.get(key)
+        if c is not None:
+            return c
+        return self[key] if key in self._raw else default
+
     def flags(self) -> list[tuple[str, bool, bool]]:
         """``(name, unique, required)`` of the ``\\unique-object`` / ``\\required-object``
-        classes, in IDD order, without building any class."""
-        return [(c["name"], c.get("unique", False), c.get("required", False)) for c in self._raw.values()
-                if c.get("unique") or c.get("required")]
+        classes, in IDD order, without building any class (found once: the classes as read
+        do not change)."""
+        if self._flags is None:
+            self._flags = [(c["name"], c.get("unique", False), c.get("required", False)) for c in self._raw.values()
+                           if c.get("unique") or c.get("required")]
+        return list(self._flags)
 
 
 def _class_flags(idd: Idd) -> list[tuple[str, bool, bool]]:
@@ -280,12 +296,61 @@ def load_idd(path: str) -> Idd:
 _IDF_SEP = re.compile(r"([,;])")
 
 
+#: Line breaks of ``str.splitlines`` other than ``\n``: a text with none of them is read by
+#: :func:`_parse_idf_plain`.
+_ODD_BREAK = re.compile("[\r\x0b\x0c\x1c\x1d\x1e\x85\u2028\u2029]")
+_COMMENT = re.compile(r"!.*")
+_FIRST_PIECE = re.compile(r"[^\s,]")
+
+
 def parse_idf(text: str) -> list[IdfObject]:
     """The objects of an IDF text, in order (comments removed, values stripped).
 
     A value may span lines (its pieces are joined, then stripped); an object's line is that
     of its first non-blank piece (or of its ``;``).
     """
+    if _ODD_BREAK.search(text) is None:
+        out = _parse_idf_plain(text)
+        if out is not None:
+            return out
+    return _parse_idf_lines(text)
+
+
+def _parse_idf_plain(text: str) -> list[IdfObject] | None:
+    """:func:`parse_idf` of a text whose lines end in ``\n`` only, every value on one line and
+    nothing but blanks and comments after the last ``;`` (what the writer writes), on the
+    whole text at once; None for any other text.
+
+    With comments removed (line breaks kept), each object is the text before a ``;`` and its
+    values its ``,``-separated parts, stripped: a part's non-blank characters lie on one line,
+    so the line reader's joined pieces are that line's part. Its line is that of the first
+    character neither blank nor ``,`` (the first non-blank piece), or of the ``;``.
+    """
+    body = _COMMENT.sub("", text)
+    chunks = body.split(";")
+    if chunks.pop().strip():
+        return None  # an object without its ";"
+    out: list[IdfObject] = []
+    pos = counted = 0
+    line = 1
+    find, count = _FIRST_PIECE.search, body.count
+    for chunk in chunks:
+        values = [v.strip() for v in chunk.split(",")]
+        if "\n" in chunk:
+            for v in values:
+                if "\n" in v:
+                    return None  # a value over several lines
+        m = find(chunk)
+        at = pos + (m.start() if m is not None else len(chunk))
+        line += count("\n", counted, at)
+        counted = at
+        out.append(IdfObject(values[0], tuple(values[1:]), line))
+        pos += len(chunk) + 1
+    return out
+
+
+def _parse_idf_lines(text: str) -> list[IdfObject]:
+    """:func:`parse_idf` line by line (any text)."""
     out: list[IdfObject] = []
     values: list[str] = []
     start = None
@@ -342,6 +407,82 @@ def _field_problem(f: FieldDef, v: str) -> str | None:
     return None
 
 
+def _plain_real(f: FieldDef) -> bool:
+    """Is any finite number a valid value of field ``f`` (a real with no bounds), so that
+    :func:`_field_problem` finds nothing in a value ``float`` reads as finite?"""
+    return (f.numeric and f.type != "integer" and f.minimum is None and f.maximum is None)
+
+
+def _plain_tail(c: ClassDef) -> int | None:
+    """Index of the first field from which every field of an extensible class (its repeated
+    group included) is :func:`_plain_real` (vertex coordinates), or None."""
+    if not c.extensible:
+        return None
+    k = len(c.fields)
+    while k > 0 and _plain_real(c.fields[k - 1]):
+        k -= 1
+    return k if k <= c.first_extensible else None
+
+
+#: :func:`_object_problems` of objects without a coordinate list, by class, IDD version and fields
+#: (an IDF repeats them from file to file: materials, schedules, output requests); a pure
+#: function of its key, so never stale. Emptied when full.
+_OBJECT_MEMO: dict[tuple, tuple[ClassDef, tuple[str, ...]]] = {}
+_OBJECT_MEMO_SIZE = 4096
+
+
+def _object_problems(idd: Idd, c: ClassDef, fields: tuple[str, ...]) -> tuple[str, ...]:
+    """What :func:`check_idf` reports for one object of class ``c`` (each problem without its
+    ``line N:`` prefix, in the order found; all of them)."""
+    tail = c.plain_tail
+    if tail is not None and len(fields) > tail:
+        head, rest = fields[:tail], fields[tail:]
+        try:  # the common case: every value of the coordinate list a finite number
+            clean = all(map(math.isfinite, map(float, rest)))
+        except ValueError:
+            clean = False
+        if clean:
+            return _fields_problems(idd, c, fields, len(head))
+        return _fields_problems(idd, c, fields, len(fields))
+    key = (id(c), idd.version, fields)
+    hit = _OBJECT_MEMO.get(key)
+    if hit is not None and hit[0] is c:  # the entry holds its class: its id is not reused
+        return hit[1]
+    found = _fields_problems(idd, c, fields, len(fields))
+    if len(_OBJECT_MEMO) >= _OBJECT_MEMO_SIZE:
+        _OBJECT_MEMO.clear()
+    _OBJECT_MEMO[key] = (c, found)
+    return found
+
+
+def _fields_problems(idd: Idd, c: ClassDef, fields: tuple[str, ...], n_checked: int) -> tuple[str, ...]:
+    """The problems of one object, its values checked one by one up to ``n_checked`` (those
+    after it known to be fine)."""
+    problems: list[str] = []
+    if not c.extensible and len(fields) > len(c.fields):
+        return (f"{c.name} has {len(fields)} fields, the IDD defines {len(c.fields)}",)
+    if c.extensible and len(fields) > c.first_extensible and (len(fields) - c.first_extensible) % c.extensible:
+        problems.append(f"{c.name} ends inside a group of {c.extensible} extensible fields")
+    for i, f in enumerate(c.fields[:c.first_extensible]):
+        v = fields[i] if i < len(fields) else ""
+        if f.required and not v and f.default is None:
+            problems.append(f"{c.name}: required field {f.name!r} is empty")
+    for i in range(n_checked):
+        v = fields[i]
+        if not v:
+            continue
+        f = c.field(i)
+        why = _field_problem(f, v)
+        if why:
+            problems.append(f"{c.name}, {f.name}: {why}")
+    if c.name == "Version" and fields and idd.version:
+        want = ".".join(idd.version.split(".")[:2])
+        got = ".".join(fields[0].split(".")[:2])
+        if got != want:
+            problems.append(f"Version {fields[0]} but the IDD is {idd.version}")
+    return tuple(problems)
+
+
 def check_idf(objects: list[IdfObject], idd: Idd, max_problems: int = 20) -> list[str]:
     """Problems EnergyPlus's input processor would report for these objects (empty: none).
 
@@ -355,37 +496,21 @@ def check_idf(objects: list[IdfObject], idd: Idd, max_problems: int = 20) -> lis
     """
     problems: list[str] = []
     seen: dict[str, int] = {}
+    classes = idd.classes
     for o in objects:
         if len(problems) >= max_problems:
             break
-        c = idd.classes.get(o.cls.upper())
+        c = classes.get(o.cls.upper())
         if c is None:
             problems.append(f"line {o.line}: unknown object {o.cls!r}")
             continue
         seen[c.name] = seen.get(c.name, 0) + 1
-        if not c.extensible and len(o.fields) > len(c.fields):
-            problems.append(f"line {o.line}: {c.name} has {len(o.fields)} fields, the IDD defines {len(c.fields)}")
-            continue
-        if c.extensible and len(o.fields) > c.first_extensible and (len(o.fields) - c.first_extensible) % c.extensible:
-            problems.append(f"line {o.line}: {c.name} ends inside a group of {c.extensible} extensible fields")
-        for i, f in enumerate(c.fields[:c.first_extensible]):
-            v = o.fields[i] if i < len(o.fields) else ""
-            if f.required and not v and f.default is None:
-                problems.append(f"line {o.line}: {c.name}: required field {f.name!r} is empty")
-        for i, v in enumerate(o.fields):
-            if not v:
-                continue
-            f = c.field(i)
-            why = _field_problem(f, v)
-            if why:
-                problems.append(f"line {o.line}: {c.name}, {f.name}: {why}")
+        found = _object_problems(idd, c, o.fields)
+        if found:
+            for why in found:
+                problems.append(f"line {o.line}: {why}")
                 if len(problems) >= max_problems:
                     break
-        if c.name == "Version" and o.fields and idd.version:
-            want = ".".join(idd.version.split(".")[:2])
-            got = ".".join(o.fields[0].split(".")[:2])
-            if got != want:
-                problems.append(f"line {o.line}: Version {o.fields[0]} but the IDD is {idd.version}")
     for name, unique, required in _class_flags(idd):
         if unique and seen.get(name, 0) > 1:
             problems.append(f"{name} appears {seen[name]} times (a unique object)")

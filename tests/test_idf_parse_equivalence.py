@@ -75,3 +75,32 @@ def test_random_text(seed):
     for _ in range(50):
         text = "".join(rng.choice(alphabet) for _ in range(rng.randint(0, 80)))
         assert parse_idf(text) == _ref_parse_idf(text), repr(text)
+
+
+@pytest.mark.parametrize("seed", range(40))
+def test_random_text_with_newlines_only(seed):
+    # the whole-text reader (lod2energy.idd._parse_idf_plain) takes these unless a value
+    # spans lines or the text ends inside an object
+    from lod2energy.idd import _parse_idf_plain
+
+    rng = random.Random(1000 + seed)
+    alphabet = [",", ";", ";", "!", "\n", "\n", " ", "\t", "a", "B", "1.5", "-", "  x y ", "Wall 1", "\u00a0"]
+    plain = 0
+    for _ in range(80):
+        text = "".join(rng.choice(alphabet) for _ in range(rng.randint(0, 60)))
+        exp = _ref_parse_idf(text)
+        assert parse_idf(text) == exp, repr(text)
+        fast = _parse_idf_plain(text)
+        assert fast is None or fast == exp, repr(text)
+        plain += fast is not None
+    assert plain > 3
+
+
+def test_written_idf_text_read_whole():
+    from lod2energy.idd import _parse_idf_plain
+
+    assert _parse_idf_plain(_WRITTEN) == _ref_parse_idf(_WRITTEN)
+    text = _WRITTEN.replace("Zone Mean Air", "Zone\n  Mean Air")  # a value over two lines
+    assert _parse_idf_plain(text) is None  # falls back to the line reader
+    assert parse_idf(text) == _ref_parse_idf(text)
+    assert _parse_idf_plain(_WRITTEN + "Timestep, 4") is None  # no ";" at the end

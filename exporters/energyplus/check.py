@@ -10,8 +10,8 @@ from ..polygons import newell_normal
 from ..shellcheck import check_closed_outward
 from ..zones import MIN_PIECE_AREA
 from .conform import PIECE_PLANAR
-from .enclosure import enclosure_defects, eplus_degenerate_many
-from .pieces import _planar_dev_of
+from .enclosure import eplus_vertices_and_degenerate, face_defects
+from .pieces import _planar_dev_of, _surely_planar
 from . import run as eplus_run
 
 
@@ -98,7 +98,8 @@ def self_check(path: str | Path, run: bool = False, weather: str | Path | None =
     ranges and choices, as EnergyPlus's input processor checks them); each zone's shell is
     rebuilt from its ``BuildingSurface:Detailed`` vertices and must be closed and outward
     (every edge used once in each direction after T-junction splitting, positive volume) and
-    pass EnergyPlus's own enclosure test (:func:`enclosure.enclosure_defects`);
+    pass EnergyPlus's own enclosure test (:func:`enclosure.enclosure_defects`, on the vertices
+    EnergyPlus keeps of each surface: :func:`enclosure.eplus_vertices_and_degenerate`);
     every surface must reference an existing zone and construction, every window an
     existing wall, and names must be unique. With ``run=True`` EnergyPlus runs too (needs
     ``weather``): zero severe errors and no zone "not fully enclosed".
@@ -129,9 +130,13 @@ def self_check(path: str | Path, run: bool = False, weather: str | Path | None =
         except (KeyError, TypeError, ValueError):
             vertices.append(None)
     # EnergyPlus's degenerate test on every readable surface at once (the same verdicts as one
-    # surface at a time)
+    # surface at a time), with the vertices EnergyPlus keeps of each for its enclosure test
     readable = [p for p in vertices if p is not None]
-    degenerate = iter(eplus_degenerate_many(readable))
+    kept, degen_of = eplus_vertices_and_degenerate(readable)
+    degenerate = iter(degen_of)
+    sure = iter(_surely_planar([p for p, d in zip(readable, degen_of) if len(p) >= 3 and not d],
+                               2 * PIECE_PLANAR, MIN_PIECE_AREA))
+    kept_of: dict[int, np.ndarray] = {id(p): q for p, q in zip(readable, kept)}
     for s, pts in zip(surfaces, vertices):
         name, zone, cons = s.get("Name"), s.get("Zone Name"), s.get("Construction Name")
         names[name.upper()] = names.get(name.upper(), 0) + 1
@@ -145,6 +150,8 @@ def self_check(path: str | Path, run: bool = False, weather: str | Path | None =
         degen = next(degenerate)
         if len(pts) < 3 or degen:
             problems.append(f"surface {name}: degenerate for EnergyPlus ({len(pts)} vertices)")
+        elif next(sure):
+            pass  # certainly larger than MIN_PIECE_AREA and within 2 x PIECE_PLANAR of its plane
         else:
             # polygon_area3d and _planar_dev of the surface from its one Newell normal
             nn = newell_normal(pts)
@@ -167,7 +174,7 @@ def self_check(path: str | Path, run: bool = False, weather: str | Path | None =
             continue
         for p in check_closed_outward(by_zone[z]):
             problems.append(f"zone {z}: {p}")
-        bad = enclosure_defects(by_zone[z])
+        bad = face_defects([kept_of[id(p)] for p in by_zone[z]])
         if bad:
             e = bad[0]
             problems.append(f"zone {z}: EnergyPlus would find it not fully enclosed: {len(bad)} edge(s) not "

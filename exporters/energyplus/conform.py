@@ -14,10 +14,10 @@ from lod2energy.geometry import split_at_points
 from ..shellcheck import check_closed_outward
 from ..weld import weld
 from ..zones import MIN_PIECE_AREA
-from .enclosure import (_collinear_many, enclosure_defects, eplus_degenerate_many, _on_line,
+from .enclosure import (_collinear_many, _drop_coincident_many, enclosure_defects, eplus_degenerate_many, _on_line,
                         snap_polygons)
 from .options import WRITE_DECIMALS
-from .pieces import Piece, _planar_dev
+from .pieces import Piece, _planar_dev, _surely_planar
 
 
 #: A vertex EnergyPlus finds collinear but which lies farther than this (m) from the line
@@ -40,12 +40,15 @@ def keep_corners(pieces: list[Piece], tol: float = CORNER_TOL) -> list[Piece]:
     # as eplus_collinear / eplus_degenerate of each one, bit for bit)
     rings = [np.asarray(p.points, dtype=np.float64) for p in pieces]
     collinear = _collinear_many(rings)
-    degenerate = eplus_degenerate_many(rings)
+    degenerate = _degenerate_given(rings, collinear)
+    # the planarity test of the pieces with more than 3 vertices at once, where certain
+    flat = iter(_surely_planar([q for q in rings if len(q) > 3], PIECE_PLANAR))
     out = []
-    for p, col, deg in zip(pieces, collinear, degenerate):
+    for p, q0, col, deg in zip(pieces, rings, collinear, degenerate):
         q = p.points
+        sure = next(flat) if len(q0) > 3 else True
         lost = [i for i in col if not _on_line(q[i - 1], q[(i + 1) % len(q)], q[i], tol)]
-        if not lost and not deg and (len(q) == 3 or _planar_dev(q) <= PIECE_PLANAR):
+        if not lost and not deg and (len(q) == 3 or sure or _planar_dev(q) <= PIECE_PLANAR):
             out.append(p)
             continue
         c = np.round(q.mean(axis=0), WRITE_DECIMALS)
@@ -55,6 +58,18 @@ def keep_corners(pieces: list[Piece], tol: float = CORNER_TOL) -> list[Piece]:
             if not bad:
                 out.append(replace(p, points=tri))
     return out
+
+
+def _degenerate_given(rings: list[np.ndarray], collinear: list[list[int]]) -> list[bool]:
+    """:func:`enclosure.eplus_degenerate_many` of ``rings`` whose :func:`_collinear_many` is
+    ``collinear``: the coincident test keeps every vertex of most rings, and then the
+    collinear test it runs is that one (the same rows, the same verdicts)."""
+    keeps = _drop_coincident_many(rings, 1)
+    redo = [k for k, (q, kq) in enumerate(zip(rings, keeps)) if len(kq) != len(q)]
+    cols = list(collinear)
+    for k, c in zip(redo, _collinear_many([keeps[k] for k in redo])):
+        cols[k] = c
+    return [len(kq) - len(c) < 3 for kq, c in zip(keeps, cols)]
 
 
 #: A piece whose points lie farther than this (m) from their Newell plane is written as

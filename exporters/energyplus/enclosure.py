@@ -26,6 +26,7 @@ The steps follow EnergyPlus 9-25:
 from __future__ import annotations
 
 import math
+import threading
 from dataclasses import dataclass
 from typing import Sequence
 
@@ -174,6 +175,35 @@ def _drop_coincident(points: np.ndarray, floor: int) -> np.ndarray:
     return keep[:n]
 
 
+def _drop_coincident_many(surfaces: Sequence[np.ndarray], floor: int) -> list[np.ndarray]:
+    """:func:`_drop_coincident` of each surface (the same values).
+
+    The common case for all surfaces at once: no two consecutive vertices closer than
+    :data:`COINCIDENT` (the same row sums as one surface at a time) and the last vertex
+    clearly farther than that from the first (with a margin: the surface alone measures that
+    distance with a dot product, whose rounding may differ); such a surface keeps every
+    vertex. The others go through :func:`_drop_coincident`.
+    """
+    arrs = [np.asarray(s, dtype=np.float64).reshape(-1, 3) for s in surfaces]
+    out: list[np.ndarray | None] = [None] * len(arrs)
+    idx = [i for i, a in enumerate(arrs) if len(a) > max(floor, 1)]
+    if idx:
+        lens = np.array([len(arrs[i]) for i in idx])
+        P = np.concatenate([arrs[i] for i in idx])
+        starts = np.concatenate(([0], np.cumsum(lens)[:-1]))
+        d = P[1:] - P[:-1]
+        ok = np.empty(len(P), dtype=bool)
+        ok[:-1] = np.sqrt(np.add.reduce(d * d, axis=1)) >= COINCIDENT
+        ok[starts[1:] - 1] = True  # the pair across two surfaces
+        ok[-1] = True
+        e = P[starts] - P[starts + lens - 1]
+        closed = np.sqrt(np.add.reduce(e * e, axis=1)) > COINCIDENT * (1 + 1e-9)
+        for i, sure in zip(idx, (np.logical_and.reduceat(ok, starts) & closed).tolist()):
+            if sure:
+                out[i] = arrs[i].copy()
+    return [q if q is not None else _drop_coincident(a, floor) for q, a in zip(out, arrs)]
+
+
 def eplus_degenerate(points: np.ndarray) -> bool:
     """Would EnergyPlus call the surface degenerate (fewer than 3 sides once coincident and
     collinear vertices are removed: a severe error)?"""
@@ -183,8 +213,32 @@ def eplus_degenerate(points: np.ndarray) -> bool:
 
 def eplus_degenerate_many(surfaces: Sequence[np.ndarray]) -> list[bool]:
     """:func:`eplus_degenerate` of each surface (the collinear test batched over all of them)."""
-    keeps = [_drop_coincident(s, 1) for s in surfaces]
+    keeps = _drop_coincident_many(surfaces, 1)
     return [len(q) - len(c) < 3 for q, c in zip(keeps, _collinear_many(keeps))]
+
+
+def eplus_vertices_and_degenerate(surfaces: Sequence[np.ndarray]) -> tuple[list[np.ndarray], list[bool]]:
+    """:func:`eplus_vertices_many` and :func:`eplus_degenerate_many` of the same surfaces,
+    their shared work done once.
+
+    The coincident test with a floor of 1 (degenerate) and of 3 (vertices) keeps the same
+    vertices whenever the first keeps at least 3 (the trailing drop stops where it stops
+    for both, or at 3 for the floor of 3), so the collinear test runs once on those.
+    """
+    keeps = _drop_coincident_many(surfaces, 1)
+    cols = _collinear_many(keeps)
+    degenerate = [len(q) - len(c) < 3 for q, c in zip(keeps, cols)]
+    short = [i for i, q in enumerate(keeps) if len(q) < 3]
+    if short:
+        redo = eplus_vertices_many([surfaces[i] for i in short])
+    faces: list[np.ndarray] = []
+    for q, drop in zip(keeps, cols):
+        if drop and len(q) - len(drop) >= 3:
+            q = np.delete(q, drop, axis=0)
+        faces.append(q)
+    for i, q in zip(short, redo if short else ()):
+        faces[i] = q
+    return faces, degenerate
 
 
 def eplus_vertices(points: np.ndarray) -> np.ndarray:
@@ -199,7 +253,7 @@ def eplus_vertices(points: np.ndarray) -> np.ndarray:
 
 def eplus_vertices_many(surfaces: Sequence[np.ndarray]) -> list[np.ndarray]:
     """:func:`eplus_vertices` of each surface (the collinear test batched over all of them)."""
-    qs = [_drop_coincident(s, 3) for s in surfaces]
+    qs = _drop_coincident_many(surfaces, 3)
     out = []
     for q, drop in zip(qs, _collinear_many(qs)):
         if drop and len(q) - len(drop) >= 3:
@@ -388,6 +442,14 @@ def _insert_collinear(face: np.ndarray, uniq: np.ndarray, tol: float) -> np.ndar
     return pts
 
 
+#: Verdicts of :func:`enclosure_defects` by the exact content of its input (the writer tests
+#: a zone's pieces in :func:`conform.eplus_enclose`, then the same values again in
+#: :func:`model.enclosable`); a pure function of the vertex bits, so never stale.
+_DEFECTS_MEMO: dict[tuple, list[BadEdge]] = {}
+_DEFECTS_MEMO_SIZE = 64
+_DEFECTS_LOCK = threading.Lock()
+
+
 def enclosure_defects(surfaces: Sequence[np.ndarray], tol: float = POINT_TOL) -> list[BadEdge]:
     """Edges of a zone EnergyPlus would find not shared by exactly two surfaces.
 
@@ -404,7 +466,26 @@ def enclosure_defects(surfaces: Sequence[np.ndarray], tol: float = POINT_TOL) ->
         both counts (what EnergyPlus lists in its warning) or, when none fails both, those
         that fail the second count.
     """
-    faces = eplus_vertices_many([np.asarray(s, dtype=np.float64) for s in surfaces])
+    arrs = [np.asarray(s, dtype=np.float64) for s in surfaces]
+    key = (float(tol),) + tuple((a.shape, a.tobytes()) for a in arrs)
+    found = _DEFECTS_MEMO.get(key)
+    if found is None:
+        found = _enclosure_defects(arrs, tol)
+        with _DEFECTS_LOCK:
+            if len(_DEFECTS_MEMO) >= _DEFECTS_MEMO_SIZE:
+                _DEFECTS_MEMO.pop(next(iter(_DEFECTS_MEMO)), None)  # the oldest
+            _DEFECTS_MEMO[key] = found
+    return list(found)
+
+
+def _enclosure_defects(arrs: list[np.ndarray], tol: float) -> list[BadEdge]:
+    """:func:`enclosure_defects` of float64 ``(k_i, 3)`` arrays, computed."""
+    return face_defects(eplus_vertices_many(arrs), tol)
+
+
+def face_defects(faces: Sequence[np.ndarray], tol: float = POINT_TOL) -> list[BadEdge]:
+    """:func:`enclosure_defects` of surfaces given as EnergyPlus keeps them
+    (:func:`eplus_vertices_many` of the zone's surfaces, float64 ``(k_i, 3)``)."""
     first = _edges_not_two(faces, tol)
     if not first:
         return []

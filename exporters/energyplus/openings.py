@@ -23,11 +23,12 @@ def window_for(piece: np.ndarray, wwr: float) -> np.ndarray | None:
 
     if wwr <= 0:
         return None
-    area = polygon_area3d(piece)
     if len(piece) == 3:
         c = piece.mean(axis=0)
         return c + math.sqrt(wwr) * (piece - c)
-    n = unit(newell_normal(piece))
+    nn = newell_normal(piece)
+    area = 0.5 * float(np.linalg.norm(nn))  # polygon_area3d(piece), from the one normal
+    n = unit(nn)
     u, v = plane_basis(n)
     c0 = piece.mean(axis=0)
     xy = np.column_stack([(piece - c0) @ u, (piece - c0) @ v])

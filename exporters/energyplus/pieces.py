@@ -169,6 +169,51 @@ def _planar_dev_of(q: np.ndarray, normal: np.ndarray) -> float:
     return float(np.max(np.abs((q - q.mean(axis=0)) @ n))) if np.any(n) else 0.0
 
 
+#: Machine epsilon of float64.
+_EPS = float(np.finfo(np.float64).eps)
+
+
+def _surely_planar(rings: Sequence[np.ndarray], max_dev: float, min_area: float = -np.inf) -> list[bool]:
+    """Per ring (``(k, 3)`` float64, k >= 3, m): is it certainly within ``max_dev`` (m) of its
+    plane (:func:`_planar_dev` at most ``max_dev``) and larger than ``min_area`` (m2, half
+    the length of :func:`polygons.newell_normal`)? False when it cannot tell: the caller
+    then runs the tests themselves.
+
+    The same formulas on all rings at once; sums run in another order than one ring at a
+    time (``np.add.reduceat`` against numpy's pairwise sums), so each result carries a
+    bound of that difference: a sum of ``k`` terms is off by at most ``k eps sum|t|`` either
+    way; the unit normal by that over the normal's length; the centroid by ``k eps max|p|``.
+    A ring is passed only when its normal is many times longer than its error and its
+    values clear the thresholds by more than the bounds (several times over).
+    """
+    if not len(rings):
+        return []
+    lens = np.fromiter((len(r) for r in rings), dtype=np.intp, count=len(rings))
+    P = np.concatenate(rings)
+    starts = np.concatenate(([0], np.cumsum(lens)[:-1]))
+    ring_of = np.repeat(np.arange(len(rings)), lens)
+    nxt = np.arange(1, len(P) + 1)
+    nxt[starts + lens - 1] = starts
+    Q = P[nxt]
+    # Newell's textbook sums (polygons.newell_normal): component c sums
+    # (p - q)[A[c]] * (p + q)[B[c]]
+    t = (P - Q)[:, [1, 2, 0]] * (P + Q)[:, [2, 0, 1]]
+    nn = np.add.reduceat(t, starts, axis=0)
+    err_nn = 4.0 * lens * _EPS * np.add.reduceat(np.abs(t), starts, axis=0).max(axis=1) + 1e-300
+    nlen = np.sqrt(np.sum(nn * nn, axis=1))
+    area = 0.5 * nlen
+    ok = (nlen > 16.0 * err_nn) & (area - (2.0 * err_nn + 8 * _EPS * area) > min_area)
+    safe = np.where(ok, nlen, 1.0)
+    n = nn / safe[:, None]
+    cen = np.add.reduceat(P, starts, axis=0) / lens[:, None]
+    rel = P - cen[ring_of]
+    dev = np.maximum.reduceat(np.abs(np.sum(rel * n[ring_of], axis=1)), starts)
+    reach = np.maximum.reduceat(np.sqrt(np.sum(rel * rel, axis=1)), starts)
+    scale = np.maximum.reduceat(np.abs(P).max(axis=1), starts)
+    err_dev = reach * (8.0 * err_nn / safe + 16 * _EPS) + 8.0 * lens * _EPS * scale + 1e-12
+    return (ok & (dev + err_dev <= max_dev)).tolist()
+
+
 def _pieces_volume(pieces: Sequence[Piece]) -> float:
     """Enclosed volume (m3) of a zone's convex pieces (fan triangulation, divergence theorem)."""
     vol = 0.0

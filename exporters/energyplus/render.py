@@ -28,13 +28,18 @@ def upper_left_first(points: np.ndarray) -> np.ndarray:
     n = unit(newell_normal(points))
     if n.dtype != np.float64 or n.shape != (3,) or points.ndim != 2:
         return _upper_left_first_ref(points, n)
-    up = np.array([0.0, 0.0, 1.0]) - n[2] * n
-    if _norm(up) < 1e-6:
-        up = np.array([0.0, 1.0, 0.0]) - n[1] * n
-    up = unit(up)
+    # [0, 0, 1] - n[2] * n on floats (the same products and differences); its length once,
+    # for the test and for unit()
+    n0, n1, n2 = n.tolist()
+    up = np.array([0.0 - n2 * n0, 0.0 - n2 * n1, 1.0 - n2 * n2])
+    length = _norm(up)
+    if length < 1e-6:
+        up = np.array([0.0 - n1 * n0, 1.0 - n1 * n1, 0.0 - n1 * n2])
+        length = _norm(up)
+    if length > 0:
+        up = up / length
     # np.cross(up, n) written out on floats in its operation order (same bits)
     u0, u1, u2 = up.tolist()
-    n0, n1, n2 = n.tolist()
     right = np.array([u1 * n2 - u2 * n1, u2 * n0 - u0 * n2, u0 * n1 - u1 * n0])
     h = points @ up
     cand = np.nonzero(h >= h.max() - 1e-3)[0]
@@ -159,11 +164,12 @@ def render_idf(zones: Sequence[ZoneShell], pieces: Sequence[list[Piece]], delta:
         counters: dict[str, int] = {}
         # windows go on walls of at least min_window_wall_area; their ratio is raised so the
         # zone's window area stays wwr x its outdoor wall area (few windows = fast runs)
-        walls = [polygon_area3d(p.points) for p in zp if p.kind == "wall" and p.boundary == "Outdoors"]
+        wall_of = [polygon_area3d(p.points) if p.kind == "wall" and p.boundary == "Outdoors" else None for p in zp]
+        walls = [a for a in wall_of if a is not None]
         eligible = sum(a for a in walls if a >= options.min_window_wall_area)
         ratio = min(z.wwr * sum(walls) / eligible, 0.85) if eligible > 0 and not zop else 0.0
         hosts: list[tuple[Piece, str, str]] = []  # outdoor wall pieces: piece, surface, construction
-        for p in zp:
+        for p, a in zip(zp, wall_of):
             stype = _KIND_TYPE[p.kind]
             if p.boundary == "Surface":
                 counters[stype] = counters.get(stype, 0) + 1
@@ -190,19 +196,18 @@ def render_idf(zones: Sequence[ZoneShell], pieces: Sequence[list[Piece]], delta:
                              "boundary": p.boundary, "boundary_object": "", "sun": "SunExposed" if outdoor else "NoSun",
                              "wind": "WindExposed" if outdoor else "NoWind",
                              "vertices": _vertex_lines(pts)})
-            if p.kind == "wall" and outdoor:
-                a = polygon_area3d(p.points)
+            if p.kind == "wall" and outdoor:  # a: its area, found above
                 wall_area += a
                 hosts.append((p, sname, cname))
                 if ratio > 0 and a >= options.min_window_wall_area:
                     w = window_for(p.points - delta, ratio)
-                    if w is not None and polygon_area3d(w) > 0.01:
+                    if w is not None and (wa := polygon_area3d(w)) > 0.01:
                         wc = f"Window_U{z.u_window:.3f}_G{options.shgc:.2f}".replace(".", "p")
                         win_constructions.setdefault(wc, {"name": wc, "u_value": _fmt(min(z.u_window, 7.0), 4),
                                                           "shgc": _fmt(options.shgc, 3), "vt": _fmt(options.shgc, 3)})
                         win_ctx.append({"name": reg.name(f"{sname}_Win", 99), "construction": wc, "base": sname,
                                         "vertices": _vertex_lines(upper_left_first(w))})
-                        win_area += polygon_area3d(w)
+                        win_area += wa
         for op in zop:  # real windows and doors, each on the outdoor piece of its wall it overlaps most
             best = None
             for p, sname, cname in hosts:

@@ -63,7 +63,10 @@ def find_party_faces(zones: Sequence[ZoneShell], plane_tol: float = 0.05, min_ar
             for f in zones[zi].faces:
                 pts, ends, n, c = _face_frame(zones[zi], f)
                 fr.append((pts, ends, n, c, float(n @ c), pts.min(axis=0), pts.max(axis=0)))
-            frames[zi] = fr
+            # the faces' normals and boxes stacked, for the pair filter below
+            stacked = (np.array([x[2] for x in fr]).reshape(-1, 3), np.array([x[5] for x in fr]).reshape(-1, 3),
+                       np.array([x[6] for x in fr]).reshape(-1, 3))
+            frames[zi] = (fr, stacked)
         return frames[zi]
 
     out: dict[tuple[int, int], list] = {}
@@ -73,26 +76,34 @@ def find_party_faces(zones: Sequence[ZoneShell], plane_tol: float = 0.05, min_ar
         for b in cand[cand > a]:
             if zones[a].building_id == zones[b].building_id and zones[a].object_id == zones[b].object_id:
                 continue
-            fa_list, fb_list = zone_frames(a), zone_frames(int(b))
-            for ia, (pa, ea, na, ca, da, mina, maxa) in enumerate(fa_list):
-                for ib, (pb, eb, nb, cb, db, minb, maxb) in enumerate(fb_list):
-                    if float(na @ nb) > -angle_cos:
-                        continue
-                    if np.any(mina > maxb + plane_tol) or np.any(maxa < minb - plane_tol):
-                        continue
-                    if abs(da + db) > plane_tol or np.max(np.abs((pb - ca) @ na)) > plane_tol:
-                        continue
-                    u, v = plane_basis(na)
-                    sa = _shapely_poly(pa, ea, ca, u, v)
-                    sb = _shapely_poly(pb, eb, ca, u, v)
-                    inter = shapely.intersection(sa, sb)
-                    if inter.area < min_area:
-                        continue
-                    out.setdefault((a, ia), []).append((int(b), inter))
-                    ub, vb = plane_basis(nb)
-                    sa2 = _shapely_poly(pa, ea, cb, ub, vb)
-                    sb2 = _shapely_poly(pb, eb, cb, ub, vb)
-                    out.setdefault((int(b), ib), []).append((a, shapely.intersection(sb2, sa2)))
+            (fa_list, (NA, LA, HA)), (fb_list, (NB, LB, HB)) = zone_frames(a), zone_frames(int(b))
+            # the face pairs that can pass the tests below, all at once: the normals' dot
+            # products with a margin for their summation order (the test itself follows),
+            # the boxes with the same comparisons as below
+            near = ~(NA @ NB.T > -angle_cos + 1e-9) \
+                & ~np.any(LA[:, None, :] > HB[None, :, :] + plane_tol, axis=2) \
+                & ~np.any(HA[:, None, :] < LB[None, :, :] - plane_tol, axis=2)
+            for ia, ib in zip(*np.nonzero(near)):  # row-major: the order of the loops over ia, ib
+                pa, ea, na, ca, da, mina, maxa = fa_list[ia]
+                pb, eb, nb, cb, db, minb, maxb = fb_list[ib]
+                ia, ib = int(ia), int(ib)
+                if float(na @ nb) > -angle_cos:
+                    continue
+                if np.any(mina > maxb + plane_tol) or np.any(maxa < minb - plane_tol):
+                    continue
+                if abs(da + db) > plane_tol or np.max(np.abs((pb - ca) @ na)) > plane_tol:
+                    continue
+                u, v = plane_basis(na)
+                sa = _shapely_poly(pa, ea, ca, u, v)
+                sb = _shapely_poly(pb, eb, ca, u, v)
+                inter = shapely.intersection(sa, sb)
+                if inter.area < min_area:
+                    continue
+                out.setdefault((a, ia), []).append((int(b), inter))
+                ub, vb = plane_basis(nb)
+                sa2 = _shapely_poly(pa, ea, cb, ub, vb)
+                sb2 = _shapely_poly(pb, eb, cb, ub, vb)
+                out.setdefault((int(b), ib), []).append((a, shapely.intersection(sb2, sa2)))
     return out
 
 
@@ -202,8 +213,13 @@ def zone_pieces(zone: ZoneShell, zi: int, party: dict, split: bool = True) -> li
                 pieces.append(Piece(p, f.kind, boundary, f.u_value, f.index))
     if split and any(party.get((zi, fi)) for fi in range(len(zone.faces))):
         pieces = conform(pieces)
-    # after the enclosure candidates too: merging vertices can bend a piece out of plane
-    return _as_written(keep_corners(eplus_enclose(keep_corners(_as_written(pieces)))))
+    # after the enclosure candidates too: merging vertices can bend a piece out of plane;
+    # keep_corners of its own output is that output (a piece it keeps passes its test again, a
+    # fan triangle it wrote is a non-degenerate triangle, which it keeps), so pieces that
+    # passed the enclosure test as they were are not tested a second time
+    kept = keep_corners(_as_written(pieces))
+    enclosed = eplus_enclose(kept)
+    return _as_written(kept if enclosed is kept else keep_corners(enclosed))
 
 
 def _whole_face(zone: ZoneShell, face: ZoneFace, overlaps: list) -> list[tuple[np.ndarray, str]]:
