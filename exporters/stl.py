@@ -469,7 +469,9 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: StlOptions
         stats = {"triangles": int(len(t)), "parts": len(meshes),
                  "volume_m3": round(signed_volume(v, t), 3) if len(t) else 0.0}
         try:  # the STL self-checked on its staged temporary: a failed one never gets the good name
-            safe_write.write_text(output_path(out, stem, ".json"), json.dumps(sidecar, indent=1), root=out)
+            # its folder is synced after the STL's rename, just below (write_checked)
+            safe_write.write_text(output_path(out, stem, ".json"), json.dumps(sidecar, indent=1), root=out,
+                                  sync_folder=False)
             final, problems = safe_write.write_checked(
                 path, lambda f: (write_ascii if options.ascii else write_binary)(f, v, t, c), self_check,
                 "w" if options.ascii else "wb", root=out, **({"encoding": "ascii"} if options.ascii else {}))
