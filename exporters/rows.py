@@ -57,3 +57,19 @@ def unique_rows(a: np.ndarray, return_inverse: bool = False, return_counts: bool
     if return_counts:
         out += (cnt,)
     return out if len(out) > 1 else out[0]
+
+
+def same_position(points: np.ndarray) -> np.ndarray:
+    """Which rows of ``points`` ``(n, m)`` float are equal, as ``np.unique(points, axis=0,
+    return_inverse=True)`` groups them (its inverse, ``(n,)``: the same number for equal rows,
+    ``-0.0 == 0.0``, a NaN equal to nothing), from a lexicographic sort of the columns instead
+    of a sort of structured records."""
+    p = np.asarray(points)
+    if len(p) == 0:
+        return np.zeros(0, dtype=np.intp)
+    order = np.lexsort(p.T[::-1])
+    s = p[order]
+    new = np.any(s[1:] != s[:-1], axis=1)
+    inv = np.empty(len(p), dtype=np.intp)
+    inv[order] = np.concatenate(([0], np.cumsum(new)))
+    return inv

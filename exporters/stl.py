@@ -28,7 +28,7 @@ from lod2energy.model import BUILDING_TYPES, Building
 
 from .paths import not_written, output_path, safe_stem
 from .result import ExportResult
-from .rows import unique_rows
+from .rows import row_keys, same_position, unique_rows
 from .shellcheck import signed_volume
 from .stl_seams import T_JUNCTION_TOL, split_open_edges, split_t_junctions  # noqa: F401 - part of stl's API
 from .weld import weld
@@ -309,8 +309,8 @@ def separate_touching(v: np.ndarray, t: np.ndarray, dist: float | None = None) -
     dist = SEPARATION if dist is None else dist
     pairs = cKDTree(v).query_pairs(1e-6, output_type="ndarray")
     # distinct in float64 but one point once written as float32
-    _, inv, cnt = np.unique(np.asarray(v, dtype=np.float32), axis=0, return_inverse=True, return_counts=True)
-    same32 = np.nonzero(cnt[inv.ravel()] > 1)[0]
+    inv = same_position(np.asarray(v, dtype=np.float32))
+    same32 = np.nonzero(np.bincount(inv)[inv] > 1)[0]
     if len(pairs) == 0 and len(same32) == 0:
         return v, 0
     v = v.copy()
@@ -354,13 +354,16 @@ def _keeps(v: np.ndarray, t: np.ndarray, volume: float) -> bool:
 
 def _closed_by_position(v: np.ndarray, t: np.ndarray) -> bool:
     """Closed and consistently wound once vertices are merged by float32 position (as STL readers do)."""
-    _, inv = np.unique(np.asarray(v, dtype=np.float32), axis=0, return_inverse=True)
-    tt = inv.ravel()[t]
+    tt = same_position(np.asarray(v, dtype=np.float32))[t]
     e = np.concatenate([tt[:, [0, 1]], tt[:, [1, 2]], tt[:, [2, 0]]])
     if np.any(e[:, 0] == e[:, 1]):
         return False
-    fwd = {tuple(x) for x in e.tolist()}
-    return len(fwd) == len(e) and all((b, a) in fwd for a, b in fwd)
+    keys = row_keys(e)
+    if keys is None:
+        fwd = {tuple(x) for x in e.tolist()}
+        return len(fwd) == len(e) and all((b, a) in fwd for a, b in fwd)
+    # every directed edge once, and its reverse among them
+    return len(np.unique(keys)) == len(e) and bool(np.isin(row_keys(e[:, ::-1]), keys).all())
 
 
 def _facet_normals(v: np.ndarray, t: np.ndarray) -> np.ndarray:

@@ -8,9 +8,10 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from scipy.spatial import cKDTree
 
 from exporters import stl
-from exporters.rows import row_keys, unique_rows
+from exporters.rows import row_keys, same_position, unique_rows
 from exporters.zones import local_origin, zone_shells
 from factories import box, building_from_polygons, gabled_house
 
@@ -125,3 +126,89 @@ def _box_with_collinear_points():
              [3, 0, 4, 7]]
     sem = ["GroundSurface", "RoofSurface", "WallSurface", "WallSurface", "WallSurface", "WallSurface"]
     return building_from_polygons([[p[f]] for f in faces], "Solid", sem, id="collinear")
+
+
+def _classes(inv):
+    """The partition an inverse makes (frozensets of row indices)."""
+    groups: dict = {}
+    for i, g in enumerate(np.asarray(inv).ravel().tolist()):
+        groups.setdefault(g, set()).add(i)
+    return {frozenset(s) for s in groups.values()}
+
+
+@pytest.mark.parametrize("seed", range(25))
+def test_same_position_groups_as_numpy(seed):
+    rng = np.random.default_rng(seed)
+    n = int(rng.integers(1, 80))
+    p = rng.choice([-1.0, -0.0, 0.0, 0.5, 2.0, 1e-7], size=(n, 3)).astype(np.float32)
+    if seed % 5 == 0:
+        p[rng.integers(n)] = np.nan
+    _, ref = np.unique(p, axis=0, return_inverse=True)
+    inv = same_position(p)
+    assert _classes(inv) == _classes(ref)
+    if not np.isnan(p).any():  # the same numbers, too (both sort the rows lexicographically)
+        assert np.array_equal(inv, ref.ravel())
+
+
+def _old_closed_by_position(v, t):
+    _, inv = np.unique(np.asarray(v, dtype=np.float32), axis=0, return_inverse=True)
+    tt = inv.ravel()[t]
+    e = np.concatenate([tt[:, [0, 1]], tt[:, [1, 2]], tt[:, [2, 0]]])
+    if np.any(e[:, 0] == e[:, 1]):
+        return False
+    fwd = {tuple(x) for x in e.tolist()}
+    return len(fwd) == len(e) and all((b, a) in fwd for a, b in fwd)
+
+
+def _box_mesh():
+    v = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0, 0, 1], [1, 0, 1], [1, 1, 1], [0, 1, 1]], float)
+    t = np.array([[0, 2, 1], [0, 3, 2], [4, 5, 6], [4, 6, 7], [0, 1, 5], [0, 5, 4], [1, 2, 6], [1, 6, 5],
+                  [2, 3, 7], [2, 7, 6], [3, 0, 4], [3, 4, 7]], dtype=np.intp)
+    return v, t
+
+
+@pytest.mark.parametrize("seed", range(40))
+def test_closed_by_position_as_before(seed):
+    rng = np.random.default_rng(seed)
+    v, t = _box_mesh()
+    k = seed % 8
+    if k == 1:
+        t = t[1:]  # open
+    elif k == 2:
+        t[3] = t[3][::-1]  # one flipped
+    elif k == 3:
+        v = np.concatenate([v, v[:1]])  # a duplicate vertex (same position): the closedness is by position
+        t[t == 0] = np.where(rng.random((t == 0).sum()) < 0.5, 0, 8)
+    elif k == 4:
+        t = np.concatenate([t, t[:2]])  # a repeated triangle
+    elif k == 5:
+        v = v + rng.normal(0, 1e-9, v.shape)  # below float32's resolution at 1 m: same positions
+    elif k == 6:
+        t[0, 1] = t[0, 0]  # a collapsed triangle
+    elif k == 7:
+        t = np.zeros((0, 3), dtype=np.intp)
+    assert stl._closed_by_position(v, t) == _old_closed_by_position(v, t)
+
+
+def test_closed_by_position_sees_both_verdicts():
+    v, t = _box_mesh()
+    assert stl._closed_by_position(v, t) and not stl._closed_by_position(v, t[1:])
+
+
+def _old_same32(v):
+    _, inv, cnt = np.unique(np.asarray(v, dtype=np.float32), axis=0, return_inverse=True, return_counts=True)
+    return np.nonzero(cnt[inv.ravel()] > 1)[0]
+
+
+@pytest.mark.parametrize("shift", [(1.0, 1.0, 0.0), (1.0, 0.0, 0.0), (1.0 + 1e-9, 1.0, 0.0), (3.0, 0.0, 0.0)])
+def test_separate_touching_as_before(shift):
+    """Two boxes touching along an edge / a face / not at all: the same vertices moved."""
+    v, t = _box_mesh()
+    v2 = np.concatenate([v, v + np.array(shift)])
+    t2 = np.concatenate([t, t + len(v)])
+    new, moved = stl.separate_touching(v2, t2)
+    inv = same_position(np.asarray(v2, dtype=np.float32))
+    assert np.array_equal(np.nonzero(np.bincount(inv)[inv] > 1)[0], _old_same32(v2))
+    pairs = cKDTree(v2).query_pairs(1e-6, output_type="ndarray")
+    assert moved == len(np.union1d(np.unique(pairs.ravel()), _old_same32(v2)))
+    assert (moved > 0) == (shift[0] < 2)
