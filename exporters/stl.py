@@ -28,6 +28,7 @@ from lod2energy.model import BUILDING_TYPES, Building
 
 from .paths import not_written, output_path, safe_stem
 from .result import ExportResult
+from .rows import row_keys, same_position, unique_rows
 from .shellcheck import signed_volume
 from .stl_seams import T_JUNCTION_TOL, split_open_edges, split_t_junctions  # noqa: F401 - part of stl's API
 from .weld import weld
@@ -78,12 +79,16 @@ def _zone_mesh(z: ZoneShell) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     # faces makes each face's triangulation fan its caps onto the same chord, which then
     # carries four triangles, and no neighbour across it can be told apart afterwards
     tris, codes = [], []
-    for f in z.faces:
-        t = z.face_triangles(f)
-        if len(t):
+    faces = [(f, t) for f in z.faces if len(t := z.face_triangles(f))]
+    # which faces have a cap at all, in one pass (flip_caps of a face without one returns it as it is)
+    capped = _faces_with_caps(z.vertices, [t for _, t in faces]) if faces else []
+    for (f, t), has_cap in zip(faces, capped):
+        if has_cap:
             t, _ = flip_caps(z.vertices, t, np.zeros(len(t), dtype=np.intp))
-            tris.append(t)
-            codes.append(np.full(len(t), PATCHES.index(f.kind), dtype=np.intp))
+        else:
+            t = np.array(t, dtype=np.intp).reshape(-1, 3)
+        tris.append(t)
+        codes.append(np.full(len(t), PATCHES.index(f.kind), dtype=np.intp))
     if not tris:
         return z.vertices, np.zeros((0, 3), dtype=np.intp), np.zeros(0, dtype=np.intp)
     tris, codes = np.concatenate(tris), np.concatenate(codes)
@@ -124,12 +129,8 @@ def flip_caps(v: np.ndarray, t: np.ndarray, c: np.ndarray, rel: float = 1e-9, he
     t = np.array(t, dtype=np.intp).reshape(-1, 3)
     c = np.array(c)
     for _ in range(len(t)):
-        P = v[t]
-        e = np.stack([P[:, 1] - P[:, 0], P[:, 2] - P[:, 1], P[:, 0] - P[:, 2]], axis=1)
-        L2 = (e ** 2).sum(axis=2)
-        a2 = np.linalg.norm(triangle_normals(v, t, unit=False), axis=1)  # 2 x area
-        Lmax = np.sqrt(L2.max(axis=1))
-        caps = np.nonzero(a2 < np.maximum(rel * Lmax, height) * Lmax)[0]
+        is_cap, L2 = _caps(v, t, rel, height)
+        caps = np.nonzero(is_cap)[0]
         done = False
         for k in caps:
             i = int(np.argmax(L2[k]))
@@ -156,6 +157,27 @@ def flip_caps(v: np.ndarray, t: np.ndarray, c: np.ndarray, rel: float = 1e-9, he
     return t, c
 
 
+def _caps(v: np.ndarray, t: np.ndarray, rel: float = 1e-9, height: float = CAP_HEIGHT
+          ) -> tuple[np.ndarray, np.ndarray]:
+    """Which triangles ``t`` ``(t, 3)`` over ``v`` ``(n, 3)`` are caps (:func:`flip_caps`), ``(t,)``
+    bool, and their squared edge lengths ``(t, 3)`` (edges ab, bc, ca); row by row, so a
+    triangle's verdict does not depend on the others in ``t``."""
+    P = v[t]
+    e = np.stack([P[:, 1] - P[:, 0], P[:, 2] - P[:, 1], P[:, 0] - P[:, 2]], axis=1)
+    L2 = (e ** 2).sum(axis=2)
+    a2 = np.linalg.norm(triangle_normals(v, t, unit=False), axis=1)  # 2 x area
+    Lmax = np.sqrt(L2.max(axis=1))
+    return a2 < np.maximum(rel * Lmax, height) * Lmax, L2
+
+
+def _faces_with_caps(v: np.ndarray, face_tris: list[np.ndarray]) -> list[bool]:
+    """For each face's triangles ``(t_i, 3)`` (none empty), whether one of them is a cap
+    (:func:`_caps`, on all the faces' triangles at once)."""
+    is_cap, _ = _caps(v, np.concatenate(face_tris).reshape(-1, 3))
+    ends = np.cumsum([len(t) for t in face_tris])
+    return np.logical_or.reduceat(is_cap, np.concatenate(([0], ends[:-1]))).tolist()
+
+
 def cancel_fins(t: np.ndarray, c: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Drop pairs of triangles on the same three vertices with opposite orientation.
 
@@ -179,7 +201,7 @@ def cancel_fins(t: np.ndarray, c: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     c = np.asarray(c)
     while len(t):
         key = np.sort(t, axis=1)
-        _, inv, counts = np.unique(key, axis=0, return_inverse=True, return_counts=True)
+        _, inv, counts = unique_rows(key, return_inverse=True, return_counts=True)
         inv = inv.ravel()
         pair = counts[inv] == 2
         if not pair.any():
@@ -287,8 +309,8 @@ def separate_touching(v: np.ndarray, t: np.ndarray, dist: float | None = None) -
     dist = SEPARATION if dist is None else dist
     pairs = cKDTree(v).query_pairs(1e-6, output_type="ndarray")
     # distinct in float64 but one point once written as float32
-    _, inv, cnt = np.unique(np.asarray(v, dtype=np.float32), axis=0, return_inverse=True, return_counts=True)
-    same32 = np.nonzero(cnt[inv.ravel()] > 1)[0]
+    inv = same_position(np.asarray(v, dtype=np.float32))
+    same32 = np.nonzero(np.bincount(inv)[inv] > 1)[0]
     if len(pairs) == 0 and len(same32) == 0:
         return v, 0
     v = v.copy()
@@ -332,13 +354,16 @@ def _keeps(v: np.ndarray, t: np.ndarray, volume: float) -> bool:
 
 def _closed_by_position(v: np.ndarray, t: np.ndarray) -> bool:
     """Closed and consistently wound once vertices are merged by float32 position (as STL readers do)."""
-    _, inv = np.unique(np.asarray(v, dtype=np.float32), axis=0, return_inverse=True)
-    tt = inv.ravel()[t]
+    tt = same_position(np.asarray(v, dtype=np.float32))[t]
     e = np.concatenate([tt[:, [0, 1]], tt[:, [1, 2]], tt[:, [2, 0]]])
     if np.any(e[:, 0] == e[:, 1]):
         return False
-    fwd = {tuple(x) for x in e.tolist()}
-    return len(fwd) == len(e) and all((b, a) in fwd for a, b in fwd)
+    keys = row_keys(e)
+    if keys is None:
+        fwd = {tuple(x) for x in e.tolist()}
+        return len(fwd) == len(e) and all((b, a) in fwd for a, b in fwd)
+    # every directed edge once, and its reverse among them
+    return len(np.unique(keys)) == len(e) and bool(np.isin(row_keys(e[:, ::-1]), keys).all())
 
 
 def _facet_normals(v: np.ndarray, t: np.ndarray) -> np.ndarray:
@@ -447,7 +472,9 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: StlOptions
         stats = {"triangles": int(len(t)), "parts": len(meshes),
                  "volume_m3": round(signed_volume(v, t), 3) if len(t) else 0.0}
         try:  # the STL self-checked on its staged temporary: a failed one never gets the good name
-            safe_write.write_text(output_path(out, stem, ".json"), json.dumps(sidecar, indent=1), root=out)
+            # its folder is synced after the STL's rename, just below (write_checked)
+            safe_write.write_text(output_path(out, stem, ".json"), json.dumps(sidecar, indent=1), root=out,
+                                  sync_folder=False)
             final, problems = safe_write.write_checked(
                 path, lambda f: (write_ascii if options.ascii else write_binary)(f, v, t, c), self_check,
                 "w" if options.ascii else "wb", root=out, **({"encoding": "ascii"} if options.ascii else {}))
@@ -524,11 +551,11 @@ def self_check(path: str | Path) -> list[str]:
         problems.append(f"{int(flat.sum())} degenerate triangle(s)")
     good = t[~repeated]
     e = np.concatenate([good[:, [0, 1]], good[:, [1, 2]], good[:, [2, 0]]])
-    _, ecount = np.unique(np.sort(e, axis=1), axis=0, return_counts=True)
+    _, ecount = unique_rows(np.sort(e, axis=1), return_counts=True)
     if np.any(ecount != 2):
         problems.append(f"not closed: {int(np.sum(ecount == 1))} edge(s) in one triangle, "
                         f"{int(np.sum(ecount > 2))} in more than two")
-    _, dcount = np.unique(e, axis=0, return_counts=True)
+    _, dcount = unique_rows(e, return_counts=True)
     if np.any(dcount > 1):
         problems.append(f"inconsistent winding: {int(np.sum(dcount > 1))} edge(s) traversed twice the same way")
     vol = signed_volume(pts, t)

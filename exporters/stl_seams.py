@@ -12,6 +12,7 @@ from dataclasses import replace
 import numpy as np
 
 from lod2energy.geometry import split_at_points
+from .rows import unique_rows
 from .zones import ZoneShell
 
 #: A vertex this close (m) to an edge that has no twin (or an open triangle edge) is a T-junction:
@@ -61,7 +62,7 @@ def split_open_edges(v: np.ndarray, t: np.ndarray, c: np.ndarray, tol: float = T
         if not len(t):
             break
         e = np.sort(np.concatenate([t[:, [0, 1]], t[:, [1, 2]], t[:, [2, 0]]]), axis=1)
-        u, inv, cnt = np.unique(e, axis=0, return_inverse=True, return_counts=True)
+        u, inv, cnt = unique_rows(e, return_inverse=True, return_counts=True)
         open_ = cnt[inv.ravel()] == 1
         if not open_.any():
             break

@@ -126,7 +126,8 @@ def sweep_stale(folder: str | os.PathLike) -> list[str]:
 @contextlib.contextmanager
 def atomic_write(path: str | os.PathLike, mode: str = "w", *, root: str | os.PathLike | None = None,
                  inputs: Iterable[str | os.PathLike] = (), encoding: str | None = "utf-8",
-                 errors: str | None = None, newline: str | None = None, fsync: bool = True) -> Iterator[IO]:
+                 errors: str | None = None, newline: str | None = None, fsync: bool = True,
+                 sync_folder: bool | None = None) -> Iterator[IO]:
     """Open a temporary beside ``path`` for writing; rename it to ``path`` when the block ends.
 
     Parameters
@@ -141,6 +142,9 @@ def atomic_write(path: str | os.PathLike, mode: str = "w", *, root: str | os.Pat
     fsync : bool
         fsync the file before the rename (and the folder after it), so that a crash leaves
         either the old file or the whole new one.
+    sync_folder : bool, optional
+        fsync the folder after the rename (default: as ``fsync``); False when a later write
+        into the same folder syncs it (:func:`write_checked` after its final rename).
 
     Yields
     ------
@@ -168,19 +172,25 @@ def atomic_write(path: str | os.PathLike, mode: str = "w", *, root: str | os.Pat
         with contextlib.suppress(OSError):
             os.unlink(tmp)
         raise
-    if fsync:
-        with contextlib.suppress(OSError):
-            dfd = os.open(p.parent, os.O_RDONLY)
-            try:
-                os.fsync(dfd)
-            finally:
-                os.close(dfd)
+    if fsync if sync_folder is None else sync_folder:
+        _sync_folder(p.parent)
+
+
+def _sync_folder(folder: Path) -> None:
+    """fsync a folder (its renames reach the disk); best effort."""
+    with contextlib.suppress(OSError):
+        dfd = os.open(folder, os.O_RDONLY)
+        try:
+            os.fsync(dfd)
+        finally:
+            os.close(dfd)
 
 
 def write_text(path: str | os.PathLike, text: str, *, root=None, inputs=(), encoding: str = "utf-8",
-               errors: str | None = None, fsync: bool = True) -> Path:
+               errors: str | None = None, fsync: bool = True, sync_folder: bool | None = None) -> Path:
     """Write ``text`` to ``path`` through :func:`atomic_write`; returns the path."""
-    with atomic_write(path, "w", root=root, inputs=inputs, encoding=encoding, errors=errors, fsync=fsync) as f:
+    with atomic_write(path, "w", root=root, inputs=inputs, encoding=encoding, errors=errors, fsync=fsync,
+                      sync_folder=sync_folder) as f:
         f.write(text)
     return Path(os.path.abspath(path))
 
@@ -256,7 +266,8 @@ def write_checked(path: str | os.PathLike, write: Callable[[IO], None], check: C
     """
     p = check_target(path, root, inputs)
     staged = p.with_name(f".{p.name}.{os.getpid()}.{next(_COUNTER)}.staged")
-    with atomic_write(staged, mode, root=root, inputs=inputs, **open_kw) as f:
+    # the folder is synced once, after the final rename (the staged name never needs to last)
+    with atomic_write(staged, mode, root=root, inputs=inputs, sync_folder=False, **open_kw) as f:
         write(f)
     try:
         problems = list(check(staged))
@@ -272,4 +283,6 @@ def write_checked(path: str | os.PathLike, write: Callable[[IO], None], check: C
     os.replace(staged, target)
     if problems and p.exists() and not p.is_symlink():
         p.unlink()  # an older good-looking file of this name would now be a lie
+    if open_kw.get("fsync", True):
+        _sync_folder(target.parent)
     return str(target), problems
