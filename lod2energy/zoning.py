@@ -157,24 +157,27 @@ def _clip(poly: np.ndarray, c: float, keep_above: bool) -> np.ndarray:
         keep = ~np.all(np.abs(o - np.concatenate((o[-1:], o[:-1]))) < 1e-9, axis=1)  # o[i] - o[i - 1]
         o = o[keep]
         return o if len(o) >= 3 else np.zeros((0, 3))
+    # the walk on Python floats: the same IEEE operations as on numpy scalars, a fifth of the
+    # cost; the new points are rounded together (np.round works element by element)
+    pts, sl, c = poly.tolist(), s.tolist(), float(c)
+    out, cut = [], []
     for i in range(n):
-        a, b = poly[i], poly[(i + 1) % n]
-        sa, sb = s[i], s[(i + 1) % n]
+        a, b = pts[i], pts[(i + 1) % n]
+        sa, sb = sl[i], sl[(i + 1) % n]
         if sa >= 0:
-            out.append(a if sa > 0 else np.array([a[0], a[1], c]))
+            out.append(a if sa > 0 else [a[0], a[1], c])
         if (sa > 0 > sb) or (sa < 0 < sb):
             # canonical order so both polygons sharing the edge compute the same point
-            p, q = (a, b) if tuple(a) <= tuple(b) else (b, a)
+            p, q = (a, b) if a <= b else (b, a)
             t = (c - p[2]) / (q[2] - p[2])
-            x = p + t * (q - p)
-            out.append(np.round(np.array([x[0], x[1], c]), DECIMALS))
+            cut.append(len(out))
+            out.append([p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1]), c])
     if len(out) < 3:
         return np.zeros((0, 3))
-    o = np.array(out)
-    keep = np.ones(len(o), bool)
-    for i in range(len(o)):
-        if np.all(np.abs(o[i] - o[i - 1]) < 1e-9):
-            keep[i] = False
+    o = np.array(out, dtype=np.float64)
+    if cut:
+        o[cut] = np.round(o[cut], DECIMALS)
+    keep = ~np.all(np.abs(o - np.concatenate((o[-1:], o[:-1]))) < 1e-9, axis=1)  # o[i] - o[i - 1]
     o = o[keep]
     return o if len(o) >= 3 else np.zeros((0, 3))
 

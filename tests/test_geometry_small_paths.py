@@ -1,0 +1,168 @@
+"""The small-array fast paths of the shared geometry give the same bits as the numpy code they replace.
+
+References below are the replaced implementations, kept verbatim: numpy's summation order
+(pairwise, starting from 0.0) and its element-wise IEEE operations are what the Python-float
+paths reproduce, so any drift in a last bit (or a signed zero) fails here.
+"""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from exporters import polygons
+from lod2energy import zoning
+from lod2energy.geometry import earcut_rings, vectors
+
+
+def _same(a, b) -> bool:
+    """Bit-identical arrays (signed zeros and NaNs included)."""
+    a, b = np.asarray(a), np.asarray(b)
+    return a.shape == b.shape and a.dtype == b.dtype and a.tobytes() == b.tobytes()
+
+
+def _rings(rng, count=3000):
+    """Small rings as buildings have them: random, on national-grid offsets, axis-aligned
+    walls and flat roofs (exact and signed zeros), rounded to mm, degenerate."""
+    out = []
+    for i in range(count):
+        k = int(rng.integers(3, 12))
+        p = rng.normal(size=(k, 3)) * rng.choice([1e-3, 1.0, 20.0])
+        if i % 3 == 0:
+            p += np.array([85000.0, 447000.0, 3.0])
+        if i % 5 == 0:
+            p[:, int(rng.integers(0, 3))] = rng.choice([0.0, -0.0, 7.25])
+        if i % 7 == 0:
+            p = np.round(p, 3)
+        if i % 13 == 0:
+            p[1] = p[0]  # repeated vertex
+        out.append(p)
+    out += [np.zeros((4, 3)), -np.zeros((3, 3)), np.array([[0.0, 0, 0], [1, 0, 0], [2, 0, 0]]),
+            np.array([[0.0, 0, 0], [1, 0, np.nan], [2, 1, 0]]), np.array([[0.0, 0, 0], [1, 0, np.inf], [2, 1, 0]])]
+    return out
+
+
+@pytest.mark.parametrize("centred", [True, False])
+def test_newell_small_is_numpy(centred):
+    rng = np.random.default_rng(8)
+    with np.errstate(invalid="ignore"):
+        for p in _rings(rng):
+            got = vectors.newell_normal(p, centred)
+            assert _same(got, vectors._newell_numpy(p, centred)), p
+        # Fortran-ordered and strided views (the old code on the same view is the reference)
+        for p in _rings(rng, 300):
+            w = np.zeros((len(p), 6))
+            w[:, ::2] = p
+            for q in (np.asfortranarray(p), w[:, ::2]):
+                assert _same(vectors.newell_normal(q, centred), vectors._newell_numpy(q, centred))
+
+
+def test_newell_small_on_real_buildings(denhaag_path):
+    from itertools import islice
+
+    from lod2energy.io import read
+
+    _, feats = read(str(denhaag_path))
+    n = 0
+    for b in islice(feats, 60):
+        for o in b.objects:
+            for g in o.geometries:
+                if not g.is_polygonal:
+                    continue
+                for _, _, sh in g.iter_shells():
+                    for s in sh.surfaces:
+                        for r in s.rings:
+                            p = b.vertices[list(r)]
+                            for q in (p, p - np.floor(p.min(axis=0))):  # map and local frames
+                                for centred in (True, False):
+                                    assert _same(vectors.newell_normal(q, centred),
+                                                 vectors._newell_numpy(q, centred))
+                            n += 1
+    assert n > 1000
+
+
+def _ref_triangulate(points, ring_ends, normal=None):
+    p = np.asarray(points, dtype=np.float64)
+    if normal is None:
+        normal = vectors._newell_numpy(p[: ring_ends[0]], False)
+    n = polygons.unit(normal)
+    if not n.any():
+        return np.zeros((0, 3), dtype=np.intp)
+    u, v = polygons.plane_basis(n)
+    c = np.add.reduce(p, axis=0) / len(p)
+    xy = np.column_stack([(p - c) @ u, (p - c) @ v])
+    tri = earcut_rings(xy, ring_ends)
+    if len(tri) == 0:
+        return tri
+    a, b, cc = xy[tri[:, 0]], xy[tri[:, 1]], xy[tri[:, 2]]
+    cross = (b[:, 0] - a[:, 0]) * (cc[:, 1] - a[:, 1]) - (b[:, 1] - a[:, 1]) * (cc[:, 0] - a[:, 0])
+    flip = cross < 0
+    tri[flip] = tri[flip][:, ::-1]
+    used = np.zeros(len(p), dtype=bool)
+    used[tri.ravel()] = True
+    missing = np.flatnonzero(~used)
+    if len(missing):
+        tri = polygons._insert_dropped(tri, xy, missing)
+    return tri
+
+
+def test_triangulate_same_triangles():
+    rng = np.random.default_rng(5)
+    flipped = dropped = 0
+    for i, p in enumerate(_rings(rng, 1500)):
+        ends = [len(p)]
+        if i % 4 == 0 and len(p) >= 3:  # a hole
+            c = p.mean(axis=0)
+            p = np.concatenate([p, (p[:3] - c) * 0.2 + c])
+            ends.append(len(p))
+        if i % 6 == 0:  # collinear vertices earcut drops
+            p = np.concatenate([p[:1], (p[:1] + p[1:2]) / 2, p[1:]])
+            ends = [e + 1 for e in ends]
+        with np.errstate(invalid="ignore", divide="ignore"):
+            got, ref = polygons.triangulate(p, ends), _ref_triangulate(p, ends)
+            given = polygons.triangulate(p, ends, -polygons.newell_normal(p[: ends[0]]))
+            ref_given = _ref_triangulate(p, ends, -vectors._newell_numpy(p[: ends[0]], False))
+        assert _same(got, ref) and _same(given, ref_given), i
+        flipped += len(got) and not _same(given[:, ::-1], got)
+        dropped += i % 6 == 0 and len(got) > 0 and set(got.ravel().tolist()) == set(range(len(p)))
+    assert flipped > 100 and dropped > 10  # both orientations and put-back vertices were exercised
+
+
+def _ref_clip(poly, c, keep_above):
+    out = []
+    n = len(poly)
+    s = (poly[:, 2] - c) if keep_above else (c - poly[:, 2])
+    s = np.where(np.abs(s) <= zoning.ON_PLANE, 0.0, s)
+    for i in range(n):
+        a, b = poly[i], poly[(i + 1) % n]
+        sa, sb = s[i], s[(i + 1) % n]
+        if sa >= 0:
+            out.append(a if sa > 0 else np.array([a[0], a[1], c]))
+        if (sa > 0 > sb) or (sa < 0 < sb):
+            p, q = (a, b) if tuple(a) <= tuple(b) else (b, a)
+            t = (c - p[2]) / (q[2] - p[2])
+            x = p + t * (q - p)
+            out.append(np.round(np.array([x[0], x[1], c]), zoning.DECIMALS))
+    if len(out) < 3:
+        return np.zeros((0, 3))
+    o = np.array(out)
+    keep = np.ones(len(o), bool)
+    for i in range(len(o)):
+        if np.all(np.abs(o[i] - o[i - 1]) < 1e-9):
+            keep[i] = False
+    o = o[keep]
+    return o if len(o) >= 3 else np.zeros((0, 3))
+
+
+def test_clip_same_polygons():
+    rng = np.random.default_rng(11)
+    cut = 0
+    for i, p in enumerate(_rings(rng, 1500)):
+        p = np.round(p, 4) if i % 2 else p
+        z = p[:, 2][np.isfinite(p[:, 2])]
+        for c in (float(np.median(z)) if len(z) else 0.0, float(p[0, 2]), 0.123456789, float(z.min()) - 1 if len(z) else -1):
+            for above in (True, False):
+                with np.errstate(invalid="ignore"):
+                    got, ref = zoning._clip(p, c, above), _ref_clip(p, c, above)
+                assert _same(got, ref), (i, c, above)
+                cut += 0 < len(got) != len(p)
+    assert cut > 500
