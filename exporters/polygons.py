@@ -75,9 +75,12 @@ def plane_basis(normal: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     n = unit(np.asarray(normal, dtype=np.float64))
     n0, n1, n2 = n.tolist()
     u = np.array([0.0 * n2 - 1.0 * n1, 1.0 * n0 - 0.0 * n2, 0.0 * n1 - 0.0 * n0])
-    if _norm(u) < 1e-6:
+    lu = _norm(u)
+    if lu < 1e-6:
         u = np.array([1.0, 0.0, 0.0]) - n[0] * n
-    u = unit(u)
+        lu = _norm(u)
+    if lu > 0:  # unit(u), its length known
+        u = u / lu
     u0, u1, u2 = u.tolist()
     v = np.array([n1 * u2 - n2 * u1, n2 * u0 - n0 * u2, n0 * u1 - n1 * u0])
     return u, v
@@ -183,13 +186,16 @@ def _is_convex_2d(xy: np.ndarray, eps: float = 1e-9, strict: bool = False) -> bo
     Collinear corners are allowed unless ``strict`` (then every turn must have a sine of
     at least :data:`STRICT_SIN`).
     """
-    d1 = roll_next(xy) - xy
-    d2 = roll_next(d1)
-    cross = d1[:, 0] * d2[:, 1] - d1[:, 1] * d2[:, 0]
-    scale = np.maximum(np.linalg.norm(d1, axis=1) * np.linalg.norm(d2, axis=1), 1e-12)
-    if strict:
-        return bool(np.all(cross >= STRICT_SIN * scale))
-    return bool(np.all(cross >= -eps * scale))
+    # on Python floats, row by row: the same IEEE operations as the numpy rows (a row norm
+    # of two squares is their sum's square root either way), stopping at the first reflex turn
+    pts = xy.tolist()
+    d1 = [(bx - ax, by - ay) for (ax, ay), (bx, by) in zip(pts, pts[1:] + pts[:1])]
+    bound = STRICT_SIN if strict else -eps
+    for (ax, ay), (bx, by) in zip(d1, d1[1:] + d1[:1]):
+        scale = math.sqrt(ax * ax + ay * ay) * math.sqrt(bx * bx + by * by)
+        if not ax * by - ay * bx >= bound * (scale if scale >= 1e-12 or scale != scale else 1e-12):
+            return False
+    return True
 
 
 def merge_convex(tris: np.ndarray, xy: np.ndarray, strict: bool = False) -> list[list[int]]:

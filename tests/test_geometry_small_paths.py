@@ -166,3 +166,79 @@ def test_clip_same_polygons():
                 assert _same(got, ref), (i, c, above)
                 cut += 0 < len(got) != len(p)
     assert cut > 500
+
+
+def test_newell_cache_returns_fresh_arrays():
+    p = np.array([[0.0, 0, 0], [2, 0, 0], [2, 3, 0], [0, 3, 0]])
+    first = vectors.newell_normal(p, False)
+    first *= 0.0  # a caller scaling its result in place must not change the next answer
+    again = vectors.newell_normal(p.copy(), False)
+    assert _same(again, np.array([0.0, 0.0, 12.0])) and again is not vectors.newell_normal(p, False)
+    assert _same(vectors.newell_normal(p, True), vectors._newell_numpy(p, True))
+
+
+def _ref_is_convex_2d(xy, eps=1e-9, strict=False):
+    d1 = np.roll(xy, -1, axis=0) - xy
+    d2 = np.roll(d1, -1, axis=0)
+    cross = d1[:, 0] * d2[:, 1] - d1[:, 1] * d2[:, 0]
+    scale = np.maximum(np.linalg.norm(d1, axis=1) * np.linalg.norm(d2, axis=1), 1e-12)
+    if strict:
+        return bool(np.all(cross >= polygons.STRICT_SIN * scale))
+    return bool(np.all(cross >= -eps * scale))
+
+
+def test_is_convex_2d_same_answers():
+    rng = np.random.default_rng(2)
+    answers = set()
+    for i in range(3000):
+        k = int(rng.integers(0, 9))
+        ang = np.sort(rng.random(k)) * 2 * np.pi
+        xy = np.column_stack([np.cos(ang), np.sin(ang)]) * rng.choice([1e-7, 1.0, 30.0])
+        if i % 3 == 0 and k:
+            xy[int(rng.integers(0, k))] *= rng.choice([0.2, 0.999999, 1.5])  # reflex or nearly straight
+        if i % 5 == 0 and k > 1:
+            xy[1] = xy[0]  # zero-length edge
+        if i % 7 == 0 and k > 2:
+            xy[2] = (xy[1] + xy[3 % k]) / 2  # collinear
+        if i % 11 == 0:
+            xy = xy[::-1]  # clockwise
+        if i % 97 == 0 and k:
+            xy[0, 0] = np.nan
+        for strict in (False, True):
+            with np.errstate(invalid="ignore"):
+                got, ref = polygons._is_convex_2d(xy, strict=strict), _ref_is_convex_2d(xy, strict=strict)
+            assert got == ref, (i, strict)
+            answers.add(got)
+    assert answers == {True, False}
+
+
+def test_cross_rows_unit_rows_and_plane_basis_same_bits():
+    rng = np.random.default_rng(3)
+    for shape in ((3,), (1, 3), (7, 3), (4, 5, 3)):
+        a, b = rng.normal(size=shape) * 1e3, rng.normal(size=shape)
+        a[..., 0] = -0.0
+        assert _same(vectors.cross_rows(a, b), np.stack(
+            [a[..., 1] * b[..., 2] - a[..., 2] * b[..., 1], a[..., 2] * b[..., 0] - a[..., 0] * b[..., 2],
+             a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0]], axis=-1))
+        assert _same(vectors.cross_rows(a, b), np.cross(a, b))
+        v = np.concatenate([a.reshape(-1, 3), np.zeros((2, 3))])
+        u, ln = vectors.unit_rows(v)
+        ref_ln = np.linalg.norm(v, axis=-1, keepdims=True)
+        assert _same(ln, ref_ln[..., 0])
+        assert _same(u, np.divide(v, ref_ln, out=np.zeros_like(v), where=ref_ln > 0))
+    assert _same(vectors.cross_rows(np.array([1, 2, 3]), np.array([4, 5, 6])), np.cross([1, 2, 3], [4, 5, 6]))
+
+    def ref_basis(normal):
+        n = polygons.unit(np.asarray(normal, dtype=np.float64))
+        u = np.cross(np.array([0.0, 0.0, 1.0]), n)
+        if np.linalg.norm(u) < 1e-6:
+            u = np.array([1.0, 0.0, 0.0]) - n[0] * n
+        u = polygons.unit(u)
+        return u, np.cross(n, u)
+
+    normals = [rng.normal(size=3) * s for s in (1e-9, 1.0, 1e4) for _ in range(500)]
+    normals += [np.array(v, dtype=np.float64) for v in ([0, 0, 1], [0, 0, -1], [1e-8, 0, 1], [0, 0, 0], [1, 0, 0])]
+    for n in normals:
+        with np.errstate(invalid="ignore"):
+            got, ref = polygons.plane_basis(n), ref_basis(n)
+        assert _same(got[0], ref[0]) and _same(got[1], ref[1]), n

@@ -40,8 +40,22 @@ def newell_normal(points: np.ndarray, centred: bool = True) -> np.ndarray:
     if len(p) < 3:
         return np.zeros(3)
     if len(p) < _SMALL_RING and p.ndim == 2 and p.shape[1] == 3:
-        return _newell_small(p, centred)
+        # the same ring is measured by several stages: remember its normal by its coordinates
+        # (bytes and shape; strides and order change neither path's bits for k < 8)
+        key = (centred, p.shape, p.tobytes())
+        hit = _NORMAL_CACHE.get(key)
+        if hit is None:
+            hit = _newell_small(p, centred)
+            if len(_NORMAL_CACHE) >= NORMAL_CACHE_SIZE:
+                _NORMAL_CACHE.clear()
+            _NORMAL_CACHE[key] = hit
+        return hit.copy()
     return _newell_numpy(p, centred)
+
+
+#: Most small rings :func:`newell_normal` remembers (the cache is emptied when it is full).
+NORMAL_CACHE_SIZE = 8192
+_NORMAL_CACHE: dict = {}
 
 
 #: Rings with fewer vertices than this go through :func:`_newell_small` (Python floats): below
@@ -188,12 +202,19 @@ def cross_rows(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     """
     a0, a1, a2 = a[..., 0], a[..., 1], a[..., 2]
     b0, b1, b2 = b[..., 0], b[..., 1], b[..., 2]
-    return np.stack([a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0], axis=-1)
+    c = (a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0)
+    out = np.empty(c[0].shape + (3,), dtype=np.result_type(*c))  # np.stack(c, axis=-1), less overhead
+    out[..., 0], out[..., 1], out[..., 2] = c
+    return out
 
 
 def unit_rows(v: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Unit vectors of the rows of ``v`` (..., 3) (zero stays zero) and their lengths (...,)."""
-    ln = np.linalg.norm(v, axis=-1, keepdims=True)
+    if type(v) is np.ndarray and v.dtype == np.float64:
+        # np.linalg.norm's own computation for real rows, without its argument handling
+        ln = np.sqrt(np.add.reduce(v * v, axis=-1, keepdims=True))
+    else:
+        ln = np.linalg.norm(v, axis=-1, keepdims=True)
     return np.divide(v, ln, out=np.zeros_like(v), where=ln > 0), ln[..., 0]
 
 def cross2(o, a, b):
