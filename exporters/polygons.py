@@ -20,7 +20,7 @@ import numpy as np
 
 from lod2energy.geometry import earcut_rings
 from lod2energy.geometry import newell_normal as _newell
-from lod2energy.geometry.vectors import roll_next
+from lod2energy.geometry.vectors import vector_length
 
 #: Largest distance of a vertex to its face plane (m) for the face to be written as one piece.
 PLANAR_TOL = 0.01
@@ -41,10 +41,8 @@ def newell_normal(points: np.ndarray) -> np.ndarray:
     return _newell(points, centred=False)
 
 
-def _norm(v: np.ndarray) -> float:
-    """Euclidean length of a 1-D float64 vector, computed as ``np.linalg.norm`` does it
-    (``sqrt(v.dot(v))``, the same bits) without its argument handling."""
-    return math.sqrt(float(v.dot(v)))
+#: Euclidean length of a 1-D float64 vector, as ``np.linalg.norm`` computes it (the same bits).
+_norm = vector_length
 
 
 def unit(v: np.ndarray) -> np.ndarray:

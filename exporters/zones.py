@@ -16,7 +16,7 @@ import numpy as np
 from lod2energy.model import Building
 from lod2energy.semantics import DEFAULT_RULES
 
-from .polygons import newell_normal, polygon_area3d, triangulate, unit
+from .polygons import _norm, newell_normal, polygon_area3d, triangulate, unit
 from .shellcheck import signed_volume
 from .weld import clean_ring, weld
 from .uvalues import face_u_value, positive_number, window_u_value
@@ -154,7 +154,7 @@ def drop_collinear(ring: list[int], v: np.ndarray, tol: float = COLLINEAR_TOL) -
             if L2 == 0:
                 continue
             t = float((b - a) @ ac) / L2
-            if 0 < t < 1 and np.linalg.norm(a + t * ac - b) < tol:
+            if 0 < t < 1 and _norm(a + t * ac - b) < tol:
                 del ring[k]
                 changed = True
                 break
@@ -174,7 +174,7 @@ def _drop_shared_collinear(faces: list, v: np.ndarray, tol: float) -> list:
         if L2 == 0:
             return False
         t = float((b - a) @ ac) / L2
-        return 0 < t < 1 and float(np.linalg.norm(a + t * ac - b)) < tol
+        return 0 < t < 1 and _norm(a + t * ac - b) < tol
 
     status: dict[int, bool] = {}
     for f in faces:

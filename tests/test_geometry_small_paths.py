@@ -242,3 +242,66 @@ def test_cross_rows_unit_rows_and_plane_basis_same_bits():
         with np.errstate(invalid="ignore"):
             got, ref = polygons.plane_basis(n), ref_basis(n)
         assert _same(got[0], ref[0]) and _same(got[1], ref[1]), n
+
+
+def test_zoning_measures_same_bits():
+    rng = np.random.default_rng(12)
+    rings = [p for p in _rings(rng, 1500) if np.isfinite(p).all()]
+    for p in rings:
+        ref = np.cross(p - p[0], np.roll(p, -1, axis=0) - p[0]).sum(axis=0)
+        assert _same(zoning._cross_sum(p), ref)
+        assert zoning._area(p) == 0.5 * float(np.linalg.norm(ref))
+        x, y = p[:, 0], p[:, 1]
+        ref_xy = 0.5 * float(np.dot(x, np.roll(y, -1)) - np.dot(np.roll(x, -1), y))
+        assert zoning._signed_xy(p) == ref_xy and np.signbit(zoning._signed_xy(p)) == np.signbit(ref_xy)
+    # zone_levels: the roof normals and areas it weighs the eave with
+    walls = [(np.array([[0.0, 0, 0], [5, 0, 0], [5, 0, 3], [0, 0, 3]]), "wall")]
+    for i in range(0, len(rings) - 3, 3):
+        roofs = [(np.abs(q) + [0.0, 0.0, 3.0], "roof") for q in rings[i:i + 3]]
+        got = zoning.zone_levels(walls + roofs)
+        assert got == _ref_zone_levels(walls + roofs), i
+
+
+def _ref_zone_levels(polygons):
+    from lod2energy.thermal.storeys import FLAT_TILT
+
+    allz = np.concatenate([p[:, 2] for p, _ in polygons])
+    roofs = []
+    for p, kind in polygons:
+        if kind != "roof":
+            continue
+        n = np.cross(p - p[0], np.roll(p, -1, axis=0) - p[0]).sum(axis=0) / 2
+        a = float(np.linalg.norm(n))
+        if a <= 1e-9:
+            continue
+        nz = float(n[2]) / a
+        roofs.append((float(p[:, 2].min()), float(p[:, 2].max()), a * max(nz, 0.0),
+                      float(np.degrees(np.arccos(np.clip(nz, -1, 1))))))
+    ground = float(allz.min())
+    if not roofs:
+        return ground, float(allz.max()), float(allz.max()), False
+    r = np.array(roofs)
+    order = np.argsort(r[:, 0])
+    w = np.cumsum(r[order, 2])
+    k = int(np.searchsorted(w, 0.5 * w[-1])) if w[-1] > 0 else 0
+    eave = float(r[order[min(k, len(order) - 1)], 0])
+    above = r[r[:, 1] > eave + 0.1]
+    pitched = bool(len(above) and above[above[:, 3] >= FLAT_TILT, 2].sum() > 0.5 * above[:, 2].sum())
+    return ground, max(eave, ground), float(allz.max()), pitched
+
+
+def test_polymesh_face_area_same_value():
+    from lod2energy.polymesh import Face, face_area
+
+    rng = np.random.default_rng(21)
+    for p in _rings(rng, 600):
+        c = p.mean(axis=0)
+        V = np.concatenate([p, (p[:3] - c) * 0.3 + c])
+        for rings in ((tuple(range(len(p))),), (tuple(range(len(p))), tuple(range(len(p), len(V))))):
+            f = Face(rings)
+            ref = np.linalg.norm(vectors._newell_numpy(V[list(rings[0])], False)) / 2
+            for r in rings[1:]:
+                ref -= np.linalg.norm(vectors._newell_numpy(V[list(r)], False)) / 2
+            with np.errstate(invalid="ignore"):
+                got = face_area(V, f)
+            assert _same(np.float64(got), np.float64(ref))

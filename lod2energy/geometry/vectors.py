@@ -6,6 +6,7 @@ so keep one implementation). Coordinates are metres.
 """
 from __future__ import annotations
 
+import math
 from functools import reduce
 from itertools import repeat
 from operator import add, mul, sub
@@ -14,7 +15,7 @@ from typing import Sequence
 import numpy as np
 
 __all__ = ["roll_next", "cross_rows", "unit_rows", "newell_normal", "polygon_normal", "newell_normals",
-           "rings_normal", "plane_basis", "plane_bases", "project_2d", "cross2"]
+           "rings_normal", "plane_basis", "plane_bases", "project_2d", "cross2", "vector_length"]
 
 
 def newell_normal(points: np.ndarray, centred: bool = True) -> np.ndarray:
@@ -216,6 +217,12 @@ def unit_rows(v: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     else:
         ln = np.linalg.norm(v, axis=-1, keepdims=True)
     return np.divide(v, ln, out=np.zeros_like(v), where=ln > 0), ln[..., 0]
+
+def vector_length(v: np.ndarray) -> float:
+    """Euclidean length of a 1-D float64 vector, computed as ``np.linalg.norm`` does it
+    (``sqrt(v.dot(v))``, the same bits) without its argument handling."""
+    return math.sqrt(float(v.dot(v)))
+
 
 def cross2(o, a, b):
     """z of the 2D cross product (a - o) x (b - o), over the last axis of (..., 2) arrays."""
