@@ -109,11 +109,35 @@ def triangulate(points: np.ndarray, ring_ends: Sequence[int], normal: np.ndarray
     Returns
     -------
     (t, 3) int
-        Indices into ``points``, each triangle counter-clockwise seen from ``normal``.
+        Indices into ``points``, each triangle counter-clockwise seen from ``normal``; a new
+        array each call.
+
+    Notes
+    -----
+    Without ``normal`` the triangles are a pure function of the coordinates and ring ends:
+    the zone shells triangulate each face for their volume and the STL writer again for its
+    mesh, so the answers are kept in a bounded cache keyed by the coordinates' bytes.
     """
     p = np.asarray(points, dtype=np.float64)
-    if normal is None:
-        normal = newell_normal(p[: ring_ends[0]])
+    if normal is not None:
+        return _triangulate(p, ring_ends, normal)
+    key = (p.shape, p.tobytes(), tuple(map(int, ring_ends)))
+    hit = _TRI_CACHE.get(key)
+    if hit is None:
+        hit = _triangulate(p, ring_ends, newell_normal(p[: ring_ends[0]]))
+        if len(_TRI_CACHE) >= TRI_CACHE_SIZE:
+            _TRI_CACHE.clear()
+        _TRI_CACHE[key] = hit
+    return hit.copy()
+
+
+#: Most polygons :func:`triangulate` remembers (the cache is emptied when it is full).
+TRI_CACHE_SIZE = 4096
+_TRI_CACHE: dict = {}
+
+
+def _triangulate(p: np.ndarray, ring_ends: Sequence[int], normal: np.ndarray) -> np.ndarray:
+    """:func:`triangulate` of float64 points ``p`` (k, 3) seen from ``normal``."""
     n = unit(normal)
     if not n.any():
         return np.zeros((0, 3), dtype=np.intp)

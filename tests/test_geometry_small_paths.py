@@ -305,3 +305,12 @@ def test_polymesh_face_area_same_value():
             with np.errstate(invalid="ignore"):
                 got = face_area(V, f)
             assert _same(np.float64(got), np.float64(ref))
+
+
+def test_triangulate_cache_returns_fresh_arrays():
+    p = np.array([[0.0, 0, 0], [4, 0, 0], [4, 3, 0], [2, 5, 0], [0, 3, 0]])
+    first = polygons.triangulate(p, [5])
+    ref = first.copy()
+    first[:] = 0  # a caller editing its triangles must not change the next answer
+    assert _same(polygons.triangulate(p.copy(), (5,)), ref) and len(set(ref.ravel().tolist())) == 5
+    assert _same(polygons.triangulate(p, np.array([5])), _ref_triangulate(p, [5]))
