@@ -20,7 +20,7 @@ import numpy as np
 
 from lod2energy.geometry import earcut_rings
 from lod2energy.geometry import newell_normal as _newell
-from lod2energy.geometry.vectors import roll_next
+from lod2energy.geometry.vectors import vector_length
 
 #: Largest distance of a vertex to its face plane (m) for the face to be written as one piece.
 PLANAR_TOL = 0.01
@@ -41,10 +41,8 @@ def newell_normal(points: np.ndarray) -> np.ndarray:
     return _newell(points, centred=False)
 
 
-def _norm(v: np.ndarray) -> float:
-    """Euclidean length of a 1-D float64 vector, computed as ``np.linalg.norm`` does it
-    (``sqrt(v.dot(v))``, the same bits) without its argument handling."""
-    return math.sqrt(float(v.dot(v)))
+#: Euclidean length of a 1-D float64 vector, as ``np.linalg.norm`` computes it (the same bits).
+_norm = vector_length
 
 
 def unit(v: np.ndarray) -> np.ndarray:
@@ -75,17 +73,25 @@ def plane_basis(normal: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     n = unit(np.asarray(normal, dtype=np.float64))
     n0, n1, n2 = n.tolist()
     u = np.array([0.0 * n2 - 1.0 * n1, 1.0 * n0 - 0.0 * n2, 0.0 * n1 - 0.0 * n0])
-    if _norm(u) < 1e-6:
+    lu = _norm(u)
+    if lu < 1e-6:
         u = np.array([1.0, 0.0, 0.0]) - n[0] * n
-    u = unit(u)
+        lu = _norm(u)
+    if lu > 0:  # unit(u), its length known
+        u = u / lu
     u0, u1, u2 = u.tolist()
     v = np.array([n1 * u2 - n2 * u1, n2 * u0 - n0 * u2, n0 * u1 - n1 * u0])
     return u, v
 
 
-def polygon_area3d(points: np.ndarray) -> float:
-    """Area (m2) of a planar polygon, (k, 3) points: half the length of :func:`newell_normal`."""
-    return 0.5 * float(np.linalg.norm(newell_normal(points)))
+def polygon_area3d(points: np.ndarray, normal: np.ndarray | None = None) -> float:
+    """Area (m2) of a planar polygon, (k, 3) points: half the length of :func:`newell_normal`.
+
+    ``normal``, when given, is that normal (the caller has it already: not computed again).
+    """
+    if normal is None:
+        normal = newell_normal(points)
+    return 0.5 * _norm(normal)
 
 
 def triangulate(points: np.ndarray, ring_ends: Sequence[int], normal: np.ndarray | None = None) -> np.ndarray:
@@ -103,28 +109,60 @@ def triangulate(points: np.ndarray, ring_ends: Sequence[int], normal: np.ndarray
     Returns
     -------
     (t, 3) int
-        Indices into ``points``, each triangle counter-clockwise seen from ``normal``.
+        Indices into ``points``, each triangle counter-clockwise seen from ``normal``; a new
+        array each call.
+
+    Notes
+    -----
+    Without ``normal`` the triangles are a pure function of the coordinates and ring ends:
+    the zone shells triangulate each face for their volume and the STL writer again for its
+    mesh, so the answers are kept in a bounded cache keyed by the coordinates' bytes.
     """
     p = np.asarray(points, dtype=np.float64)
-    if normal is None:
-        normal = newell_normal(p[: ring_ends[0]])
+    if normal is not None:
+        return _triangulate(p, ring_ends, normal)
+    key = (p.shape, p.tobytes(), tuple(map(int, ring_ends)))
+    hit = _TRI_CACHE.get(key)
+    if hit is None:
+        hit = _triangulate(p, ring_ends, newell_normal(p[: ring_ends[0]]))
+        if len(_TRI_CACHE) >= TRI_CACHE_SIZE:
+            _TRI_CACHE.clear()
+        _TRI_CACHE[key] = hit
+    return hit.copy()
+
+
+#: Most polygons :func:`triangulate` remembers (the cache is emptied when it is full).
+TRI_CACHE_SIZE = 4096
+_TRI_CACHE: dict = {}
+
+
+def _triangulate(p: np.ndarray, ring_ends: Sequence[int], normal: np.ndarray) -> np.ndarray:
+    """:func:`triangulate` of float64 points ``p`` (k, 3) seen from ``normal``."""
     n = unit(normal)
     if not n.any():
         return np.zeros((0, 3), dtype=np.intp)
     u, v = plane_basis(n)
-    c = np.add.reduce(p, axis=0) / len(p)  # p.mean(axis=0), the same bits
-    xy = np.column_stack([(p - c) @ u, (p - c) @ v])
+    d = p - np.add.reduce(p, axis=0) / len(p)  # p - p.mean(axis=0), the same bits
+    xy = np.empty((len(p), 2))
+    xy[:, 0] = d @ u
+    xy[:, 1] = d @ v
     tri = earcut_rings(xy, ring_ends)
     if len(tri) == 0:
         return tri
-    a, b, cc = xy[tri[:, 0]], xy[tri[:, 1]], xy[tri[:, 2]]
-    cross = (b[:, 0] - a[:, 0]) * (cc[:, 1] - a[:, 1]) - (b[:, 1] - a[:, 1]) * (cc[:, 0] - a[:, 0])
-    flip = cross < 0
-    tri[flip] = tri[flip][:, ::-1]
-    used = np.zeros(len(p), dtype=bool)
-    used[tri.ravel()] = True
-    missing = np.flatnonzero(~used)  # = np.setdiff1d(np.arange(len(p)), tri.ravel())
-    if len(missing):
+    # orient each triangle counter-clockwise; the 2D cross products on Python floats are the
+    # same IEEE operations in the same order as on numpy rows (a tenth of the cost for the
+    # few triangles of a building face)
+    pts = xy.tolist()
+    tris = tri.tolist()
+    used = set()
+    for t in tris:
+        (ax, ay), (bx, by), (cx, cy) = pts[t[0]], pts[t[1]], pts[t[2]]
+        if (bx - ax) * (cy - ay) - (by - ay) * (cx - ax) < 0:
+            t.reverse()
+        used.update(t)
+    tri = np.array(tris, dtype=np.intp)
+    if len(used) < len(p):
+        missing = np.array(sorted(set(range(len(p))) - used), dtype=np.intp)
         tri = _insert_dropped(tri, xy, missing)
     return tri
 
@@ -170,13 +208,16 @@ def _is_convex_2d(xy: np.ndarray, eps: float = 1e-9, strict: bool = False) -> bo
     Collinear corners are allowed unless ``strict`` (then every turn must have a sine of
     at least :data:`STRICT_SIN`).
     """
-    d1 = roll_next(xy) - xy
-    d2 = roll_next(d1)
-    cross = d1[:, 0] * d2[:, 1] - d1[:, 1] * d2[:, 0]
-    scale = np.maximum(np.linalg.norm(d1, axis=1) * np.linalg.norm(d2, axis=1), 1e-12)
-    if strict:
-        return bool(np.all(cross >= STRICT_SIN * scale))
-    return bool(np.all(cross >= -eps * scale))
+    # on Python floats, row by row: the same IEEE operations as the numpy rows (a row norm
+    # of two squares is their sum's square root either way), stopping at the first reflex turn
+    pts = xy.tolist()
+    d1 = [(bx - ax, by - ay) for (ax, ay), (bx, by) in zip(pts, pts[1:] + pts[:1])]
+    bound = STRICT_SIN if strict else -eps
+    for (ax, ay), (bx, by) in zip(d1, d1[1:] + d1[:1]):
+        scale = math.sqrt(ax * ax + ay * ay) * math.sqrt(bx * bx + by * by)
+        if not ax * by - ay * bx >= bound * (scale if scale >= 1e-12 or scale != scale else 1e-12):
+            return False
+    return True
 
 
 def merge_convex(tris: np.ndarray, xy: np.ndarray, strict: bool = False) -> list[list[int]]:

@@ -8,6 +8,7 @@ face's class ("roof", "wall", "ground", "floor") and U-value.
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
+from itertools import accumulate
 from typing import Any, Iterable, Mapping
 
 import numpy as np
@@ -15,7 +16,7 @@ import numpy as np
 from lod2energy.model import Building
 from lod2energy.semantics import DEFAULT_RULES
 
-from .polygons import newell_normal, polygon_area3d, triangulate, unit
+from .polygons import _norm, newell_normal, polygon_area3d, triangulate, unit
 from .shellcheck import signed_volume
 from .weld import clean_ring, weld
 from .uvalues import face_u_value, positive_number, window_u_value
@@ -107,15 +108,12 @@ class ZoneShell:
 
     def face_points(self, face: ZoneFace) -> tuple[np.ndarray, tuple[int, ...]]:
         """Concatenated ring coordinates ``(k, 3)`` and ring end indices."""
-        pts = np.concatenate([self.vertices[list(r)] for r in face.rings])
-        ends = tuple(np.cumsum([len(r) for r in face.rings]).tolist())
-        return pts, ends
+        return self.vertices[_face_index(face)], tuple(accumulate(map(len, face.rings)))
 
     def face_triangles(self, face: ZoneFace) -> np.ndarray:
         """Triangles ``(t, 3)`` of one face (indices into ``vertices``)."""
-        idx = np.concatenate([np.asarray(r, dtype=np.intp) for r in face.rings])
-        pts, ends = self.face_points(face)
-        t = triangulate(pts, ends)
+        idx = _face_index(face)
+        t = triangulate(self.vertices[idx], tuple(accumulate(map(len, face.rings))))
         return idx[t] if len(t) else np.zeros((0, 3), dtype=np.intp)
 
     def triangles(self) -> tuple[np.ndarray, list[str]]:
@@ -129,6 +127,13 @@ class ZoneShell:
         if not tris:
             return np.zeros((0, 3), dtype=np.intp), []
         return np.concatenate(tris), kinds
+
+
+def _face_index(face: ZoneFace) -> np.ndarray:
+    """The vertex indices of a face's rings, concatenated, (k,) int."""
+    if len(face.rings) == 1:
+        return np.array(face.rings[0], dtype=np.intp)
+    return np.concatenate([np.asarray(r, dtype=np.intp) for r in face.rings])
 
 
 def drop_collinear(ring: list[int], v: np.ndarray, tol: float = COLLINEAR_TOL) -> list[int]:
@@ -149,7 +154,7 @@ def drop_collinear(ring: list[int], v: np.ndarray, tol: float = COLLINEAR_TOL) -
             if L2 == 0:
                 continue
             t = float((b - a) @ ac) / L2
-            if 0 < t < 1 and np.linalg.norm(a + t * ac - b) < tol:
+            if 0 < t < 1 and _norm(a + t * ac - b) < tol:
                 del ring[k]
                 changed = True
                 break
@@ -169,7 +174,7 @@ def _drop_shared_collinear(faces: list, v: np.ndarray, tol: float) -> list:
         if L2 == 0:
             return False
         t = float((b - a) @ ac) / L2
-        return 0 < t < 1 and float(np.linalg.norm(a + t * ac - b)) < tol
+        return 0 < t < 1 and _norm(a + t * ac - b) < tol
 
     status: dict[int, bool] = {}
     for f in faces:
@@ -268,8 +273,9 @@ def zone_shells(b: Building, origin: np.ndarray, lod: str | None = None,
                 sem = g.semantic_surfaces[s.semantic] if (
                     s.semantic is not None and 0 <= s.semantic < len(g.semantic_surfaces)) else {}
                 stype = sem.get("type") if isinstance(sem, Mapping) else None
-                normal = newell_normal(welded[list(rings[0])])
-                if polygon_area3d(welded[list(rings[0])]) <= MIN_PIECE_AREA:
+                outer = welded[list(rings[0])]
+                normal = newell_normal(outer)
+                if polygon_area3d(outer, normal) <= MIN_PIECE_AREA:
                     continue
                 kind = classify(stype, normal)
                 u, fallback = face_u_value(sem, kind, u_table)

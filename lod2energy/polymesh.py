@@ -18,6 +18,7 @@ from lod2energy.geometry import (
     constrained_delaunay, drop_collinear, earcut_rings, newell_normal, plane_basis, plane_distance, rings_normal,
     signed_volume as _signed_volume,
 )
+from lod2energy.geometry.vectors import vector_length
 
 __all__ = ["Face", "PolyMesh", "Topology", "face_normal", "face_area", "planarity", "triangulate_face",
            "triangulate_mesh", "signed_volume", "edge_faces", "topology", "fan_groups", "nonmanifold_vertices",
@@ -92,10 +93,10 @@ def face_normal(V: np.ndarray, f: Face) -> np.ndarray:
 
 def face_area(V: np.ndarray, f: Face) -> float:
     """Area of a face, m2 (outer ring minus holes, projected on its own plane)."""
-    a = np.linalg.norm(newell_normal(V[list(f.outer)], centred=False)) / 2
+    a = vector_length(newell_normal(V[list(f.outer)], centred=False)) / 2
     for r in f.rings[1:]:
-        a -= np.linalg.norm(newell_normal(V[list(r)], centred=False)) / 2
-    return float(a)
+        a -= vector_length(newell_normal(V[list(r)], centred=False)) / 2
+    return a
 
 
 def planarity(V: np.ndarray, f: Face) -> tuple[float, float]:
