@@ -132,32 +132,7 @@ def _ref_area(p):  # zoning._area before its fast path
     return 0.5 * float(np.linalg.norm(np.cross(p - p[0], np.roll(p, -1, axis=0) - p[0]).sum(axis=0)))
 
 
-def _ref_clip(poly, c, keep_above):  # zoning._clip before its fast path
-    from lod2energy.zoning import DECIMALS, ON_PLANE
-
-    out = []
-    n = len(poly)
-    s = (poly[:, 2] - c) if keep_above else (c - poly[:, 2])
-    s = np.where(np.abs(s) <= ON_PLANE, 0.0, s)
-    for i in range(n):
-        a, b = poly[i], poly[(i + 1) % n]
-        sa, sb = s[i], s[(i + 1) % n]
-        if sa >= 0:
-            out.append(a if sa > 0 else np.array([a[0], a[1], c]))
-        if (sa > 0 > sb) or (sa < 0 < sb):
-            p, q = (a, b) if tuple(a) <= tuple(b) else (b, a)
-            t = (c - p[2]) / (q[2] - p[2])
-            x = p + t * (q - p)
-            out.append(np.round(np.array([x[0], x[1], c]), DECIMALS))
-    if len(out) < 3:
-        return np.zeros((0, 3))
-    o = np.array(out)
-    keep = np.ones(len(o), bool)
-    for i in range(len(o)):
-        if np.all(np.abs(o[i] - o[i - 1]) < 1e-9):
-            keep[i] = False
-    o = o[keep]
-    return o if len(o) >= 3 else np.zeros((0, 3))
+from _zoning_reference import clip_before_fast_path as _ref_clip  # noqa: E402
 
 
 def test_zoning_area_and_clip_same_bits():
