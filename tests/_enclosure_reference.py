@@ -173,6 +173,12 @@ def reference_enclosure_defects(surfaces: Sequence[np.ndarray], tol: float = POI
         that fail the second count.
     """
     faces = [reference_eplus_vertices(np.asarray(s, dtype=np.float64)) for s in surfaces]
+    return reference_face_defects(faces, tol)
+
+
+def reference_face_defects(faces: Sequence[np.ndarray], tol: float = POINT_TOL) -> list[BadEdge]:
+    """:func:`reference_enclosure_defects` of surfaces given as EnergyPlus keeps them
+    (:func:`reference_eplus_vertices` of each, float64 ``(k_i, 3)``)."""
     first = reference_edges_not_two(faces, tol)
     if not first:
         return []

@@ -9,7 +9,7 @@ from lod2energy.exporters.energyplus import enclosure as ee
 from lod2energy.exporters import energyplus
 
 from _enclosure_reference import (reference_edges_not_two, reference_enclosure_defects,
-                                  reference_eplus_degenerate, reference_eplus_merge,
+                                  reference_eplus_degenerate, reference_face_defects, reference_eplus_merge,
                                   reference_eplus_vertices, reference_insert_collinear,
                                   reference_unique_vertices)
 from export_helpers import DATA, energy_ready, real_buildings
@@ -113,20 +113,30 @@ def test_real_zones_agree(tmp_path, monkeypatch, rel, n):
     written zones of the self-check) gets the same answer from both implementations."""
     if not (DATA / rel).exists():
         pytest.skip(f"shared data not available: {rel}")
-    seen = []
+    seen, kept = [], []
     real = energyplus.enclosure.enclosure_defects
+    real_faces = energyplus.enclosure.face_defects
 
     def recording(surfaces, *a, **k):
         seen.append([np.array(s, dtype=np.float64) for s in surfaces])
         return real(surfaces, *a, **k)
 
-    for mod in (energyplus.conform, energyplus.zones, energyplus.check):  # every caller in the writer
+    def recording_faces(faces, *a, **k):
+        kept.append([np.array(f, dtype=np.float64) for f in faces])
+        return real_faces(faces, *a, **k)
+
+    # every caller in the writer: the zone candidates test the IDF's surfaces, the self-check
+    # the vertices EnergyPlus keeps of the written ones
+    for mod in (energyplus.conform, energyplus.zones, energyplus.model):
         monkeypatch.setattr(mod, "enclosure_defects", recording)
+    monkeypatch.setattr(energyplus.check, "face_defects", recording_faces)
     bs = [energy_ready(b) for b in real_buildings(rel, n=n)]
     energyplus.writer.write(bs, tmp_path)
-    assert seen
+    assert seen and kept
     for surfaces in seen:
         assert_agree(surfaces)
+    for faces in kept:
+        assert _same_defects(ee.face_defects(faces), reference_face_defects(faces))
 
 
 def test_near_degenerate_surfaces_agree():
