@@ -114,22 +114,18 @@ def test_real_zones_agree(tmp_path, monkeypatch, rel, n):
     if not (DATA / rel).exists():
         pytest.skip(f"shared data not available: {rel}")
     seen, kept = [], []
-    real = energyplus.enclosure.enclosure_defects
-    real_faces = energyplus.enclosure.face_defects
 
-    def recording(surfaces, *a, **k):
-        seen.append([np.array(s, dtype=np.float64) for s in surfaces])
-        return real(surfaces, *a, **k)
-
-    def recording_faces(faces, *a, **k):
-        kept.append([np.array(f, dtype=np.float64) for f in faces])
-        return real_faces(faces, *a, **k)
+    def recording(fn, into):
+        def rec(surfaces, *a, **k):
+            into.append([np.array(s, dtype=np.float64) for s in surfaces])
+            return fn(surfaces, *a, **k)
+        return rec
 
     # every caller in the writer: the zone candidates test the IDF's surfaces, the self-check
     # the vertices EnergyPlus keeps of the written ones
     for mod in (energyplus.conform, energyplus.zones, energyplus.model):
-        monkeypatch.setattr(mod, "enclosure_defects", recording)
-    monkeypatch.setattr(energyplus.check, "face_defects", recording_faces)
+        monkeypatch.setattr(mod, "enclosure_defects", recording(ee.enclosure_defects, seen))
+    monkeypatch.setattr(energyplus.check, "face_defects", recording(ee.face_defects, kept))
     bs = [energy_ready(b) for b in real_buildings(rel, n=n)]
     energyplus.writer.write(bs, tmp_path)
     assert seen and kept
