@@ -10,6 +10,7 @@ convex hull's) the one closest to the input (two-way mean vertex-to-surface dist
 from __future__ import annotations
 
 import os
+import threading
 import time
 
 import numpy as np
@@ -86,15 +87,24 @@ def _wrap_child(conn, args) -> None:  # pragma: no cover - runs in the forked ch
 def _wrap_until(args, deadline: float | None):
     """:func:`_wrap_arrays` in a forked child killed at ``deadline`` (CGAL cannot be interrupted).
 
-    Without a deadline, or where fork is unavailable (or this is a daemonic worker, which may
-    not have children), the wrap runs in this process.
+    The child also keeps this process small: pymeshlab (Qt and its filter plugins, about 50 MB a
+    process) is imported there, not here, so a pool worker's memory does not jump at its first
+    alpha wrap. A daemonic process (a pool worker) may not start ``multiprocessing`` children; it
+    forks with :func:`os.fork` when only one thread runs in it (fork is unsafe from a
+    multi-threaded process, e.g. a Dask worker). Without a deadline, or where no child can be
+    forked, the wrap runs in this process.
     """
     import multiprocessing as mp
-    if deadline is None or not hasattr(os, "fork") or mp.current_process().daemon:
+    if deadline is None or not hasattr(os, "fork"):
+        return _wrap_arrays(*args)
+    daemon = mp.current_process().daemon
+    if daemon and threading.active_count() > 1:
         return _wrap_arrays(*args)
     left = deadline - time.monotonic()
     if left <= 0:
         return None
+    if daemon:
+        return _wrap_forked(args, left)
     ctx = mp.get_context("fork")
     recv, send = ctx.Pipe(duplex=False)
     proc = ctx.Process(target=_wrap_child, args=(send, args), daemon=True)
@@ -112,6 +122,43 @@ def _wrap_until(args, deadline: float | None):
         if proc.is_alive():
             proc.kill()
         proc.join()
+
+
+def _wrap_forked(args, left: float):
+    """:func:`_wrap_arrays` in a child of :func:`os.fork` (from a single-threaded daemonic
+    process), killed after ``left`` seconds; None when it fails or overruns."""
+    import signal
+    from multiprocessing.connection import Connection
+    r, w = os.pipe()
+    try:
+        pid = os.fork()
+    except OSError:
+        os.close(r)
+        os.close(w)
+        return _wrap_arrays(*args)
+    if pid == 0:  # pragma: no cover - the child
+        try:
+            os.close(r)
+            _wrap_child(Connection(w, readable=False), args)
+        finally:
+            os._exit(0)
+    os.close(w)
+    recv = Connection(r, writable=False)
+    try:
+        if recv.poll(max(left, 0.0)):
+            try:
+                return recv.recv()
+            except (EOFError, OSError):
+                return None
+        return None  # over budget
+    finally:
+        recv.close()
+        try:
+            if os.waitpid(pid, os.WNOHANG) == (0, 0):  # still running: over budget
+                os.kill(pid, signal.SIGKILL)
+                os.waitpid(pid, 0)
+        except ChildProcessError:
+            pass
 
 
 def alpha_wrap(m: PolyMesh, alpha: float, offset: float = OFFSET, target_faces: int | None = 400,
