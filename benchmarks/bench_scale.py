@@ -34,8 +34,10 @@ psutil last saw while sampling every 0.2 s; for the Dask row, psutil only, over 
 the cluster's); peak RSS of the process tree (sum over the live processes, sampled every 0.2 s)
 and peak PSS (the same sum of each process's proportional set size, ``/proc/PID/smaps_rollup``:
 pages a forked worker shares with its parent counted once, not once per process);
-``os.getloadavg()`` at start and end; the exit code and the outcome counts of the command's own
-report. ``buildings/CPU-s`` is the per-core rate and the figure to compare on a loaded machine;
+per process of the tree (the parent, the pool workers, the one-file writers' process beside
+pass 2): when it ran, its peak RSS and PSS, and its RSS at the peak of the sum (``processes``,
+``rss_at_peak_mb`` in the raw rows); ``os.getloadavg()`` at start and end; the exit code and the
+outcome counts of the command's own report. ``buildings/CPU-s`` is the per-core rate and the figure to compare on a loaded machine;
 the 1 -> 2 worker speed-up is of wall time and means little when the load average exceeds the
 cores.
 
@@ -179,6 +181,9 @@ class TreeSampler:
         self.peak = 0
         self.peak_pss = 0
         self.cpu: dict[tuple[int, float], float] = {}
+        self.procs: dict[tuple[int, float], list[float]] = {}  # (pid, start) -> [first, last seen s, peak RSS, PSS]
+        self.at_peak: list[tuple[float, int]] = []  # (start, RSS) of each process at the peak RSS sum
+        self._t0 = time.time()
         self.base = exclude_cpu_of
         self._stop = threading.Event()
         self._th = threading.Thread(target=self._loop, daemon=True)
@@ -190,15 +195,25 @@ class TreeSampler:
         except psutil.Error:
             return
         rss = pss = 0
+        now: list[tuple[float, int]] = []
         for q in procs:
             try:
                 with q.oneshot():
-                    rss += q.memory_info().rss
+                    r = q.memory_info().rss
+                    key = (q.pid, q.create_time())
                     t = q.cpu_times()
-                    self.cpu[(q.pid, q.create_time())] = t.user + t.system
-                pss += _pss(q.pid)
+                    self.cpu[key] = t.user + t.system
+                p = _pss(q.pid)
             except psutil.Error:
-                pass
+                continue
+            rss += r
+            pss += p
+            t_s = time.time() - self._t0
+            seen = self.procs.setdefault(key, [t_s, t_s, 0, 0])
+            seen[1], seen[2], seen[3] = t_s, max(seen[2], r), max(seen[3], p)
+            now.append((key[1], r))
+        if rss > self.peak:
+            self.at_peak = now
         self.peak = max(self.peak, rss)
         self.peak_pss = max(self.peak_pss, pss)
 
@@ -229,6 +244,16 @@ class TreeSampler:
     def peak_pss_mb(self) -> float:
         return self.peak_pss / 2 ** 20
 
+    def processes(self) -> dict:
+        """Per process of the tree seen over at least a second, in order of start: when it was
+        first and last seen (s) and its peak RSS and PSS (MB); and each process's RSS (MB) at the
+        peak of the RSS sum. Which process grows with the input is what these say (the parent,
+        the pool workers, the one-file writers' process beside pass 2)."""
+        mb = 2 ** 20
+        rows = sorted((k[1], v) for k, v in self.procs.items() if v[1] - v[0] >= 1.0)
+        return {"processes": [[round(v[0], 1), round(v[1], 1), round(v[2] / mb), round(v[3] / mb)] for _, v in rows],
+                "rss_at_peak_mb": [round(r / mb) for _, r in sorted(self.at_peak)]}
+
 
 def _pss(pid: int) -> int:
     """Proportional set size (bytes) of ``pid``: its private pages plus its share of the pages it
@@ -258,7 +283,7 @@ def measure(cmd: list[str]) -> dict:
     lines = err.strip().splitlines()
     return {"wall_s": wall, "cpu_s": max(ru_cpu, s.cpu_seconds), "cpu_rusage_s": ru_cpu,
             "cpu_psutil_s": s.cpu_seconds, "peak_mb": s.peak_mb, "peak_pss_mb": s.peak_pss_mb,
-            "rc": proc.returncode,
+            **s.processes(), "rc": proc.returncode,
             "load": [load0, os.getloadavg()[0]], "stderr": lines[-1:] if lines else []}
 
 

@@ -141,7 +141,7 @@ def read_lines(path: str | os.PathLike) -> Iterator[dict]:
                 yield d
 
 
-def records_of(path: str | os.PathLike, start: int = 0) -> "RecordStore":
+def records_of(path: str | os.PathLike, start: int = 0, scratch: str | None = None) -> "RecordStore":
     """The buildings' records as the journal's lines from byte ``start`` on tell them.
 
     Each ``building`` line is a record (a later one for the same ``seq`` replaces it); the
@@ -154,6 +154,9 @@ def records_of(path: str | os.PathLike, start: int = 0) -> "RecordStore":
         The journal.
     start : int
         Byte offset to read from (:attr:`Journal.run_start`: this run's lines only).
+    scratch : str, optional
+        Folder for the records' scratch file (:class:`~lod2energy.records.RecordStore`);
+        default: kept in memory.
 
     Returns
     -------
@@ -162,7 +165,7 @@ def records_of(path: str | os.PathLike, start: int = 0) -> "RecordStore":
     """
     from lod2energy.records import BuildingRecord, ExportRecord, RecordStore
 
-    out = RecordStore()
+    out = RecordStore(scratch=scratch)
     for d in _lines(path, start):
         kind = d.get("kind")
         if kind == "building":

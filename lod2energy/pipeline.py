@@ -349,14 +349,14 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
     journal = Journal(os.path.join(out, JOURNAL_NAME), out, inputs,
                       header(input_path, options.fingerprint()), resume=run.resume)
     csv_rows = CsvRows(os.path.join(out, "report.csv"), out, inputs)  # a row as each building finishes
-    prev_b = RecordStore()  # the journal's records of an earlier run (--resume)
+    prev_b = RecordStore(scratch=spool)  # the journal's records of an earlier run (--resume)
     prev_c: dict[int, dict] = {}
     for ln in journal.previous():
         if ln.get("kind") == "building":
             prev_b[int(ln["seq"])] = BuildingRecord.from_json(ln)
         elif ln.get("kind") == "context":
             prev_c[int(ln["seq"])] = ln
-    records = RecordStore()  # seq -> record, compact: the parent's memory hardly grows with the file
+    records = RecordStore(scratch=spool)  # seq -> record, on disk: the parent's memory stays flat
     others: list[int] = []
     terrain: list[dict] = []  # the input's terrain the one-file writers carried
     reused: set[int] = set()

@@ -146,7 +146,7 @@ def write_reports_from_journal(out: str, input_path: str, model, journal_path: s
     """:func:`write_reports` from this run's lines of the journal (:func:`lod2energy.journal.records_of`
     from byte ``start``): what the journal says was done is what the report says."""
     from lod2energy.journal import records_of, terrain_of
-    recs = records_of(journal_path, start)
+    recs = records_of(journal_path, start, scratch=os.path.dirname(os.path.abspath(journal_path)))
     return write_reports(out, input_path, model, recs.ordered(), dataset_errors, interrupted, inputs,
                          terrain_of(journal_path, start))
 
