@@ -111,17 +111,22 @@ def _wrap_until(args, deadline: float | None):
     proc.start()
     send.close()
     try:
-        if recv.poll(max(left, 0.0)):
-            try:
-                return recv.recv()
-            except (EOFError, OSError):
-                return None
-        return None  # over budget
+        return _answer(recv, left)
     finally:
         recv.close()
         if proc.is_alive():
             proc.kill()
         proc.join()
+
+
+def _answer(recv, left: float):
+    """The child's reply on ``recv`` within ``left`` s; None when it is over budget or dies."""
+    if not recv.poll(max(left, 0.0)):
+        return None
+    try:
+        return recv.recv()
+    except (EOFError, OSError):
+        return None
 
 
 def _wrap_forked(args, left: float):
@@ -145,12 +150,7 @@ def _wrap_forked(args, left: float):
     os.close(w)
     recv = Connection(r, writable=False)
     try:
-        if recv.poll(max(left, 0.0)):
-            try:
-                return recv.recv()
-            except (EOFError, OSError):
-                return None
-        return None  # over budget
+        return _answer(recv, left)
     finally:
         recv.close()
         try:
