@@ -158,16 +158,50 @@ def json_ready(doc):
     return json.loads(json.dumps(doc, default=json_default))
 
 
+class _ReportBuildings:
+    """The ``buildings`` of a ``report.json``, parsed one at a time on each iteration (the
+    page reads them twice; as one list of dicts they cost ~25 KB a building)."""
+
+    def __init__(self, path: str):
+        self.path = path
+
+    def __iter__(self):
+        from lod2energy.io.json_stream import Scanner
+        with open(self.path, encoding="utf-8") as f:
+            sc = Scanner(f)
+            for key in sc.members():
+                if key == "buildings" and sc.peek() == "[":
+                    for _ in sc.items():
+                        yield sc.value()
+                    return
+                sc.value()
+
+
+def _report_lazily(path: str) -> dict:
+    """``report.json`` as ``json.load`` gives it, but its ``buildings`` a :class:`_ReportBuildings`."""
+    from lod2energy.io.json_stream import Scanner
+    doc: dict = {}
+    with open(path, encoding="utf-8") as f:
+        sc = Scanner(f)
+        for key in sc.members():
+            if key == "buildings" and sc.peek() == "[":
+                for _ in sc.items():
+                    sc.value()
+                doc[key] = _ReportBuildings(path)
+            else:
+                doc[key] = sc.value()
+        sc.end()
+    return doc
+
+
 def write_html_report(report_path: str, input_path: str, records: RecordStore, spool: str, out: str,
                       tol: Tolerances = DEFAULT, inputs=()) -> str:
     """``OUTDIR/report.html`` (:mod:`lod2energy.viz`) from the report, the input buildings and the
     prepared ones of the spool; a page that cannot be written costs one line, never the export."""
-    import json
     try:
         from lod2energy.viz.report import panel_ids, read_for_page, write_report_html
         from lod2energy.viz import data as viz_data
-        with open(report_path, encoding="utf-8") as f:
-            doc = json.load(f)
+        doc = _report_lazily(report_path)
         ids, _ = panel_ids(viz_data.rows(doc))
         wanted = set(ids)
         # the panels' buildings whole, the others' footprints only: memory bounded by the panels

@@ -271,3 +271,31 @@ def test_a_killed_run_leaves_a_csv_row_per_building_in_its_journal(tmp_path):
     assert 3 <= len(ids) < 12
     # a row per finished building (the journal's line is appended just before the row)
     assert rows in (ids, ids[:-1]), (rows, ids)
+
+
+def test_the_page_reads_report_json_one_building_at_a_time(tmp_path):
+    """report.html's reading of report.json: the same document as ``json.load``, but its
+    buildings parsed on each iteration rather than held (a city's report is ~25 KB a building
+    as dicts)."""
+    import json
+    import tracemalloc
+    from lod2energy.reports import _report_lazily
+    doc = {"input_file": "x.city.jsonl", "output_dir": "out",
+           "buildings": [{"id": f"b{i}", "repair": {"stage": "valid", "metrics": {f"m{k}": k / 3 for k in range(30)}},
+                          "exports": {"stl": {"ok": True, "problems": []}}} for i in range(400)],
+           "dataset_errors": [{"code": 901, "info": "x"}]}
+    path = tmp_path / "report.json"
+    path.write_text(json.dumps(doc, indent=1), encoding="utf-8")
+    tracemalloc.start()
+    try:
+        base = tracemalloc.get_traced_memory()[0]
+        whole = json.loads(path.read_text(encoding="utf-8"))
+        as_list = tracemalloc.get_traced_memory()[0] - base
+        base = tracemalloc.get_traced_memory()[0]
+        lazy = _report_lazily(str(path))
+        as_lazy = tracemalloc.get_traced_memory()[0] - base
+    finally:
+        tracemalloc.stop()
+    assert {k: v for k, v in lazy.items() if k != "buildings"} == {k: v for k, v in whole.items() if k != "buildings"}
+    assert list(lazy["buildings"]) == whole["buildings"] == list(lazy["buildings"])  # twice, the same
+    assert as_lazy < 0.05 * as_list, (as_lazy, as_list)
