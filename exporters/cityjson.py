@@ -39,6 +39,7 @@ from typing import Any, Iterable, Iterator, Mapping, Sequence
 
 from lod2energy import safe_write
 from lod2energy.errors import Lod2EnergyError
+from lod2energy.heap import give_back
 from lod2energy.io import cityjson as cjio
 from lod2energy.io.cityjson_grid import on_grid
 from lod2energy.io.cityjson_write import write_document
@@ -218,6 +219,7 @@ def write(path: str, model: CityModel, buildings: Iterable[Building], version: s
         return ExportResult(ids, path, False, (f"cannot write {path}: {why}",), version=version,
                             skipped=tuple(skipped), terrain=tuple(terrain))
     ids = tuple(written)
+    give_back()  # the written buildings' pages, before the self-check reads the file again
     try:
         problems = self_check(tmp, extension=extension_schema(version), tol=tol)
         target = path + INVALID_SUFFIX if problems else path

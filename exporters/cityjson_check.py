@@ -15,6 +15,7 @@ val3dity's checks and the envelope checks. The file is read twice with a
 """
 from __future__ import annotations
 
+import sys
 from typing import Any, Iterator, Mapping
 
 import numpy as np
@@ -36,6 +37,44 @@ BATCH = 64
 VERTEX_CHUNK = 1 << 16
 
 
+_ABSENT = object()
+
+
+class _Link(Mapping):
+    """What the grouping of CityObjects reads of one (``type``, ``parents``, ``children``), in
+    ~60 bytes instead of a dict's ~200, the ids and types interned so that a child's
+    ``parents`` and its parent's key share one string (13,504 buildings: ~40,000 of these)."""
+
+    __slots__ = ("type", "parents", "children")
+    _KEYS = ("type", "parents", "children")
+
+    def __init__(self, type_=_ABSENT, parents=_ABSENT, children=_ABSENT):
+        self.type, self.parents, self.children = type_, parents, children
+
+    @classmethod
+    def of(cls, co: Mapping) -> "_Link":
+        def keep(k):
+            x = co.get(k, _ABSENT)
+            if k == "type" and type(x) is str:
+                return sys.intern(x)
+            if k != "type" and type(x) is list and all(type(i) is str for i in x):
+                return [sys.intern(i) for i in x]
+            return x
+        return cls(*(keep(k) for k in cls._KEYS))
+
+    def __getitem__(self, key):
+        x = getattr(self, key, _ABSENT) if key in self._KEYS else _ABSENT
+        if x is _ABSENT:
+            raise KeyError(key)
+        return x
+
+    def __iter__(self):
+        return (k for k in self._KEYS if getattr(self, k) is not _ABSENT)
+
+    def __len__(self) -> int:
+        return sum(1 for _ in self)
+
+
 class _Pass1:
     """What the first reading keeps: the head, the CityObjects' links, the vertices."""
 
@@ -48,17 +87,26 @@ class _Pass1:
         self.vertices_member: Any = None  # the 'vertices' value when it is not an array
 
     def vertices(self, transform) -> np.ndarray:
-        """All vertices, as the reader computes them (``v * scale + translate``)."""
+        """All vertices, as the reader computes them (``v * scale + translate``); called once
+        (the integer chunks are dropped as they are copied)."""
         if self.vertices_member is not None:
             return cjio._transform_vertices(self.vertices_member, transform, "document")
         if not self.raw:
             return np.zeros((0, 3))
-        v = np.concatenate(self.raw).astype(np.float64)
+        # filled chunk by chunk, each integer chunk dropped once copied: one float array at the peak
+        v = np.empty((sum(len(a) for a in self.raw), 3), dtype=np.float64)
+        o = 0
+        for i, a in enumerate(self.raw):
+            v[o:o + len(a)] = a
+            o += len(a)
+            self.raw[i] = None
+        self.raw = []
         if transform:
             scale = np.asarray(transform["scale"], dtype=np.float64).reshape(3)
             translate = np.asarray(transform["translate"], dtype=np.float64).reshape(3)
             with np.errstate(over="ignore", invalid="ignore"):
-                v = v * scale + translate
+                v *= scale  # the same two roundings as v * scale + translate
+                v += translate
         return v
 
 
@@ -91,8 +139,7 @@ def _first_pass(path: str) -> _Pass1:
                     if oid in p.links:
                         p.duplicates.append(oid)
                         continue
-                    p.links[oid] = ({k: co[k] for k in ("type", "parents", "children") if k in co}
-                                    if isinstance(co, Mapping) else co)
+                    p.links[sys.intern(oid)] = _Link.of(co) if isinstance(co, Mapping) else co
             elif key == "vertices" and sc.peek() == "[" and "vertices" not in p.head:
                 p.head["vertices"] = []
                 chunk: list = []
