@@ -89,49 +89,25 @@ def _wrap_until(args, deadline: float | None):
 
     The child also keeps this process small: pymeshlab (Qt and its filter plugins, about 50 MB a
     process) is imported there, not here, so a pool worker's memory does not jump at its first
-    alpha wrap. A daemonic process (a pool worker) may not start ``multiprocessing`` children; it
-    forks with :func:`os.fork` when only one thread runs in it (fork is unsafe from a
-    multi-threaded process, e.g. a Dask worker). Without a deadline, or where no child can be
-    forked, the wrap runs in this process.
+    alpha wrap. The child is forked with :func:`os.fork` (a daemonic pool worker may not start
+    ``multiprocessing`` children); a daemonic process with more than one thread (e.g. a Dask
+    worker, where fork is unsafe) wraps in-process. Without a deadline, or where fork is
+    unavailable, the wrap runs in this process.
     """
     import multiprocessing as mp
     if deadline is None or not hasattr(os, "fork"):
         return _wrap_arrays(*args)
-    daemon = mp.current_process().daemon
-    if daemon and threading.active_count() > 1:
+    if mp.current_process().daemon and threading.active_count() > 1:
         return _wrap_arrays(*args)
     left = deadline - time.monotonic()
     if left <= 0:
         return None
-    if daemon:
-        return _wrap_forked(args, left)
-    ctx = mp.get_context("fork")
-    recv, send = ctx.Pipe(duplex=False)
-    proc = ctx.Process(target=_wrap_child, args=(send, args), daemon=True)
-    proc.start()
-    send.close()
-    try:
-        return _answer(recv, left)
-    finally:
-        recv.close()
-        if proc.is_alive():
-            proc.kill()
-        proc.join()
-
-
-def _answer(recv, left: float):
-    """The child's reply on ``recv`` within ``left`` s; None when it is over budget or dies."""
-    if not recv.poll(max(left, 0.0)):
-        return None
-    try:
-        return recv.recv()
-    except (EOFError, OSError):
-        return None
+    return _wrap_forked(args, left)
 
 
 def _wrap_forked(args, left: float):
-    """:func:`_wrap_arrays` in a child of :func:`os.fork` (from a single-threaded daemonic
-    process), killed after ``left`` seconds; None when it fails or overruns."""
+    """:func:`_wrap_arrays` in a child of :func:`os.fork`, killed after ``left`` seconds; None
+    when it fails or overruns."""
     import signal
     from multiprocessing.connection import Connection
     r, w = os.pipe()
@@ -150,7 +126,12 @@ def _wrap_forked(args, left: float):
     os.close(w)
     recv = Connection(r, writable=False)
     try:
-        return _answer(recv, left)
+        if not recv.poll(max(left, 0.0)):
+            return None  # over budget
+        try:
+            return recv.recv()
+        except (EOFError, OSError):
+            return None
     finally:
         recv.close()
         try:
