@@ -4,18 +4,30 @@ The same checks as on the whole document (:func:`lod2energy.exporters.cityjson.s
 the official schema of the file's version, the Energy extension's attributes, then every
 energy building re-read (as :func:`lod2energy.io.cityjson.read` reads it) and checked with
 val3dity's checks and the envelope checks. The file is read twice with a
-:class:`~lod2energy.io.json_stream.Scanner` instead of being parsed whole:
+:class:`~lod2energy.io.json_stream.Scanner` instead of being parsed whole, and what the check
+holds does not grow with the file:
 
-1. the head (every member but ``CityObjects`` and ``vertices``), the links between the
-   CityObjects (type, parents, children) and the vertices (a float array, 24 bytes a vertex);
+1. the head (every member but ``CityObjects`` and ``vertices``), a hash of each CityObject id
+   (8 bytes) and the vertices, written to an unnamed scratch file beside the document (in
+   memory only when no scratch file can be written);
 2. each CityObject again: the schema and the extension on batches of CityObjects (a
    document with the file's head and those objects: the schema constrains every CityObject
-   on its own, so this is the verdict on the whole document), and each first-level object
-   with its descendants built into a Building, checked, and dropped.
+   on its own, so this is the verdict on the whole document), and each run of consecutive
+   CityObjects whose links stay inside it (as this package writes a building and its parts)
+   grouped as the reader groups the whole document, each first-level object with its
+   descendants built into a Building (its vertices read from the scratch file), checked,
+   and dropped.
+
+A document whose links leave such a run (a part written far from its parent, a link back to
+an earlier object, an id used twice) is checked from every CityObject's links, read in a
+third reading: the same verdict, with memory growing with the file.
 """
 from __future__ import annotations
 
+import array
+import os
 import sys
+import tempfile
 from typing import Any, Iterator, Mapping
 
 import numpy as np
@@ -33,8 +45,10 @@ from .cityjson_schema import (
 
 #: CityObjects validated together (one small document each).
 BATCH = 64
-#: Vertices converted to an array at a time.
+#: Vertices converted to an array (and read back) at a time.
 VERTEX_CHUNK = 1 << 16
+#: CityObjects one run of linked objects may hold before every link of the document is read.
+MAX_BLOCK = 4096
 
 
 _ABSENT = object()
@@ -75,39 +89,111 @@ class _Link(Mapping):
         return sum(1 for _ in self)
 
 
-class _Pass1:
-    """What the first reading keeps: the head, the CityObjects' links, the vertices."""
+class _Vertices:
+    """The document's vertices, kept in an unnamed scratch file beside the document (24 bytes a
+    vertex on disk, none in memory) and gathered a feature at a time, as ``v * scale +
+    translate`` with the same two roundings the reader makes on the whole array.
 
-    def __init__(self):
+    Behaves as the vertex array :func:`lod2energy.io.cityjson.build_feature` indexes: ``len``
+    and ``[used]`` (sorted, unique row indices). Without a scratch file (it cannot be made, or
+    the disk fills) the vertices stay in memory, as one array.
+    """
+
+    def __init__(self, scratch_dir: str | None):
+        self.n = 0
+        self._mem: list[np.ndarray] | None = None
+        self._array: np.ndarray | None = None
+        self._scale = self._translate = None
+        try:
+            self._f = tempfile.TemporaryFile(dir=scratch_dir)
+        except OSError:
+            self._f, self._mem = None, []
+
+    def append(self, a: np.ndarray) -> None:
+        a = np.ascontiguousarray(a, dtype=np.float64).reshape(-1, 3)  # the cast an assignment makes
+        if self._f is not None:
+            try:
+                self._f.write(a.tobytes())
+            except OSError:  # a full disk: what is written comes back to memory
+                self._mem = [self._read(0, self.n)]
+                self._f.close()
+                self._f = None
+        if self._f is None:
+            self._mem.append(a)
+        self.n += len(a)
+
+    def finish(self, transform) -> "_Vertices":
+        """Set the document's ``transform`` (None: the values are the coordinates)."""
+        if transform:
+            self._scale = np.asarray(transform["scale"], dtype=np.float64).reshape(3)
+            self._translate = np.asarray(transform["translate"], dtype=np.float64).reshape(3)
+        if self._f is not None:
+            self._f.flush()
+        else:
+            v = np.concatenate(self._mem) if self._mem else np.zeros((0, 3))
+            self._mem = None
+            self._array = self._transformed(v)
+        return self
+
+    def _transformed(self, v: np.ndarray) -> np.ndarray:
+        if self._scale is not None:
+            with np.errstate(over="ignore", invalid="ignore"):
+                v *= self._scale  # the same two roundings as v * scale + translate
+                v += self._translate
+        return v
+
+    def _read(self, start: int, stop: int) -> np.ndarray:
+        data = os.pread(self._f.fileno(), (stop - start) * 24, start * 24)
+        return np.frombuffer(data, dtype=np.float64).reshape(-1, 3).copy()
+
+    def __len__(self) -> int:
+        return self.n
+
+    def __getitem__(self, used: np.ndarray) -> np.ndarray:
+        if self._array is not None:
+            return self._array[used]
+        used = np.asarray(used, dtype=np.intp)
+        out = np.empty((len(used), 3), dtype=np.float64)
+        i = 0
+        while i < len(used):  # a feature's rows are nearly always one short run: one read
+            lo = int(used[i])
+            hi = min(lo + VERTEX_CHUNK, self.n)
+            j = int(np.searchsorted(used, hi, side="left"))
+            out[i:j] = self._read(lo, hi)[used[i:j] - lo]
+            i = j
+        return self._transformed(out)
+
+    def close(self) -> None:
+        if self._f is not None:
+            self._f.close()
+            self._f = None
+
+
+class _Pass1:
+    """What the first reading keeps: the head, a hash of each CityObject id (8 bytes), the
+    vertices (in a scratch file)."""
+
+    def __init__(self, scratch_dir: str | None = None):
         self.head: dict = {}
-        self.links: dict[str, dict] = {}
-        self.duplicates: list[str] = []
-        self.raw: list[np.ndarray] = []
+        self.ids: np.ndarray = np.zeros(0, dtype=np.int64)  # sorted hashes of the ids
+        self.repeated = False  # two ids may be equal (their hashes are): the links decide
+        self.verts = _Vertices(scratch_dir)
         self.bad_vertices: list[list] = []  # chunks that are not triples of integers (for the schema)
         self.vertices_member: Any = None  # the 'vertices' value when it is not an array
+        self.n_objects = 0
 
-    def vertices(self, transform) -> np.ndarray:
-        """All vertices, as the reader computes them (``v * scale + translate``); called once
-        (the integer chunks are dropped as they are copied)."""
+    def vertices(self, transform):
+        """The vertex array :func:`lod2energy.io.cityjson.build_feature` indexes."""
         if self.vertices_member is not None:
+            self.verts.close()
             return cjio._transform_vertices(self.vertices_member, transform, "document")
-        if not self.raw:
-            return np.zeros((0, 3))
-        # filled chunk by chunk, each integer chunk dropped once copied: one float array at the peak
-        v = np.empty((sum(len(a) for a in self.raw), 3), dtype=np.float64)
-        o = 0
-        for i, a in enumerate(self.raw):
-            v[o:o + len(a)] = a
-            o += len(a)
-            self.raw[i] = None
-        self.raw = []
-        if transform:
-            scale = np.asarray(transform["scale"], dtype=np.float64).reshape(3)
-            translate = np.asarray(transform["translate"], dtype=np.float64).reshape(3)
-            with np.errstate(over="ignore", invalid="ignore"):
-                v *= scale  # the same two roundings as v * scale + translate
-                v += translate
-        return v
+        return self.verts.finish(transform)
+
+    def may_exist(self, oid: str) -> bool:
+        """False only for an id the document surely has no CityObject of."""
+        h = hash(oid)
+        k = int(np.searchsorted(self.ids, h))
+        return k < len(self.ids) and int(self.ids[k]) == h
 
 
 def _triples(chunk: list) -> bool:
@@ -124,22 +210,20 @@ def _add_vertices(p: _Pass1, chunk: list) -> None:
     if not ok:
         p.bad_vertices.append(chunk)
         a = cjio._vertices_row_by_row(chunk, "document")
-    p.raw.append(a)
+    p.verts.append(a)
 
 
-def _first_pass(path: str) -> _Pass1:
-    p = _Pass1()
+def _first_pass(path: str, scratch_dir: str | None = None) -> _Pass1:
+    p = _Pass1(scratch_dir)
+    hashes = array.array("q")
     with open(path, encoding="utf-8") as f:
         sc = Scanner(f)
         for key in sc.members():
             if key == "CityObjects" and sc.peek() == "{" and "CityObjects" not in p.head:
                 p.head["CityObjects"] = {}
                 for oid in sc.members():
-                    co = sc.value()
-                    if oid in p.links:
-                        p.duplicates.append(oid)
-                        continue
-                    p.links[sys.intern(oid)] = _Link.of(co) if isinstance(co, Mapping) else co
+                    sc.value()
+                    hashes.append(hash(oid))
             elif key == "vertices" and sc.peek() == "[" and "vertices" not in p.head:
                 p.head["vertices"] = []
                 chunk: list = []
@@ -155,10 +239,30 @@ def _first_pass(path: str) -> _Pass1:
                 if key == "vertices":
                     p.vertices_member = p.head[key]
         sc.end()
+    p.n_objects = len(hashes)
+    p.ids = np.unique(np.frombuffer(hashes, dtype=np.int64)) if len(hashes) else p.ids
+    p.repeated = len(p.ids) < len(hashes)
     return p
 
 
-def _cityobjects(path: str) -> Iterator[tuple[str, Any, bool]]:
+def _links_pass(path: str) -> tuple[dict[str, _Link], list[str]]:
+    """Every CityObject's links (and the repeated ids), for a document whose groups are not
+    local (:func:`_local_groups`): the reader's grouping needs them all at once."""
+    links: dict[str, Any] = {}
+    duplicates: list[str] = []
+    for oid, co, first in _cityobjects(path):
+        if not first:
+            duplicates.append(oid)
+            continue
+        links[sys.intern(oid)] = _Link.of(co) if isinstance(co, Mapping) else co
+    return links, duplicates
+
+
+class _NotLocal(Exception):
+    """The document's groups are not runs of consecutive CityObjects: read every link."""
+
+
+def _cityobjects(path: str, repeated: bool = True) -> Iterator[tuple[str, Any, bool]]:
     """``(id, CityObject, first)`` of the file's CityObjects member, in file order.
 
     Reading stops after that member: :func:`_first_pass` has read the whole file already (its
@@ -171,6 +275,9 @@ def _cityobjects(path: str) -> Iterator[tuple[str, Any, bool]]:
             if key == "CityObjects" and sc.peek() == "{":
                 for oid in sc.members():
                     co = sc.value()
+                    if not repeated:  # no id twice (the first reading's hashes say so): no set of them
+                        yield oid, co, True
+                        continue
                     yield oid, co, oid not in seen
                     seen.add(oid)
                 return
@@ -208,6 +315,19 @@ def _feature(root: str, ids: list[str], cos: Mapping, verts: np.ndarray, transfo
 def self_check_document(path: str, extension: Mapping | None = None, tol=None) -> list[str]:
     """Problems of an exported CityJSON document (empty: the file is OK), read one
     CityObject at a time; see :func:`lod2energy.exporters.cityjson.self_check`."""
+    try:
+        p = _first_pass(path, os.path.dirname(os.path.abspath(path)))
+    except (OSError, UnicodeDecodeError) as e:
+        return [f"cannot read {path}: {e}"]
+    except StreamError as e:
+        return [f"{path} is not valid JSON: {e.msg} at line {e.lineno}"]
+    try:
+        return _check(path, p, extension, tol)
+    finally:
+        p.verts.close()
+
+
+def _check(path: str, p: _Pass1, extension: Mapping | None, tol) -> list[str]:
     from lod2energy.config import DEFAULT
     from lod2energy.exporters.cityjson import TOLERATED_CODES, envelope_problems
     from lod2energy.io import to_local_frame
@@ -215,12 +335,6 @@ def self_check_document(path: str, extension: Mapping | None = None, tol=None) -
     from lod2energy.validate.codes import name
 
     tol = tol or DEFAULT
-    try:
-        p = _first_pass(path)
-    except (OSError, UnicodeDecodeError) as e:
-        return [f"cannot read {path}: {e}"]
-    except StreamError as e:
-        return [f"{path} is not valid JSON: {e.msg} at line {e.lineno}"]
     head = p.head
     try:
         version = cjio.normalise_version(head.get("version"))
@@ -231,7 +345,7 @@ def self_check_document(path: str, extension: Mapping | None = None, tol=None) -
     if "CityObjects" in skeleton:
         skeleton["CityObjects"] = {}
     problems: list[str] = []
-    fast = _worth_compiling(version, len(p.links) + len(p.duplicates))
+    fast = _worth_compiling(version, p.n_objects)
     if not (fast and _schema_valid_fast(version, skeleton)):
         problems += _schema_errors(schemas, skeleton, "document")
     for chunk in p.bad_vertices:
@@ -249,11 +363,6 @@ def self_check_document(path: str, extension: Mapping | None = None, tol=None) -
         out = [] if (fast and _schema_valid_fast(version, doc)) else _schema_errors(schemas, doc, "document")
         return out + (extension_problems(doc, extension, "document") if referenced else [])
 
-    # the reader's groups: each first-level object with its descendants
-    links, dups = p.links, p.duplicates
-    groups = cjio._feature_ids(links)
-    group_of = {oid: gi for gi, g in enumerate(groups) for oid in g}
-    left = [len(g) for g in groups]
     model = None
     if head.get("type") != "CityJSON":
         problems.append(f"re-read: {path}: 'type' is {str(head.get('type'))[:40]!r}, not 'CityJSON'")
@@ -263,10 +372,52 @@ def self_check_document(path: str, extension: Mapping | None = None, tol=None) -
         except Lod2EnergyError as e:
             problems.append(f"re-read: {e}")
     verts = p.vertices(model.transform) if model is not None else None
-    del p
     templates = head.get("geometry-templates")
 
-    def features() -> Iterator[Building | FeatureError]:
+    def group(g: list[str], cos: Mapping) -> Building | FeatureError:
+        return _feature(g[0], g, cos, verts, model.transform, templates, path)
+
+    def local_features(out: list[str]) -> Iterator[Building | FeatureError]:
+        """The reader's groups when each is a run of consecutive CityObjects whose links stay
+        inside the run (as this package writes them): a run at a time in memory."""
+        block: dict[str, Any] = {}
+        wanted: set[str] = set()
+        orphans: list[FeatureError] = []
+        batch: dict = {}
+        for oid, co, _ in _cityobjects(path, repeated=False):
+            batch[oid] = co
+            if len(batch) >= BATCH:
+                out.extend(batch_problems(batch))
+                batch = {}
+            if model is None:
+                continue
+            block[oid] = co
+            wanted.discard(oid)
+            wanted.update(x for x in cjio._links(co, "parents") + cjio._links(co, "children")
+                          if x not in block and p.may_exist(x))
+            if wanted:
+                if len(block) > MAX_BLOCK:
+                    raise _NotLocal
+                continue
+            # no CityObject before or after the run links into it: its groups are the reader's
+            groups = cjio._feature_ids(block)
+            at = {k: i for i, k in enumerate(block)}
+            for g in sorted(groups, key=lambda g: max(at[k] for k in g)):  # in the order they complete
+                yield group(g, block)
+            orphans.extend(cjio._orphan_errors(block, groups, path))
+            block = {}
+        if block:
+            raise _NotLocal  # a link to an id the document has before the run
+        if batch:
+            out.extend(batch_problems(batch))
+        yield from orphans
+
+    def all_features(out: list[str]) -> Iterator[Building | FeatureError]:
+        """The reader's groups from every CityObject's links (any document)."""
+        links, dups = _links_pass(path)
+        groups = cjio._feature_ids(links)
+        group_of = {oid: gi for gi, g in enumerate(groups) for oid in g}
+        left = [len(g) for g in groups]
         for oid in dict.fromkeys(dups):
             yield FeatureError(oid, 901, f"coid={oid}: {path} has more than one CityObject with this id; the first "
                                          f"is read, the others are not")
@@ -276,9 +427,9 @@ def self_check_document(path: str, extension: Mapping | None = None, tol=None) -
             if first:
                 batch[oid] = co
             else:  # the schema sees every one
-                problems.extend(batch_problems({oid: co}))
+                out.extend(batch_problems({oid: co}))
             if len(batch) >= BATCH:
-                problems.extend(batch_problems(batch))
+                out.extend(batch_problems(batch))
                 batch = {}
             gi = group_of.get(oid) if first else None
             if gi is None or model is None:
@@ -287,29 +438,41 @@ def self_check_document(path: str, extension: Mapping | None = None, tol=None) -
             left[gi] -= 1
             if left[gi] == 0:
                 g = groups[gi]
-                yield _feature(g[0], g, {k: pending.pop(k) for k in g}, verts, model.transform, templates, path)
+                yield group(g, {k: pending.pop(k) for k in g})
         if batch:
-            problems.extend(batch_problems(batch))
+            out.extend(batch_problems(batch))
         if model is not None:
             yield from cjio._orphan_errors(links, groups, path)
 
-    feats: Iterator = features()
-    if model is not None:
-        model, feats = to_local_frame(model, feats)  # a geographic file is checked in metres
-    geometry: list[str] = []
-    for f in feats:
-        if len(geometry) > MAX_PROBLEMS:
-            continue  # the schema of every CityObject is still checked
-        if not isinstance(f, Building):
-            geometry.append(f"re-read: {f.message}")
-            continue
-        if not any(k.startswith("+energy") for k in f.root.attributes):
-            continue
-        for d in validate_building(f, tol):
-            if d.code in TOLERATED_CODES:
+    def checked(features) -> tuple[list[str], list[str]]:
+        out: list[str] = []
+        feats: Iterator = features(out)
+        m = model
+        if m is not None:
+            m, feats = to_local_frame(m, feats)  # a geographic file is checked in metres
+        geometry: list[str] = []
+        for f in feats:
+            if len(geometry) > MAX_PROBLEMS:
+                continue  # the schema of every CityObject is still checked
+            if not isinstance(f, Building):
+                geometry.append(f"re-read: {f.message}")
                 continue
-            geometry.append(f"{d.location}: {d.code} {name(d.code)} {d.info}".rstrip())
-        geometry += envelope_problems(f)
+            if not any(k.startswith("+energy") for k in f.root.attributes):
+                continue
+            for d in validate_building(f, tol):
+                if d.code in TOLERATED_CODES:
+                    continue
+                geometry.append(f"{d.location}: {d.code} {name(d.code)} {d.info}".rstrip())
+            geometry += envelope_problems(f)
+        return out, geometry
+
+    try:
+        if p.repeated:
+            raise _NotLocal
+        more, geometry = checked(local_features)
+    except _NotLocal:
+        more, geometry = checked(all_features)
+    problems += more
     if problems:  # the schema's and the extension's problems come first, as on the whole document
         return problems[:MAX_PROBLEMS]
     return geometry[:MAX_PROBLEMS]

@@ -239,7 +239,21 @@ def _parse_geometry(g: Any, col: _Collector, where: str, arrays: bool = True) ->
     return Geometry(gtype, lod, solids, sem_surfaces, extra=frozen_mapping(extra))
 
 
-def _remap_geometry(g: Geometry, lut: np.ndarray) -> Geometry:
+class _Local:
+    """The local index of a file vertex among a feature's sorted, unique ``used`` ones:
+    ``lut[i]`` (an index or a sequence of them, each in ``used``) by binary search, so that a
+    feature of a document with millions of vertices costs its own size, not a table of them all."""
+
+    __slots__ = ("used",)
+
+    def __init__(self, used: np.ndarray):
+        self.used = used
+
+    def __getitem__(self, idx):
+        return np.searchsorted(self.used, idx)
+
+
+def _remap_geometry(g: Geometry, lut: "_Local") -> Geometry:
     if g.raw is not None:
         raw = dict(g.raw)
         raw["boundaries"] = _remap_nested(raw["boundaries"], lut)
@@ -255,7 +269,7 @@ def _remap_geometry(g: Geometry, lut: np.ndarray) -> Geometry:
     return Geometry(g.type, g.lod, solids, g.semantic_surfaces, extra=g.extra)
 
 
-def _remap_nested(x: Any, lut: np.ndarray) -> Any:
+def _remap_nested(x: Any, lut: "_Local") -> Any:
     if isinstance(x, list):
         return [_remap_nested(i, lut) for i in x]
     return int(lut[x])
@@ -359,8 +373,7 @@ def build_feature(root_id: str, ids: list[str], cos: Mapping[str, Any], vertices
     if local.size and np.abs(local).max() > MAX_COORDINATE:
         raise InputError(f"coid={root_id}: coordinates beyond {MAX_COORDINATE:.0e} m "
                          f"(max |c| = {np.abs(local).max():.3g}); is the CRS projected and metric?")
-    lut = np.full(len(vertices), -1, dtype=np.intp)
-    lut[used] = np.arange(len(used))
+    lut = _Local(used)
     objs = [CityObject(o.id, o.type, tuple(_remap_geometry(g, lut) for g in o.geometries),
                        o.attributes, o.parents, o.children, o.extra) for o in objs]
     prov = frozen_mapping({"input_errors": tuple(col.issues)}) if col.issues else frozen_mapping({})
