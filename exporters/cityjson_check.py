@@ -25,6 +25,7 @@ third reading: the same verdict, with memory growing with the file.
 from __future__ import annotations
 
 import array
+import errno
 import os
 import sys
 import tempfile
@@ -89,6 +90,16 @@ class _Link(Mapping):
         return sum(1 for _ in self)
 
 
+def _write_all(fd: int, data: bytes) -> None:
+    """``data`` written whole to ``fd`` (unbuffered: a full disk raises here, not at a flush)."""
+    view = memoryview(data)
+    while view:
+        n = os.write(fd, view)
+        if n <= 0:
+            raise OSError(errno.ENOSPC, "nothing written")
+        view = view[n:]
+
+
 class _Vertices:
     """The document's vertices, kept in an unnamed scratch file beside the document (24 bytes a
     vertex on disk, none in memory) and gathered a feature at a time, as ``v * scale +
@@ -105,7 +116,7 @@ class _Vertices:
         self._array: np.ndarray | None = None
         self._scale = self._translate = None
         try:
-            self._f = tempfile.TemporaryFile(dir=scratch_dir)
+            self._f = tempfile.TemporaryFile(dir=scratch_dir, buffering=0)
         except OSError:
             self._f, self._mem = None, []
 
@@ -113,7 +124,7 @@ class _Vertices:
         a = np.ascontiguousarray(a, dtype=np.float64).reshape(-1, 3)  # the cast an assignment makes
         if self._f is not None:
             try:
-                self._f.write(a.tobytes())
+                _write_all(self._f.fileno(), a.tobytes())
             except OSError:  # a full disk: what is written comes back to memory
                 self._mem = [self._read(0, self.n)]
                 self._f.close()
@@ -127,9 +138,7 @@ class _Vertices:
         if transform:
             self._scale = np.asarray(transform["scale"], dtype=np.float64).reshape(3)
             self._translate = np.asarray(transform["translate"], dtype=np.float64).reshape(3)
-        if self._f is not None:
-            self._f.flush()
-        else:
+        if self._f is None:
             v = np.concatenate(self._mem) if self._mem else np.zeros((0, 3))
             self._mem = None
             self._array = self._transformed(v)

@@ -50,6 +50,29 @@ def test_the_first_reading_keeps_the_vertices_out_of_memory_bit_for_bit(tmp_path
     assert list(tmp_path.iterdir()) == [path]  # the scratch file has no name, nothing is left
 
 
+def test_a_full_disk_brings_the_vertices_back_to_memory(tmp_path, monkeypatch):
+    import errno
+    doc = _doc(5)
+    path = tmp_path / "d.city.json"
+    path.write_text(json.dumps(doc), encoding="utf-8")
+    t = doc["transform"]
+    want = np.asarray(doc["vertices"], dtype=np.int64).astype(np.float64) * np.asarray(t["scale"]) \
+        + np.asarray(t["translate"])
+    real, calls = C._write_all, []
+
+    def fills_up(fd, data):  # the first chunk fits, the disk is full at the second
+        calls.append(len(data))
+        if len(calls) > 1:
+            real(fd, data[:1000])  # part of it lands before the error
+            raise OSError(errno.ENOSPC, "No space left on device")
+        real(fd, data)
+    monkeypatch.setattr(C, "_write_all", fills_up)
+    p = C._first_pass(str(path), str(tmp_path))
+    got = p.vertices(t)
+    assert len(calls) == 2 and got._f is None and got._array is not None
+    assert got._array.tobytes() == want.tobytes()
+
+
 def test_the_links_reading_groups_as_the_reader(tmp_path):
     doc = _doc(50)
     path = tmp_path / "d.city.json"
