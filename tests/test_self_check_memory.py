@@ -24,13 +24,18 @@ def _doc(n: int) -> dict:
             "translate": [85000.25, 446000.5, -3.125]}, "CityObjects": cos, "vertices": verts}
 
 
-def test_the_first_reading_keeps_the_vertices_out_of_memory_bit_for_bit(tmp_path):
-    doc = _doc(50)
+def _written(tmp_path, doc: dict):
+    """``doc`` written as ``d.city.json``; its transform and its vertices as the reader computes them."""
     path = tmp_path / "d.city.json"
     path.write_text(json.dumps(doc), encoding="utf-8")
     t = doc["transform"]
     want = np.asarray(doc["vertices"], dtype=np.int64).astype(np.float64) * np.asarray(t["scale"]) \
         + np.asarray(t["translate"])
+    return path, t, want
+
+
+def test_the_first_reading_keeps_the_vertices_out_of_memory_bit_for_bit(tmp_path):
+    path, t, want = _written(tmp_path, _doc(50))
     rng = np.random.default_rng(5)
     picks = [np.arange(len(want)), np.arange(65_530, 65_545), np.array([0, 3, 65_535, 65_536, 69_999]),
              np.unique(rng.integers(0, len(want), 300)), np.zeros(0, dtype=np.intp)]
@@ -52,12 +57,7 @@ def test_the_first_reading_keeps_the_vertices_out_of_memory_bit_for_bit(tmp_path
 
 def test_a_full_disk_brings_the_vertices_back_to_memory(tmp_path, monkeypatch):
     import errno
-    doc = _doc(5)
-    path = tmp_path / "d.city.json"
-    path.write_text(json.dumps(doc), encoding="utf-8")
-    t = doc["transform"]
-    want = np.asarray(doc["vertices"], dtype=np.int64).astype(np.float64) * np.asarray(t["scale"]) \
-        + np.asarray(t["translate"])
+    path, t, want = _written(tmp_path, _doc(5))
     real, calls = C._write_all, []
 
     def fills_up(fd, data):  # the first chunk fits, the disk is full at the second
