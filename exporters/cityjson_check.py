@@ -164,9 +164,10 @@ class _Vertices:
         used = np.asarray(used, dtype=np.intp)
         out = np.empty((len(used), 3), dtype=np.float64)
         i = 0
+        last = int(used[-1]) + 1 if len(used) else 0
         while i < len(used):  # a feature's rows are nearly always one short run: one read
             lo = int(used[i])
-            hi = min(lo + VERTEX_CHUNK, self.n)
+            hi = min(lo + VERTEX_CHUNK, last)  # no further than the feature's last row
             j = int(np.searchsorted(used, hi, side="left"))
             out[i:j] = self._read(lo, hi)[used[i:j] - lo]
             i = j
@@ -256,7 +257,7 @@ def _first_pass(path: str, scratch_dir: str | None = None) -> _Pass1:
 
 def _links_pass(path: str) -> tuple[dict[str, _Link], list[str]]:
     """Every CityObject's links (and the repeated ids), for a document whose groups are not
-    local (:func:`_local_groups`): the reader's grouping needs them all at once."""
+    local (see ``local_features`` in :func:`_check`): the reader's grouping needs them all at once."""
     links: dict[str, Any] = {}
     duplicates: list[str] = []
     for oid, co, first in _cityobjects(path):
@@ -386,18 +387,29 @@ def _check(path: str, p: _Pass1, extension: Mapping | None, tol) -> list[str]:
     def group(g: list[str], cos: Mapping) -> Building | FeatureError:
         return _feature(g[0], g, cos, verts, model.transform, templates, path)
 
+    def schema_checked(out: list[str], repeated: bool) -> Iterator[tuple[str, Any, bool]]:
+        """:func:`_cityobjects`, each CityObject also seen by the schema (in batches; a repeated
+        id alone), its problems added to ``out``."""
+        batch: dict = {}
+        for oid, co, first in _cityobjects(path, repeated):
+            if first:
+                batch[oid] = co
+            else:
+                out.extend(batch_problems({oid: co}))
+            if len(batch) >= BATCH:
+                out.extend(batch_problems(batch))
+                batch = {}
+            yield oid, co, first
+        if batch:
+            out.extend(batch_problems(batch))
+
     def local_features(out: list[str]) -> Iterator[Building | FeatureError]:
         """The reader's groups when each is a run of consecutive CityObjects whose links stay
         inside the run (as this package writes them): a run at a time in memory."""
         block: dict[str, Any] = {}
         wanted: set[str] = set()
         orphans: list[FeatureError] = []
-        batch: dict = {}
-        for oid, co, _ in _cityobjects(path, repeated=False):
-            batch[oid] = co
-            if len(batch) >= BATCH:
-                out.extend(batch_problems(batch))
-                batch = {}
+        for oid, co, _ in schema_checked(out, repeated=False):
             if model is None:
                 continue
             block[oid] = co
@@ -417,8 +429,6 @@ def _check(path: str, p: _Pass1, extension: Mapping | None, tol) -> list[str]:
             block = {}
         if block:
             raise _NotLocal  # a link to an id the document has before the run
-        if batch:
-            out.extend(batch_problems(batch))
         yield from orphans
 
     def all_features(out: list[str]) -> Iterator[Building | FeatureError]:
@@ -431,15 +441,7 @@ def _check(path: str, p: _Pass1, extension: Mapping | None, tol) -> list[str]:
             yield FeatureError(oid, 901, f"coid={oid}: {path} has more than one CityObject with this id; the first "
                                          f"is read, the others are not")
         pending: dict[str, Any] = {}
-        batch: dict = {}
-        for oid, co, first in _cityobjects(path):
-            if first:
-                batch[oid] = co
-            else:  # the schema sees every one
-                out.extend(batch_problems({oid: co}))
-            if len(batch) >= BATCH:
-                out.extend(batch_problems(batch))
-                batch = {}
+        for oid, co, first in schema_checked(out, repeated=True):
             gi = group_of.get(oid) if first else None
             if gi is None or model is None:
                 continue
@@ -448,17 +450,14 @@ def _check(path: str, p: _Pass1, extension: Mapping | None, tol) -> list[str]:
             if left[gi] == 0:
                 g = groups[gi]
                 yield group(g, {k: pending.pop(k) for k in g})
-        if batch:
-            out.extend(batch_problems(batch))
         if model is not None:
             yield from cjio._orphan_errors(links, groups, path)
 
     def checked(features) -> tuple[list[str], list[str]]:
         out: list[str] = []
         feats: Iterator = features(out)
-        m = model
-        if m is not None:
-            m, feats = to_local_frame(m, feats)  # a geographic file is checked in metres
+        if model is not None:
+            _, feats = to_local_frame(model, feats)  # a geographic file is checked in metres
         geometry: list[str] = []
         for f in feats:
             if len(geometry) > MAX_PROBLEMS:
