@@ -12,6 +12,7 @@ from __future__ import annotations
 
 from collections import Counter
 from dataclasses import dataclass, field
+from typing import Iterable, Iterator
 
 import numpy as np
 
@@ -140,137 +141,240 @@ def heating_per_m2(b: dict) -> float | None:
 
 def rows(report: dict) -> list[Row]:
     """Normalised rows of a report of any of the three shapes (buildings only)."""
+    return list(iter_rows(report))
+
+
+def iter_rows(report: dict) -> Iterator[Row]:
+    """:func:`rows` one at a time (``report["buildings"]`` may itself be read lazily)."""
     kind = report_kind(report)
     if kind == "validate":
         reps = report.get("reports") if report.get("type") == "lod2energy_reports" else [report]
-        out = []
         for rep in reps:
             for f in rep.get("features", []):
                 if f.get("type") not in ("Building", None) and "energy" not in f:
                     continue
                 en = f.get("energy") or {}
-                out.append(Row(id=str(f["id"]), type=f.get("type", "Building"),
-                               before=_codes(e["code"] for e in f.get("errors", [])),
-                               compliant=en.get("compliant"),
-                               conditions={k: en[k] for k in CONDITIONS if k in en},
-                               errors=tuple(f.get("errors", []))))
-        return out
+                yield Row(id=str(f["id"]), type=f.get("type", "Building"),
+                          before=_codes(e["code"] for e in f.get("errors", [])),
+                          compliant=en.get("compliant"),
+                          conditions={k: en[k] for k in CONDITIONS if k in en},
+                          errors=tuple(f.get("errors", [])))
+        return
     if kind == "repair":
-        out = []
         for b in report.get("buildings", []):
-            out.append(Row(id=str(b["id"]), stage=b.get("stage") or "valid",
-                           before=_codes(b.get("defects_before")), after=_codes(b.get("defects_after")),
-                           iou=_num(b.get("iou")), displacement=_num(b.get("mean_displacement")),
-                           compliant=not [c for c in _codes(b.get("defects_after")) if c != 601],
-                           message=b.get("error") or ""))
-        return out
-    out = []
+            yield Row(id=str(b["id"]), stage=b.get("stage") or "valid",
+                      before=_codes(b.get("defects_before")), after=_codes(b.get("defects_after")),
+                      iou=_num(b.get("iou")), displacement=_num(b.get("mean_displacement")),
+                      compliant=not [c for c in _codes(b.get("defects_after")) if c != 601],
+                      message=b.get("error") or "")
+        return
     for b in report.get("buildings", []):
         rep = b.get("repair") or {}
         en = b.get("energy") or {}
         th = b.get("thermal") or {}
         if not rep and not en:  # an unreadable feature: its code is all there is
-            out.append(Row(id=str(b["id"]), type=b.get("type", "unknown"), stage="irreparable",
-                           before=_codes(b.get("input_errors")), after=_codes(b.get("input_errors")) or (999,),
-                           compliant=False, message=b.get("message", "")))
+            yield Row(id=str(b["id"]), type=b.get("type", "unknown"), stage="irreparable",
+                      before=_codes(b.get("input_errors")), after=_codes(b.get("input_errors")) or (999,),
+                      compliant=False, message=b.get("message", ""))
             continue
-        out.append(Row(id=str(b["id"]), type=b.get("type", "Building"), stage=rep.get("stage") or "valid",
-                       before=_codes(rep.get("defects_before", b.get("input_errors"))),
-                       after=_codes(rep.get("defects_after", b.get("output_errors"))),
-                       iou=_num(rep.get("iou")), displacement=_num(rep.get("mean_displacement")),
-                       compliant=en.get("compliant"), conditions={k: en[k] for k in CONDITIONS if k in en},
-                       typology=th.get("typology") or None, heating_kwh_m2=heating_per_m2(b),
-                       exports={k: {"ok": bool(v.get("ok")), "problems": list(v.get("problems") or [])}
-                                for k, v in (b.get("exports") or {}).items()},
-                       message=b.get("message", "")))
-    return out
+        yield Row(id=str(b["id"]), type=b.get("type", "Building"), stage=rep.get("stage") or "valid",
+                  before=_codes(rep.get("defects_before", b.get("input_errors"))),
+                  after=_codes(rep.get("defects_after", b.get("output_errors"))),
+                  iou=_num(rep.get("iou")), displacement=_num(rep.get("mean_displacement")),
+                  compliant=en.get("compliant"), conditions={k: en[k] for k in CONDITIONS if k in en},
+                  typology=th.get("typology") or None, heating_kwh_m2=heating_per_m2(b),
+                  exports={k: {"ok": bool(v.get("ok")), "problems": list(v.get("problems") or [])}
+                           for k, v in (b.get("exports") or {}).items()},
+                  message=b.get("message", ""))
 
 
 # --- figure data (pure functions of the rows) ---------------------------------------------------
 
-def stage_distribution(rs: list[Row]) -> dict:
-    """Buildings per repair stage in ladder order (the method's Figure 10); empty for validate."""
-    c = Counter(r.stage for r in rs if r.stage is not None)
-    return {s: c[s] for s in STAGES if c[s]}
-
-
-def fixed(rs: list[Row]) -> list[Row]:
+def fixed(rs: Iterable[Row]) -> list[Row]:
     """Buildings repaired by a stage and measured (the rows mIoU and mAP_v average)."""
-    return [r for r in rs if r.stage not in (None, "valid", "irreparable") and r.iou is not None]
+    return [r for r in rs if _measured(r)]
+
+
+def _measured(r: Row) -> bool:
+    return r.stage not in (None, "valid", "irreparable") and r.iou is not None
 
 
 def histogram(values, edges) -> dict:
     """``{"edges": [...], "counts": [...]}`` (values above the last edge go to the last bin)."""
-    v = np.clip(np.asarray([x for x in values if x is not None], float), edges[0], edges[-1])
-    counts, _ = np.histogram(v, bins=np.asarray(edges, float))
-    return {"edges": list(edges), "counts": counts.astype(int).tolist(), "n": int(len(v))}
+    h = _Histogram(edges)
+    for x in values:
+        h.add(x)
+    return h.result()
 
 
-def iou_histogram(rs: list[Row]) -> dict:
-    """IoU of every repaired building (the method's Figure 11, left)."""
-    return histogram([r.iou for r in fixed(rs)], IOU_BINS)
+class _Histogram:
+    """:func:`histogram` of values given one at a time (memory: one chunk of values)."""
+
+    CHUNK = 4096
+
+    def __init__(self, edges):
+        self.edges = tuple(edges)
+        self.counts = np.zeros(len(self.edges) - 1, dtype=np.int64)
+        self.n = 0
+        self._buf: list[float] = []
+
+    def add(self, x) -> None:
+        if x is not None:
+            self._buf.append(x)
+            if len(self._buf) >= self.CHUNK:
+                self._flush()
+
+    def _flush(self) -> None:
+        if self._buf:
+            v = np.clip(np.asarray(self._buf, float), self.edges[0], self.edges[-1])
+            self.counts += np.histogram(v, bins=np.asarray(self.edges, float))[0]
+            self.n += len(v)
+            self._buf = []
+
+    def result(self) -> dict:
+        self._flush()
+        return {"edges": list(self.edges), "counts": self.counts.astype(int).tolist(), "n": int(self.n)}
 
 
-def displacement_histogram(rs: list[Row]) -> dict:
-    """Mean vertex displacement of every repaired building, m (Figure 11, right)."""
-    return histogram([r.displacement for r in fixed(rs) if r.displacement is not None], DISPLACEMENT_BINS)
+class Tally:
+    """Every number of :func:`figure_data`, gathered one row at a time: a report of any size in
+    memory that does not grow with its buildings (counters, sums and histogram bins only).
 
+    Parameters
+    ----------
+    rs : iterable of Row, optional
+        Rows to add now (more with :meth:`add`).
+    """
 
-def validity_by_code(rs: list[Row]) -> dict:
-    """Buildings with each val3dity code before / after: ``{code: [before, after]}``."""
-    b = Counter(c for r in rs for c in set(r.before))
-    a = Counter(c for r in rs for c in set(r.after or ()))
-    return {str(c): [b[c], a[c]] for c in sorted(set(b) | set(a))}
+    def __init__(self, rs: Iterable[Row] = ()):
+        self.n = 0
+        self.stages: Counter = Counter()
+        self.iou = _Histogram(IOU_BINS)
+        self.displacement = _Histogram(DISPLACEMENT_BINS)
+        self.before: Counter = Counter()
+        self.after: Counter = Counter()
+        self.valid_before = self.valid_after = self.compliant = 0
+        self.conditions: Counter = Counter()
+        self.conditions_seen: set[str] = set()
+        self.heating: dict[str, list[float]] = {}  # typology -> [sum of kWh/m2, n]
+        self.local = self.global_ = 0
+        self.status: Counter = Counter()
+        self.repaired_kind = False
+        self.iou_sum = 0.0
+        self.n_measured = 0
+        self.displacement_sum = 0.0
+        self.n_displacement = 0
+        self.exports: dict[str, dict] = {}
+        for r in rs:
+            self.add(r)
 
-
-def compliance(rs: list[Row]) -> dict:
-    """Energy-compliant buildings before (no val3dity error but 601) and after the pipeline."""
-    n = len(rs)
-    before = sum(1 for r in rs if not r.invalid_input)
-    after = sum(1 for r in rs if r.compliant)
-    conds = {k: sum(1 for r in rs if r.conditions.get(k)) for k in CONDITIONS
-             if any(k in r.conditions for r in rs)}
-    return {"total": n, "before": before, "after": after, "conditions": conds}
-
-
-def heating_by_typology(rs: list[Row]) -> dict:
-    """Mean simulated heating need per m2 by typology: ``{typology: [mean kWh/m2, n]}``."""
-    by: dict[str, list[float]] = {}
-    for r in rs:
+    def add(self, r: Row) -> None:
+        """Count one building."""
+        self.n += 1
+        if r.stage is not None:
+            self.stages[r.stage] += 1
+            self.repaired_kind = True
+        if _measured(r):
+            self.iou.add(r.iou)
+            self.iou_sum += r.iou
+            self.n_measured += 1
+            if r.displacement is not None:
+                self.displacement.add(r.displacement)
+                self.displacement_sum += r.displacement
+                self.n_displacement += 1
+        self.before.update(set(r.before))
+        self.after.update(set(r.after or ()))
+        self.valid_before += not r.invalid_input
+        self.valid_after += not any(c != 601 for c in (r.after or ()))
+        self.compliant += bool(r.compliant)
+        for k in CONDITIONS:
+            if k in r.conditions:
+                self.conditions_seen.add(k)
+                self.conditions[k] += bool(r.conditions[k])
         if r.heating_kwh_m2 is not None:
-            by.setdefault(r.typology or "unknown", []).append(r.heating_kwh_m2)
-    return {k: [round(float(np.mean(v)), 3), len(v)] for k, v in sorted(by.items())}
-
-
-def summary(rs: list[Row]) -> dict:
-    """Dataset table (the method's Tables 4 to 6 for this file)."""
-    fx = fixed(rs)
-    repaired_kind = any(r.stage is not None for r in rs)
-    out = {"buildings": len(rs),
-           "valid_before": sum(1 for r in rs if not r.invalid_input),
-           "valid_after": sum(1 for r in rs if not any(c != 601 for c in (r.after or ()))) if repaired_kind else None,
-           "compliant_after": sum(1 for r in rs if r.compliant),
-           "local_repairs": sum(1 for r in rs if r.stage in LOCAL),
-           "global_repairs": sum(1 for r in rs if r.stage in GLOBAL),
-           "irreparable": sum(1 for r in rs if r.status == "irreparable"),
-           "miou": round(float(np.mean([r.iou for r in fx])), 6) if fx else None,
-           "map_v": round(float(np.mean([r.displacement for r in fx if r.displacement is not None])), 6)
-           if [r for r in fx if r.displacement is not None] else None,
-           "n_measured": len(fx),
-           "status": {s: sum(1 for r in rs if r.status == s) for s in STATUSES}}
-    return out
-
-
-def exports_table(rs: list[Row]) -> dict:
-    """Per export format: buildings written and self-checked ok / failed."""
-    out: dict[str, dict] = {}
-    for r in rs:
+            h = self.heating.setdefault(r.typology or "unknown", [0.0, 0])
+            h[0] += r.heating_kwh_m2
+            h[1] += 1
+        self.local += r.stage in LOCAL
+        self.global_ += r.stage in GLOBAL
+        self.status[r.status] += 1
         for fmt, e in r.exports.items():
-            d = out.setdefault(fmt, {"ok": 0, "failed": 0, "problems": []})
+            d = self.exports.setdefault(fmt, {"ok": 0, "failed": 0, "problems": []})
             d["ok" if e.get("ok") else "failed"] += 1
             if not e.get("ok") and len(d["problems"]) < 5:
                 d["problems"].extend(f"{r.id}: {p}" for p in e.get("problems", [])[:1])
-    return out
+
+    def stage_distribution(self) -> dict:
+        return {s: self.stages[s] for s in STAGES if self.stages[s]}
+
+    def validity_by_code(self) -> dict:
+        b, a = self.before, self.after
+        return {str(c): [b[c], a[c]] for c in sorted(set(b) | set(a))}
+
+    def compliance(self) -> dict:
+        return {"total": self.n, "before": self.valid_before, "after": self.compliant,
+                "conditions": {k: self.conditions[k] for k in CONDITIONS if k in self.conditions_seen}}
+
+    def heating_by_typology(self) -> dict:
+        return {k: [round(v[0] / v[1], 3), v[1]] for k, v in sorted(self.heating.items())}
+
+    def summary(self) -> dict:
+        return {"buildings": self.n, "valid_before": self.valid_before,
+                "valid_after": self.valid_after if self.repaired_kind else None,
+                "compliant_after": self.compliant, "local_repairs": self.local, "global_repairs": self.global_,
+                "irreparable": self.status["irreparable"],
+                "miou": round(self.iou_sum / self.n_measured, 6) if self.n_measured else None,
+                "map_v": round(self.displacement_sum / self.n_displacement, 6) if self.n_displacement else None,
+                "n_measured": self.n_measured,
+                "status": {s: self.status[s] for s in STATUSES}}
+
+    def figure_data(self) -> dict:
+        """Every number the report plots or tabulates (embedded in the page as JSON)."""
+        v = self.validity_by_code()
+        return {"summary": self.summary(), "stages": self.stage_distribution(), "iou": self.iou.result(),
+                "displacement": self.displacement.result(), "validity_by_code": v, "code_names": code_names(v),
+                "compliance": self.compliance(), "heating_by_typology": self.heating_by_typology(),
+                "exports": {k: dict(d, problems=list(d["problems"])) for k, d in self.exports.items()}}
+
+
+def stage_distribution(rs: Iterable[Row]) -> dict:
+    """Buildings per repair stage in ladder order (the method's Figure 10); empty for validate."""
+    return Tally(rs).stage_distribution()
+
+
+def iou_histogram(rs: Iterable[Row]) -> dict:
+    """IoU of every repaired building (the method's Figure 11, left)."""
+    return Tally(rs).iou.result()
+
+
+def displacement_histogram(rs: Iterable[Row]) -> dict:
+    """Mean vertex displacement of every repaired building, m (Figure 11, right)."""
+    return Tally(rs).displacement.result()
+
+
+def validity_by_code(rs: Iterable[Row]) -> dict:
+    """Buildings with each val3dity code before / after: ``{code: [before, after]}``."""
+    return Tally(rs).validity_by_code()
+
+
+def compliance(rs: Iterable[Row]) -> dict:
+    """Energy-compliant buildings before (no val3dity error but 601) and after the pipeline."""
+    return Tally(rs).compliance()
+
+
+def heating_by_typology(rs: Iterable[Row]) -> dict:
+    """Mean simulated heating need per m2 by typology: ``{typology: [mean kWh/m2, n]}``."""
+    return Tally(rs).heating_by_typology()
+
+
+def summary(rs: Iterable[Row]) -> dict:
+    """Dataset table (the method's Tables 4 to 6 for this file)."""
+    return Tally(rs).summary()
+
+
+def exports_table(rs: Iterable[Row]) -> dict:
+    """Per export format: buildings written and self-checked ok / failed."""
+    return Tally(rs).figure_data()["exports"]
 
 
 def code_names(codes) -> dict:
@@ -278,10 +382,6 @@ def code_names(codes) -> dict:
     return {str(c): code_name(int(c)) for c in codes}
 
 
-def figure_data(rs: list[Row]) -> dict:
+def figure_data(rs: Iterable[Row]) -> dict:
     """Every number the report plots or tabulates (embedded in the page as JSON)."""
-    v = validity_by_code(rs)
-    return {"summary": summary(rs), "stages": stage_distribution(rs), "iou": iou_histogram(rs),
-            "displacement": displacement_histogram(rs), "validity_by_code": v, "code_names": code_names(v),
-            "compliance": compliance(rs), "heating_by_typology": heating_by_typology(rs),
-            "exports": exports_table(rs)}
+    return Tally(rs).figure_data()

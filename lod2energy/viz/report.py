@@ -8,12 +8,24 @@ graph, the defects with their val3dity codes and the stage that fixed them.
 Panels: every building of a file with at most ``cap`` buildings; for a larger file the
 defective and repaired ones only, most severe first (irreparable, repaired globally, repaired
 locally, then other defective input), at most ``cap`` (the page says how many were left out).
+
+City scale: the rows are read once, one at a time (:class:`PageRows`), into counters and a
+bounded choice of panels. A file of at most ``plan_max`` buildings gets an SVG plan whose
+footprints link to their panels and every row embedded as JSON; a larger one gets the plan as
+a picture (PNG, coloured by status and by heating need), drawn from footprints kept in an
+unnamed scratch file (:class:`FootprintSpill`), and the rows of its panels only (``report.csv``
+has every building). Memory and page size then stay bounded however large the city.
 """
 from __future__ import annotations
 
+import hashlib
 import json
 import os
+import struct
+import tempfile
+from array import array
 from pathlib import Path
+from typing import Iterable, Iterator
 
 import numpy as np
 
@@ -28,13 +40,96 @@ DEFAULT_CAP = 16
 _SEVERITY = {"irreparable": 0, "repaired globally": 1, "repaired locally": 2, "not repaired": 3, "valid": 4}
 
 
-def panel_ids(rs: list[D.Row], cap: int = DEFAULT_CAP) -> tuple[list[str], int]:
+#: Above this many buildings the plan view is a picture and only the panels' rows are embedded.
+PLAN_SVG_MAX = 5000
+#: Longer side of the plan picture of a large file, px.
+PLAN_PX = 1600
+
+
+def panel_ids(rs: Iterable[D.Row], cap: int = DEFAULT_CAP) -> tuple[list[str], int]:
     """Ids of the buildings that get a panel, and how many deserving ones the cap left out."""
-    if len(rs) <= cap:
-        return [r.id for r in rs], 0
-    want = [r for r in rs if r.repaired or r.invalid_input or r.status != "valid"]
-    want.sort(key=lambda r: _SEVERITY.get(r.status, 5))
-    return [r.id for r in want[:cap]], max(0, len(want) - cap)
+    page = PageRows(rs, cap)
+    return [r.id for r in page.panel_rows()], page.left_out
+
+
+def _key(i: str) -> int:
+    """A stable 64-bit key of a building id (the same in every process and run)."""
+    return int.from_bytes(hashlib.blake2b(i.encode("utf-8", "surrogatepass"), digest_size=8).digest(),
+                          "little", signed=True)
+
+
+class PageRows:
+    """What the page needs of a report's rows, read once and one at a time.
+
+    Keeps the counters of every figure (:class:`lod2energy.viz.data.Tally`), the candidates for
+    the panels (at most ``cap`` per severity class), 17 bytes per building for the plan picture
+    (a key of the id, the status, the heating need) and, while the file has at most
+    ``plan_max`` buildings, the rows themselves.
+
+    Parameters
+    ----------
+    rs : iterable of Row
+    cap : int
+        Panels of a large file (see the module docstring).
+    plan_max : int
+        Largest file drawn as an SVG plan with every row embedded.
+    """
+
+    def __init__(self, rs: Iterable[D.Row] = (), cap: int = DEFAULT_CAP, plan_max: int = PLAN_SVG_MAX):
+        self.cap, self.plan_max = int(cap), int(plan_max)
+        self.tally = D.Tally()
+        self.n = 0
+        self.rows: list[D.Row] | None = []  # every row, until there are more than plan_max
+        self._first: list[D.Row] = []  # the first ``cap`` rows (the panels of a small file)
+        self._worst: dict[int, list[D.Row]] = {}  # severity -> the first ``cap`` deserving rows
+        self._deserving = 0
+        self.keys, self.status, self.heat = array("q"), array("B"), array("d")
+        for r in rs:
+            self.add(r)
+
+    def add(self, r: D.Row) -> None:
+        self.n += 1
+        self.tally.add(r)
+        if self.rows is not None:
+            self.rows.append(r)
+            if len(self.rows) > self.plan_max:
+                self.rows = None
+        if len(self._first) < self.cap:
+            self._first.append(r)
+        if r.repaired or r.invalid_input or r.status != "valid":
+            self._deserving += 1
+            worst = self._worst.setdefault(_SEVERITY.get(r.status, 5), [])
+            if len(worst) < self.cap:
+                worst.append(r)
+        self.keys.append(_key(r.id))
+        self.status.append(D.STATUSES.index(r.status))
+        self.heat.append(np.nan if r.heating_kwh_m2 is None else r.heating_kwh_m2)
+
+    @property
+    def large(self) -> bool:
+        """More than ``plan_max`` buildings: a plan picture, the panels' rows only."""
+        return self.n > self.plan_max
+
+    def panel_rows(self) -> list[D.Row]:
+        """Rows of the buildings that get a panel, in the order of the page."""
+        if self.n <= self.cap:
+            return list(self._first)
+        return [r for s in sorted(self._worst) for r in self._worst[s]][:self.cap]
+
+    @property
+    def left_out(self) -> int:
+        """Deserving buildings the cap left without a panel."""
+        return 0 if self.n <= self.cap else max(0, self._deserving - self.cap)
+
+    def embedded(self) -> list[D.Row]:
+        """The rows embedded in the page: every row of a small file, the panels' of a large one."""
+        return list(self.rows) if self.rows is not None and not self.large else self.panel_rows()
+
+    def heating_range(self) -> tuple[float, float] | None:
+        """5th and 95th percentile of the heating need, kWh/m2 (None: nothing simulated)."""
+        h = np.frombuffer(self.heat, dtype=np.float64) if len(self.heat) else np.zeros(0)
+        h = h[~np.isnan(h)]
+        return (float(np.percentile(h, 5)), float(np.percentile(h, 95))) if len(h) else None
 
 
 def _heat_colour(v: float, lo: float, hi: float) -> str:
@@ -56,6 +151,7 @@ def plan_footprint(b: Building) -> list[np.ndarray]:
 
 def _plan(rs: list[D.Row], inputs: dict, outputs: dict, panels: set[str],
           footprints: dict | None = None) -> tuple[str, dict]:
+    """The SVG plan of a small file: a footprint per building, linked to its panel."""
     footprints = footprints or {}
     heat = [r.heating_kwh_m2 for r in rs if r.heating_kwh_m2 is not None]
     lo, hi = (float(np.percentile(heat, 5)), float(np.percentile(heat, 95))) if heat else (0.0, 0.0)
@@ -81,6 +177,181 @@ def _plan(rs: list[D.Row], inputs: dict, outputs: dict, panels: set[str],
     svg = R.plan_svg(items)
     return svg, {"heating_range": [round(lo, 3), round(hi, 3)] if heat else None,
                  "drawn": sum(1 for it in items if len(it["footprint"]))}
+
+
+class FootprintSpill:
+    """Plan footprints of a large file, kept in an unnamed scratch file as they are read and
+    given back in the same order: nothing per building stays in memory. Without a scratch file
+    (it cannot be made, or the disk fills) they stay in memory.
+
+    Parameters
+    ----------
+    scratch_dir : str, optional
+        Folder of the scratch file (the output folder: nothing is written elsewhere, and the
+        file has no name, so nothing is left behind).
+    """
+
+    _HEAD = struct.Struct("<qI")
+    #: Bytes read at a time when the footprints are given back.
+    READ = 1 << 18
+
+    def __init__(self, scratch_dir: str | None = None):
+        self.n = 0
+        self.lo, self.hi = np.full(2, np.inf), np.full(2, -np.inf)
+        self._mem: list[tuple[int, list[np.ndarray]]] | None = None
+        try:
+            self._f = tempfile.TemporaryFile(dir=scratch_dir)
+        except OSError:
+            self._f, self._mem = None, []
+
+    def add(self, id: str, rings: list[np.ndarray]) -> None:
+        """Keep the footprint of building ``id`` (``[(k, 2) float]``, m)."""
+        rings = [np.ascontiguousarray(np.asarray(r, dtype="<f8")[:, :2]) for r in rings if len(r)]
+        k = _key(id)
+        for r in rings:
+            self.lo = np.minimum(self.lo, r.min(axis=0))
+            self.hi = np.maximum(self.hi, r.max(axis=0))
+        self.n += 1
+        if self._f is not None:
+            rec = (self._HEAD.pack(k, len(rings)) + np.array([len(r) for r in rings], "<u4").tobytes()
+                   + b"".join(r.tobytes() for r in rings))
+            try:
+                self._f.write(rec)
+                return
+            except OSError:  # a full disk: what is written comes back to memory
+                self._f.seek(0)
+                self._mem = [(k_, r_) for k_, r_, _ in self._records(self._f.read())]
+                self._f.close()
+                self._f = None
+        self._mem.append((k, rings))
+
+    def _records(self, data: bytes) -> Iterator[tuple[int, list[np.ndarray], int]]:
+        """The whole records at the start of ``data``: ``(key, rings, offset past it)``."""
+        pos, end = 0, len(data)
+        while pos + self._HEAD.size <= end:
+            k, m = self._HEAD.unpack_from(data, pos)
+            q = pos + self._HEAD.size
+            if q + 4 * m > end:
+                return
+            lens = np.frombuffer(data, "<u4", m, q).astype(np.int64)
+            q += 4 * m
+            if q + 16 * int(lens.sum()) > end:
+                return
+            rings = []
+            for n in lens:
+                rings.append(np.frombuffer(data, "<f8", 2 * int(n), q).reshape(-1, 2))
+                q += 16 * int(n)
+            yield k, rings, q
+            pos = q
+
+    def __iter__(self) -> Iterator[tuple[int, list[np.ndarray]]]:
+        """``(key of the id, rings)`` in the order they were added."""
+        if self._f is None:
+            yield from self._mem
+            return
+        self._f.flush()
+        self._f.seek(0)
+        rest = b""
+        try:
+            while True:
+                chunk = self._f.read(self.READ)
+                if not chunk:
+                    return
+                data = rest + chunk
+                pos = 0
+                for k, rings, pos in self._records(data):
+                    yield k, rings
+                rest = data[pos:]
+        finally:
+            self._f.seek(0, os.SEEK_END)
+
+    def close(self) -> None:
+        if self._f is not None:
+            self._f.close()
+            self._f = None
+        self._mem = None
+
+
+def _plan_picture(page: PageRows, footprints, inputs: dict, outputs: dict) -> tuple[dict, dict]:
+    """The plan of a large file as PNG pictures (data URLs): ``{"status": url, "heat": url or
+    None}``, and the plan's facts. ``footprints``: a :class:`FootprintSpill` or a dict of id ->
+    rings; the panels' buildings (``inputs``, ``outputs``) are drawn from their geometry."""
+    from PIL import Image, ImageDraw
+    import base64
+    import io
+
+    def items():
+        """``(key, rings)``: the footprints given, then the panels' buildings not among them (a
+        spill never holds a panel's: :func:`read_for_page` keeps those whole)."""
+        if isinstance(footprints, dict):
+            for i, rings in footprints.items():
+                yield _key(i), rings
+        else:
+            yield from footprints
+        done = set(footprints) if isinstance(footprints, dict) else set()
+        for store in (inputs, outputs):
+            for i, b in store.items():
+                if i not in done:
+                    done.add(i)
+                    yield _key(i), plan_footprint(b)
+
+    lo, hi = np.full(2, np.inf), np.full(2, -np.inf)
+    if isinstance(footprints, FootprintSpill):
+        lo, hi = footprints.lo.copy(), footprints.hi.copy()
+        extra = [plan_footprint(b) for st in (inputs, outputs) for b in st.values()]
+    else:
+        extra = (rings for _, rings in items())
+    for rings in extra:
+        for r in rings:
+            if len(r):
+                lo, hi = np.minimum(lo, r[:, :2].min(axis=0)), np.maximum(hi, r[:, :2].max(axis=0))
+    if not np.all(np.isfinite(lo)):
+        return {}, {"drawn": 0}
+    span = max(float((hi - lo).max()), 1e-6)
+    s = (PLAN_PX - 8) / span
+    w, h = int(np.ceil((hi[0] - lo[0]) * s)) + 9, int(np.ceil((hi[1] - lo[1]) * s)) + 9
+    order = np.argsort(np.frombuffer(page.keys, dtype=np.int64), kind="stable")
+    keys = np.frombuffer(page.keys, dtype=np.int64)[order]
+    status = np.frombuffer(page.status, dtype=np.uint8)[order]
+    rng = page.heating_range()
+    fills = [tuple(int(D.STATUS_COLOURS[st][j:j + 2], 16) for j in (1, 3, 5)) for st in D.STATUSES]
+    pics = {"status": Image.new("RGB", (w, h), "white")}
+    if rng is not None:  # the heating need as one of 255 colours of the plan's scale (255: none)
+        from matplotlib import colormaps
+        heat = np.frombuffer(page.heat, dtype=np.float64)[order]
+        with np.errstate(invalid="ignore"):
+            t = (heat - rng[0]) / (rng[1] - rng[0]) if rng[1] > rng[0] else np.where(np.isnan(heat), heat, 0.5)
+            level = np.where(np.isnan(t), 255, np.round(np.clip(t, 0, 1) * 254)).astype(np.uint8)
+        del heat, t
+        lut = (np.asarray(colormaps["YlOrRd"](0.15 + 0.85 * np.arange(255) / 254))[:, :3] * 255).round().astype(int)
+        heat_fills = [tuple(int(c) for c in rgb) for rgb in lut] + [(221, 221, 221)]
+        pics["heat"] = Image.new("RGB", (w, h), "white")
+    del order
+    draws = {m: ImageDraw.Draw(im) for m, im in pics.items()}
+    outline = (51, 51, 51) if s >= 2.0 else None  # outlines only where a metre is 2 px or more
+    drawn = 0
+    for k, rings in items():
+        j = int(np.searchsorted(keys, k))
+        if j >= len(keys) or keys[j] != k or not any(len(r) for r in rings):
+            continue
+        drawn += 1
+        colour = {"status": fills[status[j]]}
+        if "heat" in pics:
+            colour["heat"] = heat_fills[level[j]]
+        for r in rings:
+            q = [(4 + (x - lo[0]) * s, 4 + (hi[1] - y) * s) for x, y in np.asarray(r)[:, :2]]
+            for m, d in draws.items():
+                if len(q) >= 3 and np.ptp([p[0] for p in q]) + np.ptp([p[1] for p in q]) >= 1.0:
+                    d.polygon(q, fill=colour[m], outline=outline)
+                else:  # smaller than a pixel: a dot
+                    d.point(q[0], fill=colour[m])
+    urls = {}
+    for m, im in pics.items():
+        buf = io.BytesIO()
+        im.save(buf, format="PNG", optimize=True)
+        urls[m] = "data:image/png;base64," + base64.b64encode(buf.getvalue()).decode("ascii")
+    return urls, {"drawn": drawn, "picture": [w, h], "metres_per_px": round(1.0 / s, 3),
+                  "heating_range": [round(rng[0], 3), round(rng[1], 3)] if rng else None}
 
 
 #: A building with more faces gets a panel of text only: drawing (and re-validating) it would
@@ -161,26 +432,35 @@ def _row_json(r: D.Row) -> dict:
 
 def render_report_html(report: dict, *, inputs: dict | None = None, outputs: dict | None = None,
                        cap: int = DEFAULT_CAP, tol: Tolerances = DEFAULT, title: str | None = None,
-                       footprints: dict | None = None) -> str:
+                       footprints=None, page: PageRows | None = None, plan_max: int = PLAN_SVG_MAX) -> str:
     """The page as a string (see :func:`write_report_html`)."""
     import jinja2
-    inputs, outputs, footprints = dict(inputs or {}), dict(outputs or {}), dict(footprints or {})
-    rs = D.rows(report)
-    fd = D.figure_data(rs)
-    ids, left_out = panel_ids(rs, cap)
-    by_id = {r.id: r for r in rs}
-    panels = [_panel(by_id[i], inputs.get(i), outputs.get(i), tol) for i in ids]
-    drawn = inputs or outputs or footprints
-    plan, plan_info = _plan(rs, inputs, outputs, set(ids), footprints) if drawn else ("", {})
+    inputs, outputs = dict(inputs or {}), dict(outputs or {})
+    if not isinstance(footprints, FootprintSpill):
+        footprints = dict(footprints or {})
+    if page is None:
+        page = PageRows(D.iter_rows(report), cap, plan_max)
+    fd = page.tally.figure_data()
+    panel_rows = page.panel_rows()
+    ids = [r.id for r in panel_rows]
+    panels = [_panel(r, inputs.get(r.id), outputs.get(r.id), tol) for r in panel_rows]
+    drawn = bool(inputs or outputs or (footprints.n if isinstance(footprints, FootprintSpill) else footprints))
+    plan, picture, plan_info = "", {}, {}
+    if drawn and page.large:
+        picture, plan_info = _plan_picture(page, footprints, inputs, outputs)
+    elif drawn:
+        plan, plan_info = _plan(page.rows or [], inputs, outputs, set(ids), footprints)
     plots = {"stages": F.plot_stages(fd["stages"]), "histograms": F.plot_histograms(fd["iou"], fd["displacement"]),
              "compliance": F.plot_compliance(fd["compliance"]), "validity": F.plot_validity(fd["validity_by_code"]),
              "heating": F.plot_heating(fd["heating_by_typology"])}
     kind = D.report_kind(report)
     src = report.get("input_file") or (report.get("reports") or [{}])[0].get("input_file", "")
-    page_data = {"kind": kind, "input_file": src, "figures": fd, "cap": cap, "panels": ids, "left_out": left_out,
+    embedded = page.embedded()
+    page_data = {"kind": kind, "input_file": src, "figures": fd, "cap": cap, "panels": ids, "left_out": page.left_out,
                  "plan": {k: v for k, v in plan_info.items()},
                  "graphs": {p["id"]: p["graph"] for p in panels},
-                 "buildings": [_row_json(r) for r in rs],
+                 "buildings": [_row_json(r) for r in embedded],
+                 "buildings_embedded": "all" if len(embedded) == page.n else "panels",
                  "export_seconds": report.get("seconds")}
     env = jinja2.Environment(loader=jinja2.PackageLoader("lod2energy.templates", "."),
                              autoescape=jinja2.select_autoescape(["html", "j2"]), trim_blocks=True,
@@ -189,10 +469,11 @@ def render_report_html(report: dict, *, inputs: dict | None = None, outputs: dic
     tpl = env.get_template("report.html.j2")
     blob = json.dumps(page_data, default=_json_default, ensure_ascii=False).replace("</", "<\\/")
     return tpl.render(title=title or f"lod2energy report: {os.path.basename(src) or 'file'}", kind=kind,
-                      src=src, src_name=os.path.basename(src), fd=fd, plots=plots, plan=plan, plan_info=plan_info, panels=panels,
-                      left_out=left_out, cap=cap, n=len(rs), statuses=D.STATUSES, colours=D.STATUS_COLOURS,
+                      src=src, src_name=os.path.basename(src), fd=fd, plots=plots, plan=plan, picture=picture,
+                      plan_info=plan_info, panels=panels, plan_max=page.plan_max,
+                      left_out=page.left_out, cap=cap, n=page.n, statuses=D.STATUSES, colours=D.STATUS_COLOURS,
                       graph_colours=R.GRAPH_COLOURS, data_json=blob, conditions=D.CONDITIONS,
-                      has_geometry=bool(drawn))
+                      has_geometry=drawn)
 
 
 def _json_default(o):
@@ -205,7 +486,7 @@ def _json_default(o):
 
 def write_report_html(report: dict, path, *, inputs: dict | None = None, outputs: dict | None = None,
                       cap: int = DEFAULT_CAP, tol: Tolerances = DEFAULT, root=None, input_files=(),
-                      footprints: dict | None = None) -> Path:
+                      footprints=None, page: PageRows | None = None, plan_max: int = PLAN_SVG_MAX) -> Path:
     """Write ``report.html`` for a report of ``export``, ``repair --report`` or ``validate --report``.
 
     Parameters
@@ -217,9 +498,14 @@ def write_report_html(report: dict, path, *, inputs: dict | None = None, outputs
     inputs, outputs : dict of id -> Building, optional
         The buildings as read and as repaired/labelled; without them the page has tables and
         plots but no plan view and no renders.
-    footprints : dict of id -> list of (k, 2) float, optional
+    footprints : dict of id -> list of (k, 2) float, or FootprintSpill, optional
         Plan footprints (:func:`plan_footprint`, m) of buildings not in ``inputs``: a large
         file's plan without all its buildings in memory (:func:`read_for_page`).
+    page : PageRows, optional
+        The report's rows already read (default: read from ``report``).
+    plan_max : int
+        Largest file drawn as an SVG plan with every row embedded; a larger one gets a plan
+        picture and its panels' rows (see the module docstring).
     cap : int
         Panels of a large file (see the module docstring).
     root : path-like, optional
@@ -232,7 +518,8 @@ def write_report_html(report: dict, path, *, inputs: dict | None = None, outputs
     Path of the written page.
     """
     from lod2energy.safe_write import write_text
-    html = render_report_html(report, inputs=inputs, outputs=outputs, cap=cap, tol=tol, footprints=footprints)
+    html = render_report_html(report, inputs=inputs, outputs=outputs, cap=cap, tol=tol, footprints=footprints,
+                              page=page, plan_max=plan_max)
     root = root if root is not None else os.path.dirname(os.path.abspath(path))
     return write_text(path, html, root=root, inputs=list(input_files))
 
@@ -246,10 +533,12 @@ def keep(features, into: dict):
         yield f
 
 
-def read_for_page(path: str, wanted: set[str]) -> tuple[dict[str, Building], dict[str, list]]:
+def read_for_page(path: str, wanted: set[str], spill: FootprintSpill | None = None
+                  ) -> tuple[dict[str, Building], dict[str, list]]:
     """The buildings of a file the page draws in full (ids in ``wanted``) and the plan footprint
     (:func:`plan_footprint`) of every other, read one at a time: memory grows with the panels
-    and the footprints, not with the file."""
+    and the footprints, not with the file; with a ``spill`` the footprints go to it (the dict
+    returned is then empty) and memory grows with the panels only."""
     from lod2energy.io import read
     model, feats = read(path)
     keep: dict[str, Building] = {}
@@ -262,6 +551,8 @@ def read_for_page(path: str, wanted: set[str]) -> tuple[dict[str, Building], dic
         if f.id in wanted:
             keep[f.id] = f
             fps.pop(f.id, None)
+        elif spill is not None:
+            spill.add(f.id, plan_footprint(f))
         elif f.id not in keep:
             fps[f.id] = plan_footprint(f)
     return keep, fps
