@@ -67,7 +67,8 @@ from xml.parsers import expat
 import numpy as np
 
 from lod2energy.errors import FormatNotSupportedError, InputError
-from lod2energy.io.cityjson import _duplicate_id, build_feature
+from lod2energy.io.cityjson import build_feature
+from lod2energy.io.seen_ids import SeenIds
 from lod2energy.io.citygml_attributes import attributes as _attributes
 from lod2energy.io.gml import (SOLID_MEMBERS as _SOLID_MEMBERS, SURFACE_KINDS as _SURFACE_KINDS, XLINK_HREF,
                                GmlGeometry, gml_id as _gml_id, local_name as _local)
@@ -206,7 +207,7 @@ def read(path: str, **_) -> "tuple[CityModel | None, Iterator[Building | Feature
 def _features(path: str) -> Iterator[Building | FeatureError]:
     stack: list[ET.Element] = []
     n = 0
-    seen: dict = {}  # gml:id of every city object read -> the feature it came in
+    seen = SeenIds()  # gml:id of every city object read -> the feature it came in
     try:
         for ev, el in ET.iterparse(path, events=("start", "end")):
             if ev == "start":
@@ -227,18 +228,18 @@ def _features(path: str) -> Iterator[Building | FeatureError]:
         yield FeatureError(None, 901, f"cannot read {path}: {e.strerror}")
 
 
-def _once(f: Building | FeatureError, gid: str | None, n: int, seen: dict) -> Building | FeatureError:
+def _once(f: Building | FeatureError, gid: str | None, n: int, seen: SeenIds) -> Building | FeatureError:
     """``f``, or a per-building error 901 when a city object of it has a gml:id an earlier
     feature of the file already had (the first is kept, as the CityJSON reader does)."""
     ids = [o.id for o in f.objects] if isinstance(f, Building) else ([gid] if gid else [])
     again = next((i for i in ids if i in seen), None)
     if again is not None:
         rtype = f.type or ""
-        return FeatureError(_duplicate_id(ids[0], seen), 901,
-                            f"coid={again}: gml:id {again!r} was already read (feature {seen[again]}); "
+        return FeatureError(seen.duplicate_id(ids[0]), 901,
+                            f"coid={again}: gml:id {again!r} was already read (feature {seen.where(again)}); "
                             f"the first is kept, this one (feature {n}) is not read", rtype)
     for i in ids:
-        seen[i] = n
+        seen.add(i, n)
     return f
 
 

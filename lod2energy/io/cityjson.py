@@ -17,6 +17,7 @@ import numpy as np
 
 from lod2energy.errors import FormatNotSupportedError, InputError
 from lod2energy.io import shape
+from lod2energy.io.seen_ids import SeenIds
 from lod2energy.io.cityjson_grid import (  # noqa: F401 - the writer and the grid, importable from here as before
     _quantise, default_transform, file_coordinates, on_grid, quantise,
 )
@@ -398,10 +399,10 @@ def _header_from(doc: Mapping[str, Any], path: str, fmt: str) -> CityModel:
 
 def _features_of_document(doc: Mapping[str, Any], transform: Mapping | None,
                           what: str, templates: Any = None, keys: Any = None,
-                          seen: dict | None = None) -> Iterator[Building | FeatureError]:
+                          seen: SeenIds | None = None, tag: int = 0) -> Iterator[Building | FeatureError]:
     if templates is None:
         templates = doc.get("geometry-templates")
-    for item in _features_of_document_raw(doc, transform, what, keys, seen):
+    for item in _features_of_document_raw(doc, transform, what, keys, seen, tag):
         if isinstance(item, FeatureError) and (not item.message.isprintable()
                                                or len(item.message) > shape.MAX_MESSAGE):
             # one line, whatever the ids hold (a newline, a control character)
@@ -417,29 +418,23 @@ def _features_of_document(doc: Mapping[str, Any], transform: Mapping | None,
         yield item
 
 
-def _duplicate_id(oid: str, seen: dict) -> str:
-    """A report id for a second CityObject ``oid`` that cannot collide with the first."""
-    n = seen.setdefault(("dup", oid), 0) + 1
-    seen[("dup", oid)] = n
-    return f"{oid} (duplicate)" if n == 1 else f"{oid} (duplicate {n})"
-
-
 def _features_of_document_raw(doc: Mapping[str, Any], transform: Mapping | None,
                               what: str, keys: Any = None,
-                              seen: dict | None = None) -> Iterator[Building | FeatureError]:
+                              seen: SeenIds | None = None, tag: int = 0) -> Iterator[Building | FeatureError]:
     """The features of one CityJSON document or CityJSONFeature.
 
     ``keys`` (from :func:`lod2energy.io.shape.parse_json`) tells the ids the document
-    repeated; ``seen`` maps the ids of earlier lines of a CityJSONSeq to where they were, so
-    that a second CityObject with an id already read is reported, not read over the first.
+    repeated; ``seen`` holds the ids of earlier lines of a CityJSONSeq and where they were
+    (this document's are added with ``tag``), so that a second CityObject with an id already
+    read is reported, not read over the first.
     """
     cos = doc.get("CityObjects")
     if not isinstance(cos, Mapping):
         yield FeatureError(None, 901, f"{what} has no 'CityObjects' object")
         return
-    seen = {} if seen is None else seen
+    seen = SeenIds(lambda _: what) if seen is None else seen
     for oid in (keys.of(cos) if keys is not None else ()):
-        yield FeatureError(_duplicate_id(oid, seen), 901,
+        yield FeatureError(seen.duplicate_id(oid), 901,
                            f"coid={oid}: {what} has more than one CityObject with this id; the first is read, "
                            f"the others are not")
     try:
@@ -454,12 +449,12 @@ def _features_of_document_raw(doc: Mapping[str, Any], transform: Mapping | None,
         rtype = rtype if isinstance(rtype, str) else ""
         again = next((oid for oid in ids if oid in seen), None)
         if again is not None:
-            yield FeatureError(_duplicate_id(root, seen), 901,
-                               f"coid={again}: this id was already read ({seen[again]}); the first is kept, "
+            yield FeatureError(seen.duplicate_id(root), 901,
+                               f"coid={again}: this id was already read ({seen.where(again)}); the first is kept, "
                                f"this one ({what}) is not read", rtype)
             continue
         for oid in ids:
-            seen[oid] = what
+            seen.add(oid, tag)
         bad = next(((oid, p) for oid in ids if (p := shape.cityobject_problem(oid, cos[oid]))), None)
         if bad is not None:
             yield FeatureError(root, 901, f"coid={bad[0]}: {bad[1]}", rtype)
@@ -537,7 +532,7 @@ def _read_seq(path: str):
         return None, iter([FeatureError(None, e.code, str(e))])
 
     def gen():
-        seen: dict = {}
+        seen = SeenIds(lambda n: f"{path} line {n}")
         with f:
             for lineno, raw in enumerate(lines, start=2):
                 if isinstance(raw, InputError):
@@ -557,5 +552,5 @@ def _read_seq(path: str):
                     yield FeatureError(f"line {lineno}", 901, f"{path} line {lineno}: not a CityJSONFeature")
                     continue
                 yield from _features_of_document(line, model.transform, f"{path} line {lineno}",
-                                                 model.geometry_templates, keys, seen)
+                                                 model.geometry_templates, keys, seen, lineno)
     return model, gen()
