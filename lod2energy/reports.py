@@ -177,7 +177,7 @@ class _ReportBuildings:
                 sc.value()
 
 
-def _report_lazily(path: str) -> dict:
+def report_lazily(path: str) -> dict:
     """``report.json`` as ``json.load`` gives it, but its ``buildings`` a :class:`_ReportBuildings`."""
     from lod2energy.io.json_stream import Scanner
     doc: dict = {}
@@ -202,7 +202,7 @@ def write_html_report(report_path: str, input_path: str, records: RecordStore, s
     try:
         from lod2energy.viz.report import FootprintSpill, PageRows, read_for_page, write_report_html
         from lod2energy.viz import data as viz_data
-        doc = _report_lazily(report_path)
+        doc = report_lazily(report_path)
         page = PageRows(viz_data.iter_rows(doc))  # one reading of the rows: counters and the panels
         wanted = {r.id for r in page.panel_rows()}
         # the panels' buildings whole, the others' footprints only (a large file's in a scratch file)

@@ -232,6 +232,20 @@ def test_a_file_over_plan_max_gets_a_plan_picture_and_embeds_its_panels_rows(tmp
     assert len(html) < 1_500_000
 
 
+def test_view_of_a_large_report_json_prepares_only_the_panels_and_draws_a_picture(tmp_path):
+    from lod2energy.viz.view import write_report_for
+    _, _, report, _ = denhaag_report()
+    (tmp_path / "report.json").write_text(json.dumps(report), encoding="utf-8")
+    page, t = write_report_for(tmp_path / "report.json", plan_max=100)
+    html = page.read_text(encoding="utf-8")
+    d = page_data(html)
+    assert d["buildings_embedded"] == "panels" and len(d["panels"]) == VR.DEFAULT_CAP
+    assert '<img id="plan" class="picture"' in html and d["plan"]["drawn"] == len(report["buildings"])
+    # every panel drawn from its building, input and prepared
+    assert html.count('class="caps"') == VR.DEFAULT_CAP
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["report.html", "report.json"]  # no scratch left
+
+
 def test_page_memory_does_not_grow_with_the_file():
     """The traced peak of reading a report's rows and drawing the picture plan from a scratch
     file of footprints is the same for 2,000 and 8,000 buildings standing on the same 2,000

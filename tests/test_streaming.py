@@ -279,7 +279,7 @@ def test_the_page_reads_report_json_one_building_at_a_time(tmp_path):
     as dicts)."""
     import json
     import tracemalloc
-    from lod2energy.reports import _report_lazily
+    from lod2energy.reports import report_lazily
     doc = {"input_file": "x.city.jsonl", "output_dir": "out",
            "buildings": [{"id": f"b{i}", "repair": {"stage": "valid", "metrics": {f"m{k}": k / 3 for k in range(30)}},
                           "exports": {"stl": {"ok": True, "problems": []}}} for i in range(400)],
@@ -292,7 +292,7 @@ def test_the_page_reads_report_json_one_building_at_a_time(tmp_path):
         whole = json.loads(path.read_text(encoding="utf-8"))
         as_list = tracemalloc.get_traced_memory()[0] - base
         base = tracemalloc.get_traced_memory()[0]
-        lazy = _report_lazily(str(path))
+        lazy = report_lazily(str(path))
         as_lazy = tracemalloc.get_traced_memory()[0] - base
     finally:
         tracemalloc.stop()

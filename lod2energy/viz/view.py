@@ -6,7 +6,6 @@ The building is validated, repaired, labelled and given U-values by
 """
 from __future__ import annotations
 
-import json
 import os
 import sys
 import time
@@ -17,7 +16,8 @@ from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.errors import InputError
 from lod2energy.model import Building, FeatureError
 from lod2energy.viz import data as D
-from lod2energy.viz.report import DEFAULT_CAP, panel_ids, read_buildings, write_report_html
+from lod2energy.viz.report import (DEFAULT_CAP, PLAN_SVG_MAX, FootprintSpill, PageRows, read_for_page,
+                                   write_report_html)
 
 
 class ViewError(InputError):
@@ -120,24 +120,34 @@ def prepare_outputs(ids, inputs: dict[str, Building], tol: Tolerances = DEFAULT,
 
 
 def write_report_for(report_json, html_path=None, input_path: str | None = None, cap: int = DEFAULT_CAP,
-                     tol: Tolerances = DEFAULT) -> tuple[Path, dict]:
+                     tol: Tolerances = DEFAULT, plan_max: int = PLAN_SVG_MAX) -> tuple[Path, dict]:
     """``report.html`` next to an existing ``report.json``: reads the input file the report names
-    (or ``input_path``), re-prepares only the buildings that get a panel, writes the page.
+    (or ``input_path``), re-prepares only the buildings that get a panel, writes the page (a
+    report of more than ``plan_max`` buildings: its plan as a picture, see
+    :mod:`lod2energy.viz.report`). Memory: the panels' buildings, not the file's.
 
     Returns the page's path and timings (s): ``read``, ``prepare``, ``html`` (wall clock) and
     ``html_cpu`` (CPU time of this process writing the page: what an export would add).
     """
-    rep = json.loads(Path(report_json).read_text(encoding="utf-8"))
+    from lod2energy.reports import report_lazily
+    rep = report_lazily(str(report_json))  # its buildings read one at a time, when iterated
     src = input_path or rep.get("input_file") or ""
-    t0, c0 = time.perf_counter(), time.process_time()
-    inputs = read_buildings(src) if src and os.path.isfile(src) else {}
-    t1, c1 = time.perf_counter(), time.process_time()
-    ids, _ = panel_ids(D.rows(rep), cap)
-    outputs = prepare_outputs(ids, inputs, tol)
-    t2, c2 = time.perf_counter(), time.process_time()
     html_path = html_path or Path(report_json).with_name("report.html")
-    out = write_report_html(rep, html_path, inputs=inputs, outputs=outputs, cap=cap, tol=tol,
-                            input_files=[src] if src else [])
+    t0, c0 = time.perf_counter(), time.process_time()
+    page = PageRows(D.iter_rows(rep), cap, plan_max)
+    wanted = [r.id for r in page.panel_rows()]
+    spill = FootprintSpill(os.path.dirname(os.path.abspath(html_path))) if page.large else None
+    try:
+        inputs, fps = read_for_page(src, set(wanted), spill) if src and os.path.isfile(src) else ({}, {})
+        t1, c1 = time.perf_counter(), time.process_time()
+        outputs = prepare_outputs(wanted, inputs, tol)
+        t2, c2 = time.perf_counter(), time.process_time()
+        out = write_report_html(rep, html_path, inputs=inputs, outputs=outputs, cap=cap, tol=tol,
+                                input_files=[src] if src else [], page=page,
+                                footprints=spill if spill is not None else fps)
+    finally:
+        if spill is not None:
+            spill.close()
     t3, c3 = time.perf_counter(), time.process_time()
     return out, {"read": round(t1 - t0, 3), "prepare": round(t2 - t1, 3), "html": round(t3 - t2, 3),
                  "html_cpu": round(c3 - c2, 3)}
