@@ -230,13 +230,9 @@ def cmd_validate(a) -> int:
         from lod2energy.safe_write import check_target
         check_target(a.html, None, a.files)
     reports, rows = [], []
-    html_inputs: dict = {}
     worst = EXIT_OK
     for path in a.files:
         model, feats = read(path, primitive=a.primitive, inner_shells=a.inner_shell)
-        if getattr(a, "html", None):
-            from lod2energy.viz.report import keep
-            feats = keep(feats, html_inputs)
         geographic = getattr(model, "frame", None) is not None
         if geographic:  # lod2energy.reports (records, options, spool) loads only for a geographic CRS
             from lod2energy.reports import frame_entry, note_frame
@@ -270,9 +266,11 @@ def cmd_validate(a) -> int:
     if getattr(a, "html", None):
         from lod2energy.reports import json_ready
         try:
-            from lod2energy.viz.report import write_report_html
+            from lod2energy.viz.report import write_report_for_files
             out = reports[0] if len(reports) == 1 else {"type": "lod2energy_reports", "reports": reports}
-            write_report_html(json_ready(out), a.html, inputs=html_inputs, tol=tol, input_files=a.files)
+            # the files read again for the page: the panels' buildings and every footprint only
+            write_report_for_files(json_ready(out), a.html, a.files, tol=tol, input_files=a.files,
+                                   read_options={"primitive": a.primitive, "inner_shells": a.inner_shell})
         except Exception as e:  # noqa: BLE001 - the page is a view of the report
             _err(f"{a.html} not written: {type(e).__name__}: {e}")
     return worst

@@ -246,6 +246,33 @@ def test_view_of_a_large_report_json_prepares_only_the_panels_and_draws_a_pictur
     assert sorted(p.name for p in tmp_path.iterdir()) == ["report.html", "report.json"]  # no scratch left
 
 
+@pytest.mark.parametrize("plan_max", [5000, 10])
+def test_validate_html_reads_the_files_again_for_the_page(tmp_path, monkeypatch, plan_max):
+    """``validate --html`` of two files keeps no building for the page while validating: the
+    page reads the files again (panels whole, footprints only; a scratch file over plan_max)."""
+    from lod2energy.cli import main
+    monkeypatch.setattr(VR, "PLAN_SVG_MAX", plan_max)
+    kept = []
+    monkeypatch.setattr(VR, "keep", lambda feats, into: kept.append(1) or feats)
+    files = [str(shared_path("citygml-real", "berlin", "3900_5819.gml")),
+             str(shared_path("3dbag", "tile901_trimmed.city.jsonl"))]
+    out = tmp_path / "v.html"
+    assert main(["validate", *files, "--report", str(tmp_path / "v.json"), "--html", str(out), "-q"]) in (0, 1)
+    assert kept == []
+    rep = json.loads((tmp_path / "v.json").read_text())
+    n = sum(1 for r in rep["reports"] for f in r["features"] if f.get("type") in ("Building", None) or "energy" in f)
+    html = out.read_text(encoding="utf-8")
+    d = page_data(html)
+    assert d["figures"]["summary"]["buildings"] == n and d["plan"]["drawn"] == n
+    if plan_max >= n:
+        assert html.count('class="fp"') == n and d["buildings_embedded"] == "all"
+    else:
+        assert '<img id="plan" class="picture"' in html and 'class="fp"' not in html
+        assert n > VR.DEFAULT_CAP and d["buildings_embedded"] == "panels"
+        assert len(d["buildings"]) == len(d["panels"]) <= VR.DEFAULT_CAP
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["v.html", "v.json"]
+
+
 def test_page_memory_does_not_grow_with_the_file():
     """The traced peak of reading a report's rows and drawing the picture plan from a scratch
     file of footprints is the same for 2,000 and 8,000 buildings standing on the same 2,000

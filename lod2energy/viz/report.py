@@ -71,12 +71,14 @@ class PageRows:
     rs : iterable of Row
     cap : int
         Panels of a large file (see the module docstring).
-    plan_max : int
-        Largest file drawn as an SVG plan with every row embedded.
+    plan_max : int, optional
+        Largest file drawn as an SVG plan with every row embedded (default
+        :data:`PLAN_SVG_MAX`).
     """
 
-    def __init__(self, rs: Iterable[D.Row] = (), cap: int = DEFAULT_CAP, plan_max: int = PLAN_SVG_MAX):
-        self.cap, self.plan_max = int(cap), int(plan_max)
+    def __init__(self, rs: Iterable[D.Row] = (), cap: int = DEFAULT_CAP, plan_max: int | None = None):
+        self.cap = int(cap)
+        self.plan_max = int(PLAN_SVG_MAX if plan_max is None else plan_max)
         self.tally = D.Tally()
         self.n = 0
         self.rows: list[D.Row] | None = []  # every row, until there are more than plan_max
@@ -432,7 +434,7 @@ def _row_json(r: D.Row) -> dict:
 
 def render_report_html(report: dict, *, inputs: dict | None = None, outputs: dict | None = None,
                        cap: int = DEFAULT_CAP, tol: Tolerances = DEFAULT, title: str | None = None,
-                       footprints=None, page: PageRows | None = None, plan_max: int = PLAN_SVG_MAX) -> str:
+                       footprints=None, page: PageRows | None = None, plan_max: int | None = None) -> str:
     """The page as a string (see :func:`write_report_html`)."""
     import jinja2
     inputs, outputs = dict(inputs or {}), dict(outputs or {})
@@ -486,7 +488,7 @@ def _json_default(o):
 
 def write_report_html(report: dict, path, *, inputs: dict | None = None, outputs: dict | None = None,
                       cap: int = DEFAULT_CAP, tol: Tolerances = DEFAULT, root=None, input_files=(),
-                      footprints=None, page: PageRows | None = None, plan_max: int = PLAN_SVG_MAX) -> Path:
+                      footprints=None, page: PageRows | None = None, plan_max: int | None = None) -> Path:
     """Write ``report.html`` for a report of ``export``, ``repair --report`` or ``validate --report``.
 
     Parameters
@@ -503,9 +505,10 @@ def write_report_html(report: dict, path, *, inputs: dict | None = None, outputs
         file's plan without all its buildings in memory (:func:`read_for_page`).
     page : PageRows, optional
         The report's rows already read (default: read from ``report``).
-    plan_max : int
-        Largest file drawn as an SVG plan with every row embedded; a larger one gets a plan
-        picture and its panels' rows (see the module docstring).
+    plan_max : int, optional
+        Largest file drawn as an SVG plan with every row embedded (default
+        :data:`PLAN_SVG_MAX`); a larger one gets a plan picture and its panels' rows (see the
+        module docstring).
     cap : int
         Panels of a large file (see the module docstring).
     root : path-like, optional
@@ -524,6 +527,29 @@ def write_report_html(report: dict, path, *, inputs: dict | None = None, outputs
     return write_text(path, html, root=root, inputs=list(input_files))
 
 
+def write_report_for_files(report: dict, path, files, *, tol: Tolerances = DEFAULT, outputs: dict | None = None,
+                           input_files=(), read_options: dict | None = None) -> Path:
+    """``report.html`` for a report of ``files`` (``validate --html``), reading them again for
+    the page: the panels' buildings whole, the others' footprints only (in a scratch file beside
+    the page over ``PLAN_SVG_MAX`` buildings), so that memory does not grow with the files."""
+    page = PageRows(D.iter_rows(report))
+    wanted = {r.id for r in page.panel_rows()}
+    spill = FootprintSpill(os.path.dirname(os.path.abspath(path))) if page.large else None
+    inputs: dict[str, Building] = {}
+    fps: dict[str, list] = {}
+    try:
+        for f in files:
+            if os.path.isfile(f):
+                i, fp = read_for_page(f, wanted, spill, **(read_options or {}))
+                inputs.update(i)
+                fps.update(fp)
+        return write_report_html(report, path, inputs=inputs, outputs=outputs, tol=tol, input_files=input_files,
+                                 footprints=spill if spill is not None else fps, page=page)
+    finally:
+        if spill is not None:
+            spill.close()
+
+
 def keep(features, into: dict):
     """Pass a feature stream through unchanged, storing its Buildings in ``into`` by id (for
     ``repair --html`` / ``validate --html``, whose streams are consumed by the command)."""
@@ -533,14 +559,15 @@ def keep(features, into: dict):
         yield f
 
 
-def read_for_page(path: str, wanted: set[str], spill: FootprintSpill | None = None
+def read_for_page(path: str, wanted: set[str], spill: FootprintSpill | None = None, **read_options
                   ) -> tuple[dict[str, Building], dict[str, list]]:
     """The buildings of a file the page draws in full (ids in ``wanted``) and the plan footprint
     (:func:`plan_footprint`) of every other, read one at a time: memory grows with the panels
     and the footprints, not with the file; with a ``spill`` the footprints go to it (the dict
-    returned is then empty) and memory grows with the panels only."""
+    returned is then empty) and memory grows with the panels only. ``read_options`` go to
+    :func:`lod2energy.io.read` (``primitive``, ``inner_shells``)."""
     from lod2energy.io import read
-    model, feats = read(path)
+    model, feats = read(path, **read_options)
     keep: dict[str, Building] = {}
     fps: dict[str, list] = {}
     if model is None:

@@ -16,7 +16,7 @@ from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.errors import InputError
 from lod2energy.model import Building, FeatureError
 from lod2energy.viz import data as D
-from lod2energy.viz.report import (DEFAULT_CAP, PLAN_SVG_MAX, FootprintSpill, PageRows, read_for_page,
+from lod2energy.viz.report import (DEFAULT_CAP, FootprintSpill, PageRows, read_for_page,
                                    write_report_html)
 
 
@@ -120,7 +120,7 @@ def prepare_outputs(ids, inputs: dict[str, Building], tol: Tolerances = DEFAULT,
 
 
 def write_report_for(report_json, html_path=None, input_path: str | None = None, cap: int = DEFAULT_CAP,
-                     tol: Tolerances = DEFAULT, plan_max: int = PLAN_SVG_MAX) -> tuple[Path, dict]:
+                     tol: Tolerances = DEFAULT, plan_max: int | None = None) -> tuple[Path, dict]:
     """``report.html`` next to an existing ``report.json``: reads the input file the report names
     (or ``input_path``), re-prepares only the buildings that get a panel, writes the page (a
     report of more than ``plan_max`` buildings: its plan as a picture, see
