@@ -168,6 +168,21 @@ def test_footprint_spill_takes_back_what_it_wrote_when_the_disk_fills(tmp_path):
     assert all(np.array_equal(a, b) for (_, r1), (_, r2) in zip(got, want) for a, b in zip(r1, r2))
 
 
+def test_a_footprint_that_cannot_be_drawn_leaves_the_others_on_the_picture(tmp_path):
+    spill = FootprintSpill(str(tmp_path))
+    good = list(_squares(30))
+    for i, rings in good:
+        spill.add(i, rings)
+    spill.add("nan", [np.array([[0.0, 0.0], [np.nan, 1.0], [1.0, 1.0]])])
+    spill.add("inf", [np.array([[0.0, 0.0], [1e9, np.inf], [1.0, 1.0]])])
+    assert np.isfinite(spill.lo).all() and np.isfinite(spill.hi).all()
+    rows = [{"id": i, "repair": {"stage": "valid"}, "energy": {"compliant": True}} for i, _ in good]
+    rows += [{"id": i, "repair": {"stage": "valid"}, "energy": {"compliant": True}} for i in ("nan", "inf")]
+    page = PageRows(D.iter_rows({"buildings": rows}), plan_max=5)
+    urls, info = VR._plan_picture(page, spill, {}, {})
+    assert info["drawn"] == sum(1 for _, r in good if r) and (_png(urls["status"]) != 255).any()
+
+
 # --- the page of a large file ----------------------------------------------------------------------
 
 def _png(url: str):

@@ -181,6 +181,16 @@ def _plan(rs: list[D.Row], inputs: dict, outputs: dict, panels: set[str],
                  "drawn": sum(1 for it in items if len(it["footprint"]))}
 
 
+def _drawable(rings) -> list[np.ndarray]:
+    """The rings of a footprint that can be drawn: ``(k, 2)`` float64, ``k >= 1``, finite."""
+    out = []
+    for r in rings:
+        a = np.ascontiguousarray(np.asarray(r, dtype="<f8").reshape(len(r), -1)[:, :2]) if len(r) else None
+        if a is not None and a.shape[1] == 2 and np.isfinite(a).all():
+            out.append(a)
+    return out
+
+
 class FootprintSpill:
     """Plan footprints of a large file, kept in an unnamed scratch file as they are read and
     given back in the same order: nothing per building stays in memory. Without a scratch file
@@ -208,7 +218,7 @@ class FootprintSpill:
 
     def add(self, id: str, rings: list[np.ndarray]) -> None:
         """Keep the footprint of building ``id`` (``[(k, 2) float]``, m)."""
-        rings = [np.ascontiguousarray(np.asarray(r, dtype="<f8")[:, :2]) for r in rings if len(r)]
+        rings = _drawable(rings)
         k = _key(id)
         for r in rings:
             self.lo = np.minimum(self.lo, r.min(axis=0))
@@ -287,7 +297,7 @@ def _plan_picture(page: PageRows, footprints, inputs: dict, outputs: dict) -> tu
         spill never holds a panel's: :func:`read_for_page` keeps those whole)."""
         if isinstance(footprints, dict):
             for i, rings in footprints.items():
-                yield _key(i), rings
+                yield _key(i), _drawable(rings)
         else:
             yield from footprints
         done = set(footprints) if isinstance(footprints, dict) else set()
@@ -295,12 +305,12 @@ def _plan_picture(page: PageRows, footprints, inputs: dict, outputs: dict) -> tu
             for i, b in store.items():
                 if i not in done:
                     done.add(i)
-                    yield _key(i), plan_footprint(b)
+                    yield _key(i), _drawable(plan_footprint(b))
 
     lo, hi = np.full(2, np.inf), np.full(2, -np.inf)
     if isinstance(footprints, FootprintSpill):
         lo, hi = footprints.lo.copy(), footprints.hi.copy()
-        extra = [plan_footprint(b) for st in (inputs, outputs) for b in st.values()]
+        extra = [_drawable(plan_footprint(b)) for st in (inputs, outputs) for b in st.values()]
     else:
         extra = (rings for _, rings in items())
     for rings in extra:
