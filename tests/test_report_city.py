@@ -111,6 +111,15 @@ def _squares(n: int, seed: int = 0, places: int | None = None):
         yield f"b{i}", rings
 
 
+def gives_back(spill: FootprintSpill, want: list) -> None:
+    """``spill`` yields the keys of ``want``'s ids and their rings, in order."""
+    got = list(spill)
+    assert len(got) == len(want)
+    for (k, rings), (i, w) in zip(got, want):
+        assert k == VR._key(i) and len(rings) == len(w)
+        assert all(np.array_equal(a, b) for a, b in zip(rings, w))
+
+
 def test_footprint_spill_gives_back_every_ring_in_order_across_read_chunks(tmp_path):
     spill = FootprintSpill(str(tmp_path))
     want = list(_squares(30000))  # ~3 MB: several 1 MB reads, records cut at their ends
@@ -118,11 +127,7 @@ def test_footprint_spill_gives_back_every_ring_in_order_across_read_chunks(tmp_p
         spill.add(i, rings)
     assert list(tmp_path.iterdir()) == []  # the scratch file has no name
     for _ in range(2):  # read twice: the page reads it for its bounds, then draws
-        got = list(spill)
-        assert len(got) == len(want)
-        for (k, rings), (i, w) in zip(got, want):
-            assert k == VR._key(i) and len(rings) == len(w)
-            assert all(np.array_equal(a, b) for a, b in zip(rings, w))
+        gives_back(spill, want)
     allpts = np.vstack([r for _, rs in want for r in rs])
     assert np.array_equal(spill.lo, allpts.min(axis=0)) and np.array_equal(spill.hi, allpts.max(axis=0))
     spill.close()
@@ -136,9 +141,7 @@ def test_footprint_spill_keeps_the_rings_in_memory_without_a_scratch_file(tmp_pa
     want = list(_squares(50))
     for i, rings in want:
         spill.add(i, rings)
-    got = list(spill)
-    assert [k for k, _ in got] == [VR._key(i) for i, _ in want]
-    assert all(np.array_equal(a, b) for (_, r1), (_, r2) in zip(got, want) for a, b in zip(r1, r2))
+    gives_back(spill, want)
 
 
 def test_footprint_spill_takes_back_what_it_wrote_when_the_disk_fills(tmp_path):
@@ -163,9 +166,7 @@ def test_footprint_spill_takes_back_what_it_wrote_when_the_disk_fills(tmp_path):
     for i, rings in want:
         spill.add(i, rings)
     assert spill._f is None and real.closed
-    got = list(spill)
-    assert [k for k, _ in got] == [VR._key(i) for i, _ in want]
-    assert all(np.array_equal(a, b) for (_, r1), (_, r2) in zip(got, want) for a, b in zip(r1, r2))
+    gives_back(spill, want)
 
 
 def test_a_footprint_that_cannot_be_drawn_leaves_the_others_on_the_picture(tmp_path):
