@@ -12,6 +12,7 @@ import tracemalloc
 import numpy as np
 import pytest
 
+from lod2energy.io.seen_ids import id_key
 from lod2energy.viz import data as D
 from lod2energy.viz import report as VR
 from lod2energy.viz.report import FootprintSpill, PageRows, read_for_page, render_report_html
@@ -116,7 +117,7 @@ def gives_back(spill: FootprintSpill, want: list) -> None:
     got = list(spill)
     assert len(got) == len(want)
     for (k, rings), (i, w) in zip(got, want):
-        assert k == VR._key(i) and len(rings) == len(w)
+        assert k == id_key(i) and len(rings) == len(w)
         assert all(np.array_equal(a, b) for a, b in zip(rings, w))
 
 

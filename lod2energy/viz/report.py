@@ -18,7 +18,6 @@ has every building). Memory and page size then stay bounded however large the ci
 """
 from __future__ import annotations
 
-import hashlib
 import json
 import os
 import struct
@@ -30,6 +29,7 @@ from typing import Iterable, Iterator
 import numpy as np
 
 from lod2energy.config import DEFAULT, Tolerances
+from lod2energy.io.seen_ids import id_key
 from lod2energy.model import Building
 from lod2energy.viz import data as D
 from lod2energy.viz import figures as F
@@ -50,12 +50,6 @@ def panel_ids(rs: Iterable[D.Row], cap: int = DEFAULT_CAP) -> tuple[list[str], i
     """Ids of the buildings that get a panel, and how many deserving ones the cap left out."""
     page = PageRows(rs, cap)
     return [r.id for r in page.panel_rows()], page.left_out
-
-
-def _key(i: str) -> int:
-    """A stable 64-bit key of a building id (the same in every process and run)."""
-    return int.from_bytes(hashlib.blake2b(i.encode("utf-8", "surrogatepass"), digest_size=8).digest(),
-                          "little", signed=True)
 
 
 class PageRows:
@@ -103,7 +97,7 @@ class PageRows:
             worst = self._worst.setdefault(_SEVERITY.get(r.status, 5), [])
             if len(worst) < self.cap:
                 worst.append(r)
-        self.keys.append(_key(r.id))
+        self.keys.append(id_key(r.id))
         self.status.append(D.STATUSES.index(r.status))
         self.heat.append(np.nan if r.heating_kwh_m2 is None else r.heating_kwh_m2)
 
@@ -219,7 +213,7 @@ class FootprintSpill:
     def add(self, id: str, rings: list[np.ndarray]) -> None:
         """Keep the footprint of building ``id`` (``[(k, 2) float]``, m)."""
         rings = _drawable(rings)
-        k = _key(id)
+        k = id_key(id)
         for r in rings:
             self.lo = np.minimum(self.lo, r.min(axis=0))
             self.hi = np.maximum(self.hi, r.max(axis=0))
@@ -297,7 +291,7 @@ def _plan_picture(page: PageRows, footprints, inputs: dict, outputs: dict) -> tu
         spill never holds a panel's: :func:`read_for_page` keeps those whole)."""
         if isinstance(footprints, dict):
             for i, rings in footprints.items():
-                yield _key(i), _drawable(rings)
+                yield id_key(i), _drawable(rings)
         else:
             yield from footprints
         done = set(footprints) if isinstance(footprints, dict) else set()
@@ -305,7 +299,7 @@ def _plan_picture(page: PageRows, footprints, inputs: dict, outputs: dict) -> tu
             for i, b in store.items():
                 if i not in done:
                     done.add(i)
-                    yield _key(i), _drawable(plan_footprint(b))
+                    yield id_key(i), _drawable(plan_footprint(b))
 
     lo, hi = np.full(2, np.inf), np.full(2, -np.inf)
     if isinstance(footprints, FootprintSpill):
