@@ -93,3 +93,20 @@ def test_reading_a_cityjsonseq_holds_nothing_per_id_but_a_slot(tmp_path):
     small, large = kept(2000), kept(8000)
     objects = 2 * (8000 - 2000)
     assert large - small < 48 * objects, (small, large)
+
+
+def test_the_document_writer_refuses_two_cityobjects_with_one_id(tmp_path):
+    import io as _io
+
+    import pytest
+
+    from factories import box
+    from lod2energy.io.cityjson_write import write_document
+    from lod2energy.model import CityModel
+    out = _io.StringIO()
+    write_document(out, CityModel(), [box(id="a"), box(id="b")], "2.0", scratch_dir=str(tmp_path))
+    doc = json.loads(out.getvalue())
+    assert sorted(doc["CityObjects"]) == ["a", "b"] and len(doc["vertices"]) == 16
+    with pytest.raises(ValueError, match="two CityObjects with id 'a'"):
+        write_document(_io.StringIO(), CityModel(), [box(id="a"), box(id="b"), box(id="a")], "2.0",
+                       scratch_dir=str(tmp_path))

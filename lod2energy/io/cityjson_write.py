@@ -17,6 +17,7 @@ import numpy as np
 from lod2energy.crs import cityjson_reference_system
 from lod2energy.io.cityjson_grid import GEOGRAPHIC_SCALE, default_transform, file_coordinates
 from lod2energy.io.cityjson_grid import quantise as _quantise
+from lod2energy.io.seen_ids import SeenIds
 from lod2energy.model import SURFACE_TYPES, Building, CityModel, CityObject, Geometry, Shell, Solid, Surface
 
 
@@ -186,7 +187,7 @@ def write_document(f, model: CityModel, buildings: Iterable[Building], version: 
     if fix_header is not None:
         fix_header(head)
     f.write(_dumps(head)[:-1] + ',"CityObjects":{')
-    seen: set[str] = set()
+    seen = SeenIds()  # 16 bytes a slot per id written, not the id strings (a city's document)
     n = 0
     with tempfile.TemporaryFile("w+", encoding="utf-8", dir=scratch_dir) as vf:
         for b in buildings:
@@ -197,8 +198,8 @@ def write_document(f, model: CityModel, buildings: Iterable[Building], version: 
                 co = cityobject_json(o, n, version)
                 if fix_object is not None:
                     fix_object(co)
-                f.write(("," if seen else "") + _dumps(o.id) + ":" + _dumps(co))
-                seen.add(o.id)
+                f.write(("," if len(seen) else "") + _dumps(o.id) + ":" + _dumps(co))
+                seen.add(o.id, 0)
             if q:
                 vf.write(("," if n else "") + _dumps(q)[1:-1])
                 n += len(q)
