@@ -46,6 +46,9 @@ from .cityjson_schema import (
 
 #: CityObjects validated together (one small document each).
 BATCH = 64
+#: Surfaces (top-level boundary items) a batch may hold before it is validated: a large object
+#: (a terrain TIN of 10,000s of triangles) is checked with the few before it, not with 63 more.
+BATCH_SURFACES = 4096
 #: Vertices converted to an array (and read back) at a time.
 VERTEX_CHUNK = 1 << 16
 #: CityObjects one run of linked objects may hold before every link of the document is read.
@@ -204,6 +207,16 @@ class _Pass1:
         h = hash(oid)
         k = int(np.searchsorted(self.ids, h))
         return k < len(self.ids) and int(self.ids[k]) == h
+
+
+def _surfaces(co: Any) -> int:
+    """Top-level boundary items of a CityObject's geometries (its weight in a schema batch;
+    1 for whatever is not shaped as a CityObject)."""
+    try:
+        return max(1, sum(len(g["boundaries"]) for g in co.get("geometry") or ()
+                          if isinstance(g, Mapping) and isinstance(g.get("boundaries"), list)))
+    except (AttributeError, TypeError):
+        return 1
 
 
 def _triples(chunk: list) -> bool:
@@ -391,14 +404,16 @@ def _check(path: str, p: _Pass1, extension: Mapping | None, tol) -> list[str]:
         """:func:`_cityobjects`, each CityObject also seen by the schema (in batches; a repeated
         id alone), its problems added to ``out``."""
         batch: dict = {}
+        weight = 0
         for oid, co, first in _cityobjects(path, repeated):
             if first:
                 batch[oid] = co
+                weight += _surfaces(co)
             else:
                 out.extend(batch_problems({oid: co}))
-            if len(batch) >= BATCH:
+            if len(batch) >= BATCH or weight >= BATCH_SURFACES:
                 out.extend(batch_problems(batch))
-                batch = {}
+                batch, weight = {}, 0
             yield oid, co, first
         if batch:
             out.extend(batch_problems(batch))

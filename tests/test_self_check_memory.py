@@ -236,3 +236,32 @@ def test_what_the_check_holds_does_not_grow_with_the_document(tmp_path, monkeypa
     small, large = peak(200), peak(2000)
     # every link (the reading before runs): ~1.2 MB more for the 3,600 more CityObjects
     assert large - small < 200_000, (small, large)
+
+
+def test_large_objects_are_schema_checked_a_few_at_a_time(tmp_path, monkeypatch):
+    """A schema batch is closed at BATCH_SURFACES surfaces as well as at BATCH objects: ten
+    terrain TINs of 3,000 triangles (Den Haag tiled x16 carries sixteen) are never held
+    together (they were, in one batch of 64 objects: +20 MB at the end of the x16 check)."""
+    n_tri = 3000
+    cos = {}
+    for k in range(10):
+        cos[f"b{k}"] = {"type": "Building", "geometry": []}
+        cos[f"tin{k}"] = {"type": "TINRelief", "geometry": [{"type": "CompositeSurface", "lod": "1", "boundaries": [
+            [[i % 50, (i + 1) % 50, (i + 2) % 50]] for i in range(n_tri)]}]}
+    verts = [[i, (i * 7) % 50, i % 3] for i in range(50)]
+    doc = {"type": "CityJSON", "version": "2.0", "transform": {"scale": [0.001] * 3, "translate": [0, 0, 0]},
+           "CityObjects": cos, "vertices": verts}
+    path, _, _ = _written(tmp_path, doc)
+    batches = []
+
+    def record(*args):
+        d = args[1] if isinstance(args[0], str) else args[1]
+        batches.append([oid for oid in d.get("CityObjects", {})])
+        return True if isinstance(args[0], str) else []
+    monkeypatch.setattr(C, "_schema_valid_fast", record)
+    monkeypatch.setattr(C, "_schema_errors", record)
+    monkeypatch.setattr(C, "BATCH_SURFACES", 4096)
+    C.self_check_document(str(path))
+    tins = [sum(o.startswith("tin") for o in b) for b in batches if b]
+    assert sum(tins) == 10 and max(tins) <= 2
+    assert C._surfaces(cos["tin0"]) == n_tri and C._surfaces(cos["b0"]) == 1 and C._surfaces("junk") == 1
