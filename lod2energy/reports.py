@@ -198,30 +198,22 @@ def write_html_report(report_path: str, input_path: str, records: RecordStore, s
                       tol: Tolerances = DEFAULT, inputs=()) -> str:
     """``OUTDIR/report.html`` (:mod:`lod2energy.viz`) from the report, the input buildings and the
     prepared ones of the spool; a page that cannot be written costs one line, never the export."""
-    spill = None
     try:
-        from lod2energy.viz.report import FootprintSpill, PageRows, read_for_page, write_report_html
-        from lod2energy.viz import data as viz_data
-        doc = report_lazily(report_path)
-        page = PageRows(viz_data.iter_rows(doc))  # one reading of the rows: counters and the panels
-        wanted = {r.id for r in page.panel_rows()}
-        # the panels' buildings whole, the others' footprints only (a large file's in a scratch file)
-        spill = FootprintSpill(out) if page.large else None
-        src, footprints = read_for_page(input_path, wanted, spill) if os.path.isfile(input_path) else ({}, {})
-        outputs = {}
-        for s, r in records.in_order():
-            if r.id in wanted and r.outcome == "done" and os.path.exists(spool_path(spool, s)):
-                outputs[r.id] = load_spooled(spool, s)
+        from lod2energy.viz.report import write_report_for_files
+
+        def outputs(ids, _inputs) -> dict:  # the panels' prepared buildings, from the spool
+            wanted, out_b = set(ids), {}
+            for s, r in records.in_order():
+                if r.id in wanted and r.outcome == "done" and os.path.exists(spool_path(spool, s)):
+                    out_b[r.id] = load_spooled(spool, s)
+            return out_b
         path = os.path.join(out, "report.html")
-        write_report_html(doc, path, inputs=src, outputs=outputs, tol=tol, root=out, input_files=list(inputs),
-                          footprints=spill if spill is not None else footprints, page=page)
+        write_report_for_files(report_lazily(report_path), path, [input_path], tol=tol, outputs=outputs, root=out,
+                               input_files=list(inputs))
         return path
     except Exception as e:  # noqa: BLE001 - the page is a view of the report, not an output to check
         err(f"report.html not written: {type(e).__name__}: {e}")
         return ""
-    finally:
-        if spill is not None:
-            spill.close()
 
 
 def print_export_summary(records: Iterable[BuildingRecord], formats: Iterable[str], outdir: str,

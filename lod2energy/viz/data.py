@@ -328,13 +328,16 @@ class Tally:
                 "n_measured": self.n_measured,
                 "status": {s: self.status[s] for s in STATUSES}}
 
+    def exports_table(self) -> dict:
+        return {k: dict(d, problems=list(d["problems"])) for k, d in self.exports.items()}
+
     def figure_data(self) -> dict:
         """Every number the report plots or tabulates (embedded in the page as JSON)."""
         v = self.validity_by_code()
         return {"summary": self.summary(), "stages": self.stage_distribution(), "iou": self.iou.result(),
                 "displacement": self.displacement.result(), "validity_by_code": v, "code_names": code_names(v),
                 "compliance": self.compliance(), "heating_by_typology": self.heating_by_typology(),
-                "exports": {k: dict(d, problems=list(d["problems"])) for k, d in self.exports.items()}}
+                "exports": self.exports_table()}
 
 
 def stage_distribution(rs: Iterable[Row]) -> dict:
@@ -374,7 +377,7 @@ def summary(rs: Iterable[Row]) -> dict:
 
 def exports_table(rs: Iterable[Row]) -> dict:
     """Per export format: buildings written and self-checked ok / failed."""
-    return Tally(rs).figure_data()["exports"]
+    return Tally(rs).exports_table()
 
 
 def code_names(codes) -> dict:

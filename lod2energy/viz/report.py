@@ -286,31 +286,32 @@ def _plan_picture(page: PageRows, footprints, inputs: dict, outputs: dict) -> tu
     import base64
     import io
 
+    given = footprints if isinstance(footprints, dict) else {}
+    own = {}  # the panels' buildings not among the footprints given (a spill never holds them)
+    for store in (inputs, outputs):
+        for i, b in store.items():
+            if i not in given and i not in own:
+                own[i] = _drawable(plan_footprint(b))
+
     def items():
-        """``(key, rings)``: the footprints given, then the panels' buildings not among them (a
-        spill never holds a panel's: :func:`read_for_page` keeps those whole)."""
+        """``(key, rings)``: the footprints given, then the panels' own."""
         if isinstance(footprints, dict):
             for i, rings in footprints.items():
                 yield id_key(i), _drawable(rings)
         else:
             yield from footprints
-        done = set(footprints) if isinstance(footprints, dict) else set()
-        for store in (inputs, outputs):
-            for i, b in store.items():
-                if i not in done:
-                    done.add(i)
-                    yield id_key(i), _drawable(plan_footprint(b))
+        for i, rings in own.items():
+            yield id_key(i), rings
 
     lo, hi = np.full(2, np.inf), np.full(2, -np.inf)
     if isinstance(footprints, FootprintSpill):
         lo, hi = footprints.lo.copy(), footprints.hi.copy()
-        extra = [_drawable(plan_footprint(b)) for st in (inputs, outputs) for b in st.values()]
+        extra = own.values()
     else:
         extra = (rings for _, rings in items())
     for rings in extra:
         for r in rings:
-            if len(r):
-                lo, hi = np.minimum(lo, r[:, :2].min(axis=0)), np.maximum(hi, r[:, :2].max(axis=0))
+            lo, hi = np.minimum(lo, r.min(axis=0)), np.maximum(hi, r.max(axis=0))
     if not np.all(np.isfinite(lo)):
         return {}, {"drawn": 0}
     span = max(float((hi - lo).max()), 1e-6)
@@ -531,24 +532,40 @@ def write_report_html(report: dict, path, *, inputs: dict | None = None, outputs
     return write_text(path, html, root=root, inputs=list(input_files))
 
 
-def write_report_for_files(report: dict, path, files, *, tol: Tolerances = DEFAULT, outputs: dict | None = None,
-                           input_files=(), read_options: dict | None = None) -> Path:
-    """``report.html`` for a report of ``files`` (``validate --html``), reading them again for
-    the page: the panels' buildings whole, the others' footprints only (in a scratch file beside
-    the page over ``PLAN_SVG_MAX`` buildings), so that memory does not grow with the files."""
-    page = PageRows(D.iter_rows(report))
-    wanted = {r.id for r in page.panel_rows()}
+def write_report_for_files(report: dict, path, files, *, tol: Tolerances = DEFAULT, outputs=None,
+                           cap: int = DEFAULT_CAP, plan_max: int | None = None, root=None, input_files=(),
+                           read_options: dict | None = None, page: PageRows | None = None) -> Path:
+    """``report.html`` for a report of ``files``, reading them again for the page: the panels'
+    buildings whole, the others' footprints only (in a scratch file beside the page over
+    ``plan_max`` buildings), so that memory does not grow with the files. The one way every
+    command writes its page (``export``, ``validate --html``, ``lod2energy view``).
+
+    Parameters
+    ----------
+    outputs : dict or callable, optional
+        The repaired buildings of the panels, or ``outputs(ids, inputs) -> dict`` called with
+        the panels' ids (in page order) and their buildings as read.
+    page : PageRows, optional
+        The report's rows already read (default: read from ``report``).
+    read_options : dict, optional
+        For :func:`lod2energy.io.read` (``primitive``, ``inner_shells``).
+    """
+    page = page if page is not None else PageRows(D.iter_rows(report), cap, plan_max)
+    ids = [r.id for r in page.panel_rows()]
     spill = FootprintSpill(os.path.dirname(os.path.abspath(path))) if page.large else None
     inputs: dict[str, Building] = {}
     fps: dict[str, list] = {}
     try:
         for f in files:
-            if os.path.isfile(f):
-                i, fp = read_for_page(f, wanted, spill, **(read_options or {}))
+            if f and os.path.isfile(f):
+                i, fp = read_for_page(f, set(ids), spill, **(read_options or {}))
                 inputs.update(i)
                 fps.update(fp)
-        return write_report_html(report, path, inputs=inputs, outputs=outputs, tol=tol, input_files=input_files,
-                                 footprints=spill if spill is not None else fps, page=page)
+        if callable(outputs):
+            outputs = outputs(ids, inputs)
+        return write_report_html(report, path, inputs=inputs, outputs=outputs, cap=cap, tol=tol, root=root,
+                                 input_files=input_files, footprints=spill if spill is not None else fps,
+                                 page=page)
     finally:
         if spill is not None:
             spill.close()

@@ -15,9 +15,7 @@ from types import SimpleNamespace
 from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.errors import InputError
 from lod2energy.model import Building, FeatureError
-from lod2energy.viz import data as D
-from lod2energy.viz.report import (DEFAULT_CAP, FootprintSpill, PageRows, read_for_page,
-                                   write_report_html)
+from lod2energy.viz.report import DEFAULT_CAP, write_report_for_files, write_report_html
 
 
 class ViewError(InputError):
@@ -133,21 +131,17 @@ def write_report_for(report_json, html_path=None, input_path: str | None = None,
     rep = report_lazily(str(report_json))  # its buildings read one at a time, when iterated
     src = input_path or rep.get("input_file") or ""
     html_path = html_path or Path(report_json).with_name("report.html")
-    t0, c0 = time.perf_counter(), time.process_time()
-    page = PageRows(D.iter_rows(rep), cap, plan_max)
-    wanted = [r.id for r in page.panel_rows()]
-    spill = FootprintSpill(os.path.dirname(os.path.abspath(html_path))) if page.large else None
-    try:
-        inputs, fps = read_for_page(src, set(wanted), spill) if src and os.path.isfile(src) else ({}, {})
-        t1, c1 = time.perf_counter(), time.process_time()
-        outputs = prepare_outputs(wanted, inputs, tol)
-        t2, c2 = time.perf_counter(), time.process_time()
-        out = write_report_html(rep, html_path, inputs=inputs, outputs=outputs, cap=cap, tol=tol,
-                                input_files=[src] if src else [], page=page,
-                                footprints=spill if spill is not None else fps)
-    finally:
-        if spill is not None:
-            spill.close()
+    t0 = time.perf_counter()
+    marks: list = []
+
+    def outputs(ids, inputs) -> dict:  # the panels' buildings prepared again (timed)
+        marks.append((time.perf_counter(), time.process_time()))
+        out = prepare_outputs(ids, inputs, tol)
+        marks.append((time.perf_counter(), time.process_time()))
+        return out
+    out = write_report_for_files(rep, html_path, [src], tol=tol, outputs=outputs, cap=cap, plan_max=plan_max,
+                                 input_files=[src] if src else [])
+    (t1, _), (t2, c2) = marks
     t3, c3 = time.perf_counter(), time.process_time()
     return out, {"read": round(t1 - t0, 3), "prepare": round(t2 - t1, 3), "html": round(t3 - t2, 3),
                  "html_cpu": round(c3 - c2, 3)}
