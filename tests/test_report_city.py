@@ -14,6 +14,7 @@ import pytest
 
 from lod2energy.io.seen_ids import id_key
 from lod2energy.viz import data as D
+from lod2energy.viz import footprints as FP
 from lod2energy.viz import report as VR
 from lod2energy.viz.report import FootprintSpill, PageRows, read_for_page, render_report_html
 
@@ -137,7 +138,7 @@ def test_footprint_spill_gives_back_every_ring_in_order_across_read_chunks(tmp_p
 def test_footprint_spill_keeps_the_rings_in_memory_without_a_scratch_file(tmp_path, monkeypatch):
     def no_file(*a, **k):
         raise OSError(28, "No space left on device")
-    monkeypatch.setattr(VR.tempfile, "TemporaryFile", no_file)
+    monkeypatch.setattr(FP.tempfile, "TemporaryFile", no_file)
     spill = FootprintSpill(str(tmp_path))
     want = list(_squares(50))
     for i, rings in want:

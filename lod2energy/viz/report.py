@@ -20,8 +20,6 @@ from __future__ import annotations
 
 import json
 import os
-import struct
-import tempfile
 from array import array
 from pathlib import Path
 from typing import Iterable, Iterator
@@ -32,6 +30,7 @@ from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.io.seen_ids import id_key
 from lod2energy.model import Building
 from lod2energy.viz import data as D
+from lod2energy.viz.footprints import FootprintSpill, drawable as _drawable
 from lod2energy.viz import figures as F
 from lod2energy.viz import render as R
 
@@ -173,109 +172,6 @@ def _plan(rs: list[D.Row], inputs: dict, outputs: dict, panels: set[str],
     svg = R.plan_svg(items)
     return svg, {"heating_range": [round(lo, 3), round(hi, 3)] if heat else None,
                  "drawn": sum(1 for it in items if len(it["footprint"]))}
-
-
-def _drawable(rings) -> list[np.ndarray]:
-    """The rings of a footprint that can be drawn: ``(k, 2)`` float64, ``k >= 1``, finite."""
-    out = []
-    for r in rings:
-        a = np.ascontiguousarray(np.asarray(r, dtype="<f8").reshape(len(r), -1)[:, :2]) if len(r) else None
-        if a is not None and a.shape[1] == 2 and np.isfinite(a).all():
-            out.append(a)
-    return out
-
-
-class FootprintSpill:
-    """Plan footprints of a large file, kept in an unnamed scratch file as they are read and
-    given back in the same order: nothing per building stays in memory. Without a scratch file
-    (it cannot be made, or the disk fills) they stay in memory.
-
-    Parameters
-    ----------
-    scratch_dir : str, optional
-        Folder of the scratch file (the output folder: nothing is written elsewhere, and the
-        file has no name, so nothing is left behind).
-    """
-
-    _HEAD = struct.Struct("<qI")
-    #: Bytes read at a time when the footprints are given back.
-    READ = 1 << 18
-
-    def __init__(self, scratch_dir: str | None = None):
-        self.n = 0
-        self.lo, self.hi = np.full(2, np.inf), np.full(2, -np.inf)
-        self._mem: list[tuple[int, list[np.ndarray]]] | None = None
-        try:
-            self._f = tempfile.TemporaryFile(dir=scratch_dir)
-        except OSError:
-            self._f, self._mem = None, []
-
-    def add(self, id: str, rings: list[np.ndarray]) -> None:
-        """Keep the footprint of building ``id`` (``[(k, 2) float]``, m)."""
-        rings = _drawable(rings)
-        k = id_key(id)
-        for r in rings:
-            self.lo = np.minimum(self.lo, r.min(axis=0))
-            self.hi = np.maximum(self.hi, r.max(axis=0))
-        self.n += 1
-        if self._f is not None:
-            rec = (self._HEAD.pack(k, len(rings)) + np.array([len(r) for r in rings], "<u4").tobytes()
-                   + b"".join(r.tobytes() for r in rings))
-            try:
-                self._f.write(rec)
-                return
-            except OSError:  # a full disk: what is written comes back to memory
-                self._f.seek(0)
-                self._mem = [(k_, r_) for k_, r_, _ in self._records(self._f.read())]
-                self._f.close()
-                self._f = None
-        self._mem.append((k, rings))
-
-    def _records(self, data: bytes) -> Iterator[tuple[int, list[np.ndarray], int]]:
-        """The whole records at the start of ``data``: ``(key, rings, offset past it)``."""
-        pos, end = 0, len(data)
-        while pos + self._HEAD.size <= end:
-            k, m = self._HEAD.unpack_from(data, pos)
-            q = pos + self._HEAD.size
-            if q + 4 * m > end:
-                return
-            lens = np.frombuffer(data, "<u4", m, q).astype(np.int64)
-            q += 4 * m
-            if q + 16 * int(lens.sum()) > end:
-                return
-            rings = []
-            for n in lens:
-                rings.append(np.frombuffer(data, "<f8", 2 * int(n), q).reshape(-1, 2))
-                q += 16 * int(n)
-            yield k, rings, q
-            pos = q
-
-    def __iter__(self) -> Iterator[tuple[int, list[np.ndarray]]]:
-        """``(key of the id, rings)`` in the order they were added."""
-        if self._f is None:
-            yield from self._mem
-            return
-        self._f.flush()
-        self._f.seek(0)
-        rest = b""
-        try:
-            while True:
-                chunk = self._f.read(self.READ)
-                if not chunk:
-                    return
-                data = rest + chunk
-                pos = 0
-                for k, rings, pos in self._records(data):
-                    yield k, rings
-                rest = data[pos:]
-        finally:
-            self._f.seek(0, os.SEEK_END)
-
-    def close(self) -> None:
-        if self._f is not None:
-            self._f.close()
-            self._f = None
-        self._mem = None
 
 
 def _plan_picture(page: PageRows, footprints, inputs: dict, outputs: dict) -> tuple[dict, dict]:
