@@ -197,21 +197,38 @@ def process_building(b: Building, options: ExportOptions, outdir: str, seq: int 
 
 # ============================================================================ jobs (worker side)
 
-def first_pass(task: tuple) -> BuildingRecord | None:
-    """Worker side of the first pass: ``(seq, kind, payload, job)`` -> record.
+@dataclass(frozen=True)
+class Pass1:
+    """The first pass's answer for one object: its record (None for a non-building object) and,
+    when ``report.html`` is written, its plan footprint as read (``[(k, 2) float]``, m; drawn
+    here in the worker, so that the page does not read and build the whole file again)."""
+
+    record: BuildingRecord | None
+    plan: list | None = None
+
+
+def first_pass(task: tuple) -> Pass1:
+    """Worker side of the first pass: ``(seq, kind, payload, job)`` -> :class:`Pass1`.
 
     ``kind`` is "building" (process and spool it), "other" (a non-building object: spool
     it), or "record" (a record already known: returned as it is).
     """
     seq, kind, payload, job = task
     if kind == "record":
-        return payload
+        return Pass1(payload)
+    plan = plan_of(payload) if job.options.html else None
     if kind == "other":
         spool_building(job, seq, payload)
-        return None
+        return Pass1(None, plan)
     pb, rec = process_building(payload, job.options, job.outdir, seq, job.crs, job.frame)
     spool_building(job, seq, pb)
-    return rec
+    return Pass1(rec, plan)
+
+
+def plan_of(b: Building) -> list:
+    """The plan footprint of ``b`` for report.html (:func:`lod2energy.viz.footprints.plan_footprint`)."""
+    from lod2energy.viz.footprints import plan_footprint
+    return plan_footprint(b)
 
 
 def context_pass(task: tuple) -> list[ExportRecord]:
@@ -366,6 +383,11 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
     beside, side = None, []  # the one-file writers' process beside pass 2 (Beside), if any, and its writers
     tick, close_bar = progress(run.quiet, os.path.basename(input_path))
     timeout = options.job_timeout
+    plans = None  # the plan footprints of every object as read, in input order, for report.html
+    if options.html:
+        from lod2energy.viz.footprints import FootprintSpill
+        plans = FootprintSpill(out)
+    resumed_plans: dict[int, tuple[str, list]] = {}  # of resumed objects, drawn here (no job reads them)
     try:
         with Signals():
             ex = make_executor(run.jobs, run.dask) if own else executor
@@ -388,6 +410,8 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
                             yield (seq, "other", item, job)
                         elif run.resume and reusable(prev := prev_b.get(seq), item, job, per_building):
                             reused.add(seq)
+                            if plans is not None:
+                                resumed_plans[seq] = (item.id, plan_of(item))
                             yield (seq, "record", prev, job)
                         else:
                             yield (seq, "building", item, job)
@@ -395,6 +419,15 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
                 for task, res in ex.map(first_pass, tasks(), timeout):
                     seq, kind, payload = task[0], task[1], task[2]
                     tick()
+                    if isinstance(res, Pass1):
+                        plan, res = res.plan, res.record
+                    else:  # the job did not finish: its object as read is drawn here
+                        plan = plan_of(payload) if plans is not None and kind != "record" else None
+                    if plans is not None:
+                        if kind == "record":
+                            plan = resumed_plans.pop(seq, (None, None))[1]
+                        if plan is not None:
+                            plans.add(str(payload.id), plan)
                     if kind == "other":
                         if not isinstance(res, (Overrun, Failure)):
                             others.append(seq)  # spooled: written with the CityJSON
@@ -498,7 +531,8 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
     report = write_reports_from_journal(out, input_path, model, str(journal.path), journal.run_start,
                                         dataset_errors, interrupted, inputs)
     if options.html:
-        write_html_report(report, input_path, records, job.spool, out, options.prepare.tol, inputs)
+        write_html_report(report, input_path, records, job.spool, out, options.prepare.tol, inputs, plans)
+        plans.close()
     journal.append({"kind": "end", "interrupted": interrupted[0] if interrupted else None})
     journal.close()
     if interrupted:

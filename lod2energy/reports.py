@@ -195,9 +195,11 @@ def report_lazily(path: str) -> dict:
 
 
 def write_html_report(report_path: str, input_path: str, records: RecordStore, spool: str, out: str,
-                      tol: Tolerances = DEFAULT, inputs=()) -> str:
+                      tol: Tolerances = DEFAULT, inputs=(), footprints=None) -> str:
     """``OUTDIR/report.html`` (:mod:`lod2energy.viz`) from the report, the input buildings and the
-    prepared ones of the spool; a page that cannot be written costs one line, never the export."""
+    prepared ones of the spool; a page that cannot be written costs one line, never the export.
+    ``footprints``: the plan footprints of every object of the input, in input order (a
+    :class:`~lod2energy.viz.footprints.FootprintSpill`; without it the input is read again)."""
     try:
         from lod2energy.viz.report import write_report_for_files
 
@@ -209,7 +211,7 @@ def write_html_report(report_path: str, input_path: str, records: RecordStore, s
             return out_b
         path = os.path.join(out, "report.html")
         write_report_for_files(report_lazily(report_path), path, [input_path], tol=tol, outputs=outputs, root=out,
-                               input_files=list(inputs))
+                               input_files=list(inputs), footprints=footprints)
         return path
     except Exception as e:  # noqa: BLE001 - the page is a view of the report, not an output to check
         err(f"report.html not written: {type(e).__name__}: {e}")

@@ -28,7 +28,9 @@ def read(path: str, **options) -> "tuple[CityModel | None, Iterator[Building | F
     """Read any supported file. Never raises for bad input: problems come as FeatureError.
 
     Options (mesh formats only): ``primitive`` ("Solid", "CompositeSurface",
-    "MultiSurface"), ``inner_shells`` (list of POLY paths).
+    "MultiSurface"), ``inner_shells`` (list of POLY paths). Any format: ``only``, a container
+    of first-level CityObject ids: only those features are given (the CityJSON readers pass
+    over the others before building them; the others build and drop them).
     """
     from lod2energy.errors import InputError
     from lod2energy.io.shape import check_input_file
@@ -36,12 +38,31 @@ def read(path: str, **options) -> "tuple[CityModel | None, Iterator[Building | F
         check_input_file(str(path))
     except InputError as e:
         return None, iter([FeatureError(None, e.code, str(e))])
+    only = options.pop("only", None)
     p = path.lower()
-    for s in sorted(_READERS, key=len, reverse=True):
-        if p.endswith(s):
-            return to_local_frame(*_READERS[s][1](path, **options))
-    # unknown suffix: sniff JSON
-    return to_local_frame(*_READERS[".json"][1](path, **options))
+    reader = next((_READERS[s][1] for s in sorted(_READERS, key=len, reverse=True) if p.endswith(s)),
+                  _READERS[".json"][1])  # unknown suffix: sniff JSON
+    if only is None:
+        return to_local_frame(*reader(path, **options))
+    from lod2energy import crs as crs_
+    gate = _Only(only)
+    model, feats = reader(path, only=gate, **options) if getattr(reader, "takes_only", False) else \
+        reader(path, **options)
+    if model is not None and crs_.is_geographic(model.crs) and _frame_origin(model) is None:
+        gate.every = True  # the local frame is taken at the first building: build them all
+    model, feats = to_local_frame(model, feats)
+    return model, (f for f in feats if isinstance(f, Building) and f.id in only)
+
+
+class _Only:
+    """The ids a reader builds (``read(..., only=)``); ``every`` set before the first feature is
+    read makes it build every one (the frame of a geographic file may need the first)."""
+
+    def __init__(self, ids):
+        self.ids, self.every = ids, False
+
+    def __contains__(self, oid) -> bool:
+        return self.every or oid in self.ids
 
 
 def _frame_origin(model: CityModel, translate: bool = False) -> "list[float] | None":
@@ -139,15 +160,16 @@ def _json_document_type(path: str, head: int = 65536) -> str | None:
 def _register_builtin() -> None:
     from lod2energy.io import cityjson
 
-    def _cj(path, **_):
+    def _cj(path, only=None, **_):
         other = _json_document_type(path) if not cityjson.is_cityjsonseq(path) else None
-        if other == "tu3djson":
-            from lod2energy.io import tu3djson
-            return tu3djson.read(path)
-        if other in ("Feature", "FeatureCollection"):
-            from lod2energy.io import jsonfg
-            return jsonfg.read(path)
-        return cityjson.read(path)
+        if other in ("tu3djson", "Feature", "FeatureCollection"):
+            from lod2energy.io import jsonfg, tu3djson
+            model, feats = (tu3djson if other == "tu3djson" else jsonfg).read(path)
+            if only is not None:
+                feats = (f for f in feats if isinstance(f, Building) and f.id in only)
+            return model, feats
+        return cityjson.read(path, only=only)
+    _cj.takes_only = True
 
     register_format("CityJSON", (".json", ".city.json"), _cj)
     register_format("CityJSONSeq", (".jsonl", ".city.jsonl", ".cjseq"), _cj)

@@ -11,7 +11,7 @@ yielded as a :class:`~lod2energy.model.FeatureError` and the other features go o
 from __future__ import annotations
 
 import math
-from typing import Any, Iterator, Mapping
+from typing import Any, Container, Iterator, Mapping
 
 import numpy as np
 
@@ -399,10 +399,11 @@ def _header_from(doc: Mapping[str, Any], path: str, fmt: str) -> CityModel:
 
 def _features_of_document(doc: Mapping[str, Any], transform: Mapping | None,
                           what: str, templates: Any = None, keys: Any = None,
-                          seen: SeenIds | None = None, tag: int = 0) -> Iterator[Building | FeatureError]:
+                          seen: SeenIds | None = None, tag: int = 0,
+                          only: "Container[str] | None" = None) -> Iterator[Building | FeatureError]:
     if templates is None:
         templates = doc.get("geometry-templates")
-    for item in _features_of_document_raw(doc, transform, what, keys, seen, tag):
+    for item in _features_of_document_raw(doc, transform, what, keys, seen, tag, only):
         if isinstance(item, FeatureError) and (not item.message.isprintable()
                                                or len(item.message) > shape.MAX_MESSAGE):
             # one line, whatever the ids hold (a newline, a control character)
@@ -420,13 +421,15 @@ def _features_of_document(doc: Mapping[str, Any], transform: Mapping | None,
 
 def _features_of_document_raw(doc: Mapping[str, Any], transform: Mapping | None,
                               what: str, keys: Any = None,
-                              seen: SeenIds | None = None, tag: int = 0) -> Iterator[Building | FeatureError]:
+                              seen: SeenIds | None = None, tag: int = 0,
+                              only: "Container[str] | None" = None) -> Iterator[Building | FeatureError]:
     """The features of one CityJSON document or CityJSONFeature.
 
     ``keys`` (from :func:`lod2energy.io.shape.parse_json`) tells the ids the document
     repeated; ``seen`` holds the ids of earlier lines of a CityJSONSeq and where they were
     (this document's are added with ``tag``), so that a second CityObject with an id already
-    read is reported, not read over the first.
+    read is reported, not read over the first. With ``only``, a feature whose first-level id
+    is not in it is passed over before it is built (its ids still count as read).
     """
     cos = doc.get("CityObjects")
     if not isinstance(cos, Mapping):
@@ -455,6 +458,8 @@ def _features_of_document_raw(doc: Mapping[str, Any], transform: Mapping | None,
             continue
         for oid in ids:
             seen.add(oid, tag)
+        if only is not None and root not in only:
+            continue
         bad = next(((oid, p) for oid in ids if (p := shape.cityobject_problem(oid, cos[oid]))), None)
         if bad is not None:
             yield FeatureError(root, 901, f"coid={bad[0]}: {bad[1]}", rtype)
@@ -469,8 +474,15 @@ def _features_of_document_raw(doc: Mapping[str, Any], transform: Mapping | None,
     yield from _orphan_errors(cos, groups, what)
 
 
-def read(path: str) -> tuple[CityModel | None, Iterator[Building | FeatureError]]:
+def read(path: str, only: "Container[str] | None" = None) -> tuple[CityModel | None, Iterator[Building | FeatureError]]:
     """Open a CityJSON or CityJSONSeq file.
+
+    Parameters
+    ----------
+    path : str
+    only : container of str, optional
+        First-level CityObject ids: the features of the others are passed over before they are
+        checked and built (a page that needs a few buildings of a large file).
 
     Returns
     -------
@@ -481,7 +493,7 @@ def read(path: str) -> tuple[CityModel | None, Iterator[Building | FeatureError]
         Streamed: CityJSONSeq is read line by line.
     """
     if is_cityjsonseq(path):
-        return _read_seq(path)
+        return _read_seq(path, only)
     try:
         doc, keys = shape.parse_json(_read_text(path), path)
         if not isinstance(doc, Mapping):
@@ -491,7 +503,7 @@ def read(path: str) -> tuple[CityModel | None, Iterator[Building | FeatureError]
         model = _header_of(doc, path, "CityJSON")
     except InputError as e:
         return None, iter([FeatureError(None, e.code, str(e))])
-    return model, _features_of_document(doc, model.transform, path, keys=keys)
+    return model, _features_of_document(doc, model.transform, path, keys=keys, only=only)
 
 
 def _header_of(doc: Mapping[str, Any], path: str, fmt: str, what: str | None = None) -> CityModel:
@@ -502,7 +514,7 @@ def _header_of(doc: Mapping[str, Any], path: str, fmt: str, what: str | None = N
     return _header_from(doc, path, fmt)
 
 
-def _read_seq(path: str):
+def _read_seq(path: str, only: "Container[str] | None" = None):
     try:
         shape.check_input_file(path)
         f = open(path, "rb")
@@ -552,5 +564,5 @@ def _read_seq(path: str):
                     yield FeatureError(f"line {lineno}", 901, f"{path} line {lineno}: not a CityJSONFeature")
                     continue
                 yield from _features_of_document(line, model.transform, f"{path} line {lineno}",
-                                                 model.geometry_templates, keys, seen, lineno)
+                                                 model.geometry_templates, keys, seen, lineno, only)
     return model, gen()

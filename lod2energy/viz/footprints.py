@@ -1,14 +1,43 @@
-"""Plan footprints of a large file, kept out of memory while its report page is written."""
+"""Plan footprints: a building's outline on the report page's plan (:func:`plan_footprint`), and
+those of a whole file kept out of memory while the page is written (:class:`FootprintSpill`)."""
 from __future__ import annotations
 
 import os
 import struct
 import tempfile
-from typing import Iterator
+from typing import Iterable, Iterator
 
 import numpy as np
 
 from lod2energy.io.seen_ids import id_key
+
+#: A building with more faces gets a panel of text only: drawing (and re-validating) it would
+#: cost more than the rest of the page (a 100,000-face mesh that timed out, say).
+MAX_PANEL_FACES = 5000
+
+
+def n_faces(b) -> int:
+    """Polygons of the polygonal geometries of building ``b`` (0 for None)."""
+    return 0 if b is None else sum(g.n_surfaces for o in b.objects for g in o.geometries if g.is_polygonal)
+
+
+def _hull(b) -> list[np.ndarray]:
+    """The plan's footprint of a building over ``MAX_PANEL_FACES`` faces: the convex hull of its
+    vertices projected on the ground, ``[(k, 2) float, m]``."""
+    from scipy.spatial import ConvexHull
+    pts = np.asarray(b.vertices, dtype=float)[:, :2]
+    return [pts[ConvexHull(pts).vertices]]
+
+
+def plan_footprint(b) -> list[np.ndarray]:
+    """The footprint of building ``b`` on the plan view, ``[(k, 2) float, m]``: its ground faces
+    (:func:`lod2energy.viz.render.footprint`), or for a mesh over ``MAX_PANEL_FACES`` faces (one
+    that timed out, say) the convex hull of its vertices; empty when it cannot be drawn."""
+    from lod2energy.viz.render import footprint
+    try:
+        return footprint(b) if n_faces(b) <= MAX_PANEL_FACES else _hull(b)
+    except Exception:  # noqa: BLE001 - a building whose footprint cannot be drawn is left off the plan
+        return []
 
 
 def drawable(rings) -> list[np.ndarray]:
@@ -106,6 +135,11 @@ class FootprintSpill:
                 rest = data[pos:]
         finally:
             self._f.seek(0, os.SEEK_END)
+
+    def by_id(self, ids: Iterable[str]) -> dict[str, list[np.ndarray]]:
+        """The footprints of ``ids`` (those held), by id: for a page small enough to keep them."""
+        of = {id_key(i): i for i in ids}
+        return {of[k]: rings for k, rings in self if k in of}
 
     def close(self) -> None:
         if self._f is not None:

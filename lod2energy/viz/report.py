@@ -30,7 +30,8 @@ from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.io.seen_ids import id_key
 from lod2energy.model import Building
 from lod2energy.viz import data as D
-from lod2energy.viz.footprints import FootprintSpill, drawable as _drawable
+from lod2energy.viz.footprints import (MAX_PANEL_FACES, FootprintSpill, drawable as _drawable, n_faces as _n_faces,
+                                       plan_footprint)
 from lod2energy.viz import figures as F
 from lod2energy.viz import render as R
 
@@ -134,16 +135,6 @@ def _heat_colour(v: float, lo: float, hi: float) -> str:
     return to_hex(colormaps["YlOrRd"](0.15 + 0.85 * float(np.clip(t, 0, 1))))
 
 
-def plan_footprint(b: Building) -> list[np.ndarray]:
-    """The footprint of ``b`` on the plan view, ``[(k, 2) float, m]``: its ground faces
-    (:func:`lod2energy.viz.render.footprint`), or for a mesh over ``MAX_PANEL_FACES`` faces (one
-    that timed out, say) the convex hull of its vertices; empty when it cannot be drawn."""
-    try:
-        return R.footprint(b) if _n_faces(b) <= MAX_PANEL_FACES else _hull(b)
-    except Exception:  # noqa: BLE001 - a building whose footprint cannot be drawn is left off the plan
-        return []
-
-
 def _plan(rs: list[D.Row], inputs: dict, outputs: dict, panels: set[str],
           footprints: dict | None = None) -> tuple[str, dict]:
     """The SVG plan of a small file: a footprint per building, linked to its panel."""
@@ -183,19 +174,21 @@ def _plan_picture(page: PageRows, footprints, inputs: dict, outputs: dict) -> tu
     import io
 
     given = footprints if isinstance(footprints, dict) else {}
-    own = {}  # the panels' buildings not among the footprints given (a spill never holds them)
+    own = {}  # the panels' buildings not among the footprints of a dict
     for store in (inputs, outputs):
         for i, b in store.items():
             if i not in given and i not in own:
                 own[i] = _drawable(plan_footprint(b))
 
     def items():
-        """``(key, rings)``: the footprints given, then the panels' own."""
+        """``(key, rings)``: the footprints given, then the panels' own (drawn last, over the
+        others, whether or not a spill holds theirs too)."""
         if isinstance(footprints, dict):
             for i, rings in footprints.items():
                 yield id_key(i), _drawable(rings)
         else:
-            yield from footprints
+            mine = {id_key(i) for i in own}
+            yield from ((k, rings) for k, rings in footprints if k not in mine)
         for i, rings in own.items():
             yield id_key(i), rings
 
@@ -255,23 +248,6 @@ def _plan_picture(page: PageRows, footprints, inputs: dict, outputs: dict) -> tu
         urls[m] = "data:image/png;base64," + base64.b64encode(buf.getvalue()).decode("ascii")
     return urls, {"drawn": drawn, "picture": [w, h], "metres_per_px": round(1.0 / s, 3),
                   "heating_range": [round(rng[0], 3), round(rng[1], 3)] if rng else None}
-
-
-#: A building with more faces gets a panel of text only: drawing (and re-validating) it would
-#: cost more than the rest of the page (a 100,000-face mesh that timed out, say).
-MAX_PANEL_FACES = 5000
-
-
-def _n_faces(b: Building | None) -> int:
-    return 0 if b is None else sum(g.n_surfaces for o in b.objects for g in o.geometries if g.is_polygonal)
-
-
-def _hull(b: Building) -> list[np.ndarray]:
-    """The plan's footprint of a building over ``MAX_PANEL_FACES`` faces: the convex hull of its
-    vertices projected on the ground, ``[(k, 2) float, m]``."""
-    from scipy.spatial import ConvexHull
-    pts = np.asarray(b.vertices, dtype=float)[:, :2]
-    return [pts[ConvexHull(pts).vertices]]
 
 
 def _panel(r: D.Row, before: Building | None, after: Building | None, tol: Tolerances) -> dict:
@@ -430,7 +406,8 @@ def write_report_html(report: dict, path, *, inputs: dict | None = None, outputs
 
 def write_report_for_files(report: dict, path, files, *, tol: Tolerances = DEFAULT, outputs=None,
                            cap: int = DEFAULT_CAP, plan_max: int | None = None, root=None, input_files=(),
-                           read_options: dict | None = None, page: PageRows | None = None) -> Path:
+                           read_options: dict | None = None, page: PageRows | None = None,
+                           footprints: FootprintSpill | None = None) -> Path:
     """``report.html`` for a report of ``files``, reading them again for the page: the panels'
     buildings whole, the others' footprints only (in a scratch file beside the page over
     ``plan_max`` buildings), so that memory does not grow with the files. The one way every
@@ -445,18 +422,30 @@ def write_report_for_files(report: dict, path, files, *, tol: Tolerances = DEFAU
         The report's rows already read (default: read from ``report``).
     read_options : dict, optional
         For :func:`lod2energy.io.read` (``primitive``, ``inner_shells``).
+    footprints : FootprintSpill, optional
+        The plan footprints of every object of ``files`` as read, in file order (``export``'s
+        workers draw them as they go): then only the panels' buildings are read again, and
+        nothing else is built.
     """
     page = page if page is not None else PageRows(D.iter_rows(report), cap, plan_max)
     ids = [r.id for r in page.panel_rows()]
-    spill = FootprintSpill(os.path.dirname(os.path.abspath(path))) if page.large else None
+    given = footprints is not None
+    spill = None if given else FootprintSpill(os.path.dirname(os.path.abspath(path))) if page.large else None
     inputs: dict[str, Building] = {}
     fps: dict[str, list] = {}
     try:
         for f in files:
             if f and os.path.isfile(f):
+                if given:
+                    from lod2energy.io import read
+                    inputs.update((b.id, b) for b in read(f, only=set(ids), **(read_options or {}))[1])
+                    continue
                 i, fp = read_for_page(f, set(ids), spill, **(read_options or {}))
                 inputs.update(i)
                 fps.update(fp)
+        if given:
+            spill = None  # the caller's to close
+            fps = footprints if page.large else footprints.by_id(r.id for r in page.rows or ())
         if callable(outputs):
             outputs = outputs(ids, inputs)
         return write_report_html(report, path, inputs=inputs, outputs=outputs, cap=cap, tol=tol, root=root,
