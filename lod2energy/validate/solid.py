@@ -310,34 +310,59 @@ def _ragged_pairs(na: np.ndarray, nb: np.ndarray):
     return gid, loc // nb[gid], loc % nb[gid], cnt
 
 
+#: Point-plane values of :func:`_separated_pairs` computed at once (about 80 bytes of
+#: temporaries each): bounds its memory however many faces and points a batch holds.
+PLANE_VALUES_CHUNK = 1 << 18
+
+
+def _extreme_over_runs(nrm, off, pts, f_idx, p0, n, largest: bool, chunk: int = PLANE_VALUES_CHUNK) -> np.ndarray:
+    """For each unit k (all ``n[k] >= 1``): the largest (or smallest) of ``nrm[f] . p - off[f]``
+    with ``f = f_idx[k]`` over the points ``pts[p0[k] : p0[k] + n[k]]``, ``chunk`` values at a time."""
+    out = np.empty(len(f_idx))
+    cost = np.cumsum(n)
+    reduce = np.maximum.reduceat if largest else np.minimum.reduceat
+    lo = 0
+    while lo < len(f_idx):
+        base = int(cost[lo - 1]) if lo else 0
+        hi = max(lo + 1, int(np.searchsorted(cost, base + chunk, side="right")))
+        nn = n[lo:hi]
+        unit = np.repeat(np.arange(lo, hi), nn)
+        first = np.cumsum(nn) - nn
+        q = p0[unit] + (np.arange(len(unit)) - np.repeat(first, nn))
+        f = f_idx[unit]
+        out[lo:hi] = reduce(np.einsum("ij,ij->i", nrm[f], pts[q]) - off[f], first)
+        lo = hi
+    return out
+
+
 def _separated_pairs(pts, pstart, npts, nrm, off, fstart, nf, pairs, eps: float = 1e-6) -> np.ndarray:
     """Which pairs of items a face plane separates (item i behind one of its own face planes
     and item j in front of it, or the reverse), within ``eps`` m.
 
     Such a plane proves that the interiors do not overlap (parts sharing a wall) without a
     boolean operation. Items hold ragged runs of points (``pstart``, ``npts``) and of
-    unit-normal planes ``n . x = off`` (``fstart``, ``nf``); ``pairs`` is (p, 2) int.
+    unit-normal planes ``n . x = off`` (``fstart``, ``nf``); ``pairs`` is (p, 2) int. Every
+    point is set against every plane of the other item, at most :data:`PLANE_VALUES_CHUNK`
+    values at a time.
     """
     # planes with the whole item behind them
-    g, fi, qi, cnt = _ragged_pairs(nf, npts)
-    f_idx = fstart[g] + fi
-    val = np.einsum("ij,ij->i", nrm[f_idx], pts[pstart[g] + qi]) - off[f_idx]
-    seg = np.flatnonzero(np.r_[True, f_idx[1:] != f_idx[:-1]]) if len(f_idx) else np.zeros(0, dtype=np.intp)
+    g, fi, _, _ = _ragged_pairs(nf, np.ones_like(nf))
+    f_idx, n = fstart[g] + fi, npts[g]
+    has = n > 0
     behind = np.zeros(len(nrm), dtype=bool)
-    if len(seg):
-        behind[f_idx[seg]] = np.maximum.reduceat(val, seg) <= eps
+    behind[f_idx[has]] = _extreme_over_runs(nrm, off, pts, f_idx[has], pstart[g][has], n[has], True) <= eps
     sep = np.zeros(len(pairs), dtype=bool)
     for a_col, b_col in ((0, 1), (1, 0)):
         ia, ib = pairs[:, a_col], pairs[:, b_col]
-        g, fi, qi, cnt = _ragged_pairs(nf[ia], npts[ib])
-        if len(g) == 0:
+        g, fi, _, _ = _ragged_pairs(nf[ia], np.ones_like(ia))
+        f_idx, n = fstart[ia][g] + fi, npts[ib][g]
+        has = n > 0
+        if not has.any():
             continue
-        f_idx = fstart[ia][g] + fi
-        val = np.einsum("ij,ij->i", nrm[f_idx], pts[pstart[ib][g] + qi]) - off[f_idx]
-        starts = np.flatnonzero(np.r_[True, (g[1:] != g[:-1]) | (fi[1:] != fi[:-1])])
-        front = np.minimum.reduceat(val, starts) >= -eps
-        ok = front & behind[f_idx[starts]]
-        sep |= np.bincount(g[starts], weights=ok, minlength=len(pairs)) > 0
+        g, f_idx = g[has], f_idx[has]
+        front = _extreme_over_runs(nrm, off, pts, f_idx, pstart[ib][g], n[has], False) >= -eps
+        ok = front & behind[f_idx]
+        sep |= np.bincount(g, weights=ok, minlength=len(pairs)) > 0
     return sep
 
 
