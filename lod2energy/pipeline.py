@@ -28,6 +28,7 @@ from lod2energy.dataset import BESIDE, DatasetResult, beside_ok, dataset_apply, 
 from lod2energy.errors import ParameterError
 from lod2energy.interrupt import EXIT_INVALID, EXIT_OK, EXIT_SIGINT, EXIT_UNUSABLE, Interrupted, Signals
 from lod2energy.model import Building, CityModel, FeatureError, frozen_mapping
+from lod2energy.neighbours import neighbours_within
 from lod2energy.options import ExportOptions, PrepareOptions, RunOptions, ladder_budget, prepare_options, resolve
 from lod2energy.records import (
     _untimed, BuildingRecord, ComplianceRecord, ExportRecord, RecordStore, RepairRecord, ThermalRecord,
@@ -273,22 +274,6 @@ class ExportOutcome:
     terrain: tuple[dict, ...] = ()
 
 
-def _neighbours(boxes: list[tuple[int, tuple[float, ...]]], halo: float) -> dict[int, list[int]]:
-    """For each ``(seq, bbox)`` (the record's box, m), the seqs of the others whose box comes
-    within ``halo`` (m) of its own, in input order (a spatial index over the boxes' plan views)."""
-    import numpy as np
-    from shapely import STRtree, box
-    if not boxes:
-        return {}
-    tree = STRtree([box(b[0], b[1], b[3], b[4]) for _, b in boxes])
-    seqs = np.array([s for s, _ in boxes])
-    out = {}
-    for i, (s, b) in enumerate(boxes):
-        hits = tree.query(box(b[0] - halo, b[1] - halo, b[3] + halo, b[4] + halo))
-        out[s] = sorted(int(seqs[j]) for j in hits if j != i)
-    return out
-
-
 #: What every job imports, and each writer's own modules: :func:`warm` loads them in the parent.
 _JOB_MODULES = ("lod2energy.repair.pipeline", "lod2energy.repair.accept", "lod2energy.semantics",
                 "lod2energy.thermal.storeys", "lod2energy.thermal.use", "lod2energy.zoning", "lod2energy.site",
@@ -466,21 +451,26 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
                 # ---- pass 2: writers that need the neighbours, one building at a time
                 ctx_writers = [w for w in chosen if scope[w.name] == "context"]
                 if ctx_writers:
-                    ready = [(s, r.bbox) for s, r in records.in_order()
-                             if r.outcome == "done" and r.energy.geometry_ready and r.bbox is not None]
+                    from array import array
+                    ready, ready_boxes = array("q"), array("d")  # 56 bytes a building, not a tuple of floats
+                    for s, r in records.in_order():
+                        if r.outcome == "done" and r.energy.geometry_ready and r.bbox is not None:
+                            ready.append(s)
+                            ready_boxes.extend(r.bbox)
                     halo = max(w.halo(options.writer_options(w.name)) for w in ctx_writers)
-                    near = _neighbours(ready, halo)
+                    near = neighbours_within(ready, ready_boxes, halo)
+                    del ready_boxes
                     names = [w.name for w in ctx_writers]
 
                     def ctx_tasks():
-                        for s, _ in ready:
+                        for k, s in enumerate(ready):
                             p = prev_c.get(s)
                             if run.resume and s in reused and p is not None:
                                 ers = [ExportRecord.from_journal(e) for e in p.get("exports", [])]
                                 if {e.format for e in ers} >= set(names) and all(e.intact() for e in ers):
                                     yield ("record", s, ers)
                                     continue
-                            yield (s, near[s], job)
+                            yield (s, near.of(k), job)
 
                     # the same budget per job as pass 1: an overrun stops the worker (replaced), the rest goes on
                     for task, res in ex.map(_context_or_record, ctx_tasks(), timeout):
