@@ -162,12 +162,12 @@ def _register_builtin() -> None:
 
     def _cj(path, only=None, **_):
         other = _json_document_type(path) if not cityjson.is_cityjsonseq(path) else None
-        if other in ("tu3djson", "Feature", "FeatureCollection"):
-            from lod2energy.io import jsonfg, tu3djson
-            model, feats = (tu3djson if other == "tu3djson" else jsonfg).read(path)
-            if only is not None:
-                feats = (f for f in feats if isinstance(f, Building) and f.id in only)
-            return model, feats
+        if other == "tu3djson":  # ``only`` is applied after these by :func:`read`
+            from lod2energy.io import tu3djson
+            return tu3djson.read(path)
+        if other in ("Feature", "FeatureCollection"):
+            from lod2energy.io import jsonfg
+            return jsonfg.read(path)
         return cityjson.read(path, only=only)
     _cj.takes_only = True
 
