@@ -8,7 +8,7 @@ import numpy as np
 import shapely
 from scipy.spatial import Delaunay
 
-from lod2energy.geometry.triangulate import ear_triangles
+from lod2energy.geometry.cdt import ear_triangles
 
 def _incircle(pa, pb, pc, pd) -> float:
     """> 0 when ``pd`` is inside the circle through the CCW triangle ``pa, pb, pc``."""

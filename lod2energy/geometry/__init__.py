@@ -3,7 +3,9 @@
 - :mod:`~lod2energy.geometry.vectors`: cross products, Newell normals, plane bases, 2D projection;
 - :mod:`~lod2energy.geometry.snap`: vertex snapping (the one clustering of close points), vertices put into the
   ring edges they lie on (T-junctions);
-- :mod:`~lod2energy.geometry.triangulate`: ear clipping, constrained Delaunay, bulk triangulation;
+- :mod:`~lod2energy.geometry.cdt`: ear clipping and the constrained Delaunay triangulation of one polygon,
+  or of many at once (GEOS);
+- :mod:`~lod2energy.geometry.triangulate`: triangulation of surfaces and shells, bulk paths;
 - :mod:`~lod2energy.geometry.intersect`: box pairs, segment/triangle tests, winding number, closest point on a triangle;
 - :mod:`~lod2energy.geometry.measure`: areas, signed volume, best-fit plane, planarity;
 - :mod:`~lod2energy.geometry.simplify`: short-edge collapse, collinear vertices.
@@ -22,9 +24,9 @@ from lod2energy.geometry.measure import (
 )
 from lod2energy.geometry.simplify import collapse_short_edges, drop_collinear
 from lod2energy.geometry.snap import close_pairs, snap_map, split_at_points
+from lod2energy.geometry.cdt import constrained_delaunay, constrained_delaunay_many, ear_triangles, earcut_rings, lawson_cdt
 from lod2energy.geometry.triangulate import (
-    SLIVER_RATIO, constrained_delaunay, ear_triangles, earcut_rings, lawson_cdt, triangulate_flat,
-    triangulate_shell, triangulate_surface, triangulate_surfaces,
+    SLIVER_RATIO, triangulate_flat, triangulate_shell, triangulate_surface, triangulate_surfaces,
 )
 from lod2energy.geometry.vectors import (
     cross2, cross_rows, newell_normal, newell_normals, plane_basis, plane_bases, polygon_normal, project_2d,
@@ -38,6 +40,6 @@ __all__ = [
     "winding_number", "points_in_solid", "collapse_short_edges",
     # added with the package
     "newell_normals", "rings_normal", "plane_basis", "plane_bases", "unit_rows", "cross2", "close_pairs",
-    "earcut_rings", "ear_triangles", "constrained_delaunay", "lawson_cdt", "SLIVER_RATIO",
+    "earcut_rings", "ear_triangles", "constrained_delaunay", "constrained_delaunay_many", "lawson_cdt", "SLIVER_RATIO",
     "plane_distance", "ring_area_2d", "drop_collinear",
 ]

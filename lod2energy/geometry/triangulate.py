@@ -1,11 +1,9 @@
-"""Triangulation of planar polygons with holes: ear clipping, constrained Delaunay, bulk paths.
+"""Triangulation of surfaces and shells: one polygon, or many at once on bulk paths.
 
-The one home of triangulation. :func:`triangulate_flat` handles many polygons at once
-(triangles, quads, convex fans in bulk; ear clipping by mapbox-earcut for the rest, replaced
-by the constrained Delaunay triangulation where ear clipping leaves slivers).
-:func:`constrained_delaunay` is the CDT val3dity's check 204 works on (CGAL): the plain
-Delaunay triangulation when it already holds every ring edge, else ear clipping followed by
-constrained Lawson flips (:func:`lawson_cdt`, the one implementation of edge flips).
+:func:`triangulate_flat` handles many polygons at once (triangles, quads, convex fans in bulk;
+ear clipping by mapbox-earcut for the rest, replaced by the constrained Delaunay triangulation
+where ear clipping leaves slivers). The ear clipping and the CDT of one polygon live in
+:mod:`lod2energy.geometry.cdt`.
 """
 from __future__ import annotations
 
@@ -13,16 +11,10 @@ from typing import Sequence
 
 import numpy as np
 
+from lod2energy.geometry.cdt import constrained_delaunay, constrained_delaunay_many, earcut_rings
 from lod2energy.geometry.vectors import _cross, cross2 as _cross2, newell_normal, project_2d
 
-try:  # mapbox_earcut is a declared dependency; keep import errors readable
-    import mapbox_earcut as _earcut
-except ImportError:  # pragma: no cover
-    _earcut = None
-
-# shapely and scipy are imported in the functions that use them: importing lod2energy stays cheap (issue 13)
-__all__ = ["triangulate_surface", "triangulate_surfaces", "triangulate_flat", "triangulate_shell",
-           "earcut_rings", "ear_triangles", "constrained_delaunay", "lawson_cdt", "SLIVER_RATIO"]
+__all__ = ["triangulate_surface", "triangulate_surfaces", "triangulate_flat", "triangulate_shell", "SLIVER_RATIO"]
 
 
 def _fix_orientation(tris: np.ndarray, p2: np.ndarray, local: np.ndarray) -> np.ndarray:
@@ -34,15 +26,6 @@ def _fix_orientation(tris: np.ndarray, p2: np.ndarray, local: np.ndarray) -> np.
         tris = tris.copy()
         tris[neg] = tris[neg][:, [0, 2, 1]]
     return tris
-
-
-def earcut_rings(p2: np.ndarray, ring_ends: np.ndarray) -> np.ndarray:
-    """mapbox-earcut triangles (t, 3) of 2D rings ``p2`` (n, 2) ending at ``ring_ends`` (r,), as it orients them."""
-    if _earcut is None:  # pragma: no cover
-        raise ImportError("mapbox_earcut is required for triangulation (pip install mapbox-earcut)")
-    t = _earcut.triangulate_float64(np.ascontiguousarray(p2, dtype=np.float64),
-                                    np.asarray(ring_ends, dtype=np.uint32))
-    return np.asarray(t, dtype=np.intp).reshape(-1, 3)
 
 
 def triangulate_surface(vertices: np.ndarray, surface, normal: np.ndarray | None = None) -> np.ndarray:
@@ -249,12 +232,13 @@ def _triangulate_general(vertices, ids, ring_start, ring_len, first_ring, rpp, p
         keep = ~np.isin(own, redo)
         T, own = T[keep], own[keep]
         extra_t, extra_o = [T], [own]
-        for k in redo.tolist():
+        redo = redo.tolist()
+        cdts = constrained_delaunay_many([(p2[pstart[k]:pstart[k + 1]], rend_local[rcut[k]:rcut[k + 1]])
+                                          for k in redo])
+        for k, loc in zip(redo, cdts):
             a, b = pstart[k], pstart[k + 1]
             ends = rend_local[rcut[k]:rcut[k + 1]]
-            try:
-                loc = np.asarray(constrained_delaunay(p2[a:b], ends), dtype=np.intp).reshape(-1, 3)
-            except Exception:  # keep ear clipping when the CDT fails
+            if loc is None:  # keep ear clipping when the CDT fails
                 loc = earcut_rings(p2[a:b], ends)
                 ar = _cross2(p2[a:b][loc[:, 0]], p2[a:b][loc[:, 1]], p2[a:b][loc[:, 2]]) if len(loc) else loc
                 if len(loc):
@@ -371,230 +355,3 @@ def triangulate_shell(vertices: np.ndarray, shell, rings_map: np.ndarray | None 
     else:
         ringsets = [s.rings for s in surfaces]
     return triangulate_surfaces(vertices, ringsets)
-
-
-# ----------------------------------------------------------------------------- constrained Delaunay
-
-def _incircle_d(adx: float, ady: float, bdx: float, bdy: float, cdx: float, cdy: float) -> float:
-    """The incircle determinant from the corners' offsets to ``pd`` (``a - d``, ``b - d``,
-    ``c - d``), 0 where its sign is rounding noise (see :func:`_incircle`)."""
-    ad = adx * adx + ady * ady
-    bd = bdx * bdx + bdy * bdy
-    cd = cdx * cdx + cdy * cdy
-    det = adx * (bdy * cd - bd * cdy) - ady * (bdx * cd - bd * cdx) + ad * (bdx * cdy - bdy * cdx)
-    # Shewchuk's permanent: below ~1e-14 of it the sign is rounding noise (cocircular)
-    perm = ((abs(bdx * cdy) + abs(bdy * cdx)) * ad + (abs(cdx * ady) + abs(cdy * adx)) * bd
-            + (abs(adx * bdy) + abs(ady * bdx)) * cd)
-    return det if abs(det) > 1e-14 * perm else 0.0
-
-
-def _incircle(pa, pb, pc, pd) -> float:
-    """> 0 when ``pd`` is inside the circle through the CCW triangle ``pa, pb, pc``."""
-    return _incircle_d(pa[0] - pd[0], pa[1] - pd[1], pb[0] - pd[0], pb[1] - pd[1], pc[0] - pd[0], pc[1] - pd[1])
-
-
-def _orient(pa, pb, pc) -> float:
-    return (pb[0] - pa[0]) * (pc[1] - pa[1]) - (pb[1] - pa[1]) * (pc[0] - pa[0])
-
-
-def ear_triangles(points2d: np.ndarray, ring_ends: np.ndarray) -> np.ndarray:
-    """Ear-clipping triangulation.
-
-    Parameters
-    ----------
-    points2d : (n, 2) float
-        Ring vertices (outer ring first, then holes), open rings, concatenated.
-    ring_ends : (r,) int
-        Cumulative ring sizes (``ring_ends[-1] == n``).
-
-    Returns
-    -------
-    (t, 3) int
-        Triangles as indices into ``points2d``, each counter-clockwise.
-    """
-    pts = np.ascontiguousarray(points2d, dtype=np.float64)
-    tri = earcut_rings(pts, ring_ends)
-    if len(tri) == 0:
-        return tri
-    a, b, c = pts[tri[:, 0]], pts[tri[:, 1]], pts[tri[:, 2]]
-    area2 = (b[:, 0] - a[:, 0]) * (c[:, 1] - a[:, 1]) - (b[:, 1] - a[:, 1]) * (c[:, 0] - a[:, 0])
-    cw = area2 < 0
-    tri[cw] = tri[cw][:, [0, 2, 1]]
-    return tri
-
-
-def constrained_delaunay(points2d: np.ndarray, ring_ends: np.ndarray, max_flips: int | None = None) -> np.ndarray:
-    """CDT of a polygon with holes whose constraints are its ring edges.
-
-    When the plain Delaunay triangulation (Qhull) already holds every ring edge, the CDT is
-    its triangles inside the polygon; otherwise ear clipping + constrained Lawson flips.
-
-    Parameters
-    ----------
-    points2d : (n, 2) float
-        Ring vertices (outer ring first, then holes), open rings, concatenated.
-    ring_ends : (r,) int
-        Cumulative ring sizes.
-    max_flips : int, optional
-        Safety bound on edge flips (default ``10 n^2``).
-
-    Returns
-    -------
-    (t, 3) int
-        Counter-clockwise triangles, indices into ``points2d``.
-    """
-    pts = np.asarray(points2d, dtype=np.float64)
-    fast = _delaunay_if_conforming(pts, ring_ends)
-    if fast is not None:
-        return fast
-    return lawson_cdt(pts, ring_ends, max_flips)
-
-
-def _ring_edges(ring_ends) -> set[tuple[int, int]]:
-    edges = set()
-    start = 0
-    for end in np.asarray(ring_ends).tolist():
-        for i in range(start, end):
-            j = i + 1 if i + 1 < end else start
-            edges.add((min(i, j), max(i, j)))
-        start = end
-    return edges
-
-
-def _delaunay_if_conforming(pts: np.ndarray, ring_ends) -> np.ndarray | None:
-    """Inside triangles of the Delaunay triangulation when it contains all ring edges, else None.
-
-    Duplicate points (``==``) and ring edges are looked up in Python sets (issue 13: microseconds
-    for most polygons' 4-30 points); odd ring ends take the vectorised :func:`_has_ring_edges_np`."""
-    n = len(pts)
-    if len(set(map(tuple, pts.tolist()))) < n:
-        return None  # a ring touching another at a vertex: leave it to the general path
-    import shapely
-    from scipy.spatial import Delaunay
-    try:
-        tri = Delaunay(pts).simplices
-    except Exception:  # Qhull refuses degenerate input
-        return None
-    ends = np.asarray(ring_ends, dtype=np.intp)
-    el = ends.tolist()
-    if len(ends) == 0 or el[-1] != n or el[0] < 1 or any(a >= b for a, b in zip(el, el[1:])):
-        if not _has_ring_edges_np(tri, ends, n):
-            return None
-    else:
-        have = set()
-        for a, b, c in tri.tolist():
-            have.add(a * n + b if a < b else b * n + a)
-            have.add(b * n + c if b < c else c * n + b)
-            have.add(a * n + c if a < c else c * n + a)
-        start = 0
-        for end in el:
-            for i in range(start, end):
-                j = i + 1 if i + 1 < end else start
-                if (i * n + j if i < j else j * n + i) not in have:
-                    return None
-            start = end
-    P = pts[tri]  # (t, 3, 2) corners: centroids (their mean) and orientations from one gather
-    c = P.mean(axis=1)
-    bounds = [0] + el
-    poly = shapely.Polygon(pts[:bounds[1]], [pts[bounds[k]:bounds[k + 1]] for k in range(1, len(bounds) - 1)])
-    inside = shapely.contains_xy(poly, c[:, 0], c[:, 1])
-    tri, P = tri[inside].astype(np.intp), P[inside]
-    a, b, cc = P[:, 0], P[:, 1], P[:, 2]
-    cw = (b[:, 0] - a[:, 0]) * (cc[:, 1] - a[:, 1]) - (b[:, 1] - a[:, 1]) * (cc[:, 0] - a[:, 0]) < 0
-    tri[cw] = tri[cw][:, [0, 2, 1]]
-    return tri
-
-
-def _has_ring_edges_np(tri: np.ndarray, ends: np.ndarray, n: int) -> bool:
-    """Does ``tri`` hold every ring edge (vectorised: an (n, n) table for small n, else ``np.isin``)?"""
-    sizes = np.diff(ends, prepend=0)
-    i = np.arange(n)
-    j = i + 1
-    j[ends - 1] = ends - sizes
-    if n <= _EDGE_TABLE_MAX:
-        tab = np.zeros((n, n), dtype=bool)
-        a, b, c = tri[:, 0], tri[:, 1], tri[:, 2]
-        for u, v in ((a, b), (b, c), (a, c)):
-            tab[u, v] = True
-            tab[v, u] = True
-        return bool(tab[i, j].all())
-    simp = np.sort(tri, axis=1)
-    have = np.concatenate([simp[:, 0] * n + simp[:, 1], simp[:, 1] * n + simp[:, 2], simp[:, 0] * n + simp[:, 2]])
-    return bool(np.isin(np.minimum(i, j) * n + np.maximum(i, j), have).all())
-
-
-_EDGE_TABLE_MAX = 2048
-"""Up to this many points the Delaunay edges go in a dense (n, n) table."""
-
-
-def lawson_cdt(pts: np.ndarray, ring_ends, max_flips: int | None = None) -> np.ndarray:
-    """CDT by ear clipping then constrained Lawson flips (general, slower path).
-
-    The flip test is :func:`_incircle_d` (the arithmetic of :func:`_incircle`) and
-    :func:`_orient` written out inline (same arithmetic, same order, so the same flips).
-    """
-    tri = ear_triangles(pts, ring_ends)
-    n = len(pts)
-    if len(tri) < 2:
-        return tri
-    constrained = _ring_edges(ring_ends)
-    tris = tri.tolist()
-    edge_tris = {}
-    for ti, (a, b, c) in enumerate(tris):
-        for u, v in ((a, b), (b, c), (c, a)):
-            k = (u, v) if u < v else (v, u)
-            lst = edge_tris.get(k)
-            if lst is None:
-                edge_tris[k] = [ti]
-            else:
-                lst.append(ti)
-    stack = [e for e, ts in edge_tris.items() if len(ts) == 2 and e not in constrained]
-    X = pts[:, 0].tolist()
-    Y = pts[:, 1].tolist()
-    budget = max_flips if max_flips is not None else 10 * n * n + 10
-    get = edge_tris.get
-    incircle = _incircle_d
-    while stack and budget > 0:
-        e = stack.pop()
-        ts = get(e)
-        if ts is None or len(ts) != 2:
-            continue
-        t1, t2 = ts
-        a, b = e
-        A, B, C = tris[t1]
-        if (a == A and b == B) or (b == A and a == B):
-            a, b, c = A, B, C
-        elif (a == B and b == C) or (b == B and a == C):
-            a, b, c = B, C, A
-        else:
-            a, b, c = C, A, B
-        T2 = tris[t2]
-        D = [v for v in T2 if v != a and v != b]
-        if len(D) != 1:
-            continue
-        d = D[0]
-        xd, yd = X[d], Y[d]
-        if incircle(X[a] - xd, Y[a] - yd, X[b] - xd, Y[b] - yd, X[c] - xd, Y[c] - yd) <= 0.0:
-            continue
-        xa, ya, xc, yc = X[a], Y[a], X[c], Y[c]
-        if (xd - xa) * (yc - ya) - (yd - ya) * (xc - xa) <= 0:
-            continue
-        xb, yb = X[b], Y[b]
-        if (xb - xd) * (yc - yd) - (yb - yd) * (xc - xd) <= 0:
-            continue
-        budget -= 1
-        tris[t1] = [a, d, c]
-        tris[t2] = [d, b, c]
-        del edge_tris[(a, b) if a < b else (b, a)]
-        edge_tris[(c, d) if c < d else (d, c)] = [t1, t2]
-        lst = edge_tris[(b, c) if b < c else (c, b)]
-        lst[lst.index(t1)] = t2
-        lst = edge_tris[(a, d) if a < d else (d, a)]
-        lst[lst.index(t2)] = t1
-        for u, v in ((a, c), (c, b), (b, d), (d, a)):
-            k = (u, v) if u < v else (v, u)
-            if k not in constrained:
-                lk = get(k)
-                if lk is not None and len(lk) == 2:
-                    stack.append(k)
-    return np.asarray(tris, dtype=np.intp).reshape(-1, 3)

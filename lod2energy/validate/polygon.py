@@ -29,7 +29,7 @@ from typing import Sequence
 import numpy as np
 
 from lod2energy.config import DEFAULT, Tolerances
-from lod2energy.geometry import constrained_delaunay, cross_rows as _cross, plane_bases
+from lod2energy.geometry import constrained_delaunay_many, cross_rows as _cross, plane_bases
 from lod2energy.model import Shell
 from lod2energy.validate.snap import snapped_ids
 
@@ -472,14 +472,16 @@ def _check_normals(faces, face_npts, face_start, face_first_ring, face_nrings, r
         cand = np.unique(own)
         suspects.extend(cand[~(2 * worst[cand] <= tol_deg)].tolist())
     out = []
-    for f in sorted(suspects):
+    suspects = sorted(suspects)
+    polys = []
+    for f in suspects:
         s, n = int(face_start[f]), int(face_npts[f])
         r0, nr = int(face_first_ring[f]), int(face_nrings[f])
-        ends = np.cumsum(ring_size[r0:r0 + nr])
-        try:
-            tri = constrained_delaunay(XY[s:s + n], ends)
-        except Exception:  # a triangulation failure is not a planarity defect
+        polys.append((XY[s:s + n], np.cumsum(ring_size[r0:r0 + nr])))
+    for f, tri in zip(suspects, constrained_delaunay_many(polys)):
+        if tri is None:  # a triangulation failure is not a planarity defect
             continue
+        s, n = int(face_start[f]), int(face_npts[f])
         dev = _normals_deviation(V[ids[s:s + n]], tri, tol_deg)
         if dev is not None:
             out.append((f, 204, info_204(dev, tol_deg)))
