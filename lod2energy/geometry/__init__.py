@@ -1,6 +1,7 @@
 """Shared numeric geometry on plain numpy arrays, one module per operation.
 
 - :mod:`~lod2energy.geometry.vectors`: cross products, Newell normals, plane bases, 2D projection;
+- :mod:`~lod2energy.geometry.pairs`: close point pairs (a grid of cells) and connected components, numpy alone;
 - :mod:`~lod2energy.geometry.snap`: vertex snapping (the one clustering of close points), vertices put into the
   ring edges they lie on (T-junctions);
 - :mod:`~lod2energy.geometry.triangulate`: ear clipping, constrained Delaunay, bulk triangulation;
@@ -20,6 +21,7 @@ from lod2energy.geometry.intersect import (
 from lod2energy.geometry.measure import (
     best_fit_plane, plane_distance, ring_area_2d, signed_volume, triangle_areas, triangle_normals,
 )
+from lod2energy.geometry.pairs import close_pairs_grid, connected_components
 from lod2energy.geometry.simplify import collapse_short_edges, drop_collinear
 from lod2energy.geometry.snap import close_pairs, snap_map, split_at_points
 from lod2energy.geometry.triangulate import (
@@ -39,5 +41,5 @@ __all__ = [
     # added with the package
     "newell_normals", "rings_normal", "plane_basis", "plane_bases", "unit_rows", "cross2", "close_pairs",
     "earcut_rings", "ear_triangles", "constrained_delaunay", "lawson_cdt", "SLIVER_RATIO",
-    "plane_distance", "ring_area_2d", "drop_collinear",
+    "plane_distance", "ring_area_2d", "drop_collinear", "close_pairs_grid", "connected_components",
 ]
