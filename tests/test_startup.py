@@ -78,3 +78,19 @@ def test_snapping_loads_no_scipy():
     """)
     assert "numpy" in loaded and "scipy" not in loaded, loaded
 
+
+def test_one_blas_thread_loads_no_scipy_and_still_limits_it():
+    # numpy already loaded: threadpoolctl limits it; scipy's OpenBLAS, loaded later, reads the environment
+    code = """
+        import os
+        for v in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
+            os.environ.pop(v, None)
+        import numpy, sys
+        from lod2energy.threads import one_blas_thread
+        one_blas_thread()
+        assert "scipy" not in sys.modules
+        import scipy.linalg
+        from threadpoolctl import threadpool_info
+        assert {i["num_threads"] for i in threadpool_info() if i["user_api"] == "blas"} == {1}, threadpool_info()
+    """
+    assert "scipy" in loaded_after(code)
