@@ -5,15 +5,15 @@ from typing import Sequence
 
 import numpy as np
 
-from lod2energy.geometry import close_pairs
-
 # scipy is imported in the functions that use it: importing lod2energy stays cheap (issue 13)
 
 
 def weld(points: np.ndarray, tol: float) -> tuple[np.ndarray, np.ndarray]:
     """Merge points closer than ``tol`` (transitively) into their cluster's mean.
 
-    The pairs are :func:`lod2energy.geometry.close_pairs`; unlike
+    The pairs are those of :func:`lod2energy.geometry.close_pairs`, but in the order scipy's
+    k-d tree gives them: the merge order picks each cluster's root, and so the order of the
+    welded points (the writers' output); unlike
     :func:`lod2energy.geometry.snap_map`, which keeps each cluster's first point (val3dity's
     rule, so that validation sees the input's coordinates), a writer puts a zone's corner
     between the welded inputs.
@@ -33,7 +33,8 @@ def weld(points: np.ndarray, tol: float) -> tuple[np.ndarray, np.ndarray]:
     p = np.asarray(points, dtype=np.float64)
     if len(p) == 0:
         return p.reshape(0, 3), np.zeros(0, dtype=np.intp)
-    pairs = close_pairs(p, tol)
+    from scipy.spatial import cKDTree
+    pairs = cKDTree(p).query_pairs(tol, output_type="ndarray")
     if len(pairs) == 0:
         return p.copy(), np.arange(len(p))
     roots = np.array(_union_roots(len(p), pairs.tolist()))

@@ -14,7 +14,9 @@ def one_blas_thread() -> None:
     lod2energy runs in parallel across buildings (a process a core); its linear algebra is on
     small arrays, where extra BLAS threads only spin and take the other workers' cores. Before
     numpy is imported the environment does it (for every library loaded later, scipy's own
-    OpenBLAS too, and every child); after, ``threadpoolctl`` limits the libraries loaded by then.
+    OpenBLAS too, and every child); after, ``threadpoolctl`` limits the libraries loaded by then,
+    and the environment still limits those loaded later (OpenBLAS and OpenMP read it when they
+    load), so scipy is not imported here just to limit it.
     Called by the CLI, every pool worker (:mod:`lod2energy.executor`) and the one-file writers' process. A thread count the
     user set in the environment is left alone.
     """
@@ -24,7 +26,6 @@ def one_blas_thread() -> None:
         os.environ[v] = "1"
     if "numpy" in sys.modules:
         try:
-            import scipy.linalg  # noqa: F401 - load scipy's BLAS too, so that it is limited
             from threadpoolctl import threadpool_limits
         except ImportError:  # pragma: no cover - declared dependencies
             return

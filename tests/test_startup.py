@@ -58,10 +58,39 @@ def test_core_modules_import_scipy_and_shapely_on_first_use(module):
 
 
 def test_the_probe_sees_a_package_once_it_is_used():
-    # the control: snapping needs scipy's k-d tree, so after one snap scipy is loaded
+    # the control: the constrained Delaunay triangulation tries scipy's Qhull first, so after
+    # one CDT scipy is loaded (snapping no longer needs scipy: lod2energy.geometry.pairs)
+    loaded = loaded_after("""
+        import numpy as np
+        from lod2energy.geometry import constrained_delaunay
+        constrained_delaunay(np.array([[0.0, 0.0], [2.0, 0.0], [2.0, 1.0], [0.0, 1.0]]), np.array([4]))
+    """)
+    assert {"numpy", "scipy"} <= loaded
+
+
+def test_snapping_loads_no_scipy():
     loaded = loaded_after("""
         import numpy as np
         from lod2energy.geometry import snap_map
-        snap_map(np.array([[0.0, 0.0, 0.0], [0.0, 0.0, 1e-4]]), 1e-3)
+        from lod2energy.geometry.snap import snap_points
+        p = np.array([[0.0, 0.0, 0.0], [0.0, 0.0, 1e-4], [5.0, 0.0, 0.0]])
+        assert snap_map(p, 1e-3).tolist() == [0, 0, 2] and snap_points(p, 1e-3).tolist() == [0, 0, 2]
     """)
-    assert {"numpy", "scipy"} <= loaded
+    assert "numpy" in loaded and "scipy" not in loaded, loaded
+
+
+def test_one_blas_thread_loads_no_scipy_and_still_limits_it():
+    # numpy already loaded: threadpoolctl limits it; scipy's OpenBLAS, loaded later, reads the environment
+    code = """
+        import os
+        for v in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
+            os.environ.pop(v, None)
+        import numpy, sys
+        from lod2energy.threads import one_blas_thread
+        one_blas_thread()
+        assert "scipy" not in sys.modules
+        import scipy.linalg
+        from threadpoolctl import threadpool_info
+        assert {i["num_threads"] for i in threadpool_info() if i["user_api"] == "blas"} == {1}, threadpool_info()
+    """
+    assert "scipy" in loaded_after(code)

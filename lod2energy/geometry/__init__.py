@@ -1,6 +1,7 @@
 """Shared numeric geometry on plain numpy arrays, one module per operation.
 
 - :mod:`~lod2energy.geometry.vectors`: cross products, Newell normals, plane bases, 2D projection;
+- :mod:`~lod2energy.geometry.pairs`: close point pairs (a grid of cells) and connected components, numpy alone;
 - :mod:`~lod2energy.geometry.snap`: vertex snapping (the one clustering of close points), vertices put into the
   ring edges they lie on (T-junctions);
 - :mod:`~lod2energy.geometry.cdt`: ear clipping and the constrained Delaunay triangulation of one polygon,
@@ -16,15 +17,16 @@ call these functions. The names are re-exported here (``from lod2energy.geometry
 """
 from __future__ import annotations
 
+from lod2energy.geometry.cdt import constrained_delaunay, constrained_delaunay_many, ear_triangles, earcut_rings, lawson_cdt
 from lod2energy.geometry.intersect import (
     bbox_pairs, closest_on_triangle, points_in_solid, segment_triangle_intersect, triangle_pairs_intersect, winding_number,
 )
 from lod2energy.geometry.measure import (
     best_fit_plane, plane_distance, ring_area_2d, signed_volume, triangle_areas, triangle_normals,
 )
+from lod2energy.geometry.pairs import close_pairs_grid, connected_components
 from lod2energy.geometry.simplify import collapse_short_edges, drop_collinear
 from lod2energy.geometry.snap import close_pairs, snap_map, split_at_points
-from lod2energy.geometry.cdt import constrained_delaunay, constrained_delaunay_many, ear_triangles, earcut_rings, lawson_cdt
 from lod2energy.geometry.triangulate import (
     SLIVER_RATIO, triangulate_flat, triangulate_shell, triangulate_surface, triangulate_surfaces,
 )
@@ -41,5 +43,5 @@ __all__ = [
     # added with the package
     "newell_normals", "rings_normal", "plane_basis", "plane_bases", "unit_rows", "cross2", "close_pairs",
     "earcut_rings", "ear_triangles", "constrained_delaunay", "constrained_delaunay_many", "lawson_cdt", "SLIVER_RATIO",
-    "plane_distance", "ring_area_2d", "drop_collinear",
+    "plane_distance", "ring_area_2d", "drop_collinear", "close_pairs_grid", "connected_components",
 ]

@@ -11,7 +11,10 @@ from __future__ import annotations
 
 import numpy as np
 
-# scipy is imported in the functions that use it: importing lod2energy stays cheap (issue 13)
+from lod2energy.geometry.pairs import close_pairs_grid, connected_components
+
+# the pairs and clusters are numpy alone (no scipy import for them); split_at_points imports
+# scipy's k-d tree where it is used: importing lod2energy stays cheap (issue 13)
 
 __all__ = ["snap_map", "close_pairs", "snap_points", "first_occurrence"]
 
@@ -29,9 +32,10 @@ def close_pairs(points: np.ndarray, tol: float, groups: np.ndarray | None = None
     Returns
     -------
     (p, 2) int
+        Sorted lexicographically; the set ``cKDTree(points).query_pairs(tol)`` gives
+        (:func:`~lod2energy.geometry.pairs.close_pairs_grid`).
     """
-    from scipy.spatial import cKDTree
-    pairs = cKDTree(points).query_pairs(tol, output_type="ndarray")
+    pairs = close_pairs_grid(points, tol)
     if groups is not None and len(pairs):
         pairs = pairs[groups[pairs[:, 0]] == groups[pairs[:, 1]]]
     return pairs
@@ -66,10 +70,7 @@ def snap_map(points: np.ndarray, tol: float, groups: np.ndarray | None = None) -
     pairs = close_pairs(p, tol, groups)
     if len(pairs) == 0:
         return np.arange(n, dtype=np.intp)
-    from scipy.sparse import coo_matrix
-    from scipy.sparse.csgraph import connected_components
-    g = coo_matrix((np.ones(len(pairs)), (pairs[:, 0], pairs[:, 1])), shape=(n, n))
-    _, lab = connected_components(g, directed=False)
+    lab, _ = connected_components(n, pairs[:, 0], pairs[:, 1])
     first = np.full(lab.max() + 1, n, dtype=np.intp)
     np.minimum.at(first, lab, np.arange(n))
     return first[lab]
@@ -115,9 +116,8 @@ def snap_points(points: np.ndarray, snap_tol: float) -> np.ndarray:
     if n < 2 or not snap_tol or snap_tol <= 0 or not np.isfinite(pts).all():
         return rep
     tol2 = snap_tol * snap_tol
-    from scipy.spatial import cKDTree
-    # slightly larger radius for the tree, exact val3dity test below
-    pairs = cKDTree(pts).query_pairs(snap_tol * (1 + 1e-9) + 1e-300, output_type="ndarray")
+    # slightly larger radius for the grid, exact val3dity test below
+    pairs = close_pairs_grid(pts, snap_tol * (1 + 1e-9) + 1e-300)
     if len(pairs) == 0:
         return rep
     d = pts[pairs[:, 0]] - pts[pairs[:, 1]]

@@ -33,7 +33,7 @@ from lod2energy.geometry import constrained_delaunay_many, cross_rows as _cross,
 from lod2energy.model import Shell
 from lod2energy.validate.snap import snapped_ids
 
-# shapely and scipy are imported in the functions that use them: importing lod2energy stays cheap (issue 13)
+# shapely is imported in the functions that use it: importing lod2energy stays cheap (issue 13)
 
 INFO_104_TRIANGLE = " outer ring (a triangle) is collapsed to a line"
 INFO_104_RING = "ring self-intersects or is collapsed to a line"
@@ -416,7 +416,7 @@ def _snap_shells(V: np.ndarray, flat: np.ndarray, pos_shell: np.ndarray, offsets
                  snap_tol: float) -> np.ndarray:
     """Snapped vertex ids, shell by shell (val3dity snaps per shell, in ring order).
 
-    One k-d tree finds the few close pairs; only shells holding both ends of a pair (of the
+    One grid of cells finds the few close pairs; only shells holding both ends of a pair (of the
     same vertex array) are snapped one by one.
     """
     if not snap_tol or snap_tol <= 0 or len(flat) < 2:
@@ -425,8 +425,8 @@ def _snap_shells(V: np.ndarray, flat: np.ndarray, pos_shell: np.ndarray, offsets
     pts = V[used]
     if not np.isfinite(pts).all():
         return flat.copy()
-    from scipy.spatial import cKDTree
-    pairs = cKDTree(pts).query_pairs(snap_tol * (1 + 1e-9) + 1e-300, output_type="ndarray")
+    from lod2energy.geometry.pairs import close_pairs_grid
+    pairs = close_pairs_grid(pts, snap_tol * (1 + 1e-9) + 1e-300)
     if len(pairs):  # pairs across vertex arrays (neighbouring buildings) do not matter
         grp = np.searchsorted(offsets, used, side="right")
         pairs = pairs[grp[pairs[:, 0]] == grp[pairs[:, 1]]]

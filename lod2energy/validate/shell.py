@@ -26,10 +26,11 @@ import numpy as np
 
 from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.geometry import bbox_pairs, triangle_pairs_intersect, triangulate_flat
+from lod2energy.geometry.pairs import close_pairs_grid, connected_components
 from lod2energy.model import Shell
 from lod2energy.validate.snap import snapped_ids
 
-# scipy is imported in the functions that use it: importing lod2energy stays cheap (issue 13)
+# close pairs and components are numpy alone: no scipy import for them (issue 13)
 
 
 def _fmt(x: float) -> str:
@@ -137,18 +138,14 @@ def shell_meshes_multi(items: Sequence[tuple[np.ndarray, Shell]], tol: Tolerance
     rep = None
     chain = np.zeros(n, dtype=bool)
     if tol.snap_tol > 0 and n > 1:
-        from scipy.sparse import coo_matrix
-        from scipy.sparse.csgraph import connected_components
-        from scipy.spatial import cKDTree
-        pairs = cKDTree(V).query_pairs(tol.snap_tol * (1 + 1e-9), output_type="ndarray")
+        pairs = close_pairs_grid(V, tol.snap_tol * (1 + 1e-9))
         if len(pairs):
             d = V[pairs[:, 0]] - V[pairs[:, 1]]
             bid = np.repeat(np.arange(len(blocks)), [len(b) for b in blocks])
             pairs = pairs[(np.einsum("ij,ij->i", d, d) <= tol.snap_tol ** 2)
                           & (bid[pairs[:, 0]] == bid[pairs[:, 1]])]
         if len(pairs):
-            g = coo_matrix((np.ones(len(pairs)), (pairs[:, 0], pairs[:, 1])), shape=(n, n))
-            _, lab = connected_components(g, directed=False)
+            lab, _ = connected_components(n, pairs[:, 0], pairs[:, 1])
             size = np.bincount(lab)
             npairs = np.bincount(lab[pairs[:, 0]], minlength=len(size))
             clique = npairs == size * (size - 1) // 2
@@ -360,9 +357,6 @@ def check_shells_multi(items: Sequence[tuple[np.ndarray, Shell, bool]], tol: Tol
 def check_meshes(vertices: np.ndarray, meshes: Sequence[ShellMesh], vol: np.ndarray
                  ) -> list[list[tuple[int | None, int, str]]]:
     """Shell checks on already snapped and triangulated shells (see :func:`check_shells`)."""
-    from scipy.sparse import coo_matrix
-    from scipy.sparse.csgraph import connected_components
-
     S = len(meshes)
     out: list[list] = [[] for _ in range(S)]
     if S == 0:
@@ -425,8 +419,7 @@ def check_meshes(vertices: np.ndarray, meshes: Sequence[ShellMesh], vol: np.ndar
     wa = np.concatenate([wedge(t1, l1), wedge(t1, l2)])
     wb = np.concatenate([wedge(t2, l1), wedge(t2, l2)])
     W = 3 * T
-    g = coo_matrix((np.ones(len(wa)), (wa, wb)), shape=(W, W))
-    _, wlab = connected_components(g, directed=False)
+    wlab, _ = connected_components(W, wa, wb)
     vkey = np.repeat(tsh, 3).astype(np.int64) * N + tris.ravel()
     vk, vinv = np.unique(vkey, return_inverse=True)
     vinv = vinv.ravel()
@@ -458,8 +451,7 @@ def check_meshes(vertices: np.ndarray, meshes: Sequence[ShellMesh], vol: np.ndar
     # --- connected components (triangles sharing an edge), holes
     keep_t = good[tsh]
     gl = keep_t[t1] & keep_t[t2]
-    g = coo_matrix((np.ones(int(gl.sum())), (t1[gl], t2[gl])), shape=(T, T))
-    _, tlab = connected_components(g, directed=False)
+    tlab, _ = connected_components(T, t1[gl], t2[gl])
     ncomp = _group_count(tlab[keep_t], tsh[keep_t], S)
     nborder = np.bincount(esh[border], minlength=S)
     done = np.zeros(S, dtype=bool)
@@ -478,8 +470,7 @@ def check_meshes(vertices: np.ndarray, meshes: Sequence[ShellMesh], vol: np.ndar
         nodes, ninv = np.unique(np.concatenate([bs * N + bsrc, bs * N + bdst]), return_inverse=True)
         ninv = ninv.ravel()
         k = len(bs)
-        g = coo_matrix((np.ones(k), (ninv[:k], ninv[k:])), shape=(len(nodes), len(nodes)))
-        nl, lab = connected_components(g, directed=False)
+        lab, nl = connected_components(len(nodes), ninv[:k], ninv[k:])
         firstnode = np.full(nl, len(nodes), dtype=np.intp)
         np.minimum.at(firstnode, lab, np.arange(len(nodes)))
         for n_ in firstnode.tolist():
