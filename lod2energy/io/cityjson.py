@@ -11,7 +11,8 @@ yielded as a :class:`~lod2energy.model.FeatureError` and the other features go o
 from __future__ import annotations
 
 import math
-from typing import Any, Container, Iterator, Mapping
+from collections.abc import Mapping
+from typing import Any, Container, Iterator
 
 import numpy as np
 

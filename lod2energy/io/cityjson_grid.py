@@ -7,7 +7,7 @@ before rounding can be over it in the file.
 from __future__ import annotations
 
 from dataclasses import replace
-from typing import Mapping
+from collections.abc import Mapping
 
 import numpy as np
 

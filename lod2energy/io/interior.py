@@ -13,7 +13,7 @@ the same record for what it does not read).
 from __future__ import annotations
 
 from dataclasses import replace
-from typing import Mapping
+from collections.abc import Mapping
 
 from lod2energy.model import BUILDING_TYPES, Building, Shell, Solid, frozen_mapping
 

@@ -8,7 +8,8 @@ it is reported as 904 (FORMAT_NOT_SUPPORTED), as val3dity does.
 """
 from __future__ import annotations
 
-from typing import Any, Iterator, Mapping
+from collections.abc import Mapping
+from typing import Any, Iterator
 
 import numpy as np
 

@@ -21,7 +21,7 @@ left as it is. What was cut is counted in ``provenance["openings_cut"]``.
 from __future__ import annotations
 
 from dataclasses import replace
-from typing import Mapping
+from collections.abc import Mapping
 
 import numpy as np
 

@@ -28,7 +28,8 @@ import math
 import os
 import stat
 from itertools import chain
-from typing import Any, Iterator, Mapping
+from collections.abc import Mapping
+from typing import Any, Iterator
 
 from lod2energy.errors import InputError
 

@@ -7,7 +7,8 @@ A tu3djson document is ``{"type": "tu3djson", "features": [{"geometry": {"type",
 from __future__ import annotations
 
 from dataclasses import replace
-from typing import Any, Iterator, Mapping
+from collections.abc import Mapping
+from typing import Any, Iterator
 
 import numpy as np
 
