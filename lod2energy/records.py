@@ -17,7 +17,7 @@ import pickle
 import tempfile
 import types
 import zlib
-from collections.abc import MutableMapping, Sequence
+from collections.abc import Mapping as _Mapping, MutableMapping, Sequence
 from dataclasses import dataclass, field, replace
 from typing import Any, Mapping
 
@@ -45,14 +45,21 @@ OUTCOMES = ("done", "timeout", "failed", "unreadable")
 
 def _untimed(obj: Any) -> Any:
     """``obj`` (JSON-ready) without timing keys, recursively; tuples become lists."""
-    if isinstance(obj, Mapping):
+    t = type(obj)
+    if t in _LEAF:  # the common leaves, decided by their exact type (no ABC check)
+        return obj
+    if t is dict or t is types.MappingProxyType or isinstance(obj, _Mapping):
         return {str(k): _untimed(v) for k, v in obj.items() if k not in TIMING_KEYS}
-    if isinstance(obj, (list, tuple)):
+    if t is list or t is tuple or isinstance(obj, (list, tuple)):
         return [_untimed(v) for v in obj]
     if type(obj).__module__ == "numpy":
         from lod2energy.safe_write import json_default
         return json_default(obj)
     return obj
+
+
+#: Exact types :func:`_untimed` returns as they are (no Mapping, list, tuple or numpy type).
+_LEAF = frozenset({str, int, float, bool, type(None)})
 
 
 # ----------------------------------------------------------------------------- stage records

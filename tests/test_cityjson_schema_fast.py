@@ -85,6 +85,42 @@ def test_lean_compiled_validator_decides_as_the_detailed_one(tmp_path, version):
     assert rejected > 40
 
 
+def test_disjoint_oneof_as_anyof_only_when_exclusive():
+    sem = {"type": "string", "oneOf": [{"enum": ["A"]}, {"enum": ["B"]}, {"type": "string", "pattern": "(\\+)\\w+"}]}
+    out = CS._disjoint_oneof_as_anyof({"properties": {"oneOf": sem}, "enum": [sem]})
+    assert out["properties"]["oneOf"] == {"type": "string", "anyOf": [{"enum": ["A", "B"]},
+                                                                     {"type": "string", "pattern": "(\\+)\\w+"}]}
+    assert out["enum"] == [sem]  # values, untouched
+    for kept in ([{"enum": ["A"]}, {"enum": ["A"]}],                                    # a value in two branches
+                 [{"enum": ["+A"]}, {"type": "string", "pattern": "(\\+)\\w+"}],       # the pattern takes a word
+                 [{"enum": ["A"]}, {"enum": [1]}],                                       # not strings
+                 [{"enum": ["A"]}, {"type": "string", "pattern": "x"}, {"type": "string", "pattern": "y"}],
+                 [{"enum": ["A"]}, {"$ref": "#/x"}]):
+        assert CS._disjoint_oneof_as_anyof({"oneOf": kept}) == {"oneOf": kept}
+
+
+@pytest.mark.parametrize("version", ("1.1", "2.0"))
+def test_semantic_types_decided_as_by_the_oneof(tmp_path, version):
+    res = X.write(str(tmp_path / "g.city.json"), model(version), two_buildings(), version)
+    good = json.loads(open(res.path, encoding="utf-8").read())
+    ref = _detailed(version)
+    key, gi = next((k, i) for k, c in good["CityObjects"].items()
+                   for i, g in enumerate(c.get("geometry", [])) if g.get("semantics", {}).get("surfaces"))
+    verdicts = set()
+    for value in ["RoofSurface", "WallSurface", "GroundSurface", "Window", "TransportationMarking", "+Custom",
+                  "+", "Roof+Surface", "+ x", "roofsurface", "", "Roof", 5, None, ["RoofSurface"], True]:
+        doc = json.loads(json.dumps(good))
+        doc["CityObjects"][key]["geometry"][gi]["semantics"]["surfaces"][0]["type"] = value
+        try:
+            ref(doc)
+            want = True
+        except fastjsonschema.JsonSchemaException:
+            want = False
+        assert CS._schema_valid_fast(version, doc) == want, value
+        verdicts.add(want)
+    assert verdicts == {True, False}
+
+
 def _old_extension_problems(doc, extension, what):
     """:func:`cityjson_schema.extension_problems` as it was: a validator per value."""
     out = []

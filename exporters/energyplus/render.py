@@ -76,8 +76,44 @@ _ZEROS: dict[int, tuple[str, str]] = {}
 
 def _vertex_lines(points: np.ndarray) -> list[str]:
     """``x, y, z`` lines of (k, 3) points as the IDF writes them (on Python floats: the same text)."""
-    rows = points.tolist() if isinstance(points, np.ndarray) and points.dtype == np.float64 else points
-    return [f"{_fmt(p[0])}, {_fmt(p[1])}, {_fmt(p[2])}" for p in rows]
+    if not (isinstance(points, np.ndarray) and points.dtype == np.float64):
+        return [f"{_fmt(p[0])}, {_fmt(p[1])}, {_fmt(p[2])}" for p in points]
+    # a coordinate is written by every surface at that vertex: its text is remembered by its
+    # value (a pure function of the Python float; 0.0 and -0.0, the only equal floats of
+    # different bits, both write "0")
+    memo = _COORD_TEXT
+    if len(memo) > _COORD_TEXT_SIZE:
+        memo.clear()
+    out = []
+    for row in points.tolist():
+        t = []
+        for x in row:
+            s = memo.get(x)
+            if s is None:
+                s = memo[x] = _fmt(x)
+            t.append(s)
+        out.append(", ".join(t))
+    return out
+
+
+#: Texts of coordinates written with :data:`WRITE_DECIMALS` decimals, by value (emptied when
+#: it holds more than :data:`_COORD_TEXT_SIZE`).
+_COORD_TEXT: dict[float, str] = {}
+_COORD_TEXT_SIZE = 1 << 16
+
+
+def _vertex_block(points: np.ndarray) -> dict:
+    """Template fields of a polygon's vertices: their number and their lines as the IDF
+    writes them (``"  x, y, z,"`` per vertex, the last ending in ``;``, each with its line
+    break), joined once instead of looped over in the template."""
+    lines = _vertex_lines(points)
+    if not lines:
+        return {"n_vertices": 0, "vertex_block": ""}
+    return {"n_vertices": len(lines), "vertex_block": "  " + ",\n  ".join(lines) + ";\n"}
+
+
+#: Attribute names of a plain ``dict`` (its methods): ``{{ d.name }}`` gives these, not the item.
+_DICT_ATTRS = frozenset(dir(dict))
 
 
 @functools.lru_cache(maxsize=1)
@@ -86,9 +122,25 @@ def _template():
 
     import lod2energy.templates as tpl
 
+    class _Environment(jinja2.Environment):
+        """jinja2's environment whose ``{{ d.key }}`` on a plain dict reads the item directly.
+
+        jinja2 tries ``getattr(d, "key")`` first, which on a ``dict`` succeeds only for the
+        names of its methods (a dict has no instance attributes), and only then ``d["key"]``:
+        the template's fields were an AttributeError raised and caught each. The same values
+        (method names and missing keys go the default way)."""
+
+        def getattr(self, obj, attribute):
+            if type(obj) is dict and attribute not in _DICT_ATTRS:
+                try:
+                    return obj[attribute]
+                except KeyError:
+                    pass
+            return super().getattr(obj, attribute)
+
     loader = jinja2.FileSystemLoader(str(Path(tpl.__file__).resolve().parent))
-    env = jinja2.Environment(loader=loader, undefined=jinja2.StrictUndefined, autoescape=False,
-                             trim_blocks=True, lstrip_blocks=True, keep_trailing_newline=True)
+    env = _Environment(loader=loader, undefined=jinja2.StrictUndefined, autoescape=False,
+                       trim_blocks=True, lstrip_blocks=True, keep_trailing_newline=True)
     return env.get_template("building.idf.j2")
 
 
@@ -176,7 +228,7 @@ def render_idf(zones: Sequence[ZoneShell], pieces: Sequence[list[Piece]], delta:
                 sname = reg.name(f"{zname}_{stype}{counters[stype]}", 90)
                 sc = {"name": sname, "type": stype, "construction": INTERZONE_SLAB["name"], "zone": zname,
                       "boundary": "Surface", "boundary_object": "", "sun": "NoSun", "wind": "NoWind",
-                      "vertices": _vertex_lines(upper_left_first(p.points - delta))}
+                      **_vertex_block(upper_left_first(p.points - delta))}
                 surf_ctx.append(sc)
                 links[p.link] = sc
                 continue
@@ -195,7 +247,7 @@ def render_idf(zones: Sequence[ZoneShell], pieces: Sequence[list[Piece]], delta:
             surf_ctx.append({"name": sname, "type": stype, "construction": cname, "zone": zname,
                              "boundary": p.boundary, "boundary_object": "", "sun": "SunExposed" if outdoor else "NoSun",
                              "wind": "WindExposed" if outdoor else "NoWind",
-                             "vertices": _vertex_lines(pts)})
+                             **_vertex_block(pts)})
             if p.kind == "wall" and outdoor:  # a: its area, found above
                 wall_area += a
                 hosts.append((p, sname, cname))
@@ -206,7 +258,7 @@ def render_idf(zones: Sequence[ZoneShell], pieces: Sequence[list[Piece]], delta:
                         win_constructions.setdefault(wc, {"name": wc, "u_value": _fmt(min(z.u_window, 7.0), 4),
                                                           "shgc": _fmt(options.shgc, 3), "vt": _fmt(options.shgc, 3)})
                         win_ctx.append({"name": reg.name(f"{sname}_Win", 99), "construction": wc, "base": sname,
-                                        "vertices": _vertex_lines(upper_left_first(w))})
+                                        **_vertex_block(upper_left_first(w))})
                         win_area += wa
         for op in zop:  # real windows and doors, each on the outdoor piece of its wall it overlaps most
             best = None
@@ -233,7 +285,7 @@ def render_idf(zones: Sequence[ZoneShell], pieces: Sequence[list[Piece]], delta:
             n_real[op.kind] += 1
             win_ctx.append({"name": reg.name(f"{sname}_{op.kind}{n_real[op.kind]}", 99), "type": op.kind,
                             "construction": cons, "base": sname,
-                            "vertices": _vertex_lines(upper_left_first(w - delta))})
+                            **_vertex_block(upper_left_first(w - delta))})
     for k, (op, zone_id) in unplaced.items():
         if k not in placed:
             warnings.append(f"zone {zone_id}: a {op.kind.lower()} lies on no outdoor piece of its wall; "
@@ -243,7 +295,7 @@ def render_idf(zones: Sequence[ZoneShell], pieces: Sequence[list[Piece]], delta:
         if other is None:
             raise ExportError(f"interzone surface {sc['name']} has no partner")
         sc["boundary_object"] = other["name"]
-    shade_ctx = [{"name": reg.name(f"Shade{i + 1}", 40), "vertices": _vertex_lines(upper_left_first(s - delta))}
+    shade_ctx = [{"name": reg.name(f"Shade{i + 1}", 40), **_vertex_block(upper_left_first(s - delta))}
                  for i, s in enumerate(shading)]
     ctx = {
         "lod2energy_version": __version__,
@@ -302,6 +354,24 @@ def _compact(values: Sequence[float], nd: int = 3) -> list[str]:
 
 
 def _use_ctx(uc) -> dict:
+    """Template fields of one use's loads and schedules (read only: remembered by the values
+    they are made of, a pure function of them, so never stale)."""
+    key = (uc.use, uc.teaser_entry, uc.people_per_m2, uc.activity_w_per_person, uc.sensible_fraction,
+           uc.lighting_w_per_m2, uc.equipment_w_per_m2, uc.ventilation_m3h_per_m2,
+           tuple((k, tuple(v)) for k, v in uc.schedules.items()))
+    hit = _USE_CTX.get(key)
+    if hit is None:
+        if len(_USE_CTX) >= 64:
+            _USE_CTX.clear()
+        hit = _USE_CTX[key] = _use_ctx_of(uc)
+    return hit
+
+
+#: :func:`_use_ctx` by the values of its use conditions.
+_USE_CTX: dict[tuple, dict] = {}
+
+
+def _use_ctx_of(uc) -> dict:
     """Template fields of one use's loads and schedules."""
     on = [1.0 if x > 0 else 0.0 for x in uc.schedules["occupancy"]]
     name = uc.use.capitalize()

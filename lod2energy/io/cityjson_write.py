@@ -10,6 +10,8 @@ import json
 import os
 import shutil
 import tempfile
+from collections.abc import Mapping as _Mapping
+from types import MappingProxyType
 from typing import Any, Callable, Iterable, Mapping, Sequence
 
 import numpy as np
@@ -71,13 +73,21 @@ def _offset_nested(x: Any, offset: int) -> Any:
 
 def _plain(x: Any) -> Any:
     """Deep-convert mapping proxies (and tuples) into JSON-serialisable objects."""
-    if isinstance(x, Mapping):
+    t = type(x)
+    if t in _LEAF:  # the common leaves, decided by their exact type (no ABC check)
+        return x
+    if t is dict or t is MappingProxyType or isinstance(x, _Mapping):
         return {k: _plain(v) for k, v in x.items()}
-    if isinstance(x, (list, tuple)):
+    if t is list or t is tuple or isinstance(x, (list, tuple)):
         return [_plain(v) for v in x]
     if isinstance(x, np.generic):
         return x.item()
     return x
+
+
+#: Exact types :func:`_plain` returns as they are: none is a Mapping, list, tuple or numpy
+#: scalar (``np.float64`` is a float subclass, not one of these types).
+_LEAF = frozenset({str, int, float, bool, type(None)})
 
 
 def cityobject_json(o: CityObject, offset: int, version: str) -> dict:
