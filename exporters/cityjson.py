@@ -35,7 +35,8 @@ import itertools
 import json
 import os
 from dataclasses import replace
-from typing import Any, Iterable, Iterator, Mapping, Sequence
+from collections.abc import Mapping
+from typing import Any, Iterable, Iterator, Sequence
 
 from lod2energy import safe_write
 from lod2energy.errors import Lod2EnergyError

@@ -29,7 +29,8 @@ import errno
 import os
 import sys
 import tempfile
-from typing import Any, Iterator, Mapping
+from collections.abc import Mapping
+from typing import Any, Iterator
 
 import numpy as np
 

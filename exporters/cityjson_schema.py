@@ -15,7 +15,8 @@ import os
 from dataclasses import dataclass
 from functools import lru_cache
 from importlib import resources
-from typing import Any, Mapping
+from collections.abc import Mapping
+from typing import Any
 
 from lod2energy.errors import Lod2EnergyError
 

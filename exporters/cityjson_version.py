@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import re
 from dataclasses import replace
-from typing import Mapping
+from collections.abc import Mapping
 
 from lod2energy.crs import cityjson_reference_system
 from lod2energy.io import cityjson as cjio

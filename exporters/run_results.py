@@ -16,7 +16,8 @@ floor area m2. A figure EnergyPlus did not give (no hourly rates, no floor area)
 """
 from __future__ import annotations
 
-from typing import Any, Iterable, Mapping
+from collections.abc import Mapping
+from typing import Any, Iterable
 
 from lod2energy.model import Building
 

@@ -7,7 +7,8 @@ a table of U-values per element class in ``provenance["thermal"]``; a writer fal
 from __future__ import annotations
 
 import math
-from typing import Any, Mapping
+from collections.abc import Mapping
+from typing import Any
 
 #: U-values (W/(m2 K)) used only when neither the surface nor ``provenance["thermal"]`` has one;
 #: every use is reported as a warning of the export.
