@@ -235,3 +235,27 @@ def test_drop_coincident_all_at_once_as_one_by_one():
         for a, b in zip(got, exp):
             assert a.shape == b.shape and np.array_equal(a, b, equal_nan=True)
     assert sum(len(a) < len(q) for a, q in zip(got, rings)) > 20  # some vertices were dropped
+
+
+def test_party_faces_of_the_first_zones_only():
+    # a block whose neighbours touch each other too: with ``first`` the entries of the first
+    # zones are those of the full search, the later zones keep only their pairs with them
+    from export_helpers import energy_ready
+    from factories import box
+    from lod2energy.exporters.energyplus.surfaces import find_party_faces
+    from lod2energy.exporters.zones import local_origin, zone_shells
+
+    bs = [energy_ready(box(dx=6.0, dz=h, id=f"b{i}", origin=(6.0 * (i % 3), 8.0 * (i // 3), 0.0)))
+          for i, h in enumerate((9.0, 6.0, 12.0, 7.5, 10.0, 6.0))]
+    origin = local_origin(bs)
+    zones = [z for b in bs for z in zone_shells(b, origin)]
+    full = find_party_faces(zones)
+    first = len(zone_shells(bs[0], origin))
+    part = find_party_faces(zones, first=first)
+    later = {k: [(o, g.wkb) for o, g in v if o < first] for k, v in full.items() if k[0] >= first}
+    assert sum(1 for k in full if k[0] >= first and all(o >= first for o, _ in full[k])) > 4  # pairs skipped
+    for k, v in full.items():
+        if k[0] < first:
+            assert [(o, g.wkb) for o, g in part[k]] == [(o, g.wkb) for o, g in v]
+    assert {k: [(o, g.wkb) for o, g in v] for k, v in part.items() if k[0] >= first} == \
+        {k: v for k, v in later.items() if v}

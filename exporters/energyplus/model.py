@@ -218,12 +218,14 @@ def prepare_energy_model(buildings: Iterable[Building], options, context: Iterab
         if unmatched:
             notes[next(bi for bi, zl in zones_of.items() if zi in zl)].append(
                 f"zone {zones[zi].object_id}: {unmatched} window/door face(s) fill no wall hole; written as wall")
-    party = find_party_faces(zones) if options.party_walls else {}
     # a neighbour's pieces (and its simpler envelope) only show in the IDF as its shading
     # surfaces; without shading they are not made (each would be made again for every
-    # building it neighbours: the bulk of the cost on terraced blocks)
+    # building it neighbours: the bulk of the cost on terraced blocks), and neither are the
+    # party faces between two neighbours
     n_own_zones = sum(len(zones_of[bi]) for bi in range(len(own)))
-    made = range(len(zones) if getattr(options, "shading", False) else n_own_zones)
+    shading = bool(getattr(options, "shading", False))
+    party = find_party_faces(zones, first=None if shading else n_own_zones) if options.party_walls else {}
+    made = range(len(zones) if shading else n_own_zones)
     pieces = [zone_pieces(z, zi, party, options.party_split) if zi in made else []
               for zi, z in enumerate(zones)]
     simpler: dict[int, str] = {}

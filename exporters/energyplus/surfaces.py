@@ -33,7 +33,8 @@ def _shapely_poly(pts: np.ndarray, ends: Sequence[int], c: np.ndarray, u: np.nda
 
 
 def find_party_faces(zones: Sequence[ZoneShell], plane_tol: float = 0.05, min_area: float = 0.01,
-                     angle_cos: float = 0.985) -> dict[tuple[int, int], list[tuple[int, object]]]:
+                     angle_cos: float = 0.985, first: int | None = None
+                     ) -> dict[tuple[int, int], list[tuple[int, object]]]:
     """Faces shared between different zones: coplanar, opposite normals, overlapping.
 
     Parameters
@@ -44,6 +45,10 @@ def find_party_faces(zones: Sequence[ZoneShell], plane_tol: float = 0.05, min_ar
         Largest distance between the two planes.
     min_area : float, m2
         Smallest overlap that counts.
+    first : int, optional
+        Only pairs with a zone of index below ``first`` (the zones of the buildings being
+        written, which come first): their entries are the same as without it; pairs of two
+        later zones (neighbours touching each other) are not looked at. Default: every pair.
 
     Returns
     -------
@@ -71,7 +76,7 @@ def find_party_faces(zones: Sequence[ZoneShell], plane_tol: float = 0.05, min_ar
 
     out: dict[tuple[int, int], list] = {}
     lo, hi = boxes[:, :3], boxes[:, 3:]
-    for a in range(len(zones)):
+    for a in range(len(zones) if first is None else min(first, len(zones))):
         cand = np.nonzero(np.all(lo[a] <= hi + plane_tol, axis=1) & np.all(hi[a] >= lo - plane_tol, axis=1))[0]
         for b in cand[cand > a]:
             if zones[a].building_id == zones[b].building_id and zones[a].object_id == zones[b].object_id:
