@@ -16,7 +16,7 @@ from dataclasses import dataclass
 from functools import lru_cache
 from importlib import resources
 from collections.abc import Mapping
-from typing import Any
+from typing import Any, Callable
 
 from lod2energy.errors import Lod2EnergyError
 
@@ -107,29 +107,39 @@ _COMPILE = {"use_formats": False, "use_default": False, "detailed_exceptions": F
 _SCHEMA_MAPS = ("properties", "patternProperties", "definitions", "$defs", "dependencies")
 
 
+def _rewrite(schema: Any, node: Callable[[dict, dict], dict]) -> Any:
+    """``schema`` with ``node(new, old)`` applied to every subschema, innermost first:
+    ``new`` is ``old`` with its subschemas already rewritten (keyword values such as ``enum``
+    and the names of ``properties`` and the like are values, never walked into)."""
+    if isinstance(schema, list):
+        return [_rewrite(x, node) for x in schema]
+    if not isinstance(schema, dict):
+        return schema
+    out = {}
+    for k, v in schema.items():
+        if k in ("enum", "const", "examples", "default"):
+            out[k] = v  # values, not schemas
+        elif k in _SCHEMA_MAPS and isinstance(v, dict):
+            out[k] = {name: _rewrite(sub, node) for name, sub in v.items()}
+        else:
+            out[k] = _rewrite(v, node)
+    return node(out, schema)
+
+
 def _const_as_enum(schema: Any) -> Any:
     """``schema`` with every ``{"const": x}`` written ``{"enum": [x]}`` (the same constraint:
     fastjsonschema generates the same test for both), for ``fastjsonschema`` without detailed
     exceptions, whose code for ``const`` does not compile (it formats a message with the
     detail it leaves out)."""
-    if isinstance(schema, list):
-        return [_const_as_enum(x) for x in schema]
-    if not isinstance(schema, dict):
-        return schema
-    out = {}
-    for k, v in schema.items():
-        if k == "const":
-            out.setdefault("enum", [v])
-        elif k in ("enum", "examples", "default"):
-            out[k] = v  # values, not schemas
-        elif k in _SCHEMA_MAPS and isinstance(v, dict):
-            out[k] = {name: _const_as_enum(sub) for name, sub in v.items()}
-        else:
-            out[k] = _const_as_enum(v)
-    if "const" in schema and "enum" in schema:  # both: the value must satisfy both
-        out["allOf"] = list(out.get("allOf", [])) + [{"enum": [schema["const"]]}]
-        out["enum"] = schema["enum"]
-    return out
+    def node(out: dict, old: dict) -> dict:
+        if "const" not in old:
+            return out
+        if "enum" in old:  # both: the value must satisfy both
+            c = out.pop("const")
+            out["allOf"] = list(out.get("allOf", [])) + [{"enum": [c]}]
+            return out
+        return {("enum" if k == "const" else k): ([v] if k == "const" else v) for k, v in out.items()}
+    return _rewrite(schema, node)
 
 
 def _disjoint_oneof_as_anyof(schema: Any) -> Any:
@@ -140,23 +150,13 @@ def _disjoint_oneof_as_anyof(schema: Any) -> Any:
     a valid value stops at the branch it matches instead of raising and catching an exception
     in each other one (a semantic surface's ``type``: 19 branches in CityJSON 1.1 and 2.0).
     Anything else is left as it is."""
-    if isinstance(schema, list):
-        return [_disjoint_oneof_as_anyof(x) for x in schema]
-    if not isinstance(schema, dict):
-        return schema
-    out = {}
-    for k, v in schema.items():
-        if k in ("enum", "examples", "default"):
-            out[k] = v  # values, not schemas
-        elif k in _SCHEMA_MAPS and isinstance(v, dict):
-            out[k] = {name: _disjoint_oneof_as_anyof(sub) for name, sub in v.items()}
-        else:
-            out[k] = _disjoint_oneof_as_anyof(v)
-    merged = _merged_enum_branches(out.get("oneOf"))
-    if merged is not None and "anyOf" not in out:
-        del out["oneOf"]
-        out["anyOf"] = merged
-    return out
+    def node(out: dict, old: dict) -> dict:
+        merged = _merged_enum_branches(out.get("oneOf"))
+        if merged is not None and "anyOf" not in out:
+            del out["oneOf"]
+            out["anyOf"] = merged
+        return out
+    return _rewrite(schema, node)
 
 
 def _merged_enum_branches(branches: Any) -> list | None:
