@@ -48,9 +48,11 @@ FILES = {
 }
 
 
-IMPORTS = ("import lod2energy.cli, lod2energy.io, lod2energy.validate.report, scipy.spatial, "
-           "scipy.sparse.csgraph, shapely")
-"""What a ``validate`` of a CityJSON file imports (its start-up, without the work)."""
+IMPORTS = ("import lod2energy.cli, lod2energy.io, lod2energy.validate.report, lod2energy.validate.checks, "
+           "shapely")
+"""What a ``validate`` of a CityJSON file imports (its start-up, without the work). No scipy: the
+validate path needs none since session 33 (GEOS's CDT, numpy close pairs and components); a
+polygon GEOS does not take still loads scipy's Qhull, inside the work."""
 
 START = "from lod2energy.threads import one_blas_thread\none_blas_thread()\n" + IMPORTS
 """The start-up alone: one BLAS thread set before numpy loads (as :func:`lod2energy.cli.main`
@@ -190,8 +192,8 @@ def write_table(rows: list[dict], path: Path, version: str, imp: float, repeat: 
              f"{version}, built from the 2.6.0 tag with `-O2` (its CMakeLists' default); both tools on the "
              f"same file in the same run, best CPU time of {repeat}; {os.cpu_count()} cores shared with "
              "other work (load average in the table).", "",
-             f"lod2energy's CPU s include the Python start-up and imports (numpy, scipy.spatial, shapely, "
-             f"the validation modules; bytecode compiled): {imp:.2f} CPU s alone (best of {repeat}). "
+             f"lod2energy's CPU s include the Python start-up and imports (numpy, shapely, the validation "
+             f"modules; bytecode compiled): {imp:.2f} CPU s alone (best of {repeat}). "
              "`start-up` is that part of the best run itself (measured inside it, before the CLI's work); "
              "`work` is the rest: reading, checks, report.", "",
              "| file | buildings | valid (lod2energy / val3dity) | lod2energy CPU s | of it start-up / work | "
