@@ -13,6 +13,8 @@ from typing import Sequence
 
 import numpy as np
 
+from lod2energy.geometry.vectors import cross2
+
 try:  # mapbox_earcut is a declared dependency; keep import errors readable
     import mapbox_earcut as _earcut
 except ImportError:  # pragma: no cover
@@ -20,6 +22,13 @@ except ImportError:  # pragma: no cover
 
 # shapely and scipy are imported in the functions that use them: importing lod2energy stays cheap (issue 13)
 __all__ = ["earcut_rings", "ear_triangles", "constrained_delaunay", "constrained_delaunay_many", "lawson_cdt"]
+
+
+def _counter_clockwise(tri: np.ndarray, corners: np.ndarray) -> np.ndarray:
+    """``tri`` (t, 3) with each clockwise triangle turned (in place), its corners (t, 3, 2) given."""
+    cw = cross2(corners[:, 0], corners[:, 1], corners[:, 2]) < 0
+    tri[cw] = tri[cw][:, [0, 2, 1]]
+    return tri
 
 
 def earcut_rings(p2: np.ndarray, ring_ends: np.ndarray) -> np.ndarray:
@@ -72,11 +81,7 @@ def ear_triangles(points2d: np.ndarray, ring_ends: np.ndarray) -> np.ndarray:
     tri = earcut_rings(pts, ring_ends)
     if len(tri) == 0:
         return tri
-    a, b, c = pts[tri[:, 0]], pts[tri[:, 1]], pts[tri[:, 2]]
-    area2 = (b[:, 0] - a[:, 0]) * (c[:, 1] - a[:, 1]) - (b[:, 1] - a[:, 1]) * (c[:, 0] - a[:, 0])
-    cw = area2 < 0
-    tri[cw] = tri[cw][:, [0, 2, 1]]
-    return tri
+    return _counter_clockwise(tri, pts[tri])
 
 
 def constrained_delaunay(points2d: np.ndarray, ring_ends: np.ndarray, max_flips: int | None = None) -> np.ndarray:
@@ -157,11 +162,7 @@ def _delaunay_if_conforming(pts: np.ndarray, ring_ends) -> np.ndarray | None:
     inside = shapely.contains_xy(poly, c[:, 0], c[:, 1])
     if well_formed and int(inside.sum()) != n - 2 + 2 * (len(el) - 1):
         return None  # a flat triangle of collinear boundary points counted inside: not a triangulation
-    tri, P = tri[inside].astype(np.intp), P[inside]
-    a, b, cc = P[:, 0], P[:, 1], P[:, 2]
-    cw = (b[:, 0] - a[:, 0]) * (cc[:, 1] - a[:, 1]) - (b[:, 1] - a[:, 1]) * (cc[:, 0] - a[:, 0]) < 0
-    tri[cw] = tri[cw][:, [0, 2, 1]]
-    return tri
+    return _counter_clockwise(tri[inside].astype(np.intp), P[inside])
 
 
 def _has_ring_edges_np(tri: np.ndarray, ends: np.ndarray, n: int) -> bool:
@@ -284,7 +285,7 @@ def constrained_delaunay_many(polygons: Sequence[tuple[np.ndarray, np.ndarray]])
         :func:`constrained_delaunay` raised for that polygon.
     """
     out: list[np.ndarray | None] = [None] * len(polygons)
-    todo = _geos_cdt(polygons, out) if len(polygons) else []
+    todo = _geos_cdt(polygons, out)
     for k in todo:
         pts, ends = polygons[k]
         try:
@@ -342,14 +343,12 @@ def _geos_cdt(polygons: Sequence[tuple[np.ndarray, np.ndarray]], out: list) -> l
     parts, owner = shapely.get_parts(tri, return_index=True)
     C = shapely.get_coordinates(parts, include_z=True).reshape(-1, 4, 3)[:, :3]
     T = C[..., 2].astype(np.intp)
-    a, b, c = C[:, 0, :2], C[:, 1, :2], C[:, 2, :2]
     # every corner one of its polygon's points, three distinct ones, in n - 2 + 2 holes triangles
     bad = ((T != C[..., 2]).any(axis=1) | (T < 0).any(axis=1) | (T >= npts[use][owner][:, None]).any(axis=1)
            | (T[:, 0] == T[:, 1]) | (T[:, 1] == T[:, 2]) | (T[:, 0] == T[:, 2]))
     counts = np.bincount(owner, minlength=len(use))
     took = valid & (counts == npts[use] - 2 + 2 * (nring[use] - 1)) & (np.bincount(owner[bad], minlength=len(use)) == 0)
-    cw = (b[:, 0] - a[:, 0]) * (c[:, 1] - a[:, 1]) - (b[:, 1] - a[:, 1]) * (c[:, 0] - a[:, 0]) < 0
-    T[cw] = T[cw][:, [0, 2, 1]]
+    _counter_clockwise(T, C[..., :2])
     for k, t, took_k in zip(use.tolist(), np.split(T, np.cumsum(counts)[:-1]), took.tolist()):
         if took_k:
             out[k] = t

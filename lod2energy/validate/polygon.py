@@ -472,16 +472,12 @@ def _check_normals(faces, face_npts, face_start, face_first_ring, face_nrings, r
         cand = np.unique(own)
         suspects.extend(cand[~(2 * worst[cand] <= tol_deg)].tolist())
     out = []
-    suspects = sorted(suspects)
-    polys = []
-    for f in suspects:
-        s, n = int(face_start[f]), int(face_npts[f])
-        r0, nr = int(face_first_ring[f]), int(face_nrings[f])
-        polys.append((XY[s:s + n], np.cumsum(ring_size[r0:r0 + nr])))
-    for f, tri in zip(suspects, constrained_delaunay_many(polys)):
+    spans = [(f, int(face_start[f]), int(face_npts[f])) for f in sorted(suspects)]
+    polys = [(XY[s:s + n], np.cumsum(ring_size[face_first_ring[f]:face_first_ring[f] + face_nrings[f]]))
+             for f, s, n in spans]
+    for (f, s, n), tri in zip(spans, constrained_delaunay_many(polys)):
         if tri is None:  # a triangulation failure is not a planarity defect
             continue
-        s, n = int(face_start[f]), int(face_npts[f])
         dev = _normals_deviation(V[ids[s:s + n]], tri, tol_deg)
         if dev is not None:
             out.append((f, 204, info_204(dev, tol_deg)))
