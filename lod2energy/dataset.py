@@ -60,7 +60,7 @@ class DatasetResult:
     error: str | None = None
 
 
-#: The one-file writers that may run beside the neighbour pass (:class:`lod2energy.executor.Beside`):
+#: The one-file writers that may run beside the neighbour pass (:class:`lod2energy.beside.Beside`):
 #: they read nothing the neighbour pass writes, unless the IDFs are simulated (``--run``: the
 #: CityJSON and GeoJSON carry the run's figures).
 BESIDE = ("cityjson", "geojson")
@@ -162,7 +162,7 @@ def dataset_pass(w, options: ExportOptions, job: Job, records: RecordStore, othe
 
 
 def write_beside(task: tuple) -> tuple[DatasetResult, ...]:
-    """The job of a :class:`lod2energy.executor.Beside` process: ``(writers, options, job,
+    """The job of a :class:`lod2energy.beside.Beside` process: ``(writers, options, job,
     records, others, model, input_path)`` -> one :class:`DatasetResult` per writer, in order."""
     ws, options, job, records, others, model, input_path = task
     return tuple(dataset_write(w, options, job, records, others, model, input_path) for w in ws)

@@ -85,8 +85,10 @@ class Executor:
 
     jobs: int = 1
 
-    def map(self, fn: Callable[[Any], Any], args: Iterable[Any], timeout: float | None = None
-            ) -> Iterator[tuple[Any, Any]]:
+    def map(self, fn: Callable[[Any], Any], args: Iterable[Any], timeout: float | None = None,
+            tail: Callable[[Any], Any] | None = None) -> Iterator[tuple[Any, Any]]:
+        """``(arg, result)`` of each ``fn(arg)``, in input order; ``tail`` (work for a worker
+        left idle at the end of the stream) is a hint that executors may ignore."""
         raise NotImplementedError
 
     def close(self, kill: bool = False) -> None:
@@ -112,7 +114,7 @@ class InProcessExecutor(Executor):
 
     jobs = 1
 
-    def map(self, fn, args, timeout=None):
+    def map(self, fn, args, timeout=None, tail=None):
         for arg in args:
             yield arg, self._run(fn, arg, timeout)
 
@@ -212,6 +214,8 @@ class ProcessPoolExecutor(Executor):
         self.window = max(self.jobs, int(window or WINDOW_PER_JOB * self.jobs))
         self._ctx = mp.get_context("fork" if "fork" in mp.get_all_start_methods() else "spawn")
         self._workers: list[_Worker] = []
+        self._tailed: set[_Worker] = set()  # workers that ran a map's ``tail``
+        self._tail_busy: set[_Worker] = set()  # ... and are running it now
 
     def _spawn(self) -> _Worker:
         w = _Worker(self._ctx)
@@ -219,15 +223,23 @@ class ProcessPoolExecutor(Executor):
         return w
 
     def _retire(self, w: _Worker, kill: bool) -> None:
+        self._tail_busy.discard(w)
         if w in self._workers:
             self._workers.remove(w)
         w.stop(kill=kill)
 
-    def map(self, fn, args, timeout=None):
+    def map(self, fn, args, timeout=None, tail=None):
+        """As :meth:`Executor.map`. The next argument is read while the workers run theirs.
+
+        ``tail``: a picklable function that each worker left without a job while others still
+        run theirs (the end of the stream) calls once per pool as ``tail(None)``, its result
+        dropped: work of the next map that would otherwise wait for it (e.g. its imports).
+        """
         it = iter(args)
         exhausted = False
-        idle: deque[_Worker] = deque(w for w in self._workers)
-        while len(idle) < self.jobs:
+        ahead: deque = deque()  # the next argument, read ahead while the workers work
+        idle: deque[_Worker] = deque(w for w in self._workers if w not in self._tail_busy)
+        while len(self._workers) < self.jobs:
             idle.append(self._spawn())
         busy: dict[_Worker, tuple[int, float, float]] = {}  # index, wall and CPU clock at start
         held: dict[int, Any] = {}  # index -> argument, until yielded
@@ -235,12 +247,14 @@ class ProcessPoolExecutor(Executor):
         nxt = 0
         sent = 0
         while True:
-            while idle and not exhausted and len(held) < self.window:
-                try:
-                    arg = next(it)
-                except StopIteration:
-                    exhausted = True
-                    break
+            while idle and len(held) < self.window and (ahead or not exhausted):
+                if not ahead:
+                    try:
+                        ahead.append(next(it))
+                    except StopIteration:
+                        exhausted = True
+                        break
+                arg = ahead.popleft()
                 w = idle.popleft()
                 held[sent] = arg
                 try:
@@ -250,31 +264,46 @@ class ProcessPoolExecutor(Executor):
                     done[sent] = Failure(f"job not sendable: {_one_line(e)}")
                     idle.append(w)
                 sent += 1
+            if busy and not ahead and not exhausted and len(held) < self.window:
+                try:
+                    ahead.append(next(it))
+                except StopIteration:
+                    exhausted = True
+            if tail is not None and exhausted and not ahead and busy:
+                for w in [w for w in idle if w not in self._tailed]:
+                    idle.remove(w)
+                    self._tailed.add(w)
+                    self._tail_busy.add(w)
+                    w.conn.send((-1, tail, None))
             while nxt in done:
                 yield held.pop(nxt), done.pop(nxt)
                 nxt += 1
             if not busy:
-                if exhausted and not held:
+                if exhausted and not held and not ahead:
                     return
-                continue
+                if not self._tail_busy:
+                    continue
             wait_for = None
             if timeout is not None and timeout > 0:
                 now = time.monotonic()
                 # CPU time is polled: at most every 0.25 s, at least by the wall deadline
-                wait_for = max(0.0, min(0.25, min(t0 + timeout * WALL_FACTOR - now for _, t0, _ in busy.values())))
-            ready = wait([w.conn for w in busy], timeout=wait_for)
-            by_conn = {w.conn: w for w in busy}
-            for c in ready:
+                wait_for = max(0.0, min(0.25, min((t0 + timeout * WALL_FACTOR - now for _, t0, _ in busy.values()),
+                                                  default=0.25)))
+            by_conn = {w.conn: w for w in list(busy) + list(self._tail_busy)}
+            for c in wait(list(by_conn), timeout=wait_for):
                 w = by_conn[c]
-                idx = busy.pop(w)[0]
+                idx = -1 if w in self._tail_busy else busy.pop(w)[0]
+                self._tail_busy.discard(w)
                 try:
                     ridx, ok, res = c.recv()
-                    done[idx] = res if ok else Failure(res)
+                    if idx >= 0:
+                        done[idx] = res if ok else Failure(res)
                     idle.append(w)
                 except (EOFError, OSError) as e:  # the worker died (e.g. out of memory)
                     code = w.proc.exitcode
-                    done[idx] = Failure(f"worker process died (exit code {code})" if code is not None
-                                        else f"worker process lost: {_one_line(e)}")
+                    if idx >= 0:
+                        done[idx] = Failure(f"worker process died (exit code {code})" if code is not None
+                                            else f"worker process lost: {_one_line(e)}")
                     self._retire(w, kill=True)
                     idle.append(self._spawn())
             if timeout is not None and timeout > 0:
@@ -289,76 +318,6 @@ class ProcessPoolExecutor(Executor):
     def close(self, kill: bool = False) -> None:
         for w in list(self._workers):
             self._retire(w, kill=kill)
-
-
-# ----------------------------------------------------------------------------- a job beside the pool
-
-def _beside_main(conn, fn, arg) -> None:
-    """The process of a :class:`Beside` job: ``fn(arg)``, then ``(ok, result)`` to the parent."""
-    one_blas_thread()
-    signal.signal(signal.SIGINT, signal.SIG_IGN)  # the parent handles ^C and stops us
-    signal.signal(signal.SIGTERM, signal.SIG_DFL)
-    try:
-        out = (True, fn(arg))
-    except BaseException as e:  # noqa: BLE001 - reported to the parent
-        out = (False, _one_line(e))
-    try:
-        conn.send(out)
-    except Exception as e:  # noqa: BLE001 - an unpicklable result
-        conn.send((False, f"result not sendable: {_one_line(e)}"))
-    conn.close()
-
-
-class Beside:
-    """One long job in a process of its own, started now and waited for later.
-
-    The export's one-file writers (CityJSON, GeoJSON) need no neighbour pass: with a process
-    pool they run beside it, so that no core idles while one process writes the file at the
-    end. The process is forked: ``arg`` is not pickled (the result is); no time budget.
-
-    Parameters
-    ----------
-    fn : callable
-        ``fn(arg)``; its return value must pickle.
-    arg : object
-    """
-
-    def __init__(self, fn: Callable[[Any], Any], arg: Any):
-        ctx = mp.get_context("fork" if "fork" in mp.get_all_start_methods() else "spawn")
-        self._conn, child = ctx.Pipe(duplex=False)
-        for stream in (sys.stdout, sys.stderr):  # nothing buffered here is written twice
-            try:
-                stream.flush()
-            except (OSError, ValueError):
-                pass
-        self.proc = ctx.Process(target=_beside_main, args=(child, fn, arg), daemon=True)
-        self.proc.start()
-        child.close()
-        self._done = False
-
-    def result(self) -> Any:
-        """``fn(arg)`` once it has finished, or :class:`Failure` (it raised, or its process died)."""
-        try:
-            ok, res = self._conn.recv()
-        except (EOFError, OSError):
-            self.proc.join()
-            ok, res = False, f"worker process died (exit code {self.proc.exitcode})"
-        self._close()
-        return res if ok else Failure(res)
-
-    def cancel(self) -> bool:
-        """Stop the job now if it has not been waited for (idempotent); True when it was stopped."""
-        stopped = not self._done and self.proc.is_alive()
-        if stopped:
-            self.proc.kill()
-        self._close()
-        return stopped
-
-    def _close(self) -> None:
-        if not self._done:
-            self._done = True
-            self.proc.join()
-            self._conn.close()
 
 
 # ----------------------------------------------------------------------------- budget process
@@ -552,7 +511,7 @@ class DaskExecutor(Executor):
         self.window = int(window or 4 * self.jobs)
         self._pending: deque = deque()  # futures submitted and not yet yielded
 
-    def map(self, fn, args, timeout=None):
+    def map(self, fn, args, timeout=None, tail=None):
         it = iter(args)
         queue = self._pending = deque()  # (arg, future)
         budget = float(timeout) if timeout is not None and timeout > 0 else None
@@ -598,3 +557,4 @@ def make_executor(jobs: int | None = None, dask=None) -> Executor:
         return DaskExecutor(dask)
     n = default_jobs() if jobs is None or jobs <= 0 else int(jobs)
     return InProcessExecutor() if n == 1 else ProcessPoolExecutor(n)
+

@@ -318,7 +318,8 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
         Exit code 0 (all exported and self-checked), 1 (some building not), 2 (unusable
         input), 130 / 143 (interrupted by SIGINT / SIGTERM; the report has what was done).
     """
-    from lod2energy.executor import Beside, Failure, Overrun, ProcessPoolExecutor, make_executor
+    from lod2energy.beside import Beside
+    from lod2energy.executor import Failure, Overrun, ProcessPoolExecutor, make_executor
     from lod2energy.exporters.registry import writers
     from lod2energy.io import read
     from lod2energy.journal import JOURNAL_NAME, Journal, header
@@ -365,6 +366,7 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
     dataset_errors: list[str] = []
     interrupted = None
     own = executor is None
+    page_pool = None  # the process pool that renders report.html's pictures, kept open for it
     beside, side = None, []  # the one-file writers' process beside pass 2 (Beside), if any, and its writers
     tick, close_bar = progress(run.quiet, os.path.basename(input_path))
     timeout = options.job_timeout
@@ -378,6 +380,8 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
             ex = make_executor(run.jobs, run.dask) if own else executor
             if isinstance(ex, ProcessPoolExecutor):
                 warm(options)  # before the workers are forked (at their first job): they share it
+            # report.html's pictures are rendered by the pool when its workers are ours
+            page_pool = ex if options.html and own and isinstance(ex, ProcessPoolExecutor) else None
             try:
                 # ---- pass 1: every object, in input order
                 def tasks() -> Iterator[tuple]:
@@ -472,8 +476,14 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
                                     continue
                             yield (s, near.of(k), job)
 
-                    # the same budget per job as pass 1: an overrun stops the worker (replaced), the rest goes on
-                    for task, res in ex.map(_context_or_record, ctx_tasks(), timeout):
+                    # the same budget per job as pass 1: an overrun stops the worker (replaced), the rest goes on;
+                    # a worker left idle at the end loads what report.html's pictures need
+                    tail = None
+                    if page_pool is not None:
+                        from functools import partial
+                        from lod2energy.viz.report import warm_page
+                        tail = partial(warm_page, after=beside.proc.pid if beside is not None else None)
+                    for task, res in ex.map(_context_or_record, ctx_tasks(), timeout, tail=tail):
                         seq = task[1] if task[0] == "record" else task[0]
                         rec = records[seq]
                         if isinstance(res, (Overrun, Failure)):
@@ -491,7 +501,7 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
                     ex.close(kill=True)  # interrupted: workers stop now, not after their job
                 raise
             else:
-                if own:
+                if own and page_pool is None:
                     ex.close()
 
             # ---- pass 3: one file for all buildings (none for a file that could not be read;
@@ -503,6 +513,9 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
                 if w.name in done_beside:
                     carried = dataset_apply(done_beside[w.name], records, run.quiet, journal)
                 else:
+                    if page_pool is not None:  # its idle workers' memory is not held while this one writes
+                        page_pool.close()
+                        page_pool = None
                     carried = dataset_pass(w, options, job, records, others, model, input_path, run.quiet, journal)
                 if carried:
                     terrain.append(carried)
@@ -518,11 +531,21 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
     rows = records.ordered()
     csv_rows.close()
     journal.sync()
-    report = write_reports_from_journal(out, input_path, model, str(journal.path), journal.run_start,
-                                        dataset_errors, interrupted, inputs)
-    if options.html:
-        write_html_report(report, input_path, records, job.spool, out, options.prepare.tol, inputs, plans)
-        plans.close()
+    try:
+        from lod2energy.journal import records_of
+        done = records_of(journal.path, journal.run_start)  # what the journal says was done: the report
+        report = write_reports_from_journal(out, input_path, model, str(journal.path), journal.run_start,
+                                            dataset_errors, interrupted, inputs, done)
+        if options.html:
+            mapper = None
+            if page_pool is not None and not interrupted:
+                def mapper(fn, jobs):
+                    return [res for _, res in page_pool.map(fn, jobs)]
+            write_html_report(report, input_path, done, job.spool, out, options.prepare.tol, inputs, plans, mapper)
+            plans.close()
+    finally:
+        if page_pool is not None:
+            page_pool.close()
     journal.append({"kind": "end", "interrupted": interrupted[0] if interrupted else None})
     journal.close()
     if interrupted:

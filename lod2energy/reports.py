@@ -8,14 +8,17 @@ import io
 import json
 import os
 import sys
-from typing import Iterable, Sequence
+from typing import TYPE_CHECKING, Iterable, Sequence
 
 from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.model import CityModel
 from lod2energy.options import FORMATS
-from lod2energy.records import CSV_FIELDS, BuildingRecord, RecordStore
+from lod2energy.records import CSV_FIELDS, BuildingRecord
 from lod2energy.safe_write import atomic_write, check_target, json_default
 from lod2energy.spool import load_spooled, spool_path
+
+if TYPE_CHECKING:
+    from lod2energy.journal import JournalRecords
 
 
 def err(msg: str) -> None:
@@ -109,13 +112,11 @@ def write_reports(out: str, input_path: str, model, rows: Iterable[BuildingRecor
     Parameters
     ----------
     rows : iterable of BuildingRecord
-        In input order; iterated twice when it is a sequence, else kept as a list.
+        In input order; iterated once (both files are written side by side).
     terrain : sequence of dict
         The input's terrain the one-file writers carried (format, path, ok, objects, faces,
         ids): ``report.json``'s ``terrain``, left out when there is none.
     """
-    if not isinstance(rows, Sequence):
-        rows = list(rows)
     doc = {"input_file": input_path, "output_dir": out, **frame_entry(model)}
     if terrain:
         doc["terrain"] = [dict(t) for t in terrain]
@@ -126,27 +127,27 @@ def write_reports(out: str, input_path: str, model, rows: Iterable[BuildingRecor
         doc["interrupted"] = interrupted[0]
     head, tail = _dump(doc).split(_dump(_ROWS), 1)
     path = os.path.join(out, "report.json")
-    with atomic_write(path, "w", root=out, inputs=inputs) as f:
+    with atomic_write(path, "w", root=out, inputs=inputs) as f, \
+            atomic_write(os.path.join(out, "report.csv"), "w", root=out, inputs=inputs, newline="") as fc:
+        w = csv.DictWriter(fc, fieldnames=CSV_FIELDS, extrasaction="ignore")
+        w.writeheader()
         f.write(head + "[")
         n = 0
-        for r in rows:
+        for r in rows:  # each record once: it may be rebuilt from the journal as it is read
             f.write(("," if n else "") + "\n  " + _dump(r.report_entry()).replace("\n", "\n  "))
+            w.writerow(r.row())
             n += 1
         f.write(("\n ]" if n else "]") + tail)
-    with atomic_write(os.path.join(out, "report.csv"), "w", root=out, inputs=inputs, newline="") as f:
-        w = csv.DictWriter(f, fieldnames=CSV_FIELDS, extrasaction="ignore")
-        w.writeheader()
-        for r in rows:
-            w.writerow(r.row())
     return path
 
 
 def write_reports_from_journal(out: str, input_path: str, model, journal_path: str, start: int,
-                               dataset_errors: list[str], interrupted, inputs) -> str:
+                               dataset_errors: list[str], interrupted, inputs, recs=None) -> str:
     """:func:`write_reports` from this run's lines of the journal (:func:`lod2energy.journal.records_of`
-    from byte ``start``): what the journal says was done is what the report says."""
+    from byte ``start``, or ``recs`` when given): what the journal says was done is what the
+    report says."""
     from lod2energy.journal import records_of, terrain_of
-    recs = records_of(journal_path, start, scratch=os.path.dirname(os.path.abspath(journal_path)))
+    recs = recs if recs is not None else records_of(journal_path, start)
     return write_reports(out, input_path, model, recs.ordered(), dataset_errors, interrupted, inputs,
                          terrain_of(journal_path, start))
 
@@ -194,24 +195,28 @@ def report_lazily(path: str) -> dict:
     return doc
 
 
-def write_html_report(report_path: str, input_path: str, records: RecordStore, spool: str, out: str,
-                      tol: Tolerances = DEFAULT, inputs=(), footprints=None) -> str:
+def write_html_report(report_path: str, input_path: str, records: JournalRecords, spool: str, out: str,
+                      tol: Tolerances = DEFAULT, inputs=(), footprints=None, mapper=None) -> str:
     """``OUTDIR/report.html`` (:mod:`lod2energy.viz`) from the report, the input buildings and the
-    prepared ones of the spool; a page that cannot be written costs one line, never the export.
+    prepared ones of the spool (``records``: the report's, :func:`lod2energy.journal.records_of`);
+    a page that cannot be written costs one line, never the export.
     ``footprints``: the plan footprints of every object of the input, in input order (a
-    :class:`~lod2energy.viz.footprints.FootprintSpill`; without it the input is read again)."""
+    :class:`~lod2energy.viz.footprints.FootprintSpill`; without it the input is read again);
+    ``mapper``: renders the page's pictures (e.g. on the export's process pool,
+    :func:`lod2energy.viz.report.write_report_html`)."""
     try:
         from lod2energy.viz.report import write_report_for_files
 
         def outputs(ids, _inputs) -> dict:  # the panels' prepared buildings, from the spool
-            wanted, out_b = set(ids), {}
-            for s, r in records.in_order():
-                if r.id in wanted and r.outcome == "done" and os.path.exists(spool_path(spool, s)):
+            out_b = {}
+            for s in records.seqs_of(ids):
+                r = records[s]
+                if r.outcome == "done" and os.path.exists(spool_path(spool, s)):
                     out_b[r.id] = load_spooled(spool, s)
             return out_b
         path = os.path.join(out, "report.html")
         write_report_for_files(report_lazily(report_path), path, [input_path], tol=tol, outputs=outputs, root=out,
-                               input_files=list(inputs), footprints=footprints)
+                               input_files=list(inputs), footprints=footprints, mapper=mapper)
         return path
     except Exception as e:  # noqa: BLE001 - the page is a view of the report, not an output to check
         err(f"report.html not written: {type(e).__name__}: {e}")

@@ -13,7 +13,8 @@ from pathlib import Path
 import pytest
 
 from lod2energy.cli import main
-from lod2energy.executor import Beside, Failure, InProcessExecutor, Overrun, ProcessPoolExecutor
+from lod2energy.beside import Beside
+from lod2energy.executor import Failure, InProcessExecutor, Overrun, ProcessPoolExecutor
 
 from conftest import shared_path
 from spine_inputs import huge_building_line, row_of_boxes_seq, terraced_subset, tree_bytes
@@ -428,3 +429,42 @@ def test_sigterm_in_pass_2_with_the_cityjson_beside_leaves_no_temporary_and_resu
     assert sorted(got) == sorted(ref)
     for k in ref:
         assert got[k] == ref[k], f"{k} differs after --resume"
+
+
+def _append_pid(arg, _=None):
+    with open(arg, "a") as f:
+        f.write(f"{os.getpid()}\n")
+
+
+def _sleep_then_mark(arg):
+    seconds, mark = arg
+    time.sleep(seconds)
+    Path(mark).write_text("done")
+    return seconds
+
+
+def test_pool_reads_the_next_argument_while_its_workers_run(tmp_path):
+    marks = [tmp_path / f"m{i}" for i in range(4)]
+    finished_when_read = []
+
+    def args():
+        for i, m in enumerate(marks):
+            finished_when_read.append(sum(p.exists() for p in marks))
+            yield (1.0 if i < 2 else 0.0), str(m)
+    with ProcessPoolExecutor(2) as ex:
+        assert [r for _, r in ex.map(_sleep_then_mark, args())] == [1.0, 1.0, 0.0, 0.0]
+    # the third argument was read while the first two jobs ran, not after one of them ended
+    assert finished_when_read[:3] == [0, 0, 0]
+
+
+def test_tail_runs_once_in_each_worker_left_idle_and_its_result_is_dropped(tmp_path):
+    from functools import partial
+    marks = tmp_path / "tail.txt"
+    with ProcessPoolExecutor(2) as ex:
+        out = list(ex.map(_sleepy, [0.0, 1.0], tail=partial(_append_pid, str(marks))))
+        assert [r for _, r in out] == [0.0, 1.0]
+        again = list(ex.map(_square, range(6), tail=partial(_append_pid, str(marks))))
+        assert [r for _, r in again] == [x * x for x in range(6)]  # a tail still running is waited for
+        pids = {w.proc.pid for w in ex._workers}
+    lines = marks.read_text().split()
+    assert 1 <= len(lines) <= 2 and len(set(lines)) == len(lines) and set(map(int, lines)) <= pids

@@ -306,3 +306,25 @@ def test_the_page_of_a_large_file_keeps_only_its_panels_whole_and_draws_the_same
     whole = render_report_html(report, inputs=every)
     light = render_report_html(report, inputs=keep, footprints=fps)
     assert light == whole and "<svg" in light
+
+
+def test_pictures_rendered_by_a_process_pool_give_the_same_page_and_a_failed_job_is_redone(tmp_path):
+    from lod2energy.executor import Failure, ProcessPoolExecutor
+    from lod2energy.viz.report import page_job
+    bs = [box(id="ok"), open_box(id="hole"), fin_box()]
+    rep, outs = export_report(bs)
+    inputs = {b.id: b for b in bs}
+    here = render_report_html(rep, inputs=inputs, outputs=outs)
+    seen = []
+    with ProcessPoolExecutor(2) as ex:
+        def pool(fn, jobs):
+            assert fn is page_job
+            res = [r for _, r in ex.map(fn, jobs)]
+            seen.append([j[0] for j in jobs])
+            return res
+        assert render_report_html(rep, inputs=inputs, outputs=outs, mapper=pool) == here
+    assert seen == [["plots", "panel", "panel", "panel"]]
+
+    def broken(fn, jobs):  # every second job failed: done here instead, the page unchanged
+        return [Failure("worker lost") if i % 2 else fn(j) for i, j in enumerate(jobs)]
+    assert render_report_html(rep, inputs=inputs, outputs=outs, mapper=broken) == here

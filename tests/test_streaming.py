@@ -299,3 +299,64 @@ def test_the_page_reads_report_json_one_building_at_a_time(tmp_path):
     assert {k: v for k, v in lazy.items() if k != "buildings"} == {k: v for k, v in whole.items() if k != "buildings"}
     assert list(lazy["buildings"]) == whole["buildings"] == list(lazy["buildings"])  # twice, the same
     assert as_lazy < 0.05 * as_list, (as_lazy, as_list)
+
+
+def _fold_reference(path, start=0):
+    """records_of as it was: every line decoded, each record folded into a dict as it came."""
+    from lod2energy.journal import _lines
+    from lod2energy.records import BuildingRecord, ExportRecord
+    out = {}
+    for d in _lines(path, start):
+        kind = d.get("kind")
+        if kind == "building":
+            out[int(d["seq"])] = BuildingRecord.from_json(d)
+        elif kind in ("context", "dataset") and int(d["seq"]) in out:
+            s = int(d["seq"])
+            rec = out[s]
+            for e in d.get("exports") or ():
+                rec = rec.with_export(ExportRecord.from_journal(e))
+            out[s] = rec
+    return out
+
+
+def test_records_of_reads_the_journal_as_every_line_folded_in_order(delft_export, tmp_path):
+    from lod2energy.journal import _dumps, read_lines, records_of
+    out, res = delft_export
+    lines = list(read_lines(out / "report.jsonl"))
+    body = [ln for ln in lines if ln.get("kind") in ("building", "dataset")]
+    b3 = next(ln for ln in body if ln["kind"] == "building" and ln["seq"] == 3)
+    d5 = next(ln for ln in body if ln["kind"] == "dataset" and ln["seq"] == 5)
+    odd = dict(reversed(list(d5.items())))  # another key order: decoded, not matched
+    odd["exports"] = [{**e, "problems": ["from a line of another writer"]} for e in d5["exports"]]
+    redo = {**b3, "message": "done again by a resumed run"}
+    text = "".join(_dumps(ln) + "\n" for ln in lines) + _dumps(odd) + "\n" + _dumps(redo) + "\n"
+    text += _dumps({"kind": "context", "seq": 999, "exports": []}) + "\n"  # no such building: ignored
+    text += '{"kind": "dataset", "seq": 2, "exp'  # a torn last line
+    path = tmp_path / "report.jsonl"
+    path.write_text(text, encoding="utf-8")
+    got, ref = records_of(path), _fold_reference(path)
+    assert list(got) == list(ref) and len(got) == len(ref) == len(res.records)
+    assert [got[s] for s in got] == [ref[s] for s in ref]
+    assert got[3].message == "done again by a resumed run" and got[3].exports == (
+        tuple(e for e in ref[3].exports))
+    assert got[5].export("cityjson").problems == ("from a line of another writer",)
+    assert list(got.ordered()) == [ref[s] for s in sorted(ref)]
+    assert got.seqs_of([ref[5].id, ref[1].id, "nobody"]) == [1, 5]
+
+
+def test_journal_fsyncs_at_most_once_a_second_and_when_closed(tmp_path, monkeypatch):
+    import os as _os
+
+    from lod2energy import journal as J
+    calls = []
+    real = _os.fsync
+    monkeypatch.setattr(J.os, "fsync", lambda fd: (calls.append(fd), real(fd))[1])
+    out = tmp_path / "o"
+    out.mkdir()
+    j = J.Journal(out / "report.jsonl", out, [], {"kind": "header"})
+    n0 = len(calls)
+    for i in range(200):
+        j.append({"kind": "building", "seq": i})
+    assert len(calls) - n0 <= 2  # the first line, and one more if a second went by
+    j.close()
+    assert len(calls) - n0 <= 3 and len(list(J.read_lines(out / "report.jsonl"))) == 201

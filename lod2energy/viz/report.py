@@ -303,6 +303,45 @@ def _panel(r: D.Row, before: Building | None, after: Building | None, tol: Toler
                       "faces": len((pic or {}).get("nodes", []))}}
 
 
+def page_job(job: tuple) -> dict:
+    """One picture job of the page: ``("plots", figure_data)`` -> the plots (SVG data URLs by
+    name), ``("panel", (row, before, after, tol))`` -> a panel (:func:`_panel`). Pure and
+    picklable: a process pool renders the page's pictures side by side (``mapper`` of
+    :func:`render_report_html`), into the same bytes as here."""
+    kind, arg = job
+    if kind == "plots":
+        fd = arg
+        return {"stages": F.plot_stages(fd["stages"]), "histograms": F.plot_histograms(fd["iou"], fd["displacement"]),
+                "compliance": F.plot_compliance(fd["compliance"]), "validity": F.plot_validity(fd["validity_by_code"]),
+                "heating": F.plot_heating(fd["heating_by_typology"])}
+    return _panel(*arg)
+
+
+def warm_page(_=None, after: int | None = None) -> None:
+    """Load what :func:`page_job` loads (matplotlib, its fonts, the checks), in a pool worker
+    left without a job at the end of the export's last pass, so that the page's jobs do not
+    wait for it. ``after``: first wait for that process to end (the one-file writers beside
+    the pool), so that the two are not at their largest memory at once."""
+    while after is not None:
+        try:
+            with open(f"/proc/{after}/stat", "rb") as f:
+                if f.read().rsplit(b")", 1)[1].split()[0] in (b"Z", b"X"):
+                    break
+        except (OSError, IndexError):
+            break
+        import time
+        time.sleep(0.05)
+    import io
+
+    import lod2energy.graph  # noqa: F401 - the panels' face-adjacency graphs
+    import lod2energy.validate.checks  # noqa: F401
+    from matplotlib.collections import EllipseCollection, LineCollection, PolyCollection  # noqa: F401
+    fig = F.new_figure(1.0, 1.0)
+    fig.add_subplot().plot([0, 1], [0, 1])
+    for fmt in ("svg", "png"):  # the first figure drawn loads the fonts and the backends
+        fig.savefig(io.BytesIO(), format=fmt)
+
+
 def _row_json(r: D.Row) -> dict:
     return {"id": r.id, "status": r.status, "stage": r.stage, "before": list(r.before),
             "after": None if r.after is None else list(r.after), "iou": r.iou, "displacement": r.displacement,
@@ -311,7 +350,8 @@ def _row_json(r: D.Row) -> dict:
 
 def render_report_html(report: dict, *, inputs: dict | None = None, outputs: dict | None = None,
                        cap: int = DEFAULT_CAP, tol: Tolerances = DEFAULT, title: str | None = None,
-                       footprints=None, page: PageRows | None = None, plan_max: int | None = None) -> str:
+                       footprints=None, page: PageRows | None = None, plan_max: int | None = None,
+                       mapper=None) -> str:
     """The page as a string (see :func:`write_report_html`)."""
     import jinja2
     inputs, outputs = dict(inputs or {}), dict(outputs or {})
@@ -322,16 +362,16 @@ def render_report_html(report: dict, *, inputs: dict | None = None, outputs: dic
     fd = page.tally.figure_data()
     panel_rows = page.panel_rows()
     ids = [r.id for r in panel_rows]
-    panels = [_panel(r, inputs.get(r.id), outputs.get(r.id), tol) for r in panel_rows]
+    jobs = [("plots", fd)] + [("panel", (r, inputs.get(r.id), outputs.get(r.id), tol)) for r in panel_rows]
+    done = list(mapper(page_job, jobs)) if mapper is not None else []
+    done = [d if isinstance(d, dict) else page_job(j) for d, j in zip(done, jobs)] or [page_job(j) for j in jobs]
+    plots, panels = done[0], done[1:]
     drawn = bool(inputs or outputs or (footprints.n if isinstance(footprints, FootprintSpill) else footprints))
     plan, picture, plan_info = "", {}, {}
     if drawn and page.large:
         picture, plan_info = _plan_picture(page, footprints, inputs, outputs)
     elif drawn:
         plan, plan_info = _plan(page.rows or [], inputs, outputs, set(ids), footprints)
-    plots = {"stages": F.plot_stages(fd["stages"]), "histograms": F.plot_histograms(fd["iou"], fd["displacement"]),
-             "compliance": F.plot_compliance(fd["compliance"]), "validity": F.plot_validity(fd["validity_by_code"]),
-             "heating": F.plot_heating(fd["heating_by_typology"])}
     kind = D.report_kind(report)
     src = report.get("input_file") or (report.get("reports") or [{}])[0].get("input_file", "")
     embedded = page.embedded()
@@ -365,7 +405,8 @@ def _json_default(o):
 
 def write_report_html(report: dict, path, *, inputs: dict | None = None, outputs: dict | None = None,
                       cap: int = DEFAULT_CAP, tol: Tolerances = DEFAULT, root=None, input_files=(),
-                      footprints=None, page: PageRows | None = None, plan_max: int | None = None) -> Path:
+                      footprints=None, page: PageRows | None = None, plan_max: int | None = None,
+                      mapper=None) -> Path:
     """Write ``report.html`` for a report of ``export``, ``repair --report`` or ``validate --report``.
 
     Parameters
@@ -392,6 +433,10 @@ def write_report_html(report: dict, path, *, inputs: dict | None = None, outputs
         Folder the page must stay in (default: the page's folder).
     input_files : sequence of path-like
         Inputs the page must never overwrite.
+    mapper : callable, optional
+        ``mapper(page_job, jobs)`` -> the results of :func:`page_job` for ``jobs``, in order
+        (e.g. over a process pool); a result that is not a dict (a failed job) is computed
+        here. Default: every picture here.
 
     Returns
     -------
@@ -399,7 +444,7 @@ def write_report_html(report: dict, path, *, inputs: dict | None = None, outputs
     """
     from lod2energy.safe_write import write_text
     html = render_report_html(report, inputs=inputs, outputs=outputs, cap=cap, tol=tol, footprints=footprints,
-                              page=page, plan_max=plan_max)
+                              page=page, plan_max=plan_max, mapper=mapper)
     root = root if root is not None else os.path.dirname(os.path.abspath(path))
     return write_text(path, html, root=root, inputs=list(input_files))
 
@@ -407,7 +452,7 @@ def write_report_html(report: dict, path, *, inputs: dict | None = None, outputs
 def write_report_for_files(report: dict, path, files, *, tol: Tolerances = DEFAULT, outputs=None,
                            cap: int = DEFAULT_CAP, plan_max: int | None = None, root=None, input_files=(),
                            read_options: dict | None = None, page: PageRows | None = None,
-                           footprints: FootprintSpill | None = None) -> Path:
+                           footprints: FootprintSpill | None = None, mapper=None) -> Path:
     """``report.html`` for a report of ``files``, reading them again for the page: the panels'
     buildings whole, the others' footprints only (in a scratch file beside the page over
     ``plan_max`` buildings), so that memory does not grow with the files. The one way every
@@ -426,6 +471,8 @@ def write_report_for_files(report: dict, path, files, *, tol: Tolerances = DEFAU
         The plan footprints of every object of ``files`` as read, in file order (``export``'s
         workers draw them as they go): then only the panels' buildings are read again, and
         nothing else is built.
+    mapper : callable, optional
+        Renders the page's pictures (:func:`write_report_html`).
     """
     page = page if page is not None else PageRows(D.iter_rows(report), cap, plan_max)
     ids = [r.id for r in page.panel_rows()]
@@ -450,7 +497,7 @@ def write_report_for_files(report: dict, path, files, *, tol: Tolerances = DEFAU
             outputs = outputs(ids, inputs)
         return write_report_html(report, path, inputs=inputs, outputs=outputs, cap=cap, tol=tol, root=root,
                                  input_files=input_files, footprints=spill if spill is not None else fps,
-                                 page=page)
+                                 page=page, mapper=mapper)
     finally:
         if spill is not None:
             spill.close()
