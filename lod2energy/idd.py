@@ -137,10 +137,41 @@ def _num(text: str) -> float | None:
         return None
 
 
+#: A line that starts a class (its first value is not a field id such as ``A1`` / ``N12``):
+#: where :func:`parse_idd` cuts the IDD into one text a class.
+_CLASS_LINE = re.compile(r"^[ \t]*(?![AN]\d+[ \t]*[,;])([A-Za-z][^,;\\!\n]*?)[ \t]*[,;]", re.M)
+#: A value line that is neither a class line (one name, then ``,`` or ``;``) nor field ids
+#: only: an IDD :data:`_CLASS_LINE` may cut wrong (a class named after a field on its line, a
+#: name without a separator...), read whole as before. Energy+.idd has none.
+_ODD_LINE = re.compile(r"^[ \t]*(?!(?:[AN]\d+[ \t]*[,;][ \t]*)+(?:[\\!][^\n]*)?$)"
+                       r"(?![A-Za-z][^,;\\!\n]*[,;][ \t]*(?:[\\!][^\n]*)?$)[^\s\\!]", re.M)
+#: ``\unique-object`` / ``\required-object`` lines, and the first field line of a class.
+_FLAG_LINE = re.compile(r"^[ \t]*\\(unique-object|required-object)(?=[ \t\r]|$)", re.M | re.I)
+_FIELD_LINE = re.compile(r"^[ \t]*[AN]\d+[ \t]*[,;]", re.M)
+
+
 def parse_idd(text: str) -> Idd:
-    """Parse the text of an ``Energy+.idd``."""
+    """Parse the text of an ``Energy+.idd``.
+
+    The text is cut into one piece a class (:data:`_CLASS_LINE`); a class is read from its
+    piece the first time it is asked for (:class:`_Classes`), as :func:`_read_classes` reads
+    the whole text: a file uses a few dozen of the IDD's ~850 classes, and reading them all
+    cost ~0.45 CPU s a process.
+    """
     m = re.search(r"!IDD_Version\s+(\S+)", text)
     version = m.group(1) if m else ""
+    if _ODD_LINE.search(text) is not None:
+        whole = _read_classes(text)
+        return Idd(version, _Classes(text, dict.fromkeys(whole, (0, 0)), whole))
+    starts = [(c.start(), c.group(1).strip()) for c in _CLASS_LINE.finditer(text)]
+    pieces: dict[str, tuple[int, int]] = {}
+    for k, (at, name) in enumerate(starts):
+        pieces[name.upper()] = (at, starts[k + 1][0] if k + 1 < len(starts) else len(text))
+    return Idd(version, _Classes(text, pieces))
+
+
+def _read_classes(text: str) -> dict[str, dict]:
+    """Every class of an IDD text as read, by upper-case name (name, fields, attributes)."""
     as_read: dict[str, dict] = {}  # upper-case name -> the class as read (name, fields, attributes)
     cur: dict | None = None
     fld: dict | None = None
@@ -218,7 +249,7 @@ def parse_idd(text: str) -> Idd:
         if sep:
             attribute(attr)
     close_class()
-    return Idd(version, _Classes(as_read))
+    return as_read
 
 
 def _class_def(cur: dict) -> ClassDef:
@@ -237,46 +268,72 @@ def _class_def(cur: dict) -> ClassDef:
 
 
 class _Classes(Mapping):
-    """``{upper-case class name: ClassDef}`` of a parsed IDD, each :class:`ClassDef` built the
-    first time it is asked for (a file uses a few dozen of the IDD's ~850 classes, and building
-    all their ~66,000 field definitions was a third of reading the IDD). What is built depends
-    only on the class as read, which nothing changes after :func:`parse_idd`: a class built
-    later is the one it would have built at once."""
+    """``{upper-case class name: ClassDef}`` of a parsed IDD, each class read from its piece of
+    the text and its :class:`ClassDef` built the first time it is asked for (a file uses a few
+    dozen of the IDD's ~850 classes, and building all their ~66,000 field definitions was a
+    third of reading the IDD). What is built depends only on the class's own lines, which
+    nothing changes after :func:`parse_idd`: a class built later is the one it would have built
+    at once. ``whole``: every class already read (an IDD with a line :data:`_ODD_LINE` finds);
+    a piece that does not read as exactly its one class makes the whole text be read, too."""
 
-    def __init__(self, raw: dict[str, dict]):
-        self._raw = raw
+    def __init__(self, text: str, pieces: dict[str, tuple[int, int]], whole: dict[str, dict] | None = None):
+        self._text, self._pieces = text, pieces
+        self._all = whole  # the whole text read at once (the fallback)
         self._built: dict[str, ClassDef] = {}
         self._flags: list[tuple[str, bool, bool]] | None = None
+
+    def _as_read(self, key: str) -> dict:
+        if self._all is None:
+            at, end = self._pieces[key]
+            one = _read_classes(self._text[at:end])
+            if len(one) == 1 and key in one:
+                return one[key]
+            self._all = _read_classes(self._text)
+            if list(self._all) != list(self._pieces):
+                self._pieces = dict.fromkeys(self._all, (0, 0))
+        return self._all[key]
 
     def __getitem__(self, key: str) -> ClassDef:
         c = self._built.get(key)
         if c is None:
-            c = self._built[key] = _class_def(self._raw[key])
+            c = self._built[key] = _class_def(self._as_read(key))
         return c
 
     def __iter__(self):
-        return iter(self._raw)
+        return iter(self._pieces)
 
     def __len__(self) -> int:
-        return len(self._raw)
+        return len(self._pieces)
 
     def __contains__(self, key) -> bool:
-        return key in self._raw
+        return key in self._pieces
 
     def get(self, key, default=None):
         """``Mapping.get`` without its exception round trip (the self-check asks once per object)."""
         c = self._built.get(key)
         if c is not None:
             return c
-        return self[key] if key in self._raw else default
+        return self[key] if key in self._pieces else default
 
     def flags(self) -> list[tuple[str, bool, bool]]:
         """``(name, unique, required)`` of the ``\\unique-object`` / ``\\required-object``
-        classes, in IDD order, without building any class (found once: the classes as read
-        do not change)."""
+        classes, in IDD order, without reading any class: the flag lines of each piece before
+        its first field (found once: the classes as read do not change)."""
         if self._flags is None:
-            self._flags = [(c["name"], c.get("unique", False), c.get("required", False)) for c in self._raw.values()
-                           if c.get("unique") or c.get("required")]
+            out = []
+            for key, (at, end) in self._pieces.items():
+                if self._all is not None:
+                    c = self._all[key]
+                    if c.get("unique") or c.get("required"):
+                        out.append((c["name"], c.get("unique", False), c.get("required", False)))
+                    continue
+                first = _FIELD_LINE.search(self._text, at, end)
+                head_end = first.start() if first is not None else end
+                found = {f.group(1).lower() for f in _FLAG_LINE.finditer(self._text, at, head_end)}
+                if found:
+                    name = _CLASS_LINE.match(self._text, at).group(1).strip()
+                    out.append((name, "unique-object" in found, "required-object" in found))
+            self._flags = out
         return list(self._flags)
 
 

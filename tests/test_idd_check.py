@@ -75,3 +75,16 @@ def test_required_field_and_extensible_group():
     assert any("required" in p for p in check_idf(parse_idf("Thing, , 1, 2;"), d))
     assert any("inside a group" in p for p in check_idf(parse_idf("Thing, a, 1, 2, 3;"), d))
     assert any("minimum" in p for p in check_idf(parse_idf("Thing, a, 1, 2, 0, 4;"), d))
+
+
+def test_an_idd_cut_where_a_class_line_cannot_be_told_is_read_whole():
+    from _idd_reference import parse_idd_reference
+    # "Other" starts a class after a field on the same line: no line of its own to cut at
+    text = ("!IDD_Version 9.9.9\nThing,\n  \\unique-object\n  A1; \\field Name\nWeird,\n  N1; Other,\n"
+            "  \\required-object\n  A1; \\field Label\nLast;\n")
+    lazy, eager = parse_idd(text), parse_idd_reference(text)
+    assert list(lazy.classes) == list(eager.classes) == ["THING", "WEIRD", "OTHER", "LAST"]
+    assert all(lazy.classes[k] == c for k, c in eager.classes.items())
+    fresh = parse_idd(text)  # the flags before any class is read, then after
+    flags = [(c.name, c.unique, c.required) for c in eager.classes.values() if c.unique or c.required]
+    assert fresh.classes.flags() == flags == lazy.classes.flags()

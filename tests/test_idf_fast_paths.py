@@ -169,6 +169,7 @@ def test_idd_classes_built_on_first_use_equal_the_eager_parse():
     first = lazy.classes[name]
     assert first == eager.classes[name] and lazy.classes[name] is first  # built once, then kept
     assert all(lazy.classes[k] == c for k, c in eager.classes.items())  # every class, any order of use
+    assert lazy.classes._all is None  # each read from its own piece: the real IDD is cut right
     assert lazy == eager
     # the unique / required objects come from the classes as read: the same problems
     bad = "Version, 1.0;\nTimestep, 4;\nTimestep, 6;\nZone, Z;\nNotAnObject, 1;\n"
