@@ -132,3 +132,52 @@ def test_the_frame_is_the_writers(make, tmp_path):
     assert np.array_equal(origin, local_origin(staged.provenance["energy_model"]["model"].buildings))
     assert np.all(np.abs(origin - np.floor(b.vertices.min(axis=0))) <= 1)
     assert np.array_equal(np.asarray(res[0].offset), origin)
+
+
+def _row_of_three(dx=0.0):
+    """Three 10 m boxes side by side in map coordinates far from 0 (their frames differ by whole
+    metres), the third moved ``dx`` m."""
+    x0, y0 = 85000.3, 445000.7
+    return [energy_ready(box(10, 8, 6 + i, origin=(x0 + 10 * i + (dx if i == 2 else 0.0), y0 + 0.4 * i, 1.2),
+                             id=f"b{i}")) for i in range(3)]
+
+
+def _own_party(m):
+    n = sum(len(m.zones_of[bi]) for bi in range(m.n_own))
+    return {k: [(m.zones[o].building_id, round(g.area, 9)) for o, g in v] for k, v in m.party.items() if k[0] < n}
+
+
+def test_neighbour_zones_made_in_their_own_frame_give_the_job_frames_party_walls():
+    bs = _row_of_three()
+    energy_model._NEIGHBOUR_ZONES.clear()
+    m = energy_model.prepare_energy_model([bs[1]], OPTIONS, [bs[0], bs[2]])
+    # the reference: every zone made in the job's frame (the shading path, which pairs all zones)
+    ref = energy_model.prepare_energy_model([bs[1]], replace(OPTIONS, shading=True), [bs[0], bs[2]])
+    assert np.array_equal(m.origin, ref.origin) and len(m.zones) == len(ref.zones)
+    for z, r in zip(m.zones, ref.zones):
+        assert z.faces == r.faces and np.allclose(z.vertices, r.vertices, rtol=0, atol=1e-9)
+    assert _own_party(m) == _own_party(ref) and len(_own_party(m)) == 2  # the two shared walls
+    own = m.zones_of[0][0]
+    assert [(p.boundary, p.kind) for p in m.pieces[own]] == [(p.boundary, p.kind) for p in ref.pieces[own]]
+    assert all(np.allclose(p.points, q.points, rtol=0, atol=1e-9) for p, q in zip(m.pieces[own], ref.pieces[own]))
+
+
+def test_remembered_neighbour_zones_are_those_made_anew_and_follow_the_buildings_content():
+    bs = _row_of_three()
+    energy_model._NEIGHBOUR_ZONES.clear()
+    cold = energy_model.prepare_energy_model([bs[1]], OPTIONS, [bs[0], bs[2]])
+    assert len(energy_model._NEIGHBOUR_ZONES) == 2
+    warm = energy_model.prepare_energy_model([bs[1]], OPTIONS, [bs[0], bs[2]])
+    for a, b in zip(cold.zones, warm.zones):
+        assert a.faces == b.faces and np.array_equal(a.vertices, b.vertices)
+    assert _own_party(cold) == _own_party(warm)
+    # the same id, another geometry: made anew, not taken for the one remembered
+    moved = _row_of_three(dx=0.5)
+    m = energy_model.prepare_energy_model([moved[1]], OPTIONS, [moved[0], moved[2]])
+    assert len(energy_model._NEIGHBOUR_ZONES) == 3
+    right = m.zones[m.zones_of[2][0]]
+    assert right.vertices[:, 0].min() + m.origin[0] == pytest.approx(85020.3 + 0.5, abs=1e-6)
+    assert len(_own_party(m)) == 1  # the moved box no longer touches
+    for i in range(energy_model.NEIGHBOUR_ZONES_KEPT + 5):  # bounded
+        energy_model._neighbour_zones(shifted(bs[0], (i, 0, 0)), OPTIONS.lod, OPTIONS.wwr)
+    assert len(energy_model._NEIGHBOUR_ZONES) == energy_model.NEIGHBOUR_ZONES_KEPT

@@ -21,7 +21,8 @@ the IDF writer writes that model as it is (:func:`model_of`).
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from collections import OrderedDict
+from dataclasses import dataclass, replace
 from functools import partial
 from collections.abc import Mapping
 from typing import Iterable, Sequence
@@ -182,6 +183,40 @@ def _neighbours(own: Sequence[Building], context: Iterable[Building], lod: str |
     return [b for b in _energy_buildings(context, lod) if b.id not in own_ids]
 
 
+#: Neighbours' zones a process keeps (least recently used dropped first): a building is the
+#: neighbour of ~3.8 others in Den Haag, whose jobs often run in the same worker.
+NEIGHBOUR_ZONES_KEPT = 64
+_NEIGHBOUR_ZONES: "OrderedDict[bytes, tuple]" = OrderedDict()
+
+
+def _neighbour_zones(b: Building, lod: str | None, wwr) -> tuple[Building, list[str], tuple]:
+    """A neighbour's floorless parts merged and its zone shells in its own frame:
+    ``(merged building, notes, (own origin, zone shells))``.
+
+    Without shading a neighbour's zones only find the party faces of the written building's
+    (``find_party_faces(first=)``), so they are made in the neighbour's own frame
+    (:func:`local_origin` of it alone) and moved into the job's by a whole-metre offset: they do
+    not depend on which job needs them, and a process remembers them by the building's whole
+    content (a digest of its pickle), so the ~3.8 jobs that neighbour a building make them once
+    per worker, not once each. Moved, a vertex differs from one made in the job's frame by
+    ~1e-14 m, far below the party faces' 5 cm plane tolerance and the 1 mm weld.
+    """
+    import hashlib
+    import pickle
+    k = hashlib.blake2b(pickle.dumps((b, lod, wwr), protocol=pickle.HIGHEST_PROTOCOL), digest_size=20).digest()
+    hit = _NEIGHBOUR_ZONES.get(k)
+    if hit is None:
+        mb, notes = merge_floorless_parts(b, lod)
+        o = local_origin([mb])
+        hit = (mb, notes, (o, tuple(zone_shells(mb, o, lod, wwr=wwr, collinear_tol=COLLINEAR_TOL))))
+        _NEIGHBOUR_ZONES[k] = hit
+        while len(_NEIGHBOUR_ZONES) > NEIGHBOUR_ZONES_KEPT:
+            _NEIGHBOUR_ZONES.popitem(last=False)
+    else:
+        _NEIGHBOUR_ZONES.move_to_end(k)
+    return hit[0], list(hit[1]), hit[2]
+
+
 def prepare_energy_model(buildings: Iterable[Building], options, context: Iterable[Building] = ()
                          ) -> EnergyModel | None:
     """The energy model of ``buildings`` with their neighbours ``context``, or None when none
@@ -201,15 +236,23 @@ def prepare_energy_model(buildings: Iterable[Building], options, context: Iterab
         return None
     others = _neighbours(own, context, options.lod)
     key = _key(own, others, options)
-    blist, notes = [], {}
+    shading = bool(getattr(options, "shading", False))
+    blist, notes, kept = [], {}, {}
     for bi, b in enumerate(own + others):
-        mb, notes[bi] = merge_floorless_parts(b, options.lod)
+        if bi >= len(own) and not shading:  # only its party faces count: remembered per process
+            mb, notes[bi], kept[bi] = _neighbour_zones(b, options.lod, options.wwr)
+        else:
+            mb, notes[bi] = merge_floorless_parts(b, options.lod)
         blist.append(mb)
     origin = local_origin(blist)
     zones: list[ZoneShell] = []
     zones_of: dict[int, tuple[int, ...]] = {}
     for bi, b in enumerate(blist):
-        zs = zone_shells(b, origin, options.lod, wwr=options.wwr, collinear_tol=COLLINEAR_TOL)
+        if bi in kept:
+            own_origin, shells = kept[bi]
+            zs = [replace(z, vertices=z.vertices + (own_origin - origin)) for z in shells]
+        else:
+            zs = zone_shells(b, origin, options.lod, wwr=options.wwr, collinear_tol=COLLINEAR_TOL)
         zones_of[bi] = tuple(range(len(zones), len(zones) + len(zs)))
         zones.extend(zs)
     openings: dict[int, tuple[Opening, ...]] = {}
@@ -223,7 +266,6 @@ def prepare_energy_model(buildings: Iterable[Building], options, context: Iterab
     # building it neighbours: the bulk of the cost on terraced blocks), and neither are the
     # party faces between two neighbours
     n_own_zones = sum(len(zones_of[bi]) for bi in range(len(own)))
-    shading = bool(getattr(options, "shading", False))
     party = find_party_faces(zones, first=None if shading else n_own_zones) if options.party_walls else {}
     made = range(len(zones) if shading else n_own_zones)
     pieces = [zone_pieces(z, zi, party, options.party_split) if zi in made else []
