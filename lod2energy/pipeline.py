@@ -28,7 +28,7 @@ from lod2energy.dataset import BESIDE, DatasetResult, beside_ok, dataset_apply, 
 from lod2energy.errors import ParameterError
 from lod2energy.interrupt import EXIT_INVALID, EXIT_OK, EXIT_SIGINT, EXIT_UNUSABLE, Interrupted, Signals
 from lod2energy.model import Building, CityModel, FeatureError, frozen_mapping
-from lod2energy.neighbours import neighbours_within
+from lod2energy.neighbours import neighbours_within, spatial_order
 from lod2energy.options import ExportOptions, PrepareOptions, RunOptions, ladder_budget, prepare_options, resolve
 from lod2energy.records import (
     _untimed, BuildingRecord, ComplianceRecord, ExportRecord, RecordStore, RepairRecord, ThermalRecord,
@@ -463,11 +463,13 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
                             ready_boxes.extend(r.bbox)
                     halo = max(w.halo(options.writer_options(w.name)) for w in ctx_writers)
                     near = neighbours_within(ready, ready_boxes, halo)
+                    order = spatial_order(ready_boxes)  # near buildings one after the other: the same for every executor
                     del ready_boxes
                     names = [w.name for w in ctx_writers]
 
                     def ctx_tasks():
-                        for k, s in enumerate(ready):
+                        for k in order.tolist():
+                            s = ready[k]
                             p = prev_c.get(s)
                             if run.resume and s in reused and p is not None:
                                 ers = [ExportRecord.from_journal(e) for e in p.get("exports", [])]

@@ -181,3 +181,18 @@ def test_remembered_neighbour_zones_are_those_made_anew_and_follow_the_buildings
     for i in range(energy_model.NEIGHBOUR_ZONES_KEPT + 5):  # bounded
         energy_model._neighbour_zones(shifted(bs[0], (i, 0, 0)), OPTIONS.lod, OPTIONS.wwr)
     assert len(energy_model._NEIGHBOUR_ZONES) == energy_model.NEIGHBOUR_ZONES_KEPT
+
+
+def test_spatial_order_puts_near_boxes_next_to_each_other():
+    from lod2energy.neighbours import spatial_order
+    rng = np.random.default_rng(7)
+    cells = [(x, y) for x in range(8) for y in range(8)]
+    perm = rng.permutation(len(cells))
+    boxes = np.array([[x * 20.0, y * 20.0, 0, x * 20.0 + 10, y * 20.0 + 10, 6] for x, y in (cells[i] for i in perm)])
+    order = spatial_order(boxes)
+    assert sorted(order.tolist()) == list(range(len(boxes)))
+    c = (boxes[order, :2] + boxes[order, 3:5]) / 2
+    steps = np.linalg.norm(np.diff(c, axis=0), axis=1)
+    shuffled = np.linalg.norm(np.diff((boxes[:, :2] + boxes[:, 3:5]) / 2, axis=0), axis=1)
+    assert np.median(steps) == pytest.approx(20.0) and steps.mean() < 0.5 * shuffled.mean()
+    assert spatial_order(boxes[:1]).tolist() == [0] and len(spatial_order(np.zeros((0, 6)))) == 0
