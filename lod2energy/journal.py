@@ -155,7 +155,7 @@ def read_lines(path: str | os.PathLike) -> Iterator[dict]:
                 yield d
 
 
-def records_of(path: str | os.PathLike, start: int = 0, scratch: str | None = None) -> "JournalRecords":
+def records_of(path: str | os.PathLike, start: int = 0) -> "JournalRecords":
     """The buildings' records as the journal's lines from byte ``start`` on tell them.
 
     Each ``building`` line is a record (a later one for the same ``seq`` replaces it); the
@@ -168,8 +168,6 @@ def records_of(path: str | os.PathLike, start: int = 0, scratch: str | None = No
         The journal.
     start : int
         Byte offset to read from (:attr:`Journal.run_start`: this run's lines only).
-    scratch : str, optional
-        Unused (the records are read from the journal itself); kept for callers.
 
     Returns
     -------
