@@ -1,0 +1,82 @@
+"""The one place where lod2energy remembers results across calls.
+
+What belongs to one object is cached on the object (``functools.cached_property`` on the frozen
+types of :mod:`lod2energy.model`). What must outlive one building - a neighbour's zone shells that
+the next jobs ask for again, the triangles of a face that several stages triangulate, the
+verdict of a geometry the repair validates again - is kept here, in named tables of this
+process, each a least-recently-used map of bounded size keyed by the content it was made from
+(a digest or the bytes of the input arrays), so that a key can never go stale.
+
+    >>> from lod2energy import cache
+    >>> cache.remember("demo", b"k", lambda: 42, size=4)
+    42
+    >>> cache.recall("demo", b"k")
+    42
+    >>> cache.clear("demo")
+
+A worker process starts with empty tables (forked from a parent that has used them, it inherits
+their entries, which are valid there too: keys are contents). Tests empty them with
+:func:`clear`.
+"""
+from __future__ import annotations
+
+from collections import OrderedDict
+from typing import Any, Callable, Hashable
+
+_TABLES: dict[str, "OrderedDict[Hashable, Any]"] = {}
+_SIZES: dict[str, int] = {}
+
+
+def _table(name: str, size: int) -> "OrderedDict[Hashable, Any]":
+    t = _TABLES.get(name)
+    if t is None:
+        t = _TABLES[name] = OrderedDict()
+    _SIZES[name] = size
+    return t
+
+
+def recall(name: str, key: Hashable, default: Any = None) -> Any:
+    """The value kept under ``key`` in table ``name`` (marked as recently used), else ``default``."""
+    t = _TABLES.get(name)
+    if t is None:
+        return default
+    try:
+        value = t[key]
+    except KeyError:
+        return default
+    t.move_to_end(key)
+    return value
+
+
+def keep(name: str, key: Hashable, value: Any, size: int) -> Any:
+    """Keep ``value`` under ``key`` in table ``name`` of at most ``size`` entries (the least
+    recently used go first); returns ``value``."""
+    t = _table(name, size)
+    t[key] = value
+    t.move_to_end(key)
+    while len(t) > size:
+        t.popitem(last=False)
+    return value
+
+
+_MISSING = object()
+
+
+def remember(name: str, key: Hashable, make: Callable[[], Any], size: int) -> Any:
+    """``make()`` once per ``key`` in table ``name`` of at most ``size`` entries."""
+    value = recall(name, key, _MISSING)
+    if value is _MISSING:
+        value = keep(name, key, make(), size)
+    return value
+
+
+def clear(name: str | None = None) -> None:
+    """Empty table ``name``, or every table."""
+    for n, t in _TABLES.items():
+        if name is None or n == name:
+            t.clear()
+
+
+def sizes() -> dict[str, tuple[int, int]]:
+    """``{table: (entries, bound)}`` of this process."""
+    return {n: (len(t), _SIZES.get(n, 0)) for n, t in _TABLES.items()}
