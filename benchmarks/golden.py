@@ -7,7 +7,8 @@ A refactoring that must leave outputs byte-identical runs this before and after 
     python benchmarks/golden.py compare before.json after.json
 
 Each case runs one command into its own folder; every file it wrote is hashed (sha256) after the
-output folder's absolute path is replaced by ``OUTDIR`` (report.json and the journal name it).
+paths of the output folder, the repository and the shared data are replaced by tokens and, in JSON
+reports, the keys that hold a measured time are left out (key order kept).
 The spool (``.lod2energy/``) is run machinery, not output, and is left out; ``--skip-journal``
 leaves out ``report.jsonl`` too. ``--quick`` runs only the cases that take seconds (the example,
 the CFD case, validate); ``--only NAME`` one case.
@@ -18,6 +19,7 @@ import argparse
 import hashlib
 import json
 import os
+import re
 import subprocess
 import sys
 import tempfile
@@ -52,14 +54,39 @@ def cases(quick: bool) -> list[tuple[str, list[str], bool]]:
     return [c for c in out if not (quick and c[2])]
 
 
+#: Keys of JSON reports that hold a measured time (they differ run to run).
+TIMING = re.compile(r"^(seconds.*|.*_seconds|elapsed.*|timings?)$")
+
+
+def _untimed(x):
+    if isinstance(x, dict):
+        return {k: _untimed(v) for k, v in x.items() if not TIMING.match(k)}
+    if isinstance(x, list):
+        return [_untimed(v) for v in x]
+    return x
+
+
 def fingerprint(folder: Path, skip_journal: bool) -> dict[str, str]:
-    token = str(folder.resolve()).encode()
+    """sha256 of every output file under ``folder``, with the output folder, the repository and the
+    shared data's paths replaced by tokens and, in JSON reports, timing keys left out."""
+    tokens = [(str(folder.resolve()), "OUTDIR"), (str(SHARED.resolve()), "SHARED"), (str(SHARED), "SHARED"),
+              (str(ROOT), "REPO")]
     digests = {}
     for p in sorted(folder.rglob("*")):
         rel = p.relative_to(folder).as_posix()
         if not p.is_file() or rel.startswith(".lod2energy/") or (skip_journal and rel == "report.jsonl"):
             continue
-        digests[rel] = hashlib.sha256(p.read_bytes().replace(token, b"OUTDIR")).hexdigest()
+        data = p.read_bytes()
+        for old, new in tokens:
+            data = data.replace(old.encode(), new.encode())
+        if rel.endswith((".json", ".jsonl")) and not rel.endswith(".city.json"):
+            try:
+                lines = [json.loads(x) for x in data.splitlines() if x.strip()] if rel.endswith(".jsonl") \
+                    else [json.loads(data)]
+                data = "\n".join(json.dumps(_untimed(x)) for x in lines).encode()
+            except ValueError:
+                pass
+        digests[rel] = hashlib.sha256(data).hexdigest()
     return digests
 
 
