@@ -137,7 +137,6 @@ def stage_table(tile: str) -> dict:
         t.wrap(mod, "self_check", f"{name} self-check")
         t.wrap(mod, "write", f"{name} writer (with self-check)")
     t.wrap(energyplus.check, "read_checked_idf", "idf self-check: IDD parse+check")
-    t.wrap(energyplus.check, "_eppy_idf", "idf self-check: eppy re-parse")
     for mod in (energyplus.conform, energyplus.zones, energyplus.check):
         t.wrap(mod, "enclosure_defects", "idf enclosure emulation (writer + self-check)")
     t.wrap(cityjson, "_schema_errors", "cityjson self-check: jsonschema")

@@ -1,5 +1,6 @@
 """Energy-ready buildings for the exporter tests (IDF, STL, EnergyPlus, OpenFOAM).
 
+``eppy_idf(path)`` opens a written IDF with eppy (a test dependency) to inspect its objects.
 ``energy_ready(b)`` labels a building and gives it U-values with the project's own stages
 (``lod2energy.semantics.label_building`` + ``lod2energy.thermal.assign_u_values``) when they
 are importable, else with a small private fallback (one semantic entry per surface, uValue
@@ -13,16 +14,30 @@ from pathlib import Path
 from types import MappingProxyType
 
 import numpy as np
+from eppy.modeleditor import IDF, IDDAlreadySetError
 
+import lod2energy
+from lod2energy.exporters import energyplus
 from lod2energy.model import Building, CityObject, Geometry, Shell, Solid, Surface
 
 from factories import BOX_SEMANTICS, box_polygons, building_from_polygons
 
 REPO = Path(__file__).resolve().parents[1]
 DATA = REPO.parent / "shared" / "data"
-EPW = DATA / "weather" / "NLD_OV_Heino.062780_TMYx.2007-2021.epw"
+#: the weather file the package ships (lod2energy/data/weather/): Heino, NL
+EPW = Path(lod2energy.__file__).resolve().parent / "data" / "weather" / "NLD_OV_Heino.062780_TMYx.2007-2021.epw"
 
 FALLBACK_U = {"RoofSurface": 0.3, "WallSurface": 0.4, "GroundSurface": 0.35}
+
+
+def eppy_idf(path) -> IDF:
+    """The IDF file at ``path`` as an eppy ``IDF`` against EnergyPlus's ``Energy+.idd``, to inspect
+    its objects by name (the writer's own self-check is ``energyplus.check.read_checked_idf``)."""
+    try:
+        IDF.setiddname(str(energyplus.run.idd_path()))
+    except IDDAlreadySetError:  # eppy keeps one IDD per process
+        pass
+    return IDF(str(path))
 
 
 def _fallback_label(b: Building) -> Building:

@@ -149,15 +149,13 @@ def test_timeout_bounds_the_repair_of_a_100000_face_building(tmp_path):
             "CityObjects": {"big": {"type": "Building", "geometry": [
                 {"type": "Solid", "lod": "2.2", "boundaries": [faces]}]}}}
     inp = write_seq(tmp_path, [feat], "big.city.jsonl", header=h)
-    t0 = time.monotonic()
     p = cli("repair", inp, "-o", tmp_path / "r.city.jsonl", "--report", tmp_path / "r.json", "--timeout", "5",
             "-q", timeout=300)
-    elapsed = time.monotonic() - t0
-    assert p.returncode in (0, 1)
+    assert p.returncode == 1
     rep = json.loads((tmp_path / "r.json").read_text())
-    assert [b["id"] for b in rep["buildings"]] == ["big"]
-    # reading and writing 100,000 faces takes seconds of its own; the repair is held to 5 s
-    assert elapsed < 60, f"--timeout 5 took {elapsed:.0f} s"
+    # its job is stopped at its CPU budget and the building kept as read (no assertion on wall time)
+    (b,) = rep["buildings"]
+    assert b["id"] == "big" and b["stage"] == "timeout" and "kept as read" in b["error"]
 
 
 # ----------------------------------------------------------------------------- XML

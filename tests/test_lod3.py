@@ -9,6 +9,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from export_helpers import EPW
 from exporters.zones import local_origin, zone_shells
 from lod2energy.exporters.energyplus.openings import Opening, opening_polygon, split_openings
 from lod2energy.exporters import energyplus
@@ -20,8 +21,6 @@ from lod2energy.model import Building
 HERE = Path(__file__).parent / "data"
 FZK = HERE / "fzk_haus_lod3.gml"            # real: KIT FZK-Haus LoD3, 11 windows, 2 doors
 BOX = HERE / "lod3_box_openings.city.json"  # hand-made: a flush window, a recessed door, interior
-WEATHER = Path(__file__).resolve().parents[1] / ".." / "shared" / "data" / "weather" / \
-    "NLD_OV_Heino.062780_TMYx.2007-2021.epw"
 
 
 def one(path: Path) -> Building:
@@ -97,10 +96,10 @@ def test_interior_detail_is_left_out_and_counted(tmp_path, capsys):
 
 
 @pytest.mark.external
-@pytest.mark.skipif(energyplus.run.binary() is None or not WEATHER.exists(), reason="EnergyPlus or weather missing")
+@pytest.mark.skipif(energyplus.run.binary() is None, reason="EnergyPlus not installed")
 def test_lod3_building_is_simulated_with_its_real_windows(tmp_path, capsys):
     out = tmp_path / "fzk"
-    rc = main(["export", str(FZK), "-o", str(out), "--idf", "--run", "--weather", str(WEATHER), "-q"])
+    rc = main(["export", str(FZK), "-o", str(out), "--idf", "--run", "--weather", str(EPW), "-q"])
     capsys.readouterr()
     assert rc == 0
     (r,) = json.loads((out / "report.json").read_text())["buildings"]

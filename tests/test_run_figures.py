@@ -58,13 +58,12 @@ import pytest  # noqa: E402
 
 @pytest.mark.external
 def test_cli_run_puts_zone_figures_in_report_and_geojson(tmp_path):
-    from conftest import shared_path
-    from export_helpers import EPW
+    from export_helpers import EPW, REPO
     from lod2energy.exporters import energyplus
     from lod2energy.cli import main
     if energyplus.run.binary() is None:
         pytest.skip("EnergyPlus not installed")
-    lines = shared_path("3dbag", "delft_subset.city.jsonl").read_text().splitlines()
+    lines = (REPO / "examples" / "delft_subset.city.jsonl").read_text().splitlines()
     one = [ln for ln in lines[1:] if "0503100000005156" in ln][:1]  # b3_bouwlagen 3: three storey zones
     src = tmp_path / "one.city.jsonl"
     src.write_text("\n".join([lines[0]] + one) + "\n")

