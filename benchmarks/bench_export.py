@@ -125,7 +125,9 @@ def _jobs1() -> list[str]:
 def stage_table(tile: str) -> dict:
     """Run the export on ``tile`` with every stage timed."""
     from lod2energy import cli, pipeline
-    from lod2energy.exporters import cityjson, energyplus, stl
+    from lod2energy.exporters import energyplus
+    from lod2energy.exporters.cityjson import writer as cityjson
+    from lod2energy.exporters.stl import writer as stl
 
     from lod2energy.validate import checks
 
@@ -175,8 +177,9 @@ def markdown(res: dict) -> str:
 
 
 def writer_throughput(a) -> dict:
-    from lod2energy import openfoam
-    from lod2energy.exporters import energyplus, stl
+    from lod2energy.exporters.cfd import openfoam
+    from lod2energy.exporters import energyplus
+    from lod2energy.exporters.stl import writer as stl
     from lod2energy.io import read
     from lod2energy.model import Building
 

@@ -12,7 +12,7 @@ from pathlib import Path
 
 from lod2energy.errors import ExportError
 
-from .result import ExportResult
+from lod2energy.exporters.result import ExportResult
 
 _UNSAFE_FILE = re.compile(r"[^A-Za-z0-9._-]+")
 

@@ -47,7 +47,7 @@ class Writer:
         the other writers' results) in the ``"dataset"`` pass.
     prepare : callable(buildings, options, context=()) -> sequence of Building
         The stage that runs just before this writer, in the same pass and with the same
-        neighbours (the IDF's energy model, :mod:`lod2energy.exporters.energyplus.model`); it records
+        neighbours (the IDF's energy model, :mod:`lod2energy.energy.model`); it records
         what it did in the buildings' provenance. Default: the buildings as they are.
     """
 
@@ -155,8 +155,8 @@ def _idf_halo(options) -> float:
 
 
 def _prepare_idf(buildings, options, context=()):
-    """The energy model stage before the IDF writer (:func:`lod2energy.exporters.energyplus.model.with_energy_model`)."""
-    from lod2energy.exporters.energyplus.model import with_energy_model
+    """The energy model stage before the IDF writer (:func:`lod2energy.energy.model.with_energy_model`)."""
+    from lod2energy.energy.model import with_energy_model
     return with_energy_model(buildings, options, context)
 
 
@@ -170,7 +170,7 @@ def _stl_sidecar(path: str) -> list[str]:
 
 
 def _write_stl(buildings, outdir, options, *, crs=None, context=(), model=None, stem="out", tol=None, frame=None):
-    from lod2energy.exporters import stl
+    from lod2energy.exporters.stl import writer as stl
     from lod2energy.repair.parts import input_parts  # the union of the input parts (issue 19)
     buildings = [input_parts(b) for b in buildings]
     return _records("stl", stl.write(buildings, outdir, options, crs=crs), _stl_sidecar)
@@ -180,7 +180,7 @@ def _write_cityjson(buildings, outdir, options, *, crs=None, context=(), model=N
                     frame=None):
     """One Energy-ADE CityJSON for all ``buildings``: a record for each, ok or left out; the
     input's terrain (TINRelief) it carries gets no record but the results' ``terrain``."""
-    from lod2energy.exporters import cityjson
+    from lod2energy.exporters.cityjson import writer as cityjson
     if not isinstance(buildings, Sequence):
         buildings = list(buildings)  # a Sequence (the spool) is streamed, never all in memory
     path = os.path.join(str(outdir), f"{stem}.energy.city.json")
@@ -227,7 +227,7 @@ class CityJsonOptions:
 
 
 def _cityjson_check(path: str, tol=None) -> list[str]:
-    from lod2energy.exporters import cityjson
+    from lod2energy.exporters.cityjson import writer as cityjson
     return cityjson.self_check(path, tol=tol)
 
 
@@ -237,21 +237,21 @@ def _idf_check(path: str) -> list[str]:
 
 
 def _stl_check(path: str) -> list[str]:
-    from lod2energy.exporters import stl
+    from lod2energy.exporters.stl import writer as stl
     return stl.self_check(path)
 
 
 def _write_cfd(buildings, outdir, options, *, crs=None, context=(), model=None, stem="out", tol=None, frame=None):
-    """The OpenFOAM case ``OUTDIR/cfd`` of the region's buildings (:func:`lod2energy.cfd.export_case`):
+    """The OpenFOAM case ``OUTDIR/cfd`` of the region's buildings (:func:`lod2energy.exporters.cfd.export_case`):
     one record for every building in the case; ``buildings`` may hold a TINRelief (the ground)."""
-    from lod2energy.cfd import export_case
+    from lod2energy.exporters.cfd import export_case
     res = export_case(list(buildings), model, outdir, options)
     rec = ExportRecord("cfd", bool(res.ok), str(res.path), tuple(res.problems), {"cfd": dict(res.stats)})
     return WriteResults([(tuple(res.building_ids), rec)])
 
 
 def _cfd_check(path: str) -> list[str]:
-    """Nothing to add: :func:`lod2energy.cfd.export_case` runs surfaceCheck (and checkMesh) itself."""
+    """Nothing to add: :func:`lod2energy.exporters.cfd.export_case` runs surfaceCheck (and checkMesh) itself."""
     return []
 
 
@@ -267,7 +267,7 @@ def _write_geojson(buildings, outdir, options, *, crs=None, context=(), model=No
                    frame=None, records=None):
     """``OUTDIR/<stem>.footprints.geojson``: the footprints (WGS84) with the buildings' records;
     ``options`` are the IDF options (``use``, ``lod``, ``run``: the figures of the energy model)."""
-    from lod2energy.exporters import geojson
+    from lod2energy.exporters.geojson import writer as geojson
     path = os.path.join(str(outdir), f"{stem}{geojson.SUFFIX}")
     res = geojson.write(buildings, path, crs=crs, frame=frame, records=records, use=getattr(options, "use", None),
                         lod=getattr(options, "lod", None), run=bool(getattr(options, "run", False)), root=outdir)
@@ -283,7 +283,7 @@ def _write_geojson(buildings, outdir, options, *, crs=None, context=(), model=No
 
 
 def _geojson_check(path: str) -> list[str]:
-    from lod2energy.exporters import geojson
+    from lod2energy.exporters.geojson import writer as geojson
     return geojson.self_check(path)
 
 

@@ -10,7 +10,7 @@ from typing import Sequence
 
 import numpy as np
 
-from lod2energy.exporters.energyplus.enclosure import COINCIDENT, BadEdge, POINT_TOL, eplus_collinear
+from lod2energy.energy.enclosure import COINCIDENT, BadEdge, POINT_TOL, eplus_collinear
 
 
 def reference_eplus_degenerate(points: np.ndarray) -> bool:

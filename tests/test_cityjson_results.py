@@ -9,7 +9,7 @@ import pytest
 from export_helpers import EPW, shifted
 from factories import gabled_house
 from lod2energy.exporters import energyplus
-from lod2energy.exporters import cityjson as X
+from lod2energy.exporters.cityjson import writer as X
 from lod2energy.exporters import run_results as R
 from lod2energy.io import cityjson as cjio
 from lod2energy.model import CityModel, frozen_mapping

@@ -1,11 +1,11 @@
-"""The vectorised enclosure emulation (exporters.energyplus.enclosure) agrees with the pure-Python
+"""The vectorised enclosure emulation (lod2energy.energy.enclosure) agrees with the pure-Python
 one it replaced (tests/_enclosure_reference.py) on random and on real zones."""
 from __future__ import annotations
 
 import numpy as np
 import pytest
 
-from lod2energy.exporters.energyplus import enclosure as ee
+from lod2energy.energy import enclosure as ee
 from lod2energy.exporters import energyplus
 
 from _enclosure_reference import (reference_edges_not_two, reference_enclosure_defects,

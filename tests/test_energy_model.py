@@ -1,4 +1,4 @@
-"""The energy model stage (lod2energy.exporters.energyplus.model): floorless parts and simpler envelopes
+"""The energy model stage (lod2energy.energy.model): floorless parts and simpler envelopes
 are decided before the IDF writer, recorded in the building's provenance, and the writer writes
 what it is given."""
 from __future__ import annotations
@@ -15,9 +15,9 @@ from factories import box
 
 from lod2energy.exporters import energyplus
 from lod2energy.exporters.registry import writer
-from lod2energy.exporters.zones import local_origin
+from lod2energy.energy.zones.shells import local_origin
 from lod2energy.model import CityModel, frozen_mapping
-from lod2energy.exporters.energyplus import model as energy_model
+from lod2energy.energy import model as energy_model
 
 OPTIONS = energyplus.options.IdfOptions()
 
@@ -113,7 +113,7 @@ def test_the_registry_runs_the_stage_before_the_idf_writer_only():
 
 
 def test_the_cityjson_writer_leaves_the_energy_model_out(tmp_path):
-    from lod2energy.exporters import cityjson
+    from lod2energy.exporters.cityjson import writer as cityjson
     [staged] = energy_model.with_energy_model([dormer_house()], OPTIONS)
     model = CityModel(version="2.0", metadata=frozen_mapping({"referenceSystem": "urn:ogc:def:crs:EPSG::7415"}))
     res = cityjson.write(str(tmp_path / "out.city.json"), model, [staged])

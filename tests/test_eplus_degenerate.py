@@ -19,7 +19,7 @@ import pytest
 from export_helpers import EPW, energy_ready
 from factories import box
 from lod2energy.exporters import energyplus
-from lod2energy.exporters.energyplus.enclosure import eplus_degenerate
+from lod2energy.energy.enclosure import eplus_degenerate
 
 pytestmark = pytest.mark.skipif(energyplus.run.binary() is None or not EPW.exists(),
                                 reason="EnergyPlus or the shared EPW weather file not available")

@@ -9,9 +9,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from lod2energy.exporters.energyplus import enclosure
-from lod2energy.exporters.energyplus.conform import keep_corners
-from lod2energy.exporters.energyplus.pieces import Piece, _as_written
+from lod2energy.energy import enclosure
+from lod2energy.energy.conform import keep_corners
+from lod2energy.energy.pieces import Piece, _as_written
 
 
 def _rings(rng, n=400):
@@ -94,10 +94,10 @@ def test_vertices_and_degenerate_together_as_apart():
 
 
 def test_surely_planar_only_when_the_tests_pass():
-    from lod2energy.exporters.energyplus.conform import PIECE_PLANAR
-    from lod2energy.exporters.energyplus.pieces import _planar_dev_of, _surely_planar
+    from lod2energy.energy.conform import PIECE_PLANAR
+    from lod2energy.energy.pieces import _planar_dev_of, _surely_planar
     from lod2energy.exporters.polygons import newell_normal
-    from lod2energy.exporters.zones import MIN_PIECE_AREA
+    from lod2energy.energy.zones.shells import MIN_PIECE_AREA
 
     rng = np.random.default_rng(13)
     rings = []
@@ -134,7 +134,7 @@ def test_surely_planar_only_when_the_tests_pass():
 
 
 def test_degenerate_given_collinear_same_verdicts():
-    from lod2energy.exporters.energyplus.conform import _degenerate_given
+    from lod2energy.energy.conform import _degenerate_given
 
     rings = _rings(np.random.default_rng(17))
     rings += [np.array([[0, 0, 0], [0.004, 0, 0], [0.008, 0.001, 0]], float),
@@ -147,8 +147,8 @@ def _ref_find_party_faces(zones, plane_tol=0.05, min_area=0.01, angle_cos=0.985)
     """surfaces.find_party_faces before its face pairs were filtered all at once."""
     import shapely
 
-    from lod2energy.exporters.energyplus.pieces import _face_frame
-    from lod2energy.exporters.energyplus.surfaces import _shapely_poly
+    from lod2energy.energy.pieces import _face_frame
+    from lod2energy.energy.surfaces import _shapely_poly
     from lod2energy.exporters.polygons import plane_basis
 
     boxes = np.array([[*z.vertices.min(axis=0), *z.vertices.max(axis=0)] if len(z.vertices)
@@ -194,8 +194,8 @@ def test_party_faces_same_as_pair_by_pair():
     from factories import box
 
     from export_helpers import energy_ready
-    from lod2energy.exporters.energyplus.surfaces import find_party_faces
-    from lod2energy.exporters.zones import local_origin, zone_shells
+    from lod2energy.energy.surfaces import find_party_faces
+    from lod2energy.energy.zones.shells import local_origin, zone_shells
 
     rng = np.random.default_rng(19)
     bs = []
@@ -242,8 +242,8 @@ def test_party_faces_of_the_first_zones_only():
     # zones are those of the full search, the later zones keep only their pairs with them
     from export_helpers import energy_ready
     from factories import box
-    from lod2energy.exporters.energyplus.surfaces import find_party_faces
-    from lod2energy.exporters.zones import local_origin, zone_shells
+    from lod2energy.energy.surfaces import find_party_faces
+    from lod2energy.energy.zones.shells import local_origin, zone_shells
 
     bs = [energy_ready(box(dx=6.0, dz=h, id=f"b{i}", origin=(6.0 * (i % 3), 8.0 * (i // 3), 0.0)))
           for i, h in enumerate((9.0, 6.0, 12.0, 7.5, 10.0, 6.0))]

@@ -13,7 +13,7 @@ import pytest
 from factories import box, gabled_house, open_box
 from lod2energy import semantics as S
 from lod2energy import thermal as T
-from lod2energy.exporters import cityjson as X
+from lod2energy.exporters.cityjson import writer as X
 from lod2energy.io import cityjson as cjio
 from lod2energy.model import Building, CityModel, frozen_mapping
 from conftest import shared_path

@@ -10,8 +10,8 @@ import pytest
 
 from conftest import SHARED, shared_path
 from factories import box
-from lod2energy.exporters import cityjson as X
-from lod2energy.exporters.cityjson_terrain import prepare_terrain, terrain_problem
+from lod2energy.exporters.cityjson import writer as X
+from lod2energy.exporters.cityjson.terrain import prepare_terrain, terrain_problem
 from lod2energy.io import cityjson as cjio
 from lod2energy.model import Building, CityModel, CityObject, Geometry, Shell, Solid, Surface, frozen_mapping
 from test_export_cityjson import energy_ready

@@ -17,7 +17,7 @@ One module per concept, in the order the writer uses them:
 
 - ``options``: :class:`~exporters.energyplus.options.IdfOptions` and the written precision;
 - ``names``: IDF-safe unique names and comments;
-- ``pieces``: :class:`~exporters.energyplus.pieces.Piece` and the convex decomposition of a face;
+- ``pieces``: :class:`~lod2energy.energy.pieces.Piece` and the convex decomposition of a face;
 - ``surfaces``: party walls (``find_party_faces``) and a zone's written pieces (``zone_pieces``);
 - ``enclosure``: EnergyPlus's zone enclosure test, emulated;
 - ``conform``: pieces conformed to that test (``keep_corners``, ``eplus_enclose``, ``eplus_conform``);
@@ -40,7 +40,4 @@ without case) and at most 100 characters; ids in comments are JSON-escaped on on
 
 # the modules, so that ``energyplus.writer.write``, ``energyplus.run.binary`` ... are reachable
 # from the package
-from . import (  # noqa: F401
-    check, conform, constructions, enclosure, fallback, model, names, openings, options, pieces, render, run, site,
-    surfaces, writer, zones,
-)
+from . import check, constructions, idd, names, options, render, run, site, writer  # noqa: F401

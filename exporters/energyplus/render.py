@@ -9,15 +9,16 @@ from typing import Sequence
 import numpy as np
 
 from lod2energy.errors import ExportError
-from ..polygons import _norm, newell_normal, polygon_area3d, unit
-from ..zones import ZoneShell
-from .constructions import construction_layers, _construction_name, INTERZONE_SLAB, _KIND_TYPE, MASS
-from .names import comment_text, _IDF_NAME_BAD, NameRegistry
-from .openings import Opening, opening_polygon, window_for
-from .options import ATTIC_ACH, IdfOptions, WRITE_DECIMALS
-from .pieces import Piece, _pieces_volume
-from .site import DEFAULT_SITE
-from .zones import with_floor, ZoneInfo
+from lod2energy.exporters.polygons import _norm, newell_normal, polygon_area3d, unit
+from lod2energy.energy.zones.shells import ZoneShell
+from lod2energy.exporters.energyplus.constructions import construction_layers, _construction_name, INTERZONE_SLAB, _KIND_TYPE, MASS
+from lod2energy.exporters.energyplus.names import comment_text, _IDF_NAME_BAD, NameRegistry
+from lod2energy.energy.openings import Opening, opening_polygon, window_for
+from lod2energy.exporters.energyplus.options import ATTIC_ACH, IdfOptions
+from lod2energy.energy.pieces import WRITE_DECIMALS
+from lod2energy.energy.pieces import Piece, _pieces_volume
+from lod2energy.exporters.energyplus.site import DEFAULT_SITE
+from lod2energy.energy.zones.storeys import with_floor, ZoneInfo
 
 
 def upper_left_first(points: np.ndarray) -> np.ndarray:

@@ -24,8 +24,8 @@ import time
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 
-from ..result import ExportResult
-from .options import IdfOptions
+from lod2energy.exporters.result import ExportResult
+from lod2energy.exporters.energyplus.options import IdfOptions
 
 J_PER_KWH = 3.6e6
 
@@ -58,9 +58,9 @@ def idd_path() -> Path | None:
 
 
 def idd():
-    """The installed ``Energy+.idd`` parsed (:class:`lod2energy.idd.Idd`), once per process;
+    """The installed ``Energy+.idd`` parsed (:class:`lod2energy.exporters.energyplus.idd.Idd`), once per process;
     None when EnergyPlus is not installed."""
-    from lod2energy.idd import load_idd
+    from lod2energy.exporters.energyplus.idd import load_idd
 
     p = idd_path()
     return load_idd(str(p)) if p is not None else None

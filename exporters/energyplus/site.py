@@ -5,7 +5,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .names import sanitize_name
+from lod2energy.exporters.energyplus.names import sanitize_name
 
 
 #: Default site (Heino, NL; the project's weather file) when no weather file is given.

@@ -1,7 +1,7 @@
 """The EnergyPlus writer: :func:`write` (one IDF per building, or one per dataset) and its self-check.
 
 It writes the energy model it is given (``provenance["energy_model"]``, made by the stage
-:mod:`lod2energy.exporters.energyplus.model` before the writer runs): zones, pieces and party walls
+:mod:`lod2energy.energy.model` before the writer runs): zones, pieces and party walls
 in their local frame. Called directly on buildings without one, it has the stage make it.
 """
 from __future__ import annotations
@@ -16,19 +16,19 @@ import numpy as np
 from lod2energy import safe_write
 from lod2energy.errors import ParameterError
 from lod2energy.model import Building
-from . import model as energy_model
-from ..paths import not_written, output_path, safe_stem, set_aside_failed
-from ..polygons import polygon_area3d
-from ..result import ExportResult
-from ..zones import local_origin
-from .check import self_check
-from .options import IdfOptions
-from .pieces import _face_frame, _pieces_from_points
-from .render import render_idf
-from .run import _run
-from .site import _group_site, read_epw_header
-from .surfaces import zone_pieces
-from .zones import _written_zones
+from lod2energy.energy import model as energy_model
+from lod2energy.exporters.paths import not_written, output_path, safe_stem, set_aside_failed
+from lod2energy.exporters.polygons import polygon_area3d
+from lod2energy.exporters.result import ExportResult
+from lod2energy.energy.zones.shells import local_origin
+from lod2energy.exporters.energyplus.check import self_check
+from lod2energy.exporters.energyplus.options import IdfOptions
+from lod2energy.energy.pieces import _face_frame, _pieces_from_points
+from lod2energy.exporters.energyplus.render import render_idf
+from lod2energy.exporters.energyplus.run import _run
+from lod2energy.exporters.energyplus.site import _group_site, read_epw_header
+from lod2energy.energy.surfaces import zone_pieces
+from lod2energy.energy.zones.storeys import _written_zones
 
 
 def _bbox(b: Building) -> np.ndarray:

@@ -81,7 +81,7 @@ def terrain_grid(domain, cells: tuple[int, int, int], level: int, height, pad: i
     vertices (n, 3), triangles (t, 3) (upward), inner : (t,) bool
         ``inner`` marks the triangles inside the box's plan.
     """
-    from .domain import from_wind_frame
+    from lod2energy.exporters.cfd.domain import from_wind_frame
     nx, ny = cells[0] * 2 ** level, cells[1] * 2 ** level
     dx = (domain.x_max - domain.x_min) / nx
     dy = (domain.y_max - domain.y_min) / ny

@@ -26,13 +26,13 @@ from lod2energy.geometry import collapse_short_edges  # noqa: F401 - re-exported
 from lod2energy.geometry import triangle_areas, triangle_normals
 from lod2energy.model import BUILDING_TYPES, Building
 
-from .paths import not_written, output_path, safe_stem
-from .result import ExportResult
-from .rows import row_keys, same_position, unique_rows
-from .shellcheck import signed_volume
-from .stl_seams import T_JUNCTION_TOL, split_open_edges, split_t_junctions  # noqa: F401 - part of stl's API
-from .weld import weld
-from .zones import ZoneShell, local_origin, zone_shells
+from lod2energy.exporters.paths import not_written, output_path, safe_stem
+from lod2energy.exporters.result import ExportResult
+from lod2energy.exporters.stl.rows import row_keys, same_position, unique_rows
+from lod2energy.exporters.shellcheck import signed_volume
+from lod2energy.exporters.stl.seams import T_JUNCTION_TOL, split_open_edges, split_t_junctions  # noqa: F401 - part of stl's API
+from lod2energy.exporters.weld import weld
+from lod2energy.energy.zones.shells import ZoneShell, local_origin, zone_shells
 
 #: Edge-collapse tolerance (m) after the union: removes sliver triangles.
 SIMPLIFY_TOL = 1e-3

@@ -1,6 +1,6 @@
 """Pieces conformed to EnergyPlus's enclosure test: kept corners, folded slivers, merged vertices.
 
-The emulated test itself is :mod:`exporters.energyplus.enclosure`.
+The emulated test itself is :mod:`lod2energy.energy.enclosure`.
 """
 from __future__ import annotations
 
@@ -8,16 +8,16 @@ from dataclasses import replace
 
 import numpy as np
 
-from ..polygons import polygon_area3d
+from lod2energy.exporters.polygons import polygon_area3d
 from lod2energy.geometry import split_at_points
 
-from ..shellcheck import check_closed_outward
-from ..weld import weld
-from ..zones import MIN_PIECE_AREA
-from .enclosure import (_collinear_many, _drop_coincident_many, enclosure_defects, eplus_degenerate_many, _on_line,
+from lod2energy.exporters.shellcheck import check_closed_outward
+from lod2energy.exporters.weld import weld
+from lod2energy.energy.zones.shells import MIN_PIECE_AREA
+from lod2energy.energy.enclosure import (_collinear_many, _drop_coincident_many, enclosure_defects, eplus_degenerate_many, _on_line,
                         snap_polygons)
-from .options import WRITE_DECIMALS
-from .pieces import Piece, _planar_dev, _surely_planar
+from lod2energy.energy.pieces import WRITE_DECIMALS
+from lod2energy.energy.pieces import Piece, _planar_dev, _surely_planar
 
 
 #: A vertex EnergyPlus finds collinear but which lies farther than this (m) from the line

@@ -11,7 +11,7 @@ What is written (through :mod:`lod2energy.io.cityjson`'s writer):
   referenced under the document's ``"extensions"`` (relative URL ``energy.ext.json``; the
   extension file is copied next to the output);
 - the input's terrain (``TINRelief`` city objects) as read, after the buildings, on the same
-  grid (:mod:`lod2energy.exporters.cityjson_terrain`);
+  grid (:mod:`lod2energy.exporters.cityjson.terrain`);
 - CityJSON version: the input's by default, else ``version`` ("1.0", "1.1", "2.0").
 
 Self-check (:func:`self_check`): re-parse the file, validate it against the official
@@ -49,15 +49,15 @@ from lod2energy.repair.accept import (  # noqa: F401 - acceptance_problem: impor
     TOLERATED_CODES, acceptance_problem, envelope_problems, export_problem, strip_to_energy,
 )
 
-from .cityjson_schema import (  # noqa: F401 - the schema helpers, importable from here as before
+from lod2energy.exporters.cityjson.schema import (  # noqa: F401 - the schema helpers, importable from here as before
     COMPILE_MIN_OBJECTS, EXTENSION_FILE, EXTENSION_NAME, EXTENSION_VERSION, MAX_PROBLEMS, _schema_errors,
     _schema_valid_fast, _validators, _worth_compiling, extension_problems, extension_schema,
     load_extension_beside,
 )
-from .cityjson_terrain import is_terrain, n_faces, prepare_terrain, terrain_problem
-from .cityjson_version import fix_cityobject, fix_document, fix_header, model_for  # noqa: F401
-from .result import ExportResult
-from .run_results import result_attributes
+from lod2energy.exporters.cityjson.terrain import is_terrain, n_faces, prepare_terrain, terrain_problem
+from lod2energy.exporters.cityjson.version import fix_cityobject, fix_document, fix_header, model_for  # noqa: F401
+from lod2energy.exporters.result import ExportResult
+from lod2energy.exporters.run_results import result_attributes
 
 INVALID_SUFFIX = ".invalid"
 _STAGED = itertools.count()
@@ -141,7 +141,7 @@ def write(path: str, model: CityModel, buildings: Iterable[Building], version: s
         File-level data of the input (metadata, transform, extensions, version).
     buildings : iterable of Building
         Output of label + U-value stages (``provenance["thermal"]`` present). Terrain
-        features (``TINRelief``, :mod:`lod2energy.exporters.cityjson_terrain`) among them are
+        features (``TINRelief``, :mod:`lod2energy.exporters.cityjson.terrain`) among them are
         written as they were read and listed in ``ExportResult.terrain``; other
         non-buildings are left out (``skipped``).
     version : str, optional
@@ -274,7 +274,7 @@ def self_check(path: str, extension: Mapping | None = None, tol=None) -> list[st
 
     tol = tol or DEFAULT
     if not cjio.is_cityjsonseq(path):  # a document: read one CityObject at a time
-        from .cityjson_check import self_check_document
+        from lod2energy.exporters.cityjson.check import self_check_document
         return self_check_document(path, extension, tol)
     problems: list[str] = []
     try:

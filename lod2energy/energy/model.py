@@ -5,14 +5,14 @@ keep the Building's own geometry. In the order of the work:
 
 1. floorless parts (:func:`floorless_parts`: a dormer whose underside follows a roof steeper
    than 60 degrees) united with the part they sit on, or left out (:func:`merge_floorless_parts`);
-2. one zone shell per Building/BuildingPart (:func:`lod2energy.exporters.zones.zone_shells`)
+2. one zone shell per Building/BuildingPart (:func:`lod2energy.energy.zones.shells.zone_shells`)
    in the writer's local frame, the real windows and doors split off (LoD3), the party walls
-   found and each zone's written pieces cut (:mod:`lod2energy.exporters.energyplus.surfaces`);
+   found and each zone's written pieces cut (:mod:`lod2energy.energy.surfaces`);
 3. a zone whose pieces EnergyPlus would call not fully enclosed replaced by the first simpler
-   envelope that passes (:func:`enclosable`, :data:`lod2energy.exporters.energyplus.fallback.FALLBACKS`).
+   envelope that passes (:func:`enclosable`, :data:`lod2energy.energy.fallback.FALLBACKS`).
 
 Which fallback passes depends on the frame (the local origin of the buildings *and* their
-neighbours, floored to whole metres, :func:`~lod2energy.exporters.zones.local_origin`) and on
+neighbours, floored to whole metres, :func:`~lod2energy.energy.zones.shells.local_origin`) and on
 the party walls with the neighbours, so the stage takes the buildings and neighbours the
 writer gets: the pipeline calls it in the pass that calls the writer (the neighbour pass in
 building mode, the dataset pass in dataset mode). :func:`with_energy_model` records the
@@ -29,17 +29,17 @@ from typing import Iterable, Sequence
 
 import numpy as np
 
-from lod2energy.exporters.energyplus.enclosure import enclosure_defects
-from lod2energy.exporters.energyplus.openings import Opening, split_openings
-from lod2energy.exporters.energyplus.pieces import Piece
-from lod2energy.exporters.energyplus.surfaces import find_party_faces, zone_pieces
-from lod2energy.exporters.energyplus.zones import FLOOR_NZ
+from lod2energy.energy.enclosure import enclosure_defects
+from lod2energy.energy.openings import Opening, split_openings
+from lod2energy.energy.pieces import Piece
+from lod2energy.energy.surfaces import find_party_faces, zone_pieces
+from lod2energy.energy.zones.storeys import FLOOR_NZ
 from lod2energy.exporters.polygons import newell_normal, unit
 from lod2energy.exporters.shellcheck import check_closed_outward
-from lod2energy.exporters.zones import COLLINEAR_TOL, local_origin, zone_shells, ZoneShell
+from lod2energy.energy.zones.shells import COLLINEAR_TOL, local_origin, zone_shells, ZoneShell
 from lod2energy.model import BUILDING_TYPES, Building, frozen_mapping
 from lod2energy.repair.parts import merge_parts, touching_part, without_geometry
-from .fallback import FALLBACKS
+from lod2energy.energy.fallback import FALLBACKS
 
 def floorless_parts(b: Building, lod: str | None = None) -> list[str]:
     """BuildingParts of ``b`` without a face EnergyPlus can take as a floor (n_z < ``FLOOR_NZ``).
@@ -99,7 +99,7 @@ def enclosable(zone: ZoneShell, zi: int, pieces: list[Piece]) -> tuple[ZoneShell
     """A simpler envelope for a zone whose pieces EnergyPlus would call not fully enclosed.
 
     Returns None when the pieces pass (:func:`enclosure_defects`) or no fallback of
-    :mod:`lod2energy.exporters.energyplus.fallback` (near misses cleared, sheets separated, 2.5D
+    :mod:`lod2energy.energy.fallback` (near misses cleared, sheets separated, 2.5D
     model, then LoD1 block) passes either; else the first fallback zone that does, with its
     pieces (party walls not split) and the fallback's name.
     """
@@ -136,7 +136,7 @@ class EnergyModel:
     openings : mapping of int to tuple of Opening
         Zone index -> its real windows and doors (LoD3 input; none on a simpler envelope).
     party : mapping
-        Shared faces (:func:`~lod2energy.exporters.energyplus.surfaces.find_party_faces`),
+        Shared faces (:func:`~lod2energy.energy.surfaces.find_party_faces`),
         none of a simpler envelope's.
     pieces : tuple of list of Piece
         Each zone's written pieces (empty for a neighbour's zones when the IDF has no shading).

@@ -1,6 +1,6 @@
 """The self-check of a written CityJSON document (``.json``), one building at a time.
 
-The same checks as on the whole document (:func:`lod2energy.exporters.cityjson.self_check`):
+The same checks as on the whole document (:func:`lod2energy.exporters.cityjson.writer.self_check`):
 the official schema of the file's version, the Energy extension's attributes, then every
 energy building re-read (as :func:`lod2energy.io.cityjson.read` reads it) and checked with
 val3dity's checks and the envelope checks. The file is read twice with a
@@ -40,7 +40,7 @@ from lod2energy.io import shape
 from lod2energy.io.json_stream import Scanner, StreamError
 from lod2energy.model import Building, FeatureError
 
-from .cityjson_schema import (
+from lod2energy.exporters.cityjson.schema import (
     EXTENSION_NAME, MAX_PROBLEMS, _schema_errors, _schema_valid_fast, _validators, _worth_compiling,
     extension_problems, extension_schema, load_extension_beside,
 )
@@ -338,7 +338,7 @@ def _feature(root: str, ids: list[str], cos: Mapping, verts: np.ndarray, transfo
 
 def self_check_document(path: str, extension: Mapping | None = None, tol=None) -> list[str]:
     """Problems of an exported CityJSON document (empty: the file is OK), read one
-    CityObject at a time; see :func:`lod2energy.exporters.cityjson.self_check`."""
+    CityObject at a time; see :func:`lod2energy.exporters.cityjson.writer.self_check`."""
     try:
         p = _first_pass(path, os.path.dirname(os.path.abspath(path)))
     except (OSError, UnicodeDecodeError) as e:
@@ -353,7 +353,7 @@ def self_check_document(path: str, extension: Mapping | None = None, tol=None) -
 
 def _check(path: str, p: _Pass1, extension: Mapping | None, tol) -> list[str]:
     from lod2energy.config import DEFAULT
-    from lod2energy.exporters.cityjson import TOLERATED_CODES, envelope_problems
+    from lod2energy.exporters.cityjson.writer import TOLERATED_CODES, envelope_problems
     from lod2energy.io import to_local_frame
     from lod2energy.validate.checks import validate_building
     from lod2energy.validate.codes import name

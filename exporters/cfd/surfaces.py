@@ -3,7 +3,7 @@
 Method, per building of the region (already validated, repaired and labelled):
 
 1. its solids (Building and BuildingParts) are triangulated by the STL exporter's functions
-   (:func:`lod2energy.exporters.zones.zone_shells`, ``stl._zone_mesh``), every triangle keeping
+   (:func:`lod2energy.energy.zones.shells.zone_shells`, ``stl._zone_mesh``), every triangle keeping
    its class (roof, wall, ground, floor);
 2. every vertex of its ground (bottom) faces is moved down to ``ground level - SINK`` so that
    the body goes through the domain floor: a building standing a little above the region's
@@ -115,8 +115,8 @@ def building_body(b, origin: np.ndarray, lod: str | None = None) -> BuildingBody
     ValueError
         The building has no solid, or one of its solids is not a closed 2-manifold.
     """
-    from lod2energy.exporters.zones import zone_shells
-    from lod2energy.exporters.stl import ZONE_WELD_TOL, _closed_by_position, _zone_mesh
+    from lod2energy.energy.zones.shells import zone_shells
+    from lod2energy.exporters.stl.writer import ZONE_WELD_TOL, _closed_by_position, _zone_mesh
     import manifold3d as m3
 
     zs = zone_shells(b, origin, lod, weld_tol=ZONE_WELD_TOL)
@@ -225,7 +225,7 @@ def unite(bodies: list[BuildingBody], ground: float, min_gap: float = 0.0,
     ValueError
         The union is not a closed 2-manifold.
     """
-    from lod2energy.exporters.stl import merge_meshes
+    from lod2energy.exporters.stl.writer import merge_meshes
     import manifold3d as m3
 
     floor = ground - SINK if sink_to is None else float(sink_to)
@@ -245,7 +245,7 @@ def unite(bodies: list[BuildingBody], ground: float, min_gap: float = 0.0,
 
 def stl_text(v: np.ndarray, t: np.ndarray, codes: np.ndarray, names: tuple[str, ...]) -> str:
     """ASCII STL with one ``solid <name>`` per code present (the STL exporter's format)."""
-    from lod2energy.exporters.stl import ascii_solids
+    from lod2energy.exporters.stl.writer import ascii_solids
     return "".join(ascii_solids(v, t, codes, names))
 
 

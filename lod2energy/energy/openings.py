@@ -7,8 +7,8 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from ..polygons import _is_convex_2d, newell_normal, plane_basis, polygon_area3d, unit
-from ..zones import ZoneShell
+from lod2energy.exporters.polygons import _is_convex_2d, newell_normal, plane_basis, polygon_area3d, unit
+from lod2energy.energy.zones.shells import ZoneShell
 
 
 def window_for(piece: np.ndarray, wwr: float) -> np.ndarray | None:
