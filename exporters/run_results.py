@@ -17,9 +17,10 @@ floor area m2. A figure EnergyPlus did not give (no hourly rates, no floor area)
 from __future__ import annotations
 
 from collections.abc import Mapping
-from typing import Any, Iterable
+from typing import TYPE_CHECKING, Any, Iterable
 
-from lod2energy.model import Building
+if TYPE_CHECKING:
+    from lod2energy.model import Building
 
 #: Result key -> attribute name (per building; a zone's entry drops the ``+energy`` prefix
 #: and starts lower case).

@@ -206,7 +206,7 @@ def test_cli_arguments_and_options():
 
 def test_an_open_building_is_left_out_with_its_reason_and_the_case_goes_on(tmp_path):
     from factories import open_box
-    from lod2energy.exporters.cfd import export_case
+    from lod2energy.exporters.cfd.writer import export_case
     good = box(10, 10, 6, id="good")
     bad = _translated(open_box(id="bad"), 40, 0)
     before = good.vertices.copy()
@@ -221,7 +221,7 @@ def test_an_open_building_is_left_out_with_its_reason_and_the_case_goes_on(tmp_p
 
 
 def test_no_building_in_the_region_writes_nothing(tmp_path):
-    from lod2energy.exporters.cfd import export_case
+    from lod2energy.exporters.cfd.writer import export_case
     res = export_case([box()], None, tmp_path, CfdOptions(region=(500.0, 500.0, 600.0, 600.0)))
     assert not res.ok and res.path == "" and "no building in the region" in res.problems[0]
     assert not (tmp_path / "cfd").exists()

@@ -289,7 +289,7 @@ def test_self_check_needs_no_shared_folder():
     for v in ("10", "11", "20"):
         assert (d / "extensions" / v / "energy.ext.json").is_file()
         assert any(f.name.startswith("cityjson") for f in (d / "schemas" / "cityjson" / v).iterdir())
-    assert "shared" not in str(Path(str(d)).resolve().relative_to(Path(X.__file__).resolve().parents[1]))
+    assert "shared" not in str(Path(str(d)).resolve().relative_to(Path(X.__file__).resolve().parents[2]))
 
 
 @pytest.mark.parametrize("v", ("11", "20"))

@@ -21,6 +21,7 @@ from lod2energy.exporters import energyplus
 from lod2energy.errors import ParameterError
 from lod2energy.exporters import energyplus, polygons
 from lod2energy.energy import model as energy_model
+from lod2energy.energy import parts as energy_parts
 
 
 @pytest.fixture(autouse=True)
@@ -285,9 +286,9 @@ def test_real_buildings_pass_self_check(tmp_path, rel, multipart, n):
 def test_a_dormer_without_a_floor_joins_the_zone_it_sits_on(tmp_path):
     house, ht, dormer, dt = steep_house_with_dormer()
     b = energy_ready(parts_with_semantics([(house, ht), (dormer, dt)]))
-    assert energy_model.floorless_parts(b) == ["dormer_house-part1"]
-    merged, notes = energy_model.merge_floorless_parts(b)
-    assert energy_model.floorless_parts(merged) == [] and "united with dormer_house-part0" in notes[0]
+    assert energy_parts.floorless_parts(b) == ["dormer_house-part1"]
+    merged, notes = energy_parts.merge_floorless_parts(b)
+    assert energy_parts.floorless_parts(merged) == [] and "united with dormer_house-part0" in notes[0]
     assert [o.id for o, _, _ in merged.energy_objects()] == ["dormer_house-part0"]
     assert [o.id for o, _, _ in b.energy_objects()] == ["dormer_house-part0", "dormer_house-part1"]  # input kept
     res = energyplus.writer.write([b], tmp_path)
@@ -300,7 +301,7 @@ def test_a_floorless_part_that_touches_nothing_is_left_out():
     house, ht, dormer, dt = steep_house_with_dormer()
     lifted = [[(x, y, z + 20) for x, y, z in r] for r in dormer]
     b = energy_ready(parts_with_semantics([(house, ht), (lifted, dt)]))
-    merged, notes = energy_model.merge_floorless_parts(b)
+    merged, notes = energy_parts.merge_floorless_parts(b)
     assert [o.id for o, _, _ in merged.energy_objects()] == ["dormer_house-part0"]
     assert "left out of the IDF" in notes[0]
 

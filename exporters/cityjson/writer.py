@@ -56,6 +56,7 @@ from lod2energy.exporters.cityjson.schema import (  # noqa: F401 - the schema he
 )
 from lod2energy.exporters.cityjson.terrain import is_terrain, n_faces, prepare_terrain, terrain_problem
 from lod2energy.exporters.cityjson.version import fix_cityobject, fix_document, fix_header, model_for  # noqa: F401
+from lod2energy.exporters.registry import as_sequence, register_writer
 from lod2energy.exporters.result import ExportResult
 from lod2energy.exporters.run_results import result_attributes
 
@@ -234,9 +235,9 @@ def write(path: str, model: CityModel, buildings: Iterable[Building], version: s
     if problems:
         return ExportResult(ids, target, False,
                             tuple(problems) + (f"failed its self-check: kept as {base}{INVALID_SUFFIX}",),
-                            version=version, skipped=tuple(skipped), extension_path=ext_path, notes=tuple(notes),
+                            version=version, skipped=tuple(skipped), sidecars=(ext_path,), notes=tuple(notes),
                             terrain=tuple(terrain))
-    return ExportResult(ids, path, True, (), version=version, skipped=tuple(skipped), extension_path=ext_path,
+    return ExportResult(ids, path, True, (), version=version, skipped=tuple(skipped), sidecars=(ext_path,),
                         notes=tuple(notes), terrain=tuple(terrain))
 
 
@@ -341,3 +342,18 @@ def self_check(path: str, extension: Mapping | None = None, tol=None) -> list[st
         if len(problems) > MAX_PROBLEMS:
             break
     return problems[:MAX_PROBLEMS]
+
+
+def _write(buildings, outdir, options, *, model=None, stem="out", tol=None, **_):
+    """One CityJSON for all ``buildings``: a record for each Building, written or left out; the
+    input's terrain (TINRelief) it carries and other objects left out get none."""
+    buildings = as_sequence(buildings)
+    res = write(os.path.join(str(outdir), f"{stem}.energy.city.json"), model, buildings,
+                version=options.version if options is not None else None, tol=tol)
+    heads = getattr(buildings, "heads", None) or [(b.id, b.type) for b in buildings]
+    out = {str(t[0]) for t in res.terrain} | {bid for bid, _ in res.skipped}
+    return [replace(res, given=tuple(bid for bid, btype in heads if btype == "Building" or bid not in out))]
+
+
+# after the IDF: the CityJSON carries the results of its EnergyPlus runs (exporters.run_results)
+register_writer("cityjson", _write, self_check, scope="dataset")

@@ -40,4 +40,4 @@ without case) and at most 100 characters; ids in comments are JSON-escaped on on
 
 # the modules, so that ``energyplus.writer.write``, ``energyplus.run.binary`` ... are reachable
 # from the package
-from . import check, constructions, idd, names, options, render, run, site, writer  # noqa: F401
+from lod2energy.exporters.energyplus import check, constructions, idd, names, options, render, run, site, writer  # noqa: F401

@@ -17,8 +17,10 @@ from lod2energy import safe_write
 from lod2energy.errors import ParameterError
 from lod2energy.model import Building
 from lod2energy.energy import model as energy_model
+from lod2energy.energy.model import with_energy_model
 from lod2energy.exporters.paths import not_written, output_path, safe_stem, set_aside_failed
 from lod2energy.exporters.polygons import polygon_area3d
+from lod2energy.exporters.registry import register_writer
 from lod2energy.exporters.result import ExportResult
 from lod2energy.energy.zones.shells import local_origin
 from lod2energy.exporters.energyplus.check import self_check
@@ -219,3 +221,19 @@ def _shading_for(bi: int, blist, bboxes, zones, zones_of, party, radius: float) 
                 pts, ends, n, c = _face_frame(z, f)
                 out.extend(p for p in _pieces_from_points(pts, ends, n, c) if polygon_area3d(p) > 0.01)
     return out
+
+
+def _scope(options) -> str:
+    return "dataset" if options.mode == "dataset" else "context"
+
+
+def _halo(options) -> float:
+    # party walls are faces within a few cm of each other; shading reaches shading_radius
+    return float(options.shading_radius) if options.shading else 1.0
+
+
+def _write(buildings, outdir, options, *, crs=None, context=(), frame=None, **_):
+    return write(buildings, outdir, options, crs=crs, context=context, frame=frame)
+
+
+register_writer("idf", _write, self_check, scope=_scope, halo=_halo, prepare=with_energy_model)

@@ -30,6 +30,8 @@ from typing import Any, Iterable, Mapping, Sequence
 
 import numpy as np
 
+from lod2energy.exporters.registry import register_writer
+from lod2energy.exporters.result import ExportResult
 from lod2energy.model import Building
 
 #: Decimal places of the coordinates (1e-8 degree is about 1 mm).
@@ -43,32 +45,6 @@ MIN_AREA = 0.01
 RUN_KEYS = ("heating_kwh", "cooling_kwh", "heating_kwh_m2", "cooling_kwh_m2", "heating_peak_w",
             "cooling_peak_w", "conditioned_floor_area_m2")
 SUFFIX = ".footprints.geojson"
-
-
-@dataclass(frozen=True)
-class GeoJsonResult:
-    """What :func:`write` did.
-
-    Attributes
-    ----------
-    path : str
-    ok : bool
-        Written and self-checked.
-    problems : tuple of str
-    building_ids : tuple of str
-        The buildings that have a Feature.
-    left_out : mapping of str to str
-        Building id -> why it has no Feature (no footprint, not placeable on the Earth).
-    seen : tuple of (str, str)
-        ``(id, type)`` of every building given, in order (with a Feature or left out).
-    """
-
-    path: str
-    ok: bool
-    problems: tuple[str, ...] = ()
-    building_ids: tuple[str, ...] = ()
-    left_out: Mapping[str, str] = None  # type: ignore[assignment]
-    seen: tuple[tuple[str, str], ...] = ()
 
 
 # ----------------------------------------------------------------------------- footprint
@@ -231,7 +207,7 @@ def properties(b: Building, record=None, use: str | None = None, lod: str | None
 
 def write(buildings: Iterable[Building], path: str | os.PathLike, *, crs: Any = None, frame=None,
           records: Sequence | None = None, use: str | None = None, lod: str | None = None, run: bool = False,
-          root: str | os.PathLike | None = None) -> GeoJsonResult:
+          root: str | os.PathLike | None = None) -> ExportResult:
     """Write the footprints of ``buildings`` to ``path`` and self-check the file.
 
     Parameters
@@ -262,7 +238,7 @@ def write(buildings: Iterable[Building], path: str | os.PathLike, *, crs: Any = 
         for b in buildings:
             if not b.is_building:
                 continue
-            seen.append((str(b.id), b.type))
+            seen.append(str(b.id))
             try:
                 geom = footprint_geometry(b, crs, frame, lod)
             except SiteError as e:
@@ -278,7 +254,8 @@ def write(buildings: Iterable[Building], path: str | os.PathLike, *, crs: Any = 
             ids.append(str(b.id))
         f.write("]}\n")
     problems = self_check(str(path), n_features=len(ids))
-    return GeoJsonResult(str(path), not problems, tuple(problems), tuple(ids), left_out, tuple(seen))
+    return ExportResult(tuple(ids), str(path), not problems, tuple(problems), None, given=tuple(seen),
+                        skipped=tuple(left_out.items()))
 
 
 def _dumps(x) -> str:
@@ -365,3 +342,15 @@ def _feature_problems(path: str, i: int, ft) -> list[str]:
         from shapely.validation import explain_validity
         bad.append(f"{where}: invalid polygon: {explain_validity(shape(g))}")
     return bad[:1]
+
+
+def _write(buildings, outdir, options, *, crs=None, frame=None, records=None, stem="out", **_):
+    """``OUTDIR/<stem>.footprints.geojson``: the footprints (WGS84) with the buildings' records;
+    ``options`` are the IDF options (``use``, ``lod``, ``run``: the figures of the energy model)."""
+    path = os.path.join(str(outdir), f"{stem}{SUFFIX}")
+    return [write(buildings, path, crs=crs, frame=frame, records=records, use=getattr(options, "use", None),
+                  lod=getattr(options, "lod", None), run=bool(getattr(options, "run", False)), root=outdir)]
+
+
+# after "idf": the footprints carry the run figures of the IDF pass
+register_writer("geojson", _write, self_check, scope="dataset", records=True)

@@ -26,7 +26,9 @@ from lod2energy.geometry import collapse_short_edges  # noqa: F401 - re-exported
 from lod2energy.geometry import triangle_areas, triangle_normals
 from lod2energy.model import BUILDING_TYPES, Building
 
+from lod2energy.energy.parts import united_input_parts
 from lod2energy.exporters.paths import not_written, output_path, safe_stem
+from lod2energy.exporters.registry import register_writer
 from lod2energy.exporters.result import ExportResult
 from lod2energy.exporters.stl.rows import row_keys, same_position, unique_rows
 from lod2energy.exporters.shellcheck import signed_volume
@@ -473,7 +475,8 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: StlOptions
                  "volume_m3": round(signed_volume(v, t), 3) if len(t) else 0.0}
         try:  # the STL self-checked on its staged temporary: a failed one never gets the good name
             # its folder is synced after the STL's rename, just below (write_checked)
-            safe_write.write_text(output_path(out, stem, ".json"), json.dumps(sidecar, indent=1), root=out,
+            sidecar_path = output_path(out, stem, ".json")
+            safe_write.write_text(sidecar_path, json.dumps(sidecar, indent=1), root=out,
                                   sync_folder=False)
             final, problems = safe_write.write_checked(
                 path, lambda f: (write_ascii if options.ascii else write_binary)(f, v, t, c), self_check,
@@ -486,7 +489,8 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: StlOptions
             problems = list(problems) + [f"failed its self-check: kept as {Path(final).name}" if final
                                          else "failed its self-check: removed"]
         results.append(ExportResult(tuple(b.id for b in g), final, not problems, tuple(problems),
-                                    tuple(float(x) for x in offset), tuple(warnings), stats))
+                                    tuple(float(x) for x in offset), tuple(warnings), stats,
+                                    sidecars=(str(sidecar_path),)))
     return results
 
 
@@ -564,3 +568,11 @@ def self_check(path: str | Path) -> list[str]:
     if len(set(codes.tolist())) and not names:
         problems.append("no patch names")
     return problems
+
+
+def _write(buildings, outdir, options, *, crs=None, **_):
+    return write(buildings, outdir, options, crs=crs)
+
+
+register_writer("stl", _write, self_check, scope=lambda options: "dataset" if options.mode == "dataset" else "building",
+                prepare=united_input_parts)

@@ -3,8 +3,8 @@
 The last stage before the EnergyPlus writer, for the IDF only: the STL and CityJSON writers
 keep the Building's own geometry. In the order of the work:
 
-1. floorless parts (:func:`floorless_parts`: a dormer whose underside follows a roof steeper
-   than 60 degrees) united with the part they sit on, or left out (:func:`merge_floorless_parts`);
+1. floorless parts (:func:`~lod2energy.energy.parts.floorless_parts`: a dormer whose underside follows a roof steeper
+   than 60 degrees) united with the part they sit on, or left out (:func:`~lod2energy.energy.parts.merge_floorless_parts`);
 2. one zone shell per Building/BuildingPart (:func:`lod2energy.energy.zones.shells.zone_shells`)
    in the writer's local frame, the real windows and doors split off (LoD3), the party walls
    found and each zone's written pieces cut (:mod:`lod2energy.energy.surfaces`);
@@ -33,60 +33,11 @@ from lod2energy.energy.enclosure import enclosure_defects
 from lod2energy.energy.openings import Opening, split_openings
 from lod2energy.energy.pieces import Piece
 from lod2energy.energy.surfaces import find_party_faces, zone_pieces
-from lod2energy.energy.zones.storeys import FLOOR_NZ
-from lod2energy.exporters.polygons import newell_normal, unit
+from lod2energy.energy.parts import merge_floorless_parts
 from lod2energy.exporters.shellcheck import check_closed_outward
 from lod2energy.energy.zones.shells import COLLINEAR_TOL, local_origin, zone_shells, ZoneShell
 from lod2energy.model import BUILDING_TYPES, Building, frozen_mapping
-from lod2energy.repair.parts import merge_parts, touching_part, without_geometry
 from lod2energy.energy.fallback import FALLBACKS
-
-def floorless_parts(b: Building, lod: str | None = None) -> list[str]:
-    """BuildingParts of ``b`` without a face EnergyPlus can take as a floor (n_z < ``FLOOR_NZ``).
-
-    Typically a dormer or roof superstructure modelled as its own part, whose underside
-    follows a roof steeper than 60 degrees.
-    """
-    out = []
-    for o, _, g in b.energy_objects(lod):
-        nz = [unit(newell_normal(b.vertices[list(s.rings[0])]))[2] for *_, s in g.iter_surfaces()]
-        if o.type == "BuildingPart" and nz and not min(nz) < FLOOR_NZ:
-            out.append(o.id)
-    return out
-
-
-def merge_floorless_parts(b: Building, lod: str | None = None) -> tuple[Building, list[str]]:
-    """``b`` with no floorless part (:func:`floorless_parts`) left as a zone of its own.
-
-    A dormer is no separately conditioned zone, and EnergyPlus cannot distribute solar gains
-    in a zone without a floor. Its solid is united with the part it sits on when the union
-    is a valid solid (the repair ladder's criterion); otherwise it is left out of the IDF
-    (such parts are small: their underside follows a roof steeper than 60 degrees), and the
-    roof under it is then written as an outdoor roof. A union keeps its host's floor, so one
-    pass over the floorless parts suffices.
-
-    Returns
-    -------
-    building : Building
-        For the IDF only; the other exports keep the parts.
-    warnings : list of str
-    """
-    lod = lod if lod is not None else b.default_lod()
-    warnings: list[str] = []
-    for pid in floorless_parts(b, lod):
-        host = touching_part(b, pid, lod)
-        merged = merge_parts(b, {pid, host}, lod=lod, into=host) if host else b
-        if merged is not b:
-            b = merged
-            warnings.append(f"part {pid} has no surface EnergyPlus can take as a floor: united with {host} "
-                            "into one zone")
-        else:
-            b = without_geometry(b, {pid}, lod)
-            warnings.append(f"part {pid} has no surface EnergyPlus can take as a floor (none faces down more "
-                            "than 30 degrees past vertical) and no valid union with the part it sits on: left "
-                            "out of the IDF")
-    return b, warnings
-
 
 def _fallback_name(make) -> str:
     if isinstance(make, partial):
