@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from lod2energy import cache
 from lod2energy.energy import enclosure
 from lod2energy.energy.conform import keep_corners
 from lod2energy.energy.pieces import Piece, _as_written
@@ -62,7 +63,7 @@ def test_enclosure_verdicts_remembered_are_the_computed_ones():
         [[0, 0, 0], [1, 0, 0], [1, 0, 1], [0, 0, 1]], [[1, 0, 0], [1, 1, 0], [1, 1, 1], [1, 0, 1]],
         [[1, 1, 0], [0, 1, 0], [0, 1, 1], [1, 1, 1]], [[0, 1, 0], [0, 0, 0], [0, 0, 1], [0, 1, 1]])]
     zones += [box, box[:-1]]
-    enclosure._DEFECTS_MEMO.clear()
+    cache.clear(enclosure.DEFECTS)
     for z in zones + zones:
         got = enclosure.enclosure_defects([q.copy() for q in z])
         exp = enclosure._enclosure_defects([np.asarray(q, dtype=np.float64) for q in z], enclosure.POINT_TOL)
@@ -73,7 +74,7 @@ def test_enclosure_verdicts_remembered_are_the_computed_ones():
     assert enclosure.enclosure_defects(box) == [] and enclosure.enclosure_defects(box[:-1])
     # the same values in another frame or tolerance are another key
     assert enclosure.enclosure_defects([q + 1e-3 for q in box[:-1]], 0.0127)
-    assert 0 < len(enclosure._DEFECTS_MEMO) <= enclosure._DEFECTS_MEMO_SIZE
+    assert 0 < cache.sizes()[enclosure.DEFECTS][0] <= enclosure.DEFECTS_KEPT
 
 
 def test_vertices_and_degenerate_together_as_apart():

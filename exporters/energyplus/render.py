@@ -8,6 +8,7 @@ from typing import Sequence
 
 import numpy as np
 
+from lod2energy import cache
 from lod2energy.errors import ExportError
 from lod2energy.exporters.polygons import _norm, newell_normal, polygon_area3d, unit
 from lod2energy.energy.zones.shells import ZoneShell
@@ -64,15 +65,7 @@ def _upper_left_first_ref(points: np.ndarray, n: np.ndarray) -> np.ndarray:
 
 def _fmt(x: float, nd: int = WRITE_DECIMALS) -> str:
     s = f"{x:.{nd}f}"
-    zeros = _ZEROS.get(nd)
-    if zeros is None:
-        zeros = _ZEROS[nd] = ("-0." + "0" * nd, "0." + "0" * nd)
-    return "0" if s in zeros else s.rstrip("0").rstrip(".")
-
-
-#: ``("-0.000", "0.000")`` by number of decimals: the texts :func:`_fmt` writes as "0" (built
-#: once, not per number; a pure function of ``nd``, so never stale).
-_ZEROS: dict[int, tuple[str, str]] = {}
+    return "0" if s.lstrip("-") == "0." + "0" * nd else s.rstrip("0").rstrip(".")
 
 
 def _vertex_lines(points: np.ndarray) -> list[str]:
@@ -82,25 +75,21 @@ def _vertex_lines(points: np.ndarray) -> list[str]:
     # a coordinate is written by every surface at that vertex: its text is remembered by its
     # value (a pure function of the Python float; 0.0 and -0.0, the only equal floats of
     # different bits, both write "0")
-    memo = _COORD_TEXT
-    if len(memo) > _COORD_TEXT_SIZE:
-        memo.clear()
     out = []
     for row in points.tolist():
         t = []
         for x in row:
-            s = memo.get(x)
+            s = cache.recall(COORD_TEXT, x)
             if s is None:
-                s = memo[x] = _fmt(x)
+                s = cache.keep(COORD_TEXT, x, _fmt(x), COORD_TEXT_KEPT)
             t.append(s)
         out.append(", ".join(t))
     return out
 
 
-#: Texts of coordinates written with :data:`WRITE_DECIMALS` decimals, by value (emptied when
-#: it holds more than :data:`_COORD_TEXT_SIZE`).
-_COORD_TEXT: dict[float, str] = {}
-_COORD_TEXT_SIZE = 1 << 16
+#: The :mod:`lod2energy.cache` table of coordinate texts (:data:`WRITE_DECIMALS` decimals) by value.
+COORD_TEXT = "idf.coordinate_text"
+COORD_TEXT_KEPT = 1 << 16
 
 
 def _vertex_block(points: np.ndarray) -> dict:
@@ -360,16 +349,7 @@ def _use_ctx(uc) -> dict:
     key = (uc.use, uc.teaser_entry, uc.people_per_m2, uc.activity_w_per_person, uc.sensible_fraction,
            uc.lighting_w_per_m2, uc.equipment_w_per_m2, uc.ventilation_m3h_per_m2,
            tuple((k, tuple(v)) for k, v in uc.schedules.items()))
-    hit = _USE_CTX.get(key)
-    if hit is None:
-        if len(_USE_CTX) >= 64:
-            _USE_CTX.clear()
-        hit = _USE_CTX[key] = _use_ctx_of(uc)
-    return hit
-
-
-#: :func:`_use_ctx` by the values of its use conditions.
-_USE_CTX: dict[tuple, dict] = {}
+    return cache.remember("idf.use_fields", key, lambda: _use_ctx_of(uc), 64)
 
 
 def _use_ctx_of(uc) -> dict:

@@ -26,12 +26,12 @@ The steps follow EnergyPlus 9-25:
 from __future__ import annotations
 
 import math
-import threading
 from dataclasses import dataclass
 from typing import Sequence
 
 import numpy as np
 
+from lod2energy import cache
 from lod2energy.exporters.polygons import polygon_area3d
 from lod2energy.exporters.weld import weld
 
@@ -442,12 +442,11 @@ def _insert_collinear(face: np.ndarray, uniq: np.ndarray, tol: float) -> np.ndar
     return pts
 
 
-#: Verdicts of :func:`enclosure_defects` by the exact content of its input (the writer tests
-#: a zone's pieces in :func:`conform.eplus_enclose`, then the same values again in
-#: :func:`model.enclosable`); a pure function of the vertex bits, so never stale.
-_DEFECTS_MEMO: dict[tuple, list[BadEdge]] = {}
-_DEFECTS_MEMO_SIZE = 64
-_DEFECTS_LOCK = threading.Lock()
+#: The :mod:`lod2energy.cache` table of :func:`enclosure_defects`' verdicts, by the exact content
+#: of its input (a zone's pieces are tested in :func:`conform.eplus_enclose`, then the same values
+#: again in :func:`model.enclosable`), and its size.
+DEFECTS = "energy.enclosure_defects"
+DEFECTS_KEPT = 64
 
 
 def enclosure_defects(surfaces: Sequence[np.ndarray], tol: float = POINT_TOL) -> list[BadEdge]:
@@ -468,14 +467,7 @@ def enclosure_defects(surfaces: Sequence[np.ndarray], tol: float = POINT_TOL) ->
     """
     arrs = [np.asarray(s, dtype=np.float64) for s in surfaces]
     key = (float(tol),) + tuple((a.shape, a.tobytes()) for a in arrs)
-    found = _DEFECTS_MEMO.get(key)
-    if found is None:
-        found = _enclosure_defects(arrs, tol)
-        with _DEFECTS_LOCK:
-            if len(_DEFECTS_MEMO) >= _DEFECTS_MEMO_SIZE:
-                _DEFECTS_MEMO.pop(next(iter(_DEFECTS_MEMO)), None)  # the oldest
-            _DEFECTS_MEMO[key] = found
-    return list(found)
+    return list(cache.remember(DEFECTS, key, lambda: _enclosure_defects(arrs, tol), DEFECTS_KEPT))
 
 
 def _enclosure_defects(arrs: list[np.ndarray], tol: float) -> list[BadEdge]:

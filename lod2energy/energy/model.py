@@ -21,13 +21,16 @@ the IDF writer writes that model as it is (:func:`model_of`).
 """
 from __future__ import annotations
 
-from collections import OrderedDict
+import hashlib
+import pickle
+from collections.abc import Mapping
 from dataclasses import dataclass, replace
 from functools import partial
-from collections.abc import Mapping
 from typing import Iterable, Sequence
 
 import numpy as np
+
+from lod2energy import cache
 
 from lod2energy.energy.enclosure import enclosure_defects
 from lod2energy.energy.openings import Opening, split_openings
@@ -134,10 +137,10 @@ def _neighbours(own: Sequence[Building], context: Iterable[Building], lod: str |
     return [b for b in _energy_buildings(context, lod) if b.id not in own_ids]
 
 
-#: Neighbours' zones a process keeps (least recently used dropped first): a building is the
-#: neighbour of ~3.8 others in Den Haag, whose jobs often run in the same worker.
+#: Neighbours' zones a process keeps (:mod:`lod2energy.cache` table :data:`NEIGHBOUR_ZONES`): a
+#: building is the neighbour of ~3.8 others in Den Haag, whose jobs often run in the same worker.
+NEIGHBOUR_ZONES = "energy.neighbour_zones"
 NEIGHBOUR_ZONES_KEPT = 64
-_NEIGHBOUR_ZONES: "OrderedDict[bytes, tuple]" = OrderedDict()
 
 
 def _neighbour_zones(b: Building, lod: str | None, wwr) -> tuple[Building, list[str], tuple]:
@@ -152,19 +155,13 @@ def _neighbour_zones(b: Building, lod: str | None, wwr) -> tuple[Building, list[
     per worker, not once each. Moved, a vertex differs from one made in the job's frame by
     ~1e-14 m, far below the party faces' 5 cm plane tolerance and the 1 mm weld.
     """
-    import hashlib
-    import pickle
-    k = hashlib.blake2b(pickle.dumps((b, lod, wwr), protocol=pickle.HIGHEST_PROTOCOL), digest_size=20).digest()
-    hit = _NEIGHBOUR_ZONES.get(k)
-    if hit is None:
+    def make():
         mb, notes = merge_floorless_parts(b, lod)
         o = local_origin([mb])
-        hit = (mb, notes, (o, tuple(zone_shells(mb, o, lod, wwr=wwr, collinear_tol=COLLINEAR_TOL))))
-        _NEIGHBOUR_ZONES[k] = hit
-        while len(_NEIGHBOUR_ZONES) > NEIGHBOUR_ZONES_KEPT:
-            _NEIGHBOUR_ZONES.popitem(last=False)
-    else:
-        _NEIGHBOUR_ZONES.move_to_end(k)
+        return mb, notes, (o, tuple(zone_shells(mb, o, lod, wwr=wwr, collinear_tol=COLLINEAR_TOL)))
+
+    k = hashlib.blake2b(pickle.dumps((b, lod, wwr), protocol=pickle.HIGHEST_PROTOCOL), digest_size=20).digest()
+    hit = cache.remember(NEIGHBOUR_ZONES, k, make, NEIGHBOUR_ZONES_KEPT)
     return hit[0], list(hit[1]), hit[2]
 
 
@@ -254,15 +251,26 @@ def with_energy_model(buildings: Iterable[Building], options, context: Iterable[
 
 def model_of(buildings: Iterable[Building], options, context: Iterable[Building] = ()) -> EnergyModel | None:
     """The energy model the writer writes: the one the stage recorded in the buildings'
-    provenance when it was made for these buildings, neighbours and options, else made now
-    (a direct call of the writer, without the pipeline) the same way."""
+    provenance, or, when they carry none (the writer called without the pipeline), the
+    stage's model made now.
+
+    Raises
+    ------
+    ValueError
+        The buildings carry a model made for other buildings, neighbours or options: the
+        writer writes the model it is given, never one of its own.
+    """
     own = _energy_buildings(buildings, options.lod)
     if not own:
         return None
     entries = [b.provenance.get("energy_model") for b in own]
+    if all(e is None for e in entries):
+        return prepare_energy_model(own, options, context)
     models = {id(e["model"]): e["model"] for e in entries if isinstance(e, Mapping) and "model" in e}
-    if len(models) == 1 and all(isinstance(e, Mapping) for e in entries):
-        model = next(iter(models.values()))
-        if model.key == _key(own, _neighbours(own, context, options.lod), options):
-            return model
-    return prepare_energy_model(own, options, context)
+    if len(models) != 1 or not all(isinstance(e, Mapping) for e in entries):
+        raise ValueError("the buildings carry no one energy model: run with_energy_model on them together")
+    model = next(iter(models.values()))
+    if model.key != _key(own, _neighbours(own, context, options.lod), options):
+        raise ValueError("the buildings' energy model was made for other buildings, neighbours or options: "
+                         "run with_energy_model again")
+    return model
