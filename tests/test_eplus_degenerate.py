@@ -94,7 +94,7 @@ def test_self_check_flags_every_surface_energyplus_calls_degenerate(tmp_path):
 
 def test_a_sliver_triangle_8_mm_wide_is_degenerate_for_both(tmp_path):
     tri = np.array([[10, 0.008, 0.0], [10, 0, 0], [0, 0, 0]])
-    assert eplus_degenerate(tri)
+    assert eplus_degenerate([tri])[0]
     base = energyplus.writer.write([energy_ready(box())], tmp_path / "base", energyplus.options.IdfOptions())[0]
     text = Path(base.path).read_text()
     zone = re.search(r"^Zone, ([^,]+),", text, re.M).group(1)

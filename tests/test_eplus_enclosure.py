@@ -173,13 +173,13 @@ def _stepped_wall(lean: float) -> np.ndarray:
 def test_energyplus_finds_collinear_points_in_its_projection_plane():
     from lod2energy.energy.enclosure import eplus_collinear, eplus_vertices
     # 0.04 degrees off vertical: EnergyPlus projects on XY, where the step's corner is collinear
-    assert eplus_collinear(_stepped_wall(0.002)) == [1]
-    assert len(eplus_vertices(_stepped_wall(0.002))) == 4
+    assert eplus_collinear([_stepped_wall(0.002)])[0] == [1]
+    assert len(eplus_vertices([_stepped_wall(0.002)])[0]) == 4
     # exactly vertical: projected on XZ, the corner is a corner
-    assert eplus_collinear(_stepped_wall(0.0)) == []
+    assert eplus_collinear([_stepped_wall(0.0)])[0] == []
     # a point on a straight edge is dropped in either case
     straight = np.array([[0, 0, 0], [5, 0, 0], [10, 0, 0], [10, 0, 3], [0, 0, 3]], float)
-    assert eplus_collinear(straight) == [1]
+    assert eplus_collinear([straight])[0] == [1]
 
 
 def test_keep_corners_fans_a_piece_energyplus_would_strip():
@@ -188,7 +188,7 @@ def test_keep_corners_fans_a_piece_energyplus_would_strip():
     piece = energy.pieces.Piece(wall, "wall", "Outdoors", 1.0, 0)
     out = energy.conform.keep_corners([piece])
     assert len(out) == 5 and all(len(p.points) == 3 for p in out)
-    assert all(len(eplus_vertices(p.points)) == 3 for p in out)
+    assert all(len(eplus_vertices([p.points])[0]) == 3 for p in out)
     assert sum(polygon_area3d(p.points) for p in out) == pytest.approx(polygon_area3d(wall))
     # every corner of the wall is still written
     corners = np.vstack([p.points for p in out])
@@ -204,12 +204,12 @@ def test_energyplus_drops_a_spike_in_its_projection_plane():
     from lod2energy.energy.enclosure import eplus_collinear
     wall = np.array([[1.745, 7.698, 6.8552], [1.7326, 7.698, 6.8307], [1.745, 7.7156, 6.8153],
                      [1.745, 7.728, 6.8343]])
-    assert eplus_collinear(wall) == [3]
+    assert eplus_collinear([wall])[0] == [3]
     # a vertical edge projects to a point on XY: its ends have no turn there and are kept
     # (a real Delfshaven wall; EnergyPlus removed none of its vertices)
     vertical = np.array([[13.026, 23.851, 4.825], [20.599, 5.663, 0.0], [11.8, 26.798, 0.0],
                          [11.8, 26.798, 4.825]])
-    assert eplus_collinear(vertical) == []
+    assert eplus_collinear([vertical])[0] == []
     piece = energy.pieces.Piece(wall, "wall", "Outdoors", 1.0, 0)
     assert all(len(p.points) == 3 for p in energy.conform.keep_corners([piece]))
 
@@ -230,11 +230,11 @@ def test_triangle_collinear_in_projection_is_degenerate_for_energyplus():
     The writer fans it; the self-check flags such a surface."""
     from lod2energy.energy.enclosure import eplus_collinear, eplus_degenerate
     tri = np.array([[4.207, 18.371, 9.367], [7.1675, 31.623, 0.0], [4.209, 18.38, 0.0]])
-    assert eplus_collinear(tri) == [1]
-    assert eplus_degenerate(tri)
-    assert not eplus_degenerate(np.array([[0, 0, 0], [1, 0, 0], [0, 0, 1.0]]))
+    assert eplus_collinear([tri])[0] == [1]
+    assert eplus_degenerate([tri])[0]
+    assert not eplus_degenerate([np.array([[0, 0, 0], [1, 0, 0], [0, 0, 1.0]])])[0]
     out = energy.conform.keep_corners([energy.pieces.Piece(tri, "wall", "Outdoors", 1.0, 0)])
-    assert out and not any(eplus_degenerate(p.points) for p in out)
+    assert out and not any(eplus_degenerate([p.points])[0] for p in out)
 
 
 def test_out_of_plane_piece_is_written_as_triangles():

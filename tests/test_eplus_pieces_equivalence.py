@@ -86,8 +86,8 @@ def test_vertices_and_degenerate_together_as_apart():
               np.array([[0, 0, 0], [1, 0, 0], [0.5, 0.001, 0], [0.002, 0, 0]], float),
               np.array([[0, 0, 0], [0, 0, 0]], float), np.zeros((0, 3))]
     faces, degen = enclosure.eplus_vertices_and_degenerate(rings)
-    assert degen == enclosure.eplus_degenerate_many(rings) and any(degen) and not all(degen)
-    exp = enclosure.eplus_vertices_many(rings)
+    assert degen == enclosure.eplus_degenerate(rings) and any(degen) and not all(degen)
+    exp = enclosure.eplus_vertices(rings)
     assert len(faces) == len(exp)
     assert all(a.shape == b.shape and np.array_equal(a, b) for a, b in zip(faces, exp))
     zone = rings[:30]
@@ -140,8 +140,8 @@ def test_degenerate_given_collinear_same_verdicts():
     rings = _rings(np.random.default_rng(17))
     rings += [np.array([[0, 0, 0], [0.004, 0, 0], [0.008, 0.001, 0]], float),
               np.array([[0, 0, 0], [1, 0, 0], [0.5, 0.001, 0], [0.002, 0, 0]], float)]
-    got = _degenerate_given(rings, enclosure._collinear_many(rings))
-    assert got == enclosure.eplus_degenerate_many(rings) and any(got)
+    got = _degenerate_given(rings, enclosure.eplus_collinear(rings))
+    assert got == enclosure.eplus_degenerate(rings) and any(got)
 
 
 def _ref_find_party_faces(zones, plane_tol=0.05, min_area=0.01, angle_cos=0.985):
@@ -231,8 +231,8 @@ def test_drop_coincident_all_at_once_as_one_by_one():
         rings.append(q)
     rings += [np.zeros((0, 3)), np.zeros((1, 3)), np.array([[0, 0, 0], [np.nan, 0, 0], [1, 1, 0]])]
     for floor in (1, 3):
-        got = enclosure._drop_coincident_many(rings, floor)
-        exp = [enclosure._drop_coincident(q, floor) for q in rings]
+        got = enclosure._drop_coincident(rings, floor)
+        exp = [enclosure._drop_coincident_one(q, floor) for q in rings]
         for a, b in zip(got, exp):
             assert a.shape == b.shape and np.array_equal(a, b, equal_nan=True)
     assert sum(len(a) < len(q) for a, q in zip(got, rings)) > 20  # some vertices were dropped

@@ -152,10 +152,9 @@ def test_batched_collinear_test_is_the_single_one():
             p *= 1e-2 * rng.random()  # around PLANE_DET
         rings.append(p)
     rings += [r for r in _rings(rng, 60)]
-    got = ee._collinear_many(rings)
+    got = ee.eplus_collinear(rings)
     assert got == [_ref_eplus_collinear(r) for r in rings]
     assert any(got) and not all(got)
-    assert [ee.eplus_collinear(r) for r in rings] == got
 
 
 # ---------------------------------------------------------------- session 22, second wave
@@ -253,14 +252,14 @@ def _ref_keep_corners(pieces, tol=1e-3):
     out = []
     for p in pieces:
         q = p.points
-        lost = [i for i in eplus_collinear(q) if not _on_line(q[i - 1], q[(i + 1) % len(q)], q[i], tol)]
-        if not lost and not eplus_degenerate(q) and (len(q) == 3 or _planar_dev(q) <= PIECE_PLANAR):
+        lost = [i for i in eplus_collinear([q])[0] if not _on_line(q[i - 1], q[(i + 1) % len(q)], q[i], tol)]
+        if not lost and not eplus_degenerate([q])[0] and (len(q) == 3 or _planar_dev(q) <= PIECE_PLANAR):
             out.append(p)
             continue
         c = np.round(q.mean(axis=0), WRITE_DECIMALS)
         for i in range(len(q)):
             tri = np.array([c, q[i], q[(i + 1) % len(q)]])
-            if polygon_area(tri) > 1e-9 and not eplus_degenerate(tri):
+            if polygon_area(tri) > 1e-9 and not eplus_degenerate([tri])[0]:
                 out.append(replace(p, points=tri))
     return out
 

@@ -14,7 +14,7 @@ from lod2energy.geometry import split_at_points
 from lod2energy.exporters.shellcheck import check_closed_outward
 from lod2energy.exporters.weld import weld
 from lod2energy.energy.zones.shells import MIN_PIECE_AREA
-from lod2energy.energy.enclosure import (_collinear_many, _drop_coincident_many, enclosure_defects, eplus_degenerate_many, _on_line,
+from lod2energy.energy.enclosure import (eplus_collinear, _drop_coincident, enclosure_defects, eplus_degenerate, _on_line,
                         snap_polygons)
 from lod2energy.energy.pieces import WRITE_DECIMALS
 from lod2energy.energy.pieces import Piece, _planar_dev, _surely_planar
@@ -39,7 +39,7 @@ def keep_corners(pieces: list[Piece], tol: float = CORNER_TOL) -> list[Piece]:
     # EnergyPlus's collinear and degenerate tests batched over all pieces (the same verdicts
     # as eplus_collinear / eplus_degenerate of each one, bit for bit)
     rings = [np.asarray(p.points, dtype=np.float64) for p in pieces]
-    collinear = _collinear_many(rings)
+    collinear = eplus_collinear(rings)
     degenerate = _degenerate_given(rings, collinear)
     # the planarity test of the pieces with more than 3 vertices at once, where certain
     flat = iter(_surely_planar([q for q in rings if len(q) > 3], PIECE_PLANAR))
@@ -54,20 +54,20 @@ def keep_corners(pieces: list[Piece], tol: float = CORNER_TOL) -> list[Piece]:
         c = np.round(q.mean(axis=0), WRITE_DECIMALS)
         tris = [np.array([c, q[i], q[(i + 1) % len(q)]]) for i in range(len(q))]
         tris = [t for t in tris if polygon_area3d(t) > 1e-9]
-        for tri, bad in zip(tris, eplus_degenerate_many(tris)):
+        for tri, bad in zip(tris, eplus_degenerate(tris)):
             if not bad:
                 out.append(replace(p, points=tri))
     return out
 
 
 def _degenerate_given(rings: list[np.ndarray], collinear: list[list[int]]) -> list[bool]:
-    """:func:`enclosure.eplus_degenerate_many` of ``rings`` whose :func:`_collinear_many` is
+    """:func:`enclosure.eplus_degenerate` of ``rings`` whose :func:`eplus_collinear` is
     ``collinear``: the coincident test keeps every vertex of most rings, and then the
     collinear test it runs is that one (the same rows, the same verdicts)."""
-    keeps = _drop_coincident_many(rings, 1)
+    keeps = _drop_coincident(rings, 1)
     redo = [k for k, (q, kq) in enumerate(zip(rings, keeps)) if len(kq) != len(q)]
     cols = list(collinear)
-    for k, c in zip(redo, _collinear_many([keeps[k] for k in redo])):
+    for k, c in zip(redo, eplus_collinear([keeps[k] for k in redo])):
         cols[k] = c
     return [len(kq) - len(c) < 3 for kq, c in zip(keeps, cols)]
 
