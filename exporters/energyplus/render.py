@@ -6,20 +6,24 @@ from dataclasses import replace
 from pathlib import Path
 from typing import Sequence
 
+import jinja2
 import numpy as np
 
-from lod2energy import cache
-from lod2energy.errors import ExportError
-from lod2energy.exporters.polygons import _norm, newell_normal, polygon_area3d, unit
-from lod2energy.energy.zones.shells import ZoneShell
-from lod2energy.exporters.energyplus.constructions import construction_layers, _construction_name, INTERZONE_SLAB, _KIND_TYPE, MASS
-from lod2energy.exporters.energyplus.names import comment_text, _IDF_NAME_BAD, NameRegistry
+import lod2energy.templates as tpl
+from lod2energy import __version__, cache
 from lod2energy.energy.openings import Opening, opening_polygon, window_for
+from lod2energy.energy.pieces import Piece, WRITE_DECIMALS, _pieces_volume
+from lod2energy.energy.zones.shells import ZoneShell
+from lod2energy.energy.zones.storeys import ZoneInfo, with_floor
+from lod2energy.errors import ExportError
+from lod2energy.exporters.energyplus.constructions import (
+    INTERZONE_SLAB, MASS, _KIND_TYPE, _construction_name, construction_layers,
+)
+from lod2energy.exporters.energyplus.names import NameRegistry, _IDF_NAME_BAD, comment_text
 from lod2energy.exporters.energyplus.options import ATTIC_ACH, IdfOptions
-from lod2energy.energy.pieces import WRITE_DECIMALS
-from lod2energy.energy.pieces import Piece, _pieces_volume
 from lod2energy.exporters.energyplus.site import DEFAULT_SITE
-from lod2energy.energy.zones.storeys import with_floor, ZoneInfo
+from lod2energy.exporters.polygons import _norm, newell_normal, polygon_area3d, unit
+from lod2energy.thermal.use import use_conditions
 
 
 def upper_left_first(points: np.ndarray) -> np.ndarray:
@@ -108,9 +112,7 @@ _DICT_ATTRS = frozenset(dir(dict))
 
 @functools.lru_cache(maxsize=1)
 def _template():
-    import jinja2
 
-    import lod2energy.templates as tpl
 
     class _Environment(jinja2.Environment):
         """jinja2's environment whose ``{{ d.key }}`` on a plain dict reads the item directly.
@@ -119,7 +121,6 @@ def _template():
         names of its methods (a dict has no instance attributes), and only then ``d["key"]``:
         the template's fields were an AttributeError raised and caught each. The same values
         (method names and missing keys go the default way)."""
-
         def getattr(self, obj, attribute):
             if type(obj) is dict and attribute not in _DICT_ATTRS:
                 try:
@@ -161,8 +162,6 @@ def render_idf(zones: Sequence[ZoneShell], pieces: Sequence[list[Piece]], delta:
     stats : dict
     warnings : list of str
     """
-    from lod2energy import __version__
-
     reg = NameRegistry()
     warnings: list[str] = []
     constructions: dict[str, dict] = {}
@@ -193,7 +192,6 @@ def render_idf(zones: Sequence[ZoneShell], pieces: Sequence[list[Piece]], delta:
               "conditioned": conditioned, "use": None, "infiltration": None,
               "building": info.building_id if info is not None else z.building_id}
         if options.use_loads and info is not None:
-            from lod2energy.thermal.use import use_conditions
             if conditioned:
                 uc = use_conditions(info.use)
                 uses[uc.use] = uc

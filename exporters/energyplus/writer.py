@@ -13,24 +13,25 @@ from typing import Iterable
 
 import numpy as np
 
-from lod2energy import safe_write
-from lod2energy.errors import ParameterError
-from lod2energy.model import Building
+from lod2energy import safe_write, site as site_mod
 from lod2energy.energy import model as energy_model
 from lod2energy.energy.model import with_energy_model
+from lod2energy.energy.pieces import _face_frame, _pieces_from_points
+from lod2energy.energy.surfaces import zone_pieces
+from lod2energy.energy.zones.shells import local_origin
+from lod2energy.energy.zones.storeys import _written_zones
+from lod2energy.errors import ParameterError
+from lod2energy.exporters.energyplus.check import self_check
+from lod2energy.exporters.energyplus.options import IdfOptions
+from lod2energy.exporters.energyplus.render import render_idf
+from lod2energy.exporters.energyplus.run import _run
+from lod2energy.exporters.energyplus.site import _group_site, read_epw_header
 from lod2energy.exporters.paths import not_written, output_path, safe_stem, set_aside_failed
 from lod2energy.exporters.polygons import polygon_area3d
 from lod2energy.exporters.registry import register_writer
 from lod2energy.exporters.result import ExportResult
-from lod2energy.energy.zones.shells import local_origin
-from lod2energy.exporters.energyplus.check import self_check
-from lod2energy.exporters.energyplus.options import IdfOptions
-from lod2energy.energy.pieces import _face_frame, _pieces_from_points
-from lod2energy.exporters.energyplus.render import render_idf
-from lod2energy.exporters.energyplus.run import _run
-from lod2energy.exporters.energyplus.site import _group_site, read_epw_header
-from lod2energy.energy.surfaces import zone_pieces
-from lod2energy.energy.zones.storeys import _written_zones
+from lod2energy.model import Building
+from lod2energy.thermal.use import check_use
 
 
 def _bbox(b: Building) -> np.ndarray:
@@ -74,7 +75,6 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
     if options.attic not in ("conditioned", "unconditioned"):
         raise ParameterError(f"--attic must be 'conditioned' or 'unconditioned', not {options.attic!r}")
     if options.use is not None:
-        from lod2energy.thermal.use import check_use
         options = replace(options, use=check_use(options.use))
     if options.mode not in ("building", "dataset"):
         raise ParameterError(f"--idf-mode must be 'building' or 'dataset', not {options.mode!r}")
@@ -86,7 +86,6 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
     if weather and not Path(weather).is_file():
         raise ParameterError(f"weather file not found: {weather}")
     site, ground = read_epw_header(weather) if weather else (None, None)
-    from lod2energy import site as site_mod
     station = site_mod.read_weather_header(weather) if weather else None
     out = Path(outdir)
     out.mkdir(parents=True, exist_ok=True)

@@ -29,10 +29,18 @@ from pathlib import Path
 from typing import Any, Iterable, Mapping, Sequence
 
 import numpy as np
+import shapely
+from shapely.geometry import MultiPolygon, Polygon, shape
+from shapely.validation import explain_validity
 
 from lod2energy.exporters.registry import register_writer
 from lod2energy.exporters.result import ExportResult
+from lod2energy.io.json_stream import Scanner
 from lod2energy.model import Building
+from lod2energy.safe_write import atomic_write
+from lod2energy.site import SiteError, to_wgs84
+from lod2energy.thermal.storeys import storeys
+from lod2energy.thermal.use import building_use
 
 #: Decimal places of the coordinates (1e-8 degree is about 1 mm).
 DECIMALS = 8
@@ -64,9 +72,6 @@ def footprint(b: Building, lod: str | None = None):
     shapely Polygon or MultiPolygon, or None
         In the building's xy coordinates (m); None when no face has a projected area.
     """
-    import shapely
-    from shapely.geometry import Polygon
-
     v = np.asarray(b.vertices, dtype=np.float64)
     polys = []
     for _, _, g in b.envelope(lod):
@@ -87,14 +92,12 @@ def footprint(b: Building, lod: str | None = None):
     parts = [g for g in getattr(u, "geoms", [u]) if g.geom_type == "Polygon" and g.area >= MIN_AREA]
     if not parts:
         return None
-    from shapely.geometry import MultiPolygon
     clean = [Polygon(p.exterior.coords, [h.coords for h in p.interiors if Polygon(h).area >= MIN_AREA])
              for p in parts]
     return clean[0] if len(clean) == 1 else MultiPolygon(clean)
 
 
 def _ring_lonlat(xy: np.ndarray, z: float, crs: Any, frame) -> list[list[float]]:
-    from lod2energy.site import to_wgs84
     p = np.column_stack([xy, np.full(len(xy), z)])
     ll = to_wgs84(p, crs, frame)
     return [[round(float(lon), DECIMALS), round(float(lat), DECIMALS)] for lat, lon in ll]
@@ -168,9 +171,6 @@ def properties(b: Building, record=None, use: str | None = None, lod: str | None
     run : bool
         Add the run figures (None where the record has none).
     """
-    from lod2energy.thermal.storeys import storeys
-    from lod2energy.thermal.use import building_use
-
     energy = dict(b.provenance.get("energy") or {})
     thermal = dict(b.provenance.get("thermal") or {})
     u = building_use(b, use)
@@ -224,9 +224,6 @@ def write(buildings: Iterable[Building], path: str | os.PathLike, *, crs: Any = 
     root : path, optional
         The folder the file must stay in (:func:`lod2energy.safe_write.check_target`).
     """
-    from lod2energy.safe_write import atomic_write
-    from lod2energy.site import SiteError
-
     records = records or ()
     by_id = {r.id: i for i, r in enumerate(records)}  # the index: a record may be rebuilt when read
     ids, left_out, seen = [], {}, []
@@ -302,8 +299,6 @@ def self_check(path: str, n_features: int | None = None) -> list[str]:
 def _features(path: str, head: dict):
     """``(index, Feature)`` of the file's ``features`` array, one at a time; ``head`` gets
     the other members (and ``features: []`` when it is an array). ValueError: not JSON."""
-    from lod2energy.io.json_stream import Scanner
-
     with open(path, encoding="utf-8") as f:
         sc = Scanner(f)
         if sc.peek() != "{":  # valid JSON, not an object: not a FeatureCollection
@@ -323,8 +318,6 @@ def _features(path: str, head: dict):
 
 def _feature_problems(path: str, i: int, ft) -> list[str]:
     """The first problem of Feature ``i`` (empty: good)."""
-    from shapely.geometry import shape
-
     where = f"{path}: feature {i} ({ft.get('id') if isinstance(ft, dict) else '?'})"
     if not isinstance(ft, dict) or ft.get("type") != "Feature" or "id" not in ft:
         return [f"{where}: not a Feature with an id"]
@@ -339,7 +332,6 @@ def _feature_problems(path: str, i: int, ft) -> list[str]:
             if not bad and (_signed_area(ring) > 0) != (k == 0):
                 bad.append(f"{where}: ring {k} wound {'clockwise' if k == 0 else 'counter-clockwise'}")
     if not bad and not shape(g).is_valid:
-        from shapely.validation import explain_validity
         bad.append(f"{where}: invalid polygon: {explain_validity(shape(g))}")
     return bad[:1]
 

@@ -18,23 +18,24 @@ from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import Iterable
 
+import manifold3d as m3
 import numpy as np
+from scipy.spatial import cKDTree
 
 from lod2energy import safe_write
-from lod2energy.errors import ParameterError
-from lod2energy.geometry import collapse_short_edges  # noqa: F401 - re-exported, used below
-from lod2energy.geometry import triangle_areas, triangle_normals
-from lod2energy.model import BUILDING_TYPES, Building
-
 from lod2energy.energy.parts import united_input_parts
+from lod2energy.energy.zones.shells import ZoneShell, local_origin, zone_shells
+from lod2energy.errors import ParameterError
 from lod2energy.exporters.paths import not_written, output_path, safe_stem
 from lod2energy.exporters.registry import register_writer
 from lod2energy.exporters.result import ExportResult
-from lod2energy.exporters.stl.rows import row_keys, same_position, unique_rows
 from lod2energy.exporters.shellcheck import signed_volume
+from lod2energy.exporters.stl.rows import row_keys, same_position, unique_rows
 from lod2energy.exporters.stl.seams import T_JUNCTION_TOL, split_open_edges, split_t_junctions  # noqa: F401 - part of stl's API
 from lod2energy.exporters.weld import weld
-from lod2energy.energy.zones.shells import ZoneShell, local_origin, zone_shells
+from lod2energy.geometry import triangle_areas, triangle_normals
+from lod2energy.geometry import collapse_short_edges  # noqa: F401 - re-exported, used below
+from lod2energy.model import BUILDING_TYPES, Building
 
 #: Edge-collapse tolerance (m) after the union: removes sliver triangles.
 SIMPLIFY_TOL = 1e-3
@@ -68,7 +69,6 @@ class StlOptions:
         Merge parts / touching buildings into one closed surface (manifold3d).
     lod : str, optional
     """
-
     mode: str = "building"
     ascii: bool = False
     union: bool = True
@@ -235,8 +235,6 @@ def merge_meshes(meshes: list[tuple[np.ndarray, np.ndarray, np.ndarray]], union:
     """
     warnings: list[str] = []
     if union and len(meshes) > 1:
-        import manifold3d as m3
-
         code_of: list[int] = []
         parts = []
         ok = True
@@ -306,8 +304,6 @@ def separate_touching(v: np.ndarray, t: np.ndarray, dist: float | None = None) -
     -------
     vertices (n, 3) float, number of vertices moved
     """
-    from scipy.spatial import cKDTree
-
     dist = SEPARATION if dist is None else dist
     pairs = cKDTree(v).query_pairs(1e-6, output_type="ndarray")
     # distinct in float64 but one point once written as float32

@@ -88,7 +88,7 @@ def main(argv: list[str] | None = None) -> int:
 
 def _prefilter(opts: CfdOptions):
     """A cheap test of whether a raw building can meet the region (None: every building)."""
-    from .region import building_hull, make_region
+    from lod2energy.exporters.cfd.region import building_hull, make_region
     shape = make_region(opts.region, opts.centre, opts.radius).shape()
     if shape is None:
         return None

@@ -4,20 +4,20 @@ The emulated test itself is :mod:`lod2energy.energy.enclosure`.
 """
 from __future__ import annotations
 
+from collections import Counter
 from dataclasses import replace
 
 import numpy as np
 
+from lod2energy.energy.enclosure import (
+    _drop_coincident, _on_line, enclosure_defects, eplus_collinear, eplus_degenerate, snap_polygons,
+)
+from lod2energy.energy.pieces import Piece, WRITE_DECIMALS, _planar_dev, _surely_planar
+from lod2energy.energy.zones.shells import MIN_PIECE_AREA
 from lod2energy.exporters.polygons import polygon_area3d
-from lod2energy.geometry import split_at_points
-
 from lod2energy.exporters.shellcheck import check_closed_outward
 from lod2energy.exporters.weld import weld
-from lod2energy.energy.zones.shells import MIN_PIECE_AREA
-from lod2energy.energy.enclosure import (eplus_collinear, _drop_coincident, enclosure_defects, eplus_degenerate, _on_line,
-                        snap_polygons)
-from lod2energy.energy.pieces import WRITE_DECIMALS
-from lod2energy.energy.pieces import Piece, _planar_dev, _surely_planar
+from lod2energy.geometry import split_at_points
 
 
 #: A vertex EnergyPlus finds collinear but which lies farther than this (m) from the line
@@ -129,7 +129,6 @@ class _PieceMemo:
     """Values per Piece object (a Piece holds arrays, so it is not hashable): keyed by identity,
     each piece held here so that its id is not reused while the memo lives. Pieces are
     immutable, so what was found for one stays true."""
-
     def __init__(self):
         self._d: dict[int, tuple[Piece, object]] = {}
 
@@ -205,8 +204,6 @@ def eplus_conform(pieces: list[Piece], tol: float = EPLUS_POINT_TOL) -> list[Pie
 
 def _edge_defects(pieces: list[Piece]) -> int:
     """Directed edges used more than once plus edges without their reverse."""
-    from collections import Counter
-
     cnt = Counter()
     for p in pieces:
         k = [tuple(np.round(x, 6).tolist()) for x in p.points]

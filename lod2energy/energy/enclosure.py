@@ -30,6 +30,7 @@ from dataclasses import dataclass
 from typing import Sequence
 
 import numpy as np
+from scipy.spatial import cKDTree
 
 from lod2energy import cache
 from lod2energy.exporters.polygons import polygon_area3d
@@ -238,8 +239,6 @@ def _near_pairs(points: np.ndarray, tol: float) -> np.ndarray:
     EnergyPlus makes (strictly less, per axis) then decides, with the same arithmetic as a
     point-by-point comparison.
     """
-    from scipy.spatial import cKDTree
-
     P = np.asarray(points, dtype=np.float64).reshape(-1, 3)
     if len(P) < 2:
         return np.empty((0, 2), dtype=np.intp)
@@ -503,7 +502,6 @@ def snap_polygons(polygons: Sequence[np.ndarray], tol: float | None = None, merg
         and pairs of polygons that became the same polygon with opposite orientation (a fold)
         are dropped together, so are polygons narrower than ``min_width`` (m).
     """
-
     allp = np.concatenate([np.asarray(p, dtype=np.float64) for p in polygons])
     if not merge:
         V, idx = weld(allp, 1e-9)  # shared corners only

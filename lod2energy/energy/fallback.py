@@ -28,12 +28,13 @@ from dataclasses import replace
 from functools import partial
 
 import numpy as np
+from shapely.geometry.polygon import orient
 
 from lod2energy.config import DEFAULT
 from lod2energy.energy.enclosure import eplus_merge
+from lod2energy.energy.zones.shells import ZoneFace, ZoneShell, classify
 from lod2energy.exporters.polygons import newell_normal, polygon_area3d
 from lod2energy.exporters.weld import clean_ring
-from lod2energy.energy.zones.shells import ZoneFace, ZoneShell, classify
 from lod2energy.polymesh import Face, PolyMesh, signed_volume
 from lod2energy.repair.footprint import footprint_polygon, roof_height
 from lod2energy.repair.roofs import roof_model
@@ -220,7 +221,6 @@ def block_zone(zone: ZoneShell, simplify: float = BLOCK_SIMPLIFY, opening: float
     hull : bool
         Use the footprint's convex hull.
     """
-    from shapely.geometry.polygon import orient
     m = _mesh(zone)
     fp = footprint_polygon(m, simplify=simplify)
     if fp is None:

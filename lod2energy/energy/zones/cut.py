@@ -25,8 +25,10 @@ from dataclasses import dataclass
 from typing import Any, Sequence
 
 import numpy as np
+from shapely.geometry import Point, Polygon
 
 from lod2energy.geometry.vectors import cross_rows, roll_next
+from lod2energy.thermal.storeys import FLAT_TILT
 
 #: A cut is moved to a vertex height this close (m).
 SNAP = 0.4
@@ -58,7 +60,6 @@ class Slab:
     attic : bool
         The roof space above the eave.
     """
-
     polygons: list
     floor: list
     ceiling: list
@@ -260,8 +261,6 @@ def _signed_xy(loop: np.ndarray) -> float:
 
 def cap_polygons(loops: list[np.ndarray]) -> list[list[np.ndarray]]:
     """Loops grouped into polygons ``[outer, hole, ...]`` (outer counter-clockwise from above)."""
-    from shapely.geometry import Point, Polygon
-
     outers = [lp for lp in loops if _signed_xy(lp) > 0]
     holes = [lp for lp in loops if _signed_xy(lp) < 0]
     groups = [[o] for o in outers]
@@ -363,8 +362,6 @@ def slab_volume(s: Slab) -> float:
 def zone_levels(polygons: Sequence[tuple[np.ndarray, str]]) -> tuple[float, float, float, bool]:
     """``(ground, eave, ridge, pitched)`` (m) of a zone from its polygons tagged by kind
     ("roof", "wall", "ground", "floor"): as :func:`lod2energy.thermal.storeys.roof_levels`."""
-    from lod2energy.thermal.storeys import FLAT_TILT
-
     allz = np.concatenate([p[:, 2] for p, _ in polygons])
     roofs = []
     for p, kind in polygons:
