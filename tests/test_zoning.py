@@ -2,7 +2,7 @@
 import numpy as np
 import pytest
 
-from export_helpers import EPW, energy_ready, parts_building, real_buildings, shifted
+from export_helpers import EPW, eppy_idf, energy_ready, parts_building, real_buildings, shifted
 from factories import box, box_polygons, gabled_house
 from lod2energy import energy
 import lod2energy.energy.zones.storeys  # noqa: F401 - energy.zones.storeys
@@ -22,7 +22,7 @@ def _pieces(b):
 
 
 def _idf(path):
-    return energyplus.check._eppy_idf(path)
+    return eppy_idf(path)
 
 
 def test_gabled_house_cut_into_two_storeys_and_an_attic():

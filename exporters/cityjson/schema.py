@@ -181,12 +181,6 @@ def _merged_enum_branches(branches: Any) -> list | None:
     return [{"enum": words}] + others
 
 
-def _compiled(version: str) -> tuple[Any, Any]:
-    """Compiled (``fastjsonschema``) validators of the document and of a CityJSONFeature for
-    ``version`` (:func:`_compiled_one`). (None, None) when fastjsonschema is missing."""
-    return _compiled_one(version, False), _compiled_one(version, True)
-
-
 @lru_cache(maxsize=None)
 def _compiled_one(version: str, feature: bool) -> Any:
     """The compiled (``fastjsonschema``) validator of the document (``feature=False``) or of a

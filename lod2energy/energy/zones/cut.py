@@ -67,6 +67,19 @@ class Slab:
     attic: bool = False
 
 
+def _heights(z_values: np.ndarray) -> np.ndarray:
+    """The zone's vertex heights (m), rounded to :data:`DECIMALS`, unique and sorted."""
+    return np.unique(np.round(np.asarray(z_values, dtype=np.float64), DECIMALS))
+
+
+def _clears(c: float, z: np.ndarray, horizontal_z: Sequence[float]) -> bool:
+    """A cut at ``c`` (m) lies inside the zone and clears every vertex height ``z`` (but the
+    ones on it) and every horizontal surface by :data:`CLEARANCE`."""
+    d = np.abs(z - c)
+    return (float(z[0]) + CLEARANCE < c < float(z[-1]) - CLEARANCE and not np.any((d > ON_PLANE) & (d < CLEARANCE))
+            and not any(abs(h - c) < CLEARANCE for h in horizontal_z))
+
+
 def storey_cuts(z_values: np.ndarray, ground: float, eave: float, ridge: float, n_below: int,
                 attic: bool, horizontal_z: Sequence[float] = (),
                 avoid: Sequence[tuple[float, float]] = ()) -> tuple[list[float], bool]:
@@ -89,8 +102,7 @@ def storey_cuts(z_values: np.ndarray, ground: float, eave: float, ridge: float, 
     attic : bool
         Whether the attic cut was kept.
     """
-    z = np.unique(np.round(np.asarray(z_values, dtype=np.float64), DECIMALS))
-    zmin, zmax = float(z.min()), float(z.max())
+    z = _heights(z_values)
     targets = [ground + k * (eave - ground) / max(n_below, 1) for k in range(1, max(n_below, 1))]
     if attic:
         targets.append(eave)
@@ -103,14 +115,7 @@ def storey_cuts(z_values: np.ndarray, ground: float, eave: float, ridge: float, 
                        key=lambda c: (abs(c - t), c))
         for c in cands:
             c = round(c, DECIMALS)
-            if not (zmin + CLEARANCE < c < zmax - CLEARANCE):
-                continue
-            d = np.abs(z - c)
-            if np.any((d > ON_PLANE) & (d < CLEARANCE)):
-                continue
-            if any(abs(h - c) < CLEARANCE for h in horizontal_z):
-                continue
-            if any(lo - CLEARANCE < c < hi + CLEARANCE for lo, hi in avoid):
+            if not _clears(c, z, horizontal_z) or any(lo - CLEARANCE < c < hi + CLEARANCE for lo, hi in avoid):
                 continue
             if out and c - out[-1] < 1.0:
                 continue
@@ -125,17 +130,10 @@ def cut_variants(cuts: Sequence[float], attic: bool, z_values: np.ndarray,
     """Cut sets to try in turn: the cuts, then the storey cuts shifted by :data:`SHIFTS` (the
     attic cut stays at the eave), then the same without the attic cut; each kept only when
     it clears every vertex by :data:`CLEARANCE` and every horizontal surface."""
-    z = np.unique(np.round(np.asarray(z_values, dtype=np.float64), DECIMALS))
-    zmin, zmax = float(z.min()), float(z.max())
+    z = _heights(z_values)
 
     def ok(cs):
-        for c in cs:
-            d = np.abs(z - c)
-            if not (zmin + CLEARANCE < c < zmax - CLEARANCE) or np.any((d > ON_PLANE) & (d < CLEARANCE)):
-                return False
-            if any(abs(h - c) < CLEARANCE for h in horizontal_z):
-                return False
-        return all(b - a >= 1.0 for a, b in zip(cs, cs[1:]))
+        return all(_clears(c, z, horizontal_z) for c in cs) and all(b - a >= 1.0 for a, b in zip(cs, cs[1:]))
 
     out = []
     for with_attic in ((True, False) if attic else (False,)):
@@ -343,20 +341,6 @@ def split_storeys(polygons: Sequence[tuple[np.ndarray, Any]], cuts: Sequence[flo
               bounds[k + 1] if np.isfinite(bounds[k + 1]) else max(float(p[:, 2].max()) for p, _ in sp))
         out.append(Slab(sp, floor, ceiling, zr, attic_top and k == len(slabs_polys) - 1))
     return out
-
-
-def polygons_volume(polys: Sequence[np.ndarray]) -> float:
-    """Enclosed volume (m3) of closed outward polygons (divergence theorem)."""
-    v = 0.0
-    for q in polys:
-        for k in range(1, len(q) - 1):
-            v += float(np.dot(q[0], np.cross(q[k], q[k + 1]))) / 6.0
-    return v
-
-
-def slab_volume(s: Slab) -> float:
-    """Volume (m3) of one slab."""
-    return polygons_volume([p for p, _ in s.polygons] + list(s.floor) + list(s.ceiling))
 
 
 def zone_levels(polygons: Sequence[tuple[np.ndarray, str]]) -> tuple[float, float, float, bool]:
