@@ -6,7 +6,7 @@ Usage (from the repository root)::
 
 Districts: the bundled Delft subset (whole file), a block of Den Haag tile 01 (its TINRelief as
 the ground) and a block of the Berlin CityGML tile 3920_5818, picked with --centre/--radius.
-For each: ``python -m lod2energy.cfd IN -o OUT --centre X,Y --radius R --cell-size C --mesh``
+For each: ``python -m lod2energy.exporters.cfd IN -o OUT --centre X,Y --radius R --cell-size C --mesh``
 in a temporary folder. "prepare" is reading + validate/repair/label of the region's buildings,
 "case" the surfaces, domain and dictionaries (with surfaceCheck on every surface), "mesh" the
 meshing chain (blockMesh, surfaceFeatureExtract, snappyHexMesh, checkMesh). A row passes

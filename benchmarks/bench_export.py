@@ -125,7 +125,11 @@ def _jobs1() -> list[str]:
 def stage_table(tile: str) -> dict:
     """Run the export on ``tile`` with every stage timed."""
     from lod2energy import cli, pipeline
-    from lod2energy.exporters import cityjson, energyplus, stl
+    from lod2energy.exporters import energyplus
+    from lod2energy.energy import conform
+    from lod2energy.energy.zones import storeys
+    from lod2energy.exporters.cityjson import check as cityjson_check, writer as cityjson
+    from lod2energy.exporters.stl import writer as stl
 
     from lod2energy.validate import checks
 
@@ -137,10 +141,10 @@ def stage_table(tile: str) -> dict:
         t.wrap(mod, "self_check", f"{name} self-check")
         t.wrap(mod, "write", f"{name} writer (with self-check)")
     t.wrap(energyplus.check, "read_checked_idf", "idf self-check: IDD parse+check")
-    for mod in (energyplus.conform, energyplus.zones, energyplus.check):
+    for mod in (conform, storeys, energyplus.check):
         t.wrap(mod, "enclosure_defects", "idf enclosure emulation (writer + self-check)")
-    t.wrap(cityjson, "_schema_errors", "cityjson self-check: jsonschema")
-    t.wrap(cityjson, "_schema_valid_fast", "cityjson self-check: compiled schema")
+    t.wrap(cityjson_check, "_schema_errors", "cityjson self-check: jsonschema")
+    t.wrap(cityjson_check, "_schema_valid_fast", "cityjson self-check: compiled schema")
     # later trees (the spine split): the IDF writer's parts and the other costs of a run
     t.wrap(energyplus.check, "check_closed_outward", "idf self-check: closed and outward shells")
     t.wrap(energyplus.writer, "render_idf", "idf writer: render_idf")
@@ -174,8 +178,9 @@ def markdown(res: dict) -> str:
 
 
 def writer_throughput(a) -> dict:
-    from lod2energy import openfoam
-    from lod2energy.exporters import energyplus, stl
+    from lod2energy.exporters.cfd import openfoam
+    from lod2energy.exporters import energyplus
+    from lod2energy.exporters.stl import writer as stl
     from lod2energy.io import read
     from lod2energy.model import Building
 

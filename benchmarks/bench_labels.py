@@ -8,7 +8,7 @@ labelled with :func:`lod2energy.semantics.label_building`; agreement is then als
 for the final labels against the input's own labels.
 
 With ``--export DIR`` (implies ``--repair``) the labelled buildings also get U-values and
-are exported with :mod:`lod2energy.exporters.cityjson` in every CityJSON version
+are exported with :mod:`lod2energy.exporters.cityjson.writer` in every CityJSON version
 (``--versions``), and the self-check result is reported per tile and version, with the
 number of exported surfaces, those labelled and those with a positive U-value (counted by
 re-reading the exported file).
@@ -99,7 +99,7 @@ def run_tile(path: Path, repair: bool, export: str | None = None, versions=("1.0
 def export_tile(path: Path, model, labelled, outdir: str, versions) -> dict:
     """Export the labelled buildings in each version; self-check result and surface counts."""
     from lod2energy import thermal
-    from lod2energy.exporters import cityjson as X
+    from lod2energy.exporters.cityjson import writer as X
     from lod2energy.io import cityjson
     from lod2energy.model import Building
 

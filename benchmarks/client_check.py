@@ -155,7 +155,7 @@ def eio_volumes(path: Path) -> dict[str, float]:
 
 def stl_volume(path: Path) -> float | None:
     """Signed volume (m3) of the triangles of an STL (all its solids)."""
-    from lod2energy.exporters.stl import read_stl
+    from lod2energy.exporters.stl.writer import read_stl
 
     if not path.is_file():
         return None
@@ -248,7 +248,7 @@ def compliance(rows: list[dict], out: Path, a) -> dict:
 
 
 def check_tile(tile: Path, a, tmp: Path) -> dict:
-    from lod2energy import openfoam
+    from lod2energy.exporters.cfd import openfoam
 
     out = tmp / tile.name.replace(".", "_")
     cmd = [sys.executable, "-m", "lod2energy", "export", str(tile), "-o", str(out), "--stl", "-q"]

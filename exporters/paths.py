@@ -8,11 +8,12 @@ from __future__ import annotations
 
 import hashlib
 import re
+from dataclasses import replace
 from pathlib import Path
 
 from lod2energy.errors import ExportError
-
-from .result import ExportResult
+from lod2energy.exporters.result import ExportResult
+from lod2energy.safe_write import set_aside
 
 _UNSAFE_FILE = re.compile(r"[^A-Za-z0-9._-]+")
 
@@ -67,12 +68,9 @@ def set_aside_failed(res: ExportResult) -> ExportResult:
     A file that did not pass is never left under the name of a good one: the result's
     ``path`` becomes the ``.invalid`` name and a problem line says so.
     """
-    from lod2energy.safe_write import set_aside
-
     if res.ok or not res.path or not Path(res.path).exists():
         return res
     bad = set_aside(res.path)
     note = f"failed its self-check: kept as {Path(bad).name}" if bad else "failed its self-check: removed"
-    return ExportResult(res.building_ids, bad, False, tuple(res.problems) + (note,), res.offset, res.warnings,
-                        res.stats, res.heating_kwh, res.cooling_kwh, res.severe_errors, res.not_enclosed)
+    return replace(res, path=bad, ok=False, problems=tuple(res.problems) + (note,))
 

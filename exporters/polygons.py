@@ -1,7 +1,7 @@
 """Planar polygons as the writers cut them: normals, areas, a wall-aligned plane basis, triangles, convex pieces.
 
 Exporter coordinates are local (a few hundred metres at most, see
-:func:`~lod2energy.exporters.zones.local_origin`). The normal is
+:func:`~lod2energy.energy.zones.shells.local_origin`). The normal is
 :func:`lod2energy.geometry.newell_normal` in Newell's textbook form (``centred=False``): the
 exporters' thresholds (piece area, planarity, collinearity) and their written IDF/STL bytes
 were made with that operation order. Earcut is :func:`lod2energy.geometry.earcut_rings`.

@@ -17,9 +17,10 @@ floor area m2. A figure EnergyPlus did not give (no hourly rates, no floor area)
 from __future__ import annotations
 
 from collections.abc import Mapping
-from typing import Any, Iterable
+from typing import TYPE_CHECKING, Any, Iterable
 
-from lod2energy.model import Building
+if TYPE_CHECKING:
+    from lod2energy.model import Building
 
 #: Result key -> attribute name (per building; a zone's entry drops the ``+energy`` prefix
 #: and starts lower case).
@@ -85,24 +86,3 @@ def result_attributes(b: Building) -> dict[str, Any]:
     return attrs
 
 
-def extension_attributes() -> dict[str, dict]:
-    """Schemas of the result attributes, as the Energy extension declares them."""
-    units = {"heating_kwh": "kWh/a", "cooling_kwh": "kWh/a", "heating_kwh_m2": "kWh/(m2 a)",
-             "cooling_kwh_m2": "kWh/(m2 a)", "heating_peak_w": "W", "cooling_peak_w": "W", "floor_area_m2": "m2"}
-    what = {"heating_kwh": "Annual space-heating need (ideal loads) from the EnergyPlus run",
-            "cooling_kwh": "Annual space-cooling need (ideal loads) from the EnergyPlus run",
-            "heating_kwh_m2": "Annual space-heating need per m2 of conditioned floor area",
-            "cooling_kwh_m2": "Annual space-cooling need per m2 of conditioned floor area",
-            "heating_peak_w": "Peak heating load (highest hourly mean rate)",
-            "cooling_peak_w": "Peak cooling load (highest hourly mean rate)",
-            "floor_area_m2": "Conditioned floor area of the simulated zones"}
-    number = {"type": ["number", "null"], "minimum": 0}
-    out = {a: {**number, "description": f"{what[k]} ({units[k]}); null when EnergyPlus gave none"}
-           for k, a in ATTRIBUTES.items()}
-    zone = {"type": "object", "additionalProperties": False,
-            "properties": {_zone_key(a): {**number, "description": f"{what[k]} ({units[k]})"}
-                           for k, a in ATTRIBUTES.items()},
-            "required": [_zone_key(a) for a in ATTRIBUTES.values()]}
-    out[ZONES_ATTRIBUTE] = {"type": "object", "additionalProperties": zone,
-                            "description": "Per conditioned thermal zone (EnergyPlus zone name): the same figures"}
-    return out

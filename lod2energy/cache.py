@@ -25,6 +25,7 @@ from typing import Any, Callable, Hashable
 
 _TABLES: dict[str, "OrderedDict[Hashable, Any]"] = {}
 _SIZES: dict[str, int] = {}
+_MISSING = object()
 
 
 def _table(name: str, size: int) -> "OrderedDict[Hashable, Any]":
@@ -40,11 +41,13 @@ def recall(name: str, key: Hashable, default: Any = None) -> Any:
     t = _TABLES.get(name)
     if t is None:
         return default
-    try:
-        value = t[key]
-    except KeyError:
+    value = t.get(key, _MISSING)
+    if value is _MISSING:
         return default
-    t.move_to_end(key)
+    try:
+        t.move_to_end(key)
+    except KeyError:  # evicted meanwhile by another thread (the IDF writer's threads share tables)
+        pass
     return value
 
 
@@ -53,13 +56,15 @@ def keep(name: str, key: Hashable, value: Any, size: int) -> Any:
     recently used go first); returns ``value``."""
     t = _table(name, size)
     t[key] = value
-    t.move_to_end(key)
-    while len(t) > size:
-        t.popitem(last=False)
+    try:
+        t.move_to_end(key)
+        while len(t) > size:
+            t.popitem(last=False)
+    except KeyError:  # another thread changed the table meanwhile
+        pass
     return value
 
 
-_MISSING = object()
 
 
 def remember(name: str, key: Hashable, make: Callable[[], Any], size: int) -> Any:

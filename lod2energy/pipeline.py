@@ -276,7 +276,7 @@ class ExportOutcome:
 
 #: What every job imports, and each writer's own modules: :func:`warm` loads them in the parent.
 _JOB_MODULES = ("lod2energy.repair.pipeline", "lod2energy.repair.accept", "lod2energy.semantics",
-                "lod2energy.thermal.storeys", "lod2energy.thermal.use", "lod2energy.zoning", "lod2energy.site",
+                "lod2energy.thermal.storeys", "lod2energy.thermal.use", "lod2energy.energy.zones.cut", "lod2energy.site",
                 "lod2energy.polymesh", "scipy.spatial")
 _WRITER_MODULES = {"idf": ("lod2energy.exporters.energyplus.writer", "lod2energy.exporters.energyplus.check"),
                    "stl": ("lod2energy.exporters.stl", "lod2energy.repair.parts"),

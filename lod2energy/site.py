@@ -26,7 +26,9 @@ from typing import Any
 
 import numpy as np
 
+from lod2energy.crs import epsg_code, epsg_codes, is_geographic, latitude_first
 from lod2energy.errors import Lod2EnergyError
+from lod2energy.thermal import country_from_crs
 
 #: Standard time (hours from UTC) by ISO country code.
 TIME_ZONES = {"NL": 1.0, "DE": 1.0, "AT": 1.0, "CH": 1.0, "BE": 1.0, "FR": 1.0, "LU": 1.0, "DK": 1.0,
@@ -55,7 +57,6 @@ class Site:
     source : str
         How it was found ("crs EPSG:28992", "local frame", "weather file").
     """
-
     name: str
     latitude: float
     longitude: float
@@ -85,8 +86,6 @@ def time_zone(longitude: float, country: str | None = None) -> float:
 
 
 def _country(crs: Any) -> str | None:
-    from lod2energy.crs import epsg_codes
-    from lod2energy.thermal import country_from_crs
 
     if any(c in _JGD for c in epsg_codes(crs)):
         return "JP"
@@ -149,8 +148,6 @@ def to_wgs84(points: np.ndarray, crs: Any = None, frame=None) -> np.ndarray:
         ll = g[:, :2] if frame.lat_first else g[:, [1, 0]]
         src = "local frame"
     else:
-        from lod2energy.crs import epsg_code, is_geographic, latitude_first
-
         code = epsg_code(crs)
         if code is None:
             raise SiteError(f"no EPSG code in CRS {crs!r}: Site:Location cannot be found from the coordinates")
@@ -194,7 +191,6 @@ class WeatherHeader:
     ground_depth : float or None, m
     ground_temperatures : tuple of 12 float or None, C
     """
-
     name: str
     latitude: float
     longitude: float

@@ -10,7 +10,7 @@ from typing import Sequence
 
 import numpy as np
 
-from lod2energy.exporters.energyplus.enclosure import COINCIDENT, BadEdge, POINT_TOL, eplus_collinear
+from lod2energy.energy.enclosure import COINCIDENT, BadEdge, POINT_TOL, eplus_collinear
 
 
 def reference_eplus_degenerate(points: np.ndarray) -> bool:
@@ -21,7 +21,7 @@ def reference_eplus_degenerate(points: np.ndarray) -> bool:
             keep.append(p)
     while len(keep) > 1 and np.linalg.norm(keep[0] - keep[-1]) < COINCIDENT:
         keep.pop()
-    return len(keep) - len(eplus_collinear(np.asarray(keep).reshape(-1, 3))) < 3
+    return len(keep) - len(eplus_collinear([np.asarray(keep).reshape(-1, 3)])[0]) < 3
 
 
 def reference_eplus_vertices(points: np.ndarray) -> np.ndarray:
@@ -33,7 +33,7 @@ def reference_eplus_vertices(points: np.ndarray) -> np.ndarray:
     while len(keep) > 3 and np.linalg.norm(keep[0] - keep[-1]) < COINCIDENT:
         keep.pop()
     q = np.asarray(keep, dtype=np.float64).reshape(-1, 3)
-    drop = eplus_collinear(q)
+    drop = eplus_collinear([q])[0]
     if drop and len(q) - len(drop) >= 3:
         q = np.delete(q, drop, axis=0)
     return q

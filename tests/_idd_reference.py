@@ -1,10 +1,10 @@
-"""``lod2energy.idd.parse_idd`` as it was before its classes were built on first use (the
+"""``lod2energy.exporters.energyplus.idd.parse_idd`` as it was before its classes were built on first use (the
 reference :mod:`tests.test_idf_fast_paths` compares the lazy classes with)."""
 from __future__ import annotations
 
 import re
 
-from lod2energy.idd import ClassDef, FieldDef, Idd, _FIELD_ID, _num
+from lod2energy.exporters.energyplus.idd import ClassDef, FieldDef, Idd, _FIELD_ID, _num
 
 
 def parse_idd_reference(text: str) -> Idd:
@@ -102,9 +102,9 @@ def parse_idd_reference(text: str) -> Idd:
 
 
 def check_idf_reference(objects, idd: Idd, max_problems: int = 20) -> list[str]:
-    """``lod2energy.idd.check_idf`` as it was before its per-object memo and its one-pass test
+    """``lod2energy.exporters.energyplus.idd.check_idf`` as it was before its per-object memo and its one-pass test
     of coordinate lists (every field through ``_field_problem``)."""
-    from lod2energy.idd import _class_flags, _field_problem
+    from lod2energy.exporters.energyplus.idd import _class_flags, _field_problem
 
     problems: list[str] = []
     seen: dict[str, int] = {}

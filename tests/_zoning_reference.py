@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from lod2energy.zoning import DECIMALS, ON_PLANE
+from lod2energy.energy.zones.cut import DECIMALS, ON_PLANE
 
 
 def clip_before_fast_path(poly: np.ndarray, c: float, keep_above: bool) -> np.ndarray:

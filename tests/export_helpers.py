@@ -15,6 +15,7 @@ from types import MappingProxyType
 
 import numpy as np
 from eppy.modeleditor import IDF, IDDAlreadySetError
+import pytest
 
 import lod2energy
 from lod2energy.exporters import energyplus
@@ -205,3 +206,4 @@ def steep_house_with_dormer(dormer_x=(3.0, 6.0)):
               [(x0, y0, zb), (x0, y0, top), (x0, y1, top)], [(x1, y0, zb), (x1, y0, top), (x1, y1, top)]]
     dormer_t = ["WallSurface", "RoofSurface", "WallSurface", "WallSurface", "WallSurface"]
     return house, house_t, dormer, dormer_t
+

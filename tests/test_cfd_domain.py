@@ -9,12 +9,12 @@ import pytest
 
 from factories import box, gabled_house
 
-from lod2energy.cfd import CfdOptions, add_cli_arguments, options_from_args
-from lod2energy.cfd.case import build_case, plan_mesh
-from lod2energy.cfd.domain import (DOWNSTREAM_H, HEIGHT_H, LATERAL_H, MAX_BLOCKAGE, UPSTREAM_H, flow_direction,
+from lod2energy.exporters.cfd import CfdOptions, add_cli_arguments, options_from_args
+from lod2energy.exporters.cfd.case import build_case, plan_mesh
+from lod2energy.exporters.cfd.domain import (DOWNSTREAM_H, HEIGHT_H, LATERAL_H, MAX_BLOCKAGE, UPSTREAM_H, flow_direction,
                                    frontal_area, size_domain, to_wind_frame)
-from lod2energy.cfd.region import make_region, select
-from lod2energy.cfd.surfaces import SOLIDS
+from lod2energy.exporters.cfd.region import make_region, select
+from lod2energy.exporters.cfd.surfaces import SOLIDS
 from lod2energy.errors import ParameterError
 
 
@@ -101,7 +101,7 @@ def test_blockage_ratio_enlarges_the_domain():
 
 def test_frontal_area_of_a_box_depends_on_the_wind():
     b = box(10, 4, 6)
-    from lod2energy.cfd.surfaces import building_body
+    from lod2energy.exporters.cfd.surfaces import building_body
     (v, t, _), = building_body(b, np.zeros(3)).meshes
     assert frontal_area(v, t, 270.0, 0.0) == pytest.approx(4 * 6, rel=1e-6)   # wind along x sees the 4 m side
     assert frontal_area(v, t, 0.0, 0.0) == pytest.approx(10 * 6, rel=1e-6)    # along y sees the 10 m side
@@ -206,7 +206,7 @@ def test_cli_arguments_and_options():
 
 def test_an_open_building_is_left_out_with_its_reason_and_the_case_goes_on(tmp_path):
     from factories import open_box
-    from lod2energy.cfd import export_case
+    from lod2energy.exporters.cfd.writer import export_case
     good = box(10, 10, 6, id="good")
     bad = _translated(open_box(id="bad"), 40, 0)
     before = good.vertices.copy()
@@ -221,7 +221,7 @@ def test_an_open_building_is_left_out_with_its_reason_and_the_case_goes_on(tmp_p
 
 
 def test_no_building_in_the_region_writes_nothing(tmp_path):
-    from lod2energy.cfd import export_case
+    from lod2energy.exporters.cfd.writer import export_case
     res = export_case([box()], None, tmp_path, CfdOptions(region=(500.0, 500.0, 600.0, 600.0)))
     assert not res.ok and res.path == "" and "no building in the region" in res.problems[0]
     assert not (tmp_path / "cfd").exists()

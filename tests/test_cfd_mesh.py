@@ -8,8 +8,8 @@ from pathlib import Path
 
 import pytest
 
-from lod2energy.cfd.mesh import have_openfoam, parse_check_mesh, residuals, run_solver
-from lod2energy.openfoam import surface_check
+from lod2energy.exporters.cfd.mesh import have_openfoam, parse_check_mesh, residuals, run_solver
+from lod2energy.exporters.cfd.openfoam import surface_check
 
 REPO = Path(__file__).resolve().parents[1]
 DELFT = REPO / "examples" / "delft_subset.city.jsonl"

@@ -6,9 +6,9 @@ import pytest
 
 from factories import box
 
-from lod2energy.cfd.case import build_case
-from lod2energy.cfd.region import make_region
-from lod2energy.cfd.terrain import height_function, solid_under, terrain_grid, tin_of, volume_under
+from lod2energy.exporters.cfd.case import build_case
+from lod2energy.exporters.cfd.region import make_region
+from lod2energy.exporters.cfd.terrain import height_function, solid_under, terrain_grid, tin_of, volume_under
 from lod2energy.model import Building, CityObject, Geometry, Shell, Solid, Surface
 
 

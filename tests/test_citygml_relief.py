@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from test_citygml import CORNERS, box_body, building, city_model, read_all, run_cli, write
-from lod2energy.cfd.terrain import height_function, tin_of
+from lod2energy.exporters.cfd.terrain import height_function, tin_of
 from lod2energy.model import Building
 
 DEM = "http://www.opengis.net/citygml/relief/2.0"

@@ -14,7 +14,7 @@ import trimesh
 from export_helpers import EPW
 from lod2energy.cli import main
 from lod2energy.exporters import energyplus
-from lod2energy.exporters.stl import read_stl
+from lod2energy.exporters.stl.writer import read_stl
 from lod2energy.io import read
 from lod2energy.io.openings import cut_openings
 from lod2energy.model import Building

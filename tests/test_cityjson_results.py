@@ -9,7 +9,8 @@ import pytest
 from export_helpers import EPW, shifted
 from factories import gabled_house
 from lod2energy.exporters import energyplus
-from lod2energy.exporters import cityjson as X
+from lod2energy.exporters.cityjson import writer as X
+from lod2energy.exporters.cityjson import schema as CS
 from lod2energy.exporters import run_results as R
 from lod2energy.io import cityjson as cjio
 from lod2energy.model import CityModel, frozen_mapping
@@ -26,7 +27,7 @@ def _house_file(tmp_path):
 
 @pytest.mark.parametrize("v", ("1.0", "1.1", "2.0"))
 def test_result_attributes_are_declared_by_the_shipped_extension(v):
-    ext = X.extension_schema(v)["extraAttributes"]["Building"]
+    ext = CS.extension_schema(v)["extraAttributes"]["Building"]
     for name in list(R.ATTRIBUTES.values()) + [R.ZONES_ATTRIBUTE]:
         assert name in ext
     b = shifted(gabled_house(), (0.0, 0.0, 0.0)).with_provenance(run_results={

@@ -16,8 +16,8 @@ import jsonschema
 import numpy as np
 import pytest
 
-from lod2energy.exporters import cityjson as X
-from lod2energy.exporters import cityjson_schema as CS
+from lod2energy.exporters.cityjson import writer as X
+from lod2energy.exporters.cityjson import schema as CS
 
 from test_export_cityjson import _random_mutation, model, two_buildings
 

@@ -45,7 +45,7 @@ def plain_box(dx: float = 30.0, bid: str = "box"):
 
 
 def test_a_valid_building_with_a_kept_sliver_is_written_as_not_compliant(tmp_path):
-    from lod2energy.exporters import cityjson
+    from lod2energy.exporters.cityjson import writer as cityjson
     opts = dataclasses.replace(PrepareOptions(), tol=TOL)
     prepared = [prepare_building(b, opts) for b in (chamfered(), plain_box())]
     (sl, sl_rec), (ok, ok_rec) = prepared

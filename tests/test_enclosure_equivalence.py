@@ -1,11 +1,13 @@
-"""The vectorised enclosure emulation (exporters.energyplus.enclosure) agrees with the pure-Python
+"""The vectorised enclosure emulation (lod2energy.energy.enclosure) agrees with the pure-Python
 one it replaced (tests/_enclosure_reference.py) on random and on real zones."""
 from __future__ import annotations
 
 import numpy as np
 import pytest
 
-from lod2energy.exporters.energyplus import enclosure as ee
+from lod2energy.energy import enclosure as ee
+from lod2energy.energy import conform, model as energy_model
+from lod2energy.energy.zones import storeys
 from lod2energy.exporters import energyplus
 
 from _enclosure_reference import (reference_edges_not_two, reference_enclosure_defects,
@@ -31,10 +33,10 @@ def _same_defects(a, b) -> bool:
 
 def assert_agree(surfaces) -> None:
     """Every step of the emulation gives what the reference gives, bit for bit."""
-    faces = [ee.eplus_vertices(np.asarray(s, dtype=np.float64)) for s in surfaces]
+    faces = [ee.eplus_vertices([np.asarray(s, dtype=np.float64)])[0] for s in surfaces]
     for s, f in zip(surfaces, faces):
         assert np.array_equal(f, reference_eplus_vertices(s))
-        assert ee.eplus_degenerate(s) == reference_eplus_degenerate(s)
+        assert ee.eplus_degenerate([s])[0] == reference_eplus_degenerate(s)
     allp = np.concatenate(faces)
     u_new, i_new = ee.eplus_merge(allp)
     u_ref, i_ref = reference_eplus_merge(allp)
@@ -123,7 +125,7 @@ def test_real_zones_agree(tmp_path, monkeypatch, rel, n):
 
     # every caller in the writer: the zone candidates test the IDF's surfaces, the self-check
     # the vertices EnergyPlus keeps of the written ones
-    for mod in (energyplus.conform, energyplus.zones, energyplus.model):
+    for mod in (conform, storeys, energy_model):
         monkeypatch.setattr(mod, "enclosure_defects", recording(ee.enclosure_defects, seen))
     monkeypatch.setattr(energyplus.check, "face_defects", recording(ee.face_defects, kept))
     bs = [energy_ready(b) for b in real_buildings(rel, n=n)]
@@ -141,6 +143,6 @@ def test_near_degenerate_surfaces_agree():
     rng = np.random.default_rng(5)
     for _ in range(400):
         P = near_degenerate(rng)
-        assert np.array_equal(ee.eplus_vertices(P), reference_eplus_vertices(P))
-        assert ee.eplus_degenerate(P) == reference_eplus_degenerate(P)
-        assert ee.eplus_degenerate(P[:2]) == reference_eplus_degenerate(P[:2])
+        assert np.array_equal(ee.eplus_vertices([P])[0], reference_eplus_vertices(P))
+        assert ee.eplus_degenerate([P])[0] == reference_eplus_degenerate(P)
+        assert ee.eplus_degenerate([P[:2]])[0] == reference_eplus_degenerate(P[:2])

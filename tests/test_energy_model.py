@@ -1,4 +1,4 @@
-"""The energy model stage (lod2energy.exporters.energyplus.model): floorless parts and simpler envelopes
+"""The energy model stage (lod2energy.energy.model): floorless parts and simpler envelopes
 are decided before the IDF writer, recorded in the building's provenance, and the writer writes
 what it is given."""
 from __future__ import annotations
@@ -13,11 +13,12 @@ import pytest
 from export_helpers import energy_ready, parts_with_semantics, shifted, steep_house_with_dormer
 from factories import box
 
+from lod2energy import cache
 from lod2energy.exporters import energyplus
 from lod2energy.exporters.registry import writer
-from lod2energy.exporters.zones import local_origin
+from lod2energy.energy.zones.shells import local_origin
 from lod2energy.model import CityModel, frozen_mapping
-from lod2energy.exporters.energyplus import model as energy_model
+from lod2energy.energy import model as energy_model
 
 OPTIONS = energyplus.options.IdfOptions()
 
@@ -64,12 +65,14 @@ def test_the_writer_writes_the_recorded_model(tmp_path, monkeypatch):
     assert any("united with" in w for w in given[0].warnings)
 
 
-def test_a_model_made_for_other_neighbours_is_made_again(tmp_path):
+def test_a_model_made_for_other_neighbours_is_refused_not_made_again(tmp_path):
+    # the writer writes the model it is given: one made without the neighbour is an error
     b, nb = energy_ready(box(id="a")), energy_ready(box(origin=(10.0, 0.0, 0.0), id="n"))
     [staged] = energy_model.with_energy_model([b], OPTIONS)  # without the neighbour
-    m = energy_model.model_of([staged], OPTIONS, [nb])
-    assert m is not staged.provenance["energy_model"]["model"]
-    assert [x.id for x in m.buildings] == ["a", "n"] and m.party       # the shared wall is found
+    with pytest.raises(ValueError, match="other buildings, neighbours or options"):
+        energy_model.model_of([staged], OPTIONS, [nb])
+    with pytest.raises(ValueError):
+        energyplus.writer.write([staged], tmp_path, OPTIONS, context=[nb])
     assert energy_model.model_of([staged], OPTIONS) is staged.provenance["energy_model"]["model"]
 
 
@@ -113,7 +116,7 @@ def test_the_registry_runs_the_stage_before_the_idf_writer_only():
 
 
 def test_the_cityjson_writer_leaves_the_energy_model_out(tmp_path):
-    from lod2energy.exporters import cityjson
+    from lod2energy.exporters.cityjson import writer as cityjson
     [staged] = energy_model.with_energy_model([dormer_house()], OPTIONS)
     model = CityModel(version="2.0", metadata=frozen_mapping({"referenceSystem": "urn:ogc:def:crs:EPSG::7415"}))
     res = cityjson.write(str(tmp_path / "out.city.json"), model, [staged])
@@ -149,7 +152,7 @@ def _own_party(m):
 
 def test_neighbour_zones_made_in_their_own_frame_give_the_job_frames_party_walls():
     bs = _row_of_three()
-    energy_model._NEIGHBOUR_ZONES.clear()
+    cache.clear(energy_model.NEIGHBOUR_ZONES)
     m = energy_model.prepare_energy_model([bs[1]], OPTIONS, [bs[0], bs[2]])
     # the reference: every zone made in the job's frame (the shading path, which pairs all zones)
     ref = energy_model.prepare_energy_model([bs[1]], replace(OPTIONS, shading=True), [bs[0], bs[2]])
@@ -164,9 +167,9 @@ def test_neighbour_zones_made_in_their_own_frame_give_the_job_frames_party_walls
 
 def test_remembered_neighbour_zones_are_those_made_anew_and_follow_the_buildings_content():
     bs = _row_of_three()
-    energy_model._NEIGHBOUR_ZONES.clear()
+    cache.clear(energy_model.NEIGHBOUR_ZONES)
     cold = energy_model.prepare_energy_model([bs[1]], OPTIONS, [bs[0], bs[2]])
-    assert len(energy_model._NEIGHBOUR_ZONES) == 2
+    assert cache.sizes()[energy_model.NEIGHBOUR_ZONES][0] == 2
     warm = energy_model.prepare_energy_model([bs[1]], OPTIONS, [bs[0], bs[2]])
     for a, b in zip(cold.zones, warm.zones):
         assert a.faces == b.faces and np.array_equal(a.vertices, b.vertices)
@@ -174,13 +177,13 @@ def test_remembered_neighbour_zones_are_those_made_anew_and_follow_the_buildings
     # the same id, another geometry: made anew, not taken for the one remembered
     moved = _row_of_three(dx=0.5)
     m = energy_model.prepare_energy_model([moved[1]], OPTIONS, [moved[0], moved[2]])
-    assert len(energy_model._NEIGHBOUR_ZONES) == 3
+    assert cache.sizes()[energy_model.NEIGHBOUR_ZONES][0] == 3
     right = m.zones[m.zones_of[2][0]]
     assert right.vertices[:, 0].min() + m.origin[0] == pytest.approx(85020.3 + 0.5, abs=1e-6)
     assert len(_own_party(m)) == 1  # the moved box no longer touches
     for i in range(energy_model.NEIGHBOUR_ZONES_KEPT + 5):  # bounded
         energy_model._neighbour_zones(shifted(bs[0], (i, 0, 0)), OPTIONS.lod, OPTIONS.wwr)
-    assert len(energy_model._NEIGHBOUR_ZONES) == energy_model.NEIGHBOUR_ZONES_KEPT
+    assert cache.sizes()[energy_model.NEIGHBOUR_ZONES][0] == energy_model.NEIGHBOUR_ZONES_KEPT
 
 
 def test_spatial_order_puts_near_boxes_next_to_each_other():

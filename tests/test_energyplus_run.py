@@ -13,7 +13,13 @@ from export_helpers import (DATA, EPW, energy_ready, parts_with_semantics, real_
                             two_part_building)
 from factories import box
 
-from lod2energy.exporters import energyplus, zones
+from lod2energy import energy
+import lod2energy.energy.surfaces  # noqa: F401 - energy.surfaces
+import lod2energy.energy.pieces  # noqa: F401 - energy.pieces
+import lod2energy.energy.conform  # noqa: F401 - energy.conform
+from lod2energy.exporters import energyplus
+
+from lod2energy.energy.zones import shells as zones
 
 pytestmark = [pytest.mark.external,
               pytest.mark.skipif(energyplus.run.binary() is None,
@@ -137,7 +143,7 @@ def test_sliver_walls_do_not_break_energyplus_enclosure(tmp_path, weather):
     bs = [energy_ready(b) for b in it if isinstance(b, _B) and b.id.endswith("0503100000019492")]
     assert bs
     zs = zones.zone_shells(bs[0], zones.local_origin(bs), None, collinear_tol=zones.COLLINEAR_TOL)
-    raw = [p for zi, z in enumerate(zs) for p in energyplus.surfaces.zone_pieces(z, zi, {}, False)]
+    raw = [p for zi, z in enumerate(zs) for p in energy.surfaces.zone_pieces(z, zi, {}, False)]
     res = energyplus.writer.write(bs, tmp_path, _opts(), weather=weather)
     r = res[0]
     assert r.severe_errors == 0, r.problems
@@ -147,7 +153,7 @@ def test_sliver_walls_do_not_break_energyplus_enclosure(tmp_path, weather):
     for p in raw:
         if len(p.points) == 3:
             q = p.points
-            assert not any(energyplus.conform._on_segment(q[i], q[(i + 1) % 3], q[(i + 2) % 3]) for i in range(3))
+            assert not any(energy.conform._on_segment(q[i], q[(i + 1) % 3], q[(i + 2) % 3]) for i in range(3))
 
 
 def test_thin_pieces_with_a_vertex_on_their_own_edge_run_enclosed(tmp_path, weather):
@@ -170,11 +176,11 @@ def test_thin_pieces_with_a_vertex_on_their_own_edge_run_enclosed(tmp_path, weat
     bs = [prepare(b, DEFAULT, a)[0] for b in it if isinstance(b, _B) and b.id.endswith("0503100000033957")]
     assert bs
     zs = zones.zone_shells(bs[0], zones.local_origin(bs), None, collinear_tol=zones.COLLINEAR_TOL)
-    pieces = [p for zi, z in enumerate(zs) for p in energyplus.surfaces.zone_pieces(z, zi, {}, False)]
+    pieces = [p for zi, z in enumerate(zs) for p in energy.surfaces.zone_pieces(z, zi, {}, False)]
     # no written piece keeps a vertex EnergyPlus would see on one of its other edges
     for p in pieces:
         q, k = p.points, len(p.points)
-        assert not any(energyplus.conform._on_segment(q[i], q[(i + 1) % k], q[j])
+        assert not any(energy.conform._on_segment(q[i], q[(i + 1) % k], q[j])
                        for i in range(k) for j in range(k) if j not in (i, (i + 1) % k))
     res = energyplus.writer.write(bs, tmp_path, _opts(), weather=weather)
     r = res[0]
@@ -188,8 +194,8 @@ def test_split_on_own_edge_keeps_the_shell_closed():
     import numpy as np
 
     q = np.array([[0.0, 0, 0], [4, 0, 0], [3, 0.02, 0], [1, 0.005, 0]])
-    p = energyplus.pieces.Piece(q, "ground", "Ground", 0.3, 0)
-    parts = energyplus.conform._split_on_own_edge([p])
+    p = energy.pieces.Piece(q, "ground", "Ground", 0.3, 0)
+    parts = energy.conform._split_on_own_edge([p])
     assert parts is not None and len(parts) >= 2
     # every internal edge is used once in each direction, boundary edges as before
     from collections import Counter
@@ -214,13 +220,13 @@ def test_enclosure_emulation_agrees_with_energyplus(tmp_path, weather, w):
 
     from test_eplus_enclosure import _box, sliver_ground_box
 
-    from lod2energy.exporters.energyplus.enclosure import enclosure_defects
+    from lod2energy.energy.enclosure import enclosure_defects
 
     b = energy_ready(box())
     z = zones.zone_shells(b, np.zeros(3))[0]
     polys = _box() if w == 0 else sliver_ground_box(w)
     kinds = ["ground"] + ["ground"] * (len(polys) - 6) + ["roof", "wall", "wall", "wall", "wall"]
-    pieces = [energyplus.pieces.Piece(np.asarray(p, float), k, "Ground" if k == "ground" else "Outdoors", 0.5, i)
+    pieces = [energy.pieces.Piece(np.asarray(p, float), k, "Ground" if k == "ground" else "Outdoors", 0.5, i)
               for i, (p, k) in enumerate(zip(polys, kinds))]
     text, _, _ = energyplus.render.render_idf([z], [pieces], np.zeros(3), np.zeros(3), _opts(), [b.id], site=None)
     path = tmp_path / f"sliver_{int(w * 1000)}mm.idf"

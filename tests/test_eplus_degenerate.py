@@ -19,7 +19,7 @@ import pytest
 from export_helpers import EPW, energy_ready
 from factories import box
 from lod2energy.exporters import energyplus
-from lod2energy.exporters.energyplus.enclosure import eplus_degenerate
+from lod2energy.energy.enclosure import eplus_degenerate
 
 pytestmark = pytest.mark.skipif(energyplus.run.binary() is None, reason="EnergyPlus not installed")
 
@@ -93,7 +93,7 @@ def test_self_check_flags_every_surface_energyplus_calls_degenerate(tmp_path):
 
 def test_a_sliver_triangle_8_mm_wide_is_degenerate_for_both(tmp_path):
     tri = np.array([[10, 0.008, 0.0], [10, 0, 0], [0, 0, 0]])
-    assert eplus_degenerate(tri)
+    assert eplus_degenerate([tri])[0]
     base = energyplus.writer.write([energy_ready(box())], tmp_path / "base", energyplus.options.IdfOptions())[0]
     text = Path(base.path).read_text()
     zone = re.search(r"^Zone, ([^,]+),", text, re.M).group(1)

@@ -1,4 +1,4 @@
-"""EnergyPlus's zone enclosure test, emulated (exporters.energyplus.enclosure), and what the IDF
+"""EnergyPlus's zone enclosure test, emulated (lod2energy.energy.enclosure), and what the IDF
 writer does with a zone that fails it (slivers, vertex merges, simpler envelopes).
 
 The emulation's verdicts are compared with EnergyPlus itself in test_energyplus_run.py.
@@ -11,12 +11,20 @@ import pytest
 from export_helpers import energy_ready
 from factories import box, box_polygons, building_from_polygons, BOX_SEMANTICS
 
-from lod2energy.exporters import energyplus, zones
+from lod2energy import energy
+import lod2energy.energy.surfaces  # noqa: F401 - energy.surfaces
+import lod2energy.energy.pieces  # noqa: F401 - energy.pieces
+import lod2energy.energy.enclosure  # noqa: F401 - energy.enclosure
+import lod2energy.energy.conform  # noqa: F401 - energy.conform
+from lod2energy.exporters import energyplus
+
+from lod2energy.energy.zones import shells as zones
 from lod2energy.exporters.polygons import polygon_area3d
 from lod2energy.exporters.shellcheck import check_closed_outward
-from lod2energy.exporters.energyplus.enclosure import (_edges_not_two, enclosure_defects, snap_polygons,
+from lod2energy.energy.enclosure import (_edges_not_two, enclosure_defects, snap_polygons,
                                        unique_vertices)
-from lod2energy.exporters.energyplus import fallback as zone_fallback, model as energy_model
+from lod2energy.energy import fallback as zone_fallback
+from lod2energy.energy import model as energy_model
 
 
 def _box() -> list[np.ndarray]:
@@ -88,14 +96,14 @@ def test_near_collinear_chain_is_not_cut_into_slivers():
     ring = np.array([[0, 0, 0], [0, 6, 0], [4, 6, 0], [4, 3, 0], [12, 3.0003, 0], [16, 3.002, 0],
                      [20, 3, 0], [20, 0, 0]], dtype=float)[::-1]
     n = np.array([0, 0, -1.0])
-    pieces = energyplus.pieces._pieces_from_points(ring, [len(ring)], n, ring.mean(axis=0))
+    pieces = energy.pieces._pieces_from_points(ring, [len(ring)], n, ring.mean(axis=0))
     assert sum(polygon_area3d(p) for p in pieces) == pytest.approx(polygon_area3d(ring), rel=1e-9)
     used = {tuple(np.round(x, 6)) for p in pieces for x in p}
     assert used == {tuple(np.round(x, 6)) for x in ring}   # every corner kept (no T-junction)
     for p in pieces:
         q, k = p, len(p)
         # no piece has a vertex EnergyPlus would put on another of its edges
-        assert not any(energyplus.conform._on_segment(q[i], q[(i + 1) % k], q[j])
+        assert not any(energy.conform._on_segment(q[i], q[(i + 1) % k], q[j])
                        for i in range(k) for j in range(k) if j not in (i, (i + 1) % k))
 
 
@@ -113,7 +121,7 @@ def test_fallback_block_keeps_footprint_height_and_u_values():
     z = zones.zone_shells(b, np.zeros(3))[0]
     nz = zone_fallback.block_zone(z)
     assert nz is not None and "LoD1 block" in nz.warnings[-1]
-    pieces = energyplus.surfaces.zone_pieces(nz, 0, {}, False)
+    pieces = energy.surfaces.zone_pieces(nz, 0, {}, False)
     pts = [p.points for p in pieces]
     assert check_closed_outward(pts) == [] and enclosure_defects(pts) == []
     area = {k: sum(polygon_area3d(p.points) for p in pieces if p.kind == k) for k in ("roof", "wall", "ground")}
@@ -128,9 +136,9 @@ def test_zone_that_fails_gets_a_simpler_envelope(monkeypatch):
     # envelope that passes, with a warning saying so
     b = energy_ready(box())
     z = zones.zone_shells(b, np.zeros(3))[0]
-    pieces = energyplus.surfaces.zone_pieces(z, 0, {}, False)
+    pieces = energy.surfaces.zone_pieces(z, 0, {}, False)
     original = {id(p.points) for p in pieces}
-    real = energyplus.enclosure.enclosure_defects
+    real = energy.enclosure.enclosure_defects
 
     def reject_original(polys, *a, **k):
         return ["x"] if {id(p) for p in polys} == original else real(polys, *a, **k)
@@ -144,7 +152,7 @@ def test_zone_that_fails_gets_a_simpler_envelope(monkeypatch):
 def test_cleared_zone_moves_a_near_miss_off_the_edge():
     # a corner 7 mm from an edge it is not on (two walls drawn a few mm apart): EnergyPlus
     # would insert it into that edge; it moves 1.6 cm clear, nothing else moves
-    from lod2energy.exporters.zones import ZoneFace, ZoneShell
+    from lod2energy.energy.zones.shells import ZoneFace, ZoneShell
 
     V = np.array([[0, 0, 0], [10, 0, 0], [10, 1, 0], [5, 0.007, 0], [6, 1, 0], [5, 1, 0]], dtype=float)
     faces = (ZoneFace(((0, 1, 2),), "ground", None, 0.3, 0), ZoneFace(((3, 4, 5),), "ground", None, 0.3, 1))
@@ -163,47 +171,47 @@ def _stepped_wall(lean: float) -> np.ndarray:
 
 
 def test_energyplus_finds_collinear_points_in_its_projection_plane():
-    from lod2energy.exporters.energyplus.enclosure import eplus_collinear, eplus_vertices
+    from lod2energy.energy.enclosure import eplus_collinear, eplus_vertices
     # 0.04 degrees off vertical: EnergyPlus projects on XY, where the step's corner is collinear
-    assert eplus_collinear(_stepped_wall(0.002)) == [1]
-    assert len(eplus_vertices(_stepped_wall(0.002))) == 4
+    assert eplus_collinear([_stepped_wall(0.002)])[0] == [1]
+    assert len(eplus_vertices([_stepped_wall(0.002)])[0]) == 4
     # exactly vertical: projected on XZ, the corner is a corner
-    assert eplus_collinear(_stepped_wall(0.0)) == []
+    assert eplus_collinear([_stepped_wall(0.0)])[0] == []
     # a point on a straight edge is dropped in either case
     straight = np.array([[0, 0, 0], [5, 0, 0], [10, 0, 0], [10, 0, 3], [0, 0, 3]], float)
-    assert eplus_collinear(straight) == [1]
+    assert eplus_collinear([straight])[0] == [1]
 
 
 def test_keep_corners_fans_a_piece_energyplus_would_strip():
-    from lod2energy.exporters.energyplus.enclosure import eplus_vertices
+    from lod2energy.energy.enclosure import eplus_vertices
     wall = _stepped_wall(0.002)
-    piece = energyplus.pieces.Piece(wall, "wall", "Outdoors", 1.0, 0)
-    out = energyplus.conform.keep_corners([piece])
+    piece = energy.pieces.Piece(wall, "wall", "Outdoors", 1.0, 0)
+    out = energy.conform.keep_corners([piece])
     assert len(out) == 5 and all(len(p.points) == 3 for p in out)
-    assert all(len(eplus_vertices(p.points)) == 3 for p in out)
+    assert all(len(eplus_vertices([p.points])[0]) == 3 for p in out)
     assert sum(polygon_area3d(p.points) for p in out) == pytest.approx(polygon_area3d(wall))
     # every corner of the wall is still written
     corners = np.vstack([p.points for p in out])
     assert all(np.min(np.linalg.norm(corners - w, axis=1)) < 1e-9 for w in wall)
     # a piece EnergyPlus keeps whole is left alone
-    plain = energyplus.pieces.Piece(_stepped_wall(0.0), "wall", "Outdoors", 1.0, 0)
-    assert energyplus.conform.keep_corners([plain]) == [plain]
+    plain = energy.pieces.Piece(_stepped_wall(0.0), "wall", "Outdoors", 1.0, 0)
+    assert energy.conform.keep_corners([plain]) == [plain]
 
 
 def test_energyplus_drops_a_spike_in_its_projection_plane():
     """A 4 cm wall of a 3 cm column (real Delfshaven case): projected on XY it doubles back
     at its last vertex, which EnergyPlus removes as collinear (the sine of the turn is 0)."""
-    from lod2energy.exporters.energyplus.enclosure import eplus_collinear
+    from lod2energy.energy.enclosure import eplus_collinear
     wall = np.array([[1.745, 7.698, 6.8552], [1.7326, 7.698, 6.8307], [1.745, 7.7156, 6.8153],
                      [1.745, 7.728, 6.8343]])
-    assert eplus_collinear(wall) == [3]
+    assert eplus_collinear([wall])[0] == [3]
     # a vertical edge projects to a point on XY: its ends have no turn there and are kept
     # (a real Delfshaven wall; EnergyPlus removed none of its vertices)
     vertical = np.array([[13.026, 23.851, 4.825], [20.599, 5.663, 0.0], [11.8, 26.798, 0.0],
                          [11.8, 26.798, 4.825]])
-    assert eplus_collinear(vertical) == []
-    piece = energyplus.pieces.Piece(wall, "wall", "Outdoors", 1.0, 0)
-    assert all(len(p.points) == 3 for p in energyplus.conform.keep_corners([piece]))
+    assert eplus_collinear([vertical])[0] == []
+    piece = energy.pieces.Piece(wall, "wall", "Outdoors", 1.0, 0)
+    assert all(len(p.points) == 3 for p in energy.conform.keep_corners([piece]))
 
 
 def test_pieces_are_checked_as_written():
@@ -211,8 +219,8 @@ def test_pieces_are_checked_as_written():
     see the coordinates EnergyPlus reads."""
     b = energy_ready(box(10.00004, 8.00007, 6.00002))
     zs = zones.zone_shells(b, np.zeros(3), None)
-    pcs = energyplus.surfaces.zone_pieces(zs[0], 0, {}, True)
-    assert pcs and all(np.array_equal(p.points, np.round(p.points, energyplus.options.WRITE_DECIMALS)) for p in pcs)
+    pcs = energy.surfaces.zone_pieces(zs[0], 0, {}, True)
+    assert pcs and all(np.array_equal(p.points, np.round(p.points, energy.pieces.WRITE_DECIMALS)) for p in pcs)
     assert any(np.any(np.abs(p.points - 10.00004) < 1e-3) for p in pcs)
 
 
@@ -220,21 +228,21 @@ def test_triangle_collinear_in_projection_is_degenerate_for_energyplus():
     """A near-vertical sliver triangle (real Delfshaven wall): EnergyPlus projects it on XY,
     finds a vertex collinear and, with 3 sides only, calls it degenerate (a severe error).
     The writer fans it; the self-check flags such a surface."""
-    from lod2energy.exporters.energyplus.enclosure import eplus_collinear, eplus_degenerate
+    from lod2energy.energy.enclosure import eplus_collinear, eplus_degenerate
     tri = np.array([[4.207, 18.371, 9.367], [7.1675, 31.623, 0.0], [4.209, 18.38, 0.0]])
-    assert eplus_collinear(tri) == [1]
-    assert eplus_degenerate(tri)
-    assert not eplus_degenerate(np.array([[0, 0, 0], [1, 0, 0], [0, 0, 1.0]]))
-    out = energyplus.conform.keep_corners([energyplus.pieces.Piece(tri, "wall", "Outdoors", 1.0, 0)])
-    assert out and not any(eplus_degenerate(p.points) for p in out)
+    assert eplus_collinear([tri])[0] == [1]
+    assert eplus_degenerate([tri])[0]
+    assert not eplus_degenerate([np.array([[0, 0, 0], [1, 0, 0], [0, 0, 1.0]])])[0]
+    out = energy.conform.keep_corners([energy.pieces.Piece(tri, "wall", "Outdoors", 1.0, 0)])
+    assert out and not any(eplus_degenerate([p.points])[0] for p in out)
 
 
 def test_out_of_plane_piece_is_written_as_triangles():
     """A roof quad with one corner 4 cm up (1 cm off its Newell plane; EnergyPlus reports 1 cm
     "out of line" as a severe error) becomes planar triangles."""
     quad = np.array([[0, 0, 10.0], [8, 0, 10.0], [8, 6, 10.04], [0, 6, 10.0]])
-    out = energyplus.conform.keep_corners([energyplus.pieces.Piece(quad, "roof", "Outdoors", 1.0, 0)])
+    out = energy.conform.keep_corners([energy.pieces.Piece(quad, "roof", "Outdoors", 1.0, 0)])
     assert len(out) == 4 and all(len(p.points) == 3 for p in out)
     assert sum(polygon_area3d(p.points) for p in out) == pytest.approx(polygon_area3d(quad), rel=1e-3)
-    flat = energyplus.pieces.Piece(np.array([[0, 0, 10.0], [8, 0, 10.0], [8, 6, 10.0], [0, 6, 10.0]]), "roof", "Outdoors", 1.0, 0)
-    assert energyplus.conform.keep_corners([flat]) == [flat]
+    flat = energy.pieces.Piece(np.array([[0, 0, 10.0], [8, 0, 10.0], [8, 6, 10.0], [0, 6, 10.0]]), "roof", "Outdoors", 1.0, 0)
+    assert energy.conform.keep_corners([flat]) == [flat]

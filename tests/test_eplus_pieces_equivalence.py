@@ -9,9 +9,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from lod2energy.exporters.energyplus import enclosure
-from lod2energy.exporters.energyplus.conform import keep_corners
-from lod2energy.exporters.energyplus.pieces import Piece, _as_written
+from lod2energy import cache
+from lod2energy.energy import enclosure
+from lod2energy.energy.conform import keep_corners
+from lod2energy.energy.pieces import Piece, _as_written
 
 
 def _rings(rng, n=400):
@@ -62,7 +63,7 @@ def test_enclosure_verdicts_remembered_are_the_computed_ones():
         [[0, 0, 0], [1, 0, 0], [1, 0, 1], [0, 0, 1]], [[1, 0, 0], [1, 1, 0], [1, 1, 1], [1, 0, 1]],
         [[1, 1, 0], [0, 1, 0], [0, 1, 1], [1, 1, 1]], [[0, 1, 0], [0, 0, 0], [0, 0, 1], [0, 1, 1]])]
     zones += [box, box[:-1]]
-    enclosure._DEFECTS_MEMO.clear()
+    cache.clear(enclosure.DEFECTS)
     for z in zones + zones:
         got = enclosure.enclosure_defects([q.copy() for q in z])
         exp = enclosure._enclosure_defects([np.asarray(q, dtype=np.float64) for q in z], enclosure.POINT_TOL)
@@ -73,7 +74,7 @@ def test_enclosure_verdicts_remembered_are_the_computed_ones():
     assert enclosure.enclosure_defects(box) == [] and enclosure.enclosure_defects(box[:-1])
     # the same values in another frame or tolerance are another key
     assert enclosure.enclosure_defects([q + 1e-3 for q in box[:-1]], 0.0127)
-    assert 0 < len(enclosure._DEFECTS_MEMO) <= enclosure._DEFECTS_MEMO_SIZE
+    assert 0 < cache.sizes()[enclosure.DEFECTS][0] <= enclosure.DEFECTS_KEPT
 
 
 def test_vertices_and_degenerate_together_as_apart():
@@ -85,8 +86,8 @@ def test_vertices_and_degenerate_together_as_apart():
               np.array([[0, 0, 0], [1, 0, 0], [0.5, 0.001, 0], [0.002, 0, 0]], float),
               np.array([[0, 0, 0], [0, 0, 0]], float), np.zeros((0, 3))]
     faces, degen = enclosure.eplus_vertices_and_degenerate(rings)
-    assert degen == enclosure.eplus_degenerate_many(rings) and any(degen) and not all(degen)
-    exp = enclosure.eplus_vertices_many(rings)
+    assert degen == enclosure.eplus_degenerate(rings) and any(degen) and not all(degen)
+    exp = enclosure.eplus_vertices(rings)
     assert len(faces) == len(exp)
     assert all(a.shape == b.shape and np.array_equal(a, b) for a, b in zip(faces, exp))
     zone = rings[:30]
@@ -94,10 +95,10 @@ def test_vertices_and_degenerate_together_as_apart():
 
 
 def test_surely_planar_only_when_the_tests_pass():
-    from lod2energy.exporters.energyplus.conform import PIECE_PLANAR
-    from lod2energy.exporters.energyplus.pieces import _planar_dev_of, _surely_planar
+    from lod2energy.energy.conform import PIECE_PLANAR
+    from lod2energy.energy.pieces import _planar_dev_of, _surely_planar
     from lod2energy.exporters.polygons import newell_normal
-    from lod2energy.exporters.zones import MIN_PIECE_AREA
+    from lod2energy.energy.zones.shells import MIN_PIECE_AREA
 
     rng = np.random.default_rng(13)
     rings = []
@@ -134,21 +135,21 @@ def test_surely_planar_only_when_the_tests_pass():
 
 
 def test_degenerate_given_collinear_same_verdicts():
-    from lod2energy.exporters.energyplus.conform import _degenerate_given
+    from lod2energy.energy.conform import _degenerate_given
 
     rings = _rings(np.random.default_rng(17))
     rings += [np.array([[0, 0, 0], [0.004, 0, 0], [0.008, 0.001, 0]], float),
               np.array([[0, 0, 0], [1, 0, 0], [0.5, 0.001, 0], [0.002, 0, 0]], float)]
-    got = _degenerate_given(rings, enclosure._collinear_many(rings))
-    assert got == enclosure.eplus_degenerate_many(rings) and any(got)
+    got = _degenerate_given(rings, enclosure.eplus_collinear(rings))
+    assert got == enclosure.eplus_degenerate(rings) and any(got)
 
 
 def _ref_find_party_faces(zones, plane_tol=0.05, min_area=0.01, angle_cos=0.985):
     """surfaces.find_party_faces before its face pairs were filtered all at once."""
     import shapely
 
-    from lod2energy.exporters.energyplus.pieces import _face_frame
-    from lod2energy.exporters.energyplus.surfaces import _shapely_poly
+    from lod2energy.energy.pieces import _face_frame
+    from lod2energy.energy.surfaces import _shapely_poly
     from lod2energy.exporters.polygons import plane_basis
 
     boxes = np.array([[*z.vertices.min(axis=0), *z.vertices.max(axis=0)] if len(z.vertices)
@@ -194,8 +195,8 @@ def test_party_faces_same_as_pair_by_pair():
     from factories import box
 
     from export_helpers import energy_ready
-    from lod2energy.exporters.energyplus.surfaces import find_party_faces
-    from lod2energy.exporters.zones import local_origin, zone_shells
+    from lod2energy.energy.surfaces import find_party_faces
+    from lod2energy.energy.zones.shells import local_origin, zone_shells
 
     rng = np.random.default_rng(19)
     bs = []
@@ -230,8 +231,8 @@ def test_drop_coincident_all_at_once_as_one_by_one():
         rings.append(q)
     rings += [np.zeros((0, 3)), np.zeros((1, 3)), np.array([[0, 0, 0], [np.nan, 0, 0], [1, 1, 0]])]
     for floor in (1, 3):
-        got = enclosure._drop_coincident_many(rings, floor)
-        exp = [enclosure._drop_coincident(q, floor) for q in rings]
+        got = enclosure._drop_coincident(rings, floor)
+        exp = [enclosure._drop_coincident_one(q, floor) for q in rings]
         for a, b in zip(got, exp):
             assert a.shape == b.shape and np.array_equal(a, b, equal_nan=True)
     assert sum(len(a) < len(q) for a, q in zip(got, rings)) > 20  # some vertices were dropped
@@ -242,8 +243,8 @@ def test_party_faces_of_the_first_zones_only():
     # zones are those of the full search, the later zones keep only their pairs with them
     from export_helpers import energy_ready
     from factories import box
-    from lod2energy.exporters.energyplus.surfaces import find_party_faces
-    from lod2energy.exporters.zones import local_origin, zone_shells
+    from lod2energy.energy.surfaces import find_party_faces
+    from lod2energy.energy.zones.shells import local_origin, zone_shells
 
     bs = [energy_ready(box(dx=6.0, dz=h, id=f"b{i}", origin=(6.0 * (i % 3), 8.0 * (i // 3), 0.0)))
           for i, h in enumerate((9.0, 6.0, 12.0, 7.5, 10.0, 6.0))]

@@ -228,7 +228,7 @@ def test_an_idf_context_job_past_the_timeout_is_stopped_and_the_neighbours_expor
     """Pass 2 (the IDF writer with its neighbours) has the --timeout budget of pass 1: the
     energy model of the middle box of a terraced row of 3 spins past it; its IDF is reported
     not written (timeout), the other two are written (in-process: the patch reaches the job)."""
-    from lod2energy.exporters.energyplus import model as energy_model
+    from lod2energy.energy import model as energy_model
     real = energy_model.prepare_energy_model
 
     def slow_for_b1(buildings, options, context=()):

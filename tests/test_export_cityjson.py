@@ -13,7 +13,9 @@ import pytest
 from factories import box, gabled_house, open_box
 from lod2energy import semantics as S
 from lod2energy import thermal as T
-from lod2energy.exporters import cityjson as X
+from lod2energy.exporters.cityjson import writer as X
+from lod2energy.exporters.cityjson import schema as CS
+from lod2energy.io.cityjson_grid import on_grid
 from lod2energy.io import cityjson as cjio
 from lod2energy.model import Building, CityModel, frozen_mapping
 from conftest import shared_path
@@ -179,7 +181,7 @@ def test_buildings_are_checked_on_the_files_grid(tmp_path):
     assert res.ok, res.problems
     assert res.building_ids == ("tall",) and [i for i, _ in res.skipped] == ["flat"]
     off = replace(tall, vertices=tall.vertices + 0.3)
-    assert np.array_equal(X.on_grid(off, coarse.transform).vertices, np.rint(off.vertices))
+    assert np.array_equal(on_grid(off, coarse.transform).vertices, np.rint(off.vertices))
 
 
 def test_bad_version_is_reported(tmp_path):
@@ -289,7 +291,7 @@ def test_self_check_needs_no_shared_folder():
     for v in ("10", "11", "20"):
         assert (d / "extensions" / v / "energy.ext.json").is_file()
         assert any(f.name.startswith("cityjson") for f in (d / "schemas" / "cityjson" / v).iterdir())
-    assert "shared" not in str(Path(str(d)).resolve().relative_to(Path(X.__file__).resolve().parents[1]))
+    assert "shared" not in str(Path(str(d)).resolve().relative_to(Path(X.__file__).resolve().parents[2]))
 
 
 @pytest.mark.parametrize("v", ("11", "20"))
@@ -305,12 +307,12 @@ def test_shipped_extension_is_valid_against_the_extension_schema(v):
 
 def test_fast_schema_check_agrees_with_full_validation(good_file):
     """The per-CityObject dispatch gives the same verdict as validating the whole document."""
-    schemas = X._validators("2.0")
+    schemas = CS._validators("2.0")
     for fn in (lambda d: None, _bad_semantic_type, _bad_object_type):
         doc = json.loads(good_file.read_text())
         fn(doc)
         full = list(schemas.document.iter_errors(doc))
-        fast = X._schema_errors(schemas, doc, "doc")
+        fast = CS._schema_errors(schemas, doc, "doc")
         assert bool(full) == bool(fast)
 
 
@@ -385,8 +387,8 @@ def test_compiled_schema_check_never_accepts_what_jsonschema_rejects(tmp_path, v
     res = X.write(str(tmp_path / "g.city.json"), model(version), two_buildings(), version)
     assert res.ok
     good = json.loads(Path(res.path).read_text())
-    schemas = X._validators(version)
-    assert X._schema_valid_fast(version, good)
+    schemas = CS._validators(version)
+    assert CS._schema_valid_fast(version, good)
     rng = np.random.default_rng(3)
     rejected = 0
     for _ in range(200):
@@ -394,13 +396,13 @@ def test_compiled_schema_check_never_accepts_what_jsonschema_rejects(tmp_path, v
         for _ in range(int(rng.integers(1, 3))):
             _random_mutation(doc, rng)
         before = json.dumps(doc, sort_keys=True)
-        fast = X._schema_valid_fast(version, doc)
+        fast = CS._schema_valid_fast(version, doc)
         assert json.dumps(doc, sort_keys=True) == before
-        full = not X._schema_errors(schemas, doc, "doc")   # agrees with iter_errors (test above)
+        full = not CS._schema_errors(schemas, doc, "doc")   # agrees with iter_errors (test above)
         assert full or not fast
         rejected += not fast
     assert rejected > 60
     for fn in (_bad_semantic_type, _bad_object_type, _address_as_object):
         doc = json.loads(json.dumps(good))
         fn(doc)
-        assert not X._schema_valid_fast(version, doc)
+        assert not CS._schema_valid_fast(version, doc)

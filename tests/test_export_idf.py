@@ -14,10 +14,14 @@ from export_helpers import (DATA, energy_ready, eppy_idf, l_shaped, parts_with_s
                             shifted, steep_house_with_dormer, two_part_building)
 from factories import box, gabled_house
 
+from lod2energy import energy
+import lod2energy.energy.zones.storeys  # noqa: F401 - energy.zones.storeys
+import lod2energy.energy.pieces  # noqa: F401 - energy.pieces
 from lod2energy.exporters import energyplus
 from lod2energy.errors import ParameterError
 from lod2energy.exporters import energyplus, polygons
-from lod2energy.exporters.energyplus import model as energy_model
+from lod2energy.energy import model as energy_model
+from lod2energy.energy import parts as energy_parts
 
 
 @pytest.fixture(autouse=True)
@@ -282,9 +286,9 @@ def test_real_buildings_pass_self_check(tmp_path, rel, multipart, n):
 def test_a_dormer_without_a_floor_joins_the_zone_it_sits_on(tmp_path):
     house, ht, dormer, dt = steep_house_with_dormer()
     b = energy_ready(parts_with_semantics([(house, ht), (dormer, dt)]))
-    assert energy_model.floorless_parts(b) == ["dormer_house-part1"]
-    merged, notes = energy_model.merge_floorless_parts(b)
-    assert energy_model.floorless_parts(merged) == [] and "united with dormer_house-part0" in notes[0]
+    assert energy_parts.floorless_parts(b) == ["dormer_house-part1"]
+    merged, notes = energy_parts.merge_floorless_parts(b)
+    assert energy_parts.floorless_parts(merged) == [] and "united with dormer_house-part0" in notes[0]
     assert [o.id for o, _, _ in merged.energy_objects()] == ["dormer_house-part0"]
     assert [o.id for o, _, _ in b.energy_objects()] == ["dormer_house-part0", "dormer_house-part1"]  # input kept
     res = energyplus.writer.write([b], tmp_path)
@@ -297,20 +301,20 @@ def test_a_floorless_part_that_touches_nothing_is_left_out():
     house, ht, dormer, dt = steep_house_with_dormer()
     lifted = [[(x, y, z + 20) for x, y, z in r] for r in dormer]
     b = energy_ready(parts_with_semantics([(house, ht), (lifted, dt)]))
-    merged, notes = energy_model.merge_floorless_parts(b)
+    merged, notes = energy_parts.merge_floorless_parts(b)
     assert [o.id for o, _, _ in merged.energy_objects()] == ["dormer_house-part0"]
     assert "left out of the IDF" in notes[0]
 
 
 def test_a_zone_without_ground_label_gets_its_downward_face_as_floor():
-    pieces = [energyplus.pieces.Piece(np.array(p, float), k, "Outdoors", 0.3, i) for i, (p, k) in enumerate([
+    pieces = [energy.pieces.Piece(np.array(p, float), k, "Outdoors", 0.3, i) for i, (p, k) in enumerate([
         ([(0, 0, 0), (0, 1, 0), (1, 1, 0), (1, 0, 0)], "wall"),             # faces down, labelled wall
         ([(0, 0, 1), (1, 0, 1), (1, 1, 1), (0, 1, 1)], "roof")])]
-    out, n = energyplus.zones.with_floor(pieces)
+    out, n = energy.zones.storeys.with_floor(pieces)
     assert n == 1 and [p.kind for p in out] == ["floor", "roof"]
-    assert energyplus.zones.with_floor(out) == (out, 0)                                   # a floor already: unchanged
-    steep = [energyplus.pieces.Piece(np.array([(0, 0, 0), (1, 0, 0), (1, 1, 2.5)], float), "wall", "Outdoors", 0.3, 0)]
-    assert energyplus.zones.with_floor(steep)[1] == 0                                     # EnergyPlus would not take it
+    assert energy.zones.storeys.with_floor(out) == (out, 0)                                   # a floor already: unchanged
+    steep = [energy.pieces.Piece(np.array([(0, 0, 0), (1, 0, 0), (1, 1, 2.5)], float), "wall", "Outdoors", 0.3, 0)]
+    assert energy.zones.storeys.with_floor(steep)[1] == 0                                     # EnergyPlus would not take it
 
 
 def test_a_written_zone_failing_the_enclosure_check_is_written_with_a_simpler_envelope(tmp_path, monkeypatch):

@@ -12,7 +12,7 @@ from export_helpers import DATA, energy_ready, l_shaped, parts_building, real_bu
 from factories import box, box_polygons, gabled_house
 
 from lod2energy.errors import ParameterError
-from lod2energy.exporters import stl
+from lod2energy.exporters.stl import writer as stl
 
 
 @pytest.mark.parametrize("ascii_", [True, False], ids=["ascii", "binary"])
@@ -29,7 +29,7 @@ def test_canonical_buildings_closed_outward(tmp_path, make, ascii_):
 
 
 def _zone_mesh_of(b):
-    from lod2energy.exporters.zones import local_origin, zone_shells
+    from lod2energy.energy.zones.shells import local_origin, zone_shells
     z = zone_shells(b, local_origin([b]))[0]
     t, _ = z.triangles()
     return z.vertices, t
@@ -291,7 +291,7 @@ def test_caps_of_two_faces_on_one_chord_are_flipped_face_by_face(monkeypatch):
     # the line (Berlin LoD2 ground outlines). Both faces triangulate into caps fanned onto
     # the chord A-B, which so carries four triangles: a non-manifold STL, and no single
     # neighbour across A-B to flip a cap into. Flipped face by face, it closes.
-    from lod2energy.exporters.zones import ZoneFace, ZoneShell
+    from lod2energy.energy.zones.shells import ZoneFace, ZoneShell
     e = 5e-8
     v = np.array([[0, 0, 0], [6, -e, 0], [13, -e, 0], [20, 0, 0], [20, 10, 0], [0, 10, 0],
                   [0, 0, 6], [20, 0, 6], [20, 10, 6], [0, 10, 6]], dtype=float)

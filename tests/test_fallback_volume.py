@@ -1,7 +1,7 @@
 """The IDF's simpler envelopes keep the zone's volume (issue 16: zone volumes sum to the shell's).
 
 A zone whose written pieces would fail EnergyPlus's enclosure test is written as an LoD1
-block (:func:`lod2energy.exporters.energyplus.fallback.block_zone`). Extruded to the
+block (:func:`lod2energy.energy.fallback.block_zone`). Extruded to the
 area-weighted mean roof height, a hipped house's block holds more than the house: the roof's
 trapezoids count with the mean of their vertex heights, above their centroids.
 """
@@ -15,11 +15,12 @@ import pytest
 from factories import building_from_polygons
 from export_helpers import energy_ready
 
-from lod2energy.exporters import zones
-from lod2energy.exporters.energyplus import fallback, model as energy_model
-from lod2energy.exporters.energyplus.enclosure import enclosure_defects
-from lod2energy.exporters.energyplus.pieces import _pieces_volume
-from lod2energy.exporters.energyplus.surfaces import zone_pieces
+from lod2energy.energy.zones import shells as zones
+from lod2energy.energy import fallback
+from lod2energy.energy import model as energy_model
+from lod2energy.energy.enclosure import enclosure_defects
+from lod2energy.energy.pieces import _pieces_volume
+from lod2energy.energy.surfaces import zone_pieces
 from lod2energy.exporters.shellcheck import check_closed_outward
 
 

@@ -114,8 +114,8 @@ def test_triangulate_keeps_dropped_vertices():
 
 
 def _ref_eplus_collinear(points):
-    """exporters.energyplus.enclosure.eplus_collinear before it was batched (np.roll per ring)."""
-    from exporters.energyplus.enclosure import PLANE_DET, PROJECTED_EPS, TURN_THRESHOLD
+    """lod2energy.energy.enclosure.eplus_collinear before it was batched (np.roll per ring)."""
+    from lod2energy.energy.enclosure import PLANE_DET, PROJECTED_EPS, TURN_THRESHOLD
     q = np.asarray(points, dtype=np.float64)
     k = len(q)
     if k < 3:
@@ -136,7 +136,7 @@ def test_batched_collinear_test_is_the_single_one():
     """Batched over many rings, EnergyPlus's collinear test finds what it finds on each ring
     alone: rings with collinear runs, spikes, vertical walls (XY projection degenerate) and
     projected areas at the plane threshold."""
-    from exporters.energyplus import enclosure as ee
+    from lod2energy.energy import enclosure as ee
     rng = np.random.default_rng(3)
     rings = []
     for i in range(300):
@@ -152,10 +152,9 @@ def test_batched_collinear_test_is_the_single_one():
             p *= 1e-2 * rng.random()  # around PLANE_DET
         rings.append(p)
     rings += [r for r in _rings(rng, 60)]
-    got = ee._collinear_many(rings)
+    got = ee.eplus_collinear(rings)
     assert got == [_ref_eplus_collinear(r) for r in rings]
     assert any(got) and not all(got)
-    assert [ee.eplus_collinear(r) for r in rings] == got
 
 
 # ---------------------------------------------------------------- session 22, second wave
@@ -199,7 +198,7 @@ def _ref_pieces_volume(pieces):
 
 
 def test_pieces_volume_same_bits():
-    from exporters.energyplus.pieces import Piece, _pieces_volume
+    from lod2energy.energy.pieces import Piece, _pieces_volume
 
     rng = np.random.default_rng(5)
     rings = _rings(rng)
@@ -245,22 +244,22 @@ def test_upper_left_first_and_vertex_lines_same_as_before():
 def _ref_keep_corners(pieces, tol=1e-3):
     from dataclasses import replace
 
-    from exporters.energyplus.conform import PIECE_PLANAR
-    from exporters.energyplus.enclosure import eplus_collinear, eplus_degenerate, _on_line
-    from exporters.energyplus.options import WRITE_DECIMALS
-    from exporters.energyplus.pieces import _planar_dev
+    from lod2energy.energy.conform import PIECE_PLANAR
+    from lod2energy.energy.enclosure import eplus_collinear, eplus_degenerate, _on_line
+    from lod2energy.energy.pieces import WRITE_DECIMALS
+    from lod2energy.energy.pieces import _planar_dev
 
     out = []
     for p in pieces:
         q = p.points
-        lost = [i for i in eplus_collinear(q) if not _on_line(q[i - 1], q[(i + 1) % len(q)], q[i], tol)]
-        if not lost and not eplus_degenerate(q) and (len(q) == 3 or _planar_dev(q) <= PIECE_PLANAR):
+        lost = [i for i in eplus_collinear([q])[0] if not _on_line(q[i - 1], q[(i + 1) % len(q)], q[i], tol)]
+        if not lost and not eplus_degenerate([q])[0] and (len(q) == 3 or _planar_dev(q) <= PIECE_PLANAR):
             out.append(p)
             continue
         c = np.round(q.mean(axis=0), WRITE_DECIMALS)
         for i in range(len(q)):
             tri = np.array([c, q[i], q[(i + 1) % len(q)]])
-            if polygon_area(tri) > 1e-9 and not eplus_degenerate(tri):
+            if polygon_area(tri) > 1e-9 and not eplus_degenerate([tri])[0]:
                 out.append(replace(p, points=tri))
     return out
 
@@ -288,8 +287,8 @@ def _wall_pieces(rng, count=150):
 
 
 def test_keep_corners_batched_same_pieces():
-    from exporters.energyplus.conform import keep_corners
-    from exporters.energyplus.pieces import Piece
+    from lod2energy.energy.conform import keep_corners
+    from lod2energy.energy.pieces import Piece
 
     rng = np.random.default_rng(31)
     rings = _wall_pieces(rng) + [q for q in _rings(rng, 120) if len(q) >= 3]
@@ -303,7 +302,7 @@ def test_keep_corners_batched_same_pieces():
 
 def test_window_for_same_with_vectorised_box():
 
-    from exporters.energyplus.openings import window_for
+    from lod2energy.energy.openings import window_for
 
     from _window_reference import bisection_window as ref
 

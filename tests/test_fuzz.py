@@ -254,7 +254,8 @@ def test_read_and_validate_never_raise_and_keep_the_other_buildings(data):
 @settings(settings.get_profile(PROFILE), max_examples=EXPORT_EXAMPLES)
 def test_repair_and_export_never_raise_and_keep_the_other_buildings(data, tmp_path_factory):
     from lod2energy.config import DEFAULT
-    from lod2energy.exporters import cityjson as cj_export, stl
+    from lod2energy.exporters.cityjson import writer as cj_export
+    from lod2energy.exporters.stl import writer as stl
     from lod2energy.repair.pipeline import repair_building
     from lod2energy.semantics import label_building
     from lod2energy.thermal import ThermalOptions, assign_u_values

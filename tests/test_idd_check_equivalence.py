@@ -1,4 +1,4 @@
-""":func:`lod2energy.idd.check_idf` (a memo of the objects an IDF repeats from file to file,
+""":func:`lod2energy.exporters.energyplus.idd.check_idf` (a memo of the objects an IDF repeats from file to file,
 one pass over a coordinate list when every value is a finite number) reports what the
 field-by-field check it replaced reports (``tests/_idd_reference.py``), on a written IDF and
 on random corruptions of its fields, object counts and problem limits."""
@@ -14,7 +14,7 @@ from export_helpers import energy_ready
 from factories import box
 
 from lod2energy.exporters import energyplus
-from lod2energy.idd import check_idf, load_idd, parse_idf
+from lod2energy.exporters.energyplus.idd import check_idf, load_idd, parse_idf
 
 from _idd_reference import check_idf_reference
 

@@ -3,7 +3,7 @@
 - :func:`exporters.shellcheck._surely_outward` (the closed-shell check's volume sign without
   triangulating) only says "positive" when the earcut volume is positive, so the check's
   problems are those of the full computation;
-- :func:`exporters.energyplus.openings.window_for` (one containment test when the ratio, not
+- :func:`lod2energy.energy.openings.window_for` (one containment test when the ratio, not
   the piece's shape, limits the window) equals the 24-step bisection.
 """
 from __future__ import annotations
@@ -92,7 +92,7 @@ def test_surely_outward_refuses_a_ring_that_winds_twice():
 
 @pytest.mark.parametrize("wwr", [0.05, 0.3, 0.85, 0.97])
 def test_window_for_same_as_the_bisection(wwr):
-    from exporters.energyplus.openings import window_for
+    from lod2energy.energy.openings import window_for
 
     from _window_reference import bisection_window as ref
 
@@ -136,7 +136,7 @@ from _zoning_reference import clip_before_fast_path as _ref_clip  # noqa: E402
 
 
 def test_zoning_area_and_clip_same_bits():
-    from lod2energy import zoning
+    from lod2energy.energy.zones import cut as zoning
 
     rng = np.random.default_rng(17)
     for i in range(400):
@@ -155,7 +155,7 @@ def test_zoning_area_and_clip_same_bits():
 
 def test_idd_classes_built_on_first_use_equal_the_eager_parse():
     from lod2energy.exporters import energyplus
-    from lod2energy.idd import check_idf, parse_idd, parse_idf
+    from lod2energy.exporters.energyplus.idd import check_idf, parse_idd, parse_idf
 
     from _idd_reference import parse_idd_reference
 

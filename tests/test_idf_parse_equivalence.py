@@ -1,4 +1,4 @@
-"""The fast IDF reader (:func:`lod2energy.idd.parse_idf`) gives the same objects as the
+"""The fast IDF reader (:func:`lod2energy.exporters.energyplus.idd.parse_idf`) gives the same objects as the
 line-by-line reader it replaced, kept here as the reference: on IDF text as the writer
 writes it, and on random text of separators, comments, blanks and line breaks (values that
 span lines, objects with no ``;``, empty fields, a ``;`` alone on its line)."""
@@ -9,7 +9,7 @@ import re
 
 import pytest
 
-from lod2energy.idd import IdfObject, parse_idf
+from lod2energy.exporters.energyplus.idd import IdfObject, parse_idf
 
 
 def _ref_parse_idf(text: str) -> list[IdfObject]:
@@ -79,9 +79,9 @@ def test_random_text(seed):
 
 @pytest.mark.parametrize("seed", range(40))
 def test_random_text_with_newlines_only(seed):
-    # the whole-text reader (lod2energy.idd._parse_idf_plain) takes these unless a value
+    # the whole-text reader (lod2energy.exporters.energyplus.idd._parse_idf_plain) takes these unless a value
     # spans lines or the text ends inside an object
-    from lod2energy.idd import _parse_idf_plain
+    from lod2energy.exporters.energyplus.idd import _parse_idf_plain
 
     rng = random.Random(1000 + seed)
     alphabet = [",", ";", ";", "!", "\n", "\n", " ", "\t", "a", "B", "1.5", "-", "  x y ", "Wall 1", "\u00a0"]
@@ -97,7 +97,7 @@ def test_random_text_with_newlines_only(seed):
 
 
 def test_written_idf_text_read_whole():
-    from lod2energy.idd import _parse_idf_plain
+    from lod2energy.exporters.energyplus.idd import _parse_idf_plain
 
     assert _parse_idf_plain(_WRITTEN) == _ref_parse_idf(_WRITTEN)
     text = _WRITTEN.replace("Zone Mean Air", "Zone\n  Mean Air")  # a value over two lines

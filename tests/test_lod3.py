@@ -10,8 +10,8 @@ import numpy as np
 import pytest
 
 from export_helpers import EPW
-from exporters.zones import local_origin, zone_shells
-from lod2energy.exporters.energyplus.openings import Opening, opening_polygon, split_openings
+from lod2energy.energy.zones.shells import local_origin, zone_shells
+from lod2energy.energy.openings import Opening, opening_polygon, split_openings
 from lod2energy.exporters import energyplus
 from lod2energy.cli import main
 from lod2energy.io import read

@@ -16,7 +16,7 @@ import pytest
 import trimesh
 
 from lod2energy.cli import main
-from lod2energy.exporters.stl import read_stl
+from lod2energy.exporters.stl.writer import read_stl
 
 
 def many_parts(n: int = 10, size: float = 6.0, solid: bool = False) -> tuple[dict, float]:

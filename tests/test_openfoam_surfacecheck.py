@@ -9,8 +9,8 @@ import pytest
 from export_helpers import DATA, energy_ready, l_shaped, parts_building, real_buildings, two_part_building
 from factories import box, box_polygons, gabled_house
 
-from lod2energy import openfoam
-from lod2energy.exporters import stl
+from lod2energy.exporters.cfd import openfoam
+from lod2energy.exporters.stl import writer as stl
 
 
 needs_foam = pytest.mark.skipif(openfoam.surface_check_binary() is None,

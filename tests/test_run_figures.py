@@ -1,6 +1,6 @@
 """Run figures per building and per zone in the records (registry) and report.json/csv (records)."""
 from lod2energy.exporters.result import ExportResult
-from lod2energy.exporters.registry import _records
+from lod2energy.exporters.registry import records_of as _records
 from lod2energy.records import CSV_FIELDS, RESULT_FIGURES, BuildingRecord
 
 

@@ -1,11 +1,11 @@
-"""What the CityJSON self-check keeps while it reads an exported document (exporters.cityjson_check)."""
+"""What the CityJSON self-check keeps while it reads an exported document (exporters.cityjson.check)."""
 from __future__ import annotations
 
 import json
 
 import numpy as np
 
-from lod2energy.exporters import cityjson_check as C
+from lod2energy.exporters.cityjson import check as C
 from lod2energy.io import cityjson as cjio
 
 

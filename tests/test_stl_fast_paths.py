@@ -1,7 +1,7 @@
 """The STL writer's fast paths give what the code they replace gave.
 
-:func:`exporters.rows.unique_rows` against ``np.unique(axis=0)`` on random index arrays;
-the one-pass cap test of :func:`exporters.stl._zone_mesh` against :func:`exporters.stl.flip_caps`
+:func:`exporters.stl.rows.unique_rows` against ``np.unique(axis=0)`` on random index arrays;
+the one-pass cap test of :func:`exporters.stl.writer._zone_mesh` against :func:`exporters.stl.writer.flip_caps`
 face by face (the replaced loop), on random faces with caps and on zones of a real building.
 """
 from __future__ import annotations
@@ -10,9 +10,9 @@ import numpy as np
 import pytest
 from scipy.spatial import cKDTree
 
-from exporters import stl
-from exporters.rows import row_keys, same_position, unique_rows
-from exporters.zones import local_origin, zone_shells
+from lod2energy.exporters.stl import writer as stl
+from exporters.stl.rows import row_keys, same_position, unique_rows
+from lod2energy.energy.zones.shells import local_origin, zone_shells
 from factories import box, building_from_polygons, gabled_house
 
 

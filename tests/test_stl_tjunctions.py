@@ -9,10 +9,10 @@ import numpy as np
 import pytest
 
 from test_repair import box, t_junction
-from lod2energy import openfoam
+from lod2energy.exporters.cfd import openfoam
 from lod2energy.cli import main
-from lod2energy.exporters import stl
-from lod2energy.exporters.zones import zone_shells
+from lod2energy.exporters.stl import writer as stl
+from lod2energy.energy.zones.shells import zone_shells
 
 
 def test_split_adds_the_t_vertices_to_the_edges_without_a_twin():

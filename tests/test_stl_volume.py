@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 
 from lod2energy.cli import main
-from lod2energy.exporters.stl import read_stl
+from lod2energy.exporters.stl.writer import read_stl
 from lod2energy.geometry import signed_volume
 
 # two buildings of DenHaag_01 whose parts' union lost volume in the 1 mm simplification

@@ -126,7 +126,7 @@ def delft_export(tmp_path_factory):
 
 
 def test_streamed_self_check_passes_the_file_and_catches_what_the_whole_check_caught(delft_export, tmp_path):
-    from lod2energy.exporters.cityjson import self_check
+    from lod2energy.exporters.cityjson.writer import self_check
     out, _ = delft_export
     good = out / "delft_subset.energy.city.json"
     assert self_check(str(good)) == []

@@ -1,20 +1,24 @@
-"""Storey zones (lod2energy.zoning and the IDF writer's zoning="storey")."""
+"""Storey zones (lod2energy.energy.zones.cut and the IDF writer's zoning="storey")."""
 import numpy as np
 import pytest
 
 from export_helpers import EPW, energy_ready, eppy_idf, parts_building, real_buildings, shifted
 from factories import box, box_polygons, gabled_house
-from lod2energy import zoning
+from lod2energy import energy
+import lod2energy.energy.zones.storeys  # noqa: F401 - energy.zones.storeys
+import lod2energy.energy.surfaces  # noqa: F401 - energy.surfaces
+import lod2energy.energy.pieces  # noqa: F401 - energy.pieces
+from lod2energy.energy.zones import cut as zoning
 from lod2energy.exporters import energyplus
 from lod2energy.exporters.shellcheck import check_closed_outward
-from lod2energy.exporters.zones import local_origin, zone_shells
-from lod2energy.exporters.energyplus.enclosure import enclosure_defects
+from lod2energy.energy.zones.shells import local_origin, zone_shells
+from lod2energy.energy.enclosure import enclosure_defects
 
 
 def _pieces(b):
     b = energy_ready(b)
     z = zone_shells(b, local_origin([b]))[0]
-    return z, energyplus.surfaces.zone_pieces(z, 0, {}, False)
+    return z, energy.surfaces.zone_pieces(z, 0, {}, False)
 
 
 def _idf(path):
@@ -23,9 +27,9 @@ def _idf(path):
 
 def test_gabled_house_cut_into_two_storeys_and_an_attic():
     z, pcs = _pieces(gabled_house(eaves=5.6, ridge=9.0))
-    out, note = energyplus.zones.storey_zones(z, 0, pcs, 2, 2.8, "unconditioned")
+    out, note = energy.zones.storeys.storey_zones(z, 0, pcs, 2, 2.8, "unconditioned")
     assert note is None and [a for _, _, a in out] == [False, False, True]
-    vols = [energyplus.pieces._pieces_volume(zp) for _, zp, _ in out]
+    vols = [energy.pieces._pieces_volume(zp) for _, zp, _ in out]
     assert vols == pytest.approx([224.0, 224.0, 136.0], rel=1e-6)
     for _, zp, _ in out:
         pts = [p.points for p in zp]
@@ -38,7 +42,7 @@ def test_gabled_house_cut_into_two_storeys_and_an_attic():
 
 def test_low_roof_space_stays_in_the_top_storey():
     z, pcs = _pieces(gabled_house(eaves=5.6, ridge=6.6))
-    out, _ = energyplus.zones.storey_zones(z, 0, pcs, 2, 2.8, "unconditioned")
+    out, _ = energy.zones.storeys.storey_zones(z, 0, pcs, 2, 2.8, "unconditioned")
     assert len(out) == 2 and not any(a for _, _, a in out)
 
 
@@ -68,7 +72,7 @@ def test_storey_idf_passes_self_check_with_interzone_pairs(tmp_path, make):
         assert other.Outside_Boundary_Condition_Object == s.Name and other.Zone_Name != s.Zone_Name
         assert {s.Surface_Type, other.Surface_Type} == {"Floor", "Ceiling"}
     vol = sum(float(z.Volume) for z in I.idfobjects["ZONE"])
-    assert vol == pytest.approx(energyplus.pieces._pieces_volume(_pieces(make())[1]), rel=0.005)
+    assert vol == pytest.approx(energy.pieces._pieces_volume(_pieces(make())[1]), rel=0.005)
     # loads by use, setpoint schedules, the real site
     assert len(I.idfobjects["PEOPLE"]) == len(I.idfobjects["LIGHTS"]) == res[0].stats["storeys"] - res[0].stats["attic"]
     assert I.idfobjects["SCHEDULE:COMPACT"]

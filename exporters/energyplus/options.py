@@ -53,7 +53,7 @@ class IdfOptions:
     jobs : int
         Parallel EnergyPlus runs.
     zoning : {"storey", "building"}
-        One zone per storey of each Building/BuildingPart (:mod:`lod2energy.zoning`; floors
+        One zone per storey of each Building/BuildingPart (:mod:`lod2energy.energy.zones.cut`; floors
         between storeys are interzone ``Surface`` pairs), or one zone per Building/BuildingPart.
     attic : {"unconditioned", "conditioned"}
         The space under a pitched roof (its own zone with ``zoning="storey"`` when at least
@@ -93,6 +93,3 @@ class IdfOptions:
     use: str | None = None
     use_loads: bool = True
 
-
-#: Decimals of the vertex coordinates written to the IDF (m): 0.1 mm.
-WRITE_DECIMALS = 4

@@ -6,18 +6,24 @@ from dataclasses import replace
 from pathlib import Path
 from typing import Sequence
 
+import jinja2
 import numpy as np
 
+import lod2energy.templates as tpl
+from lod2energy import __version__, cache
+from lod2energy.energy.openings import Opening, opening_polygon, window_for
+from lod2energy.energy.pieces import Piece, WRITE_DECIMALS, _pieces_volume
+from lod2energy.energy.zones.shells import ZoneShell
+from lod2energy.energy.zones.storeys import ZoneInfo, with_floor
 from lod2energy.errors import ExportError
-from ..polygons import _norm, newell_normal, polygon_area3d, unit
-from ..zones import ZoneShell
-from .constructions import construction_layers, _construction_name, INTERZONE_SLAB, _KIND_TYPE, MASS
-from .names import comment_text, _IDF_NAME_BAD, NameRegistry
-from .openings import Opening, opening_polygon, window_for
-from .options import ATTIC_ACH, IdfOptions, WRITE_DECIMALS
-from .pieces import Piece, _pieces_volume
-from .site import DEFAULT_SITE
-from .zones import with_floor, ZoneInfo
+from lod2energy.exporters.energyplus.constructions import (
+    INTERZONE_SLAB, MASS, _KIND_TYPE, _construction_name, construction_layers,
+)
+from lod2energy.exporters.energyplus.names import NameRegistry, _IDF_NAME_BAD, comment_text
+from lod2energy.exporters.energyplus.options import ATTIC_ACH, IdfOptions
+from lod2energy.exporters.energyplus.site import DEFAULT_SITE
+from lod2energy.exporters.polygons import _norm, newell_normal, polygon_area3d, unit
+from lod2energy.thermal.use import use_conditions
 
 
 def upper_left_first(points: np.ndarray) -> np.ndarray:
@@ -63,15 +69,7 @@ def _upper_left_first_ref(points: np.ndarray, n: np.ndarray) -> np.ndarray:
 
 def _fmt(x: float, nd: int = WRITE_DECIMALS) -> str:
     s = f"{x:.{nd}f}"
-    zeros = _ZEROS.get(nd)
-    if zeros is None:
-        zeros = _ZEROS[nd] = ("-0." + "0" * nd, "0." + "0" * nd)
-    return "0" if s in zeros else s.rstrip("0").rstrip(".")
-
-
-#: ``("-0.000", "0.000")`` by number of decimals: the texts :func:`_fmt` writes as "0" (built
-#: once, not per number; a pure function of ``nd``, so never stale).
-_ZEROS: dict[int, tuple[str, str]] = {}
+    return "0" if s.lstrip("-") == "0." + "0" * nd else s.rstrip("0").rstrip(".")
 
 
 def _vertex_lines(points: np.ndarray) -> list[str]:
@@ -81,25 +79,21 @@ def _vertex_lines(points: np.ndarray) -> list[str]:
     # a coordinate is written by every surface at that vertex: its text is remembered by its
     # value (a pure function of the Python float; 0.0 and -0.0, the only equal floats of
     # different bits, both write "0")
-    memo = _COORD_TEXT
-    if len(memo) > _COORD_TEXT_SIZE:
-        memo.clear()
     out = []
     for row in points.tolist():
         t = []
         for x in row:
-            s = memo.get(x)
+            s = cache.recall(COORD_TEXT, x)
             if s is None:
-                s = memo[x] = _fmt(x)
+                s = cache.keep(COORD_TEXT, x, _fmt(x), COORD_TEXT_KEPT)
             t.append(s)
         out.append(", ".join(t))
     return out
 
 
-#: Texts of coordinates written with :data:`WRITE_DECIMALS` decimals, by value (emptied when
-#: it holds more than :data:`_COORD_TEXT_SIZE`).
-_COORD_TEXT: dict[float, str] = {}
-_COORD_TEXT_SIZE = 1 << 16
+#: The :mod:`lod2energy.cache` table of coordinate texts (:data:`WRITE_DECIMALS` decimals) by value.
+COORD_TEXT = "idf.coordinate_text"
+COORD_TEXT_KEPT = 1 << 16
 
 
 def _vertex_block(points: np.ndarray) -> dict:
@@ -118,9 +112,7 @@ _DICT_ATTRS = frozenset(dir(dict))
 
 @functools.lru_cache(maxsize=1)
 def _template():
-    import jinja2
 
-    import lod2energy.templates as tpl
 
     class _Environment(jinja2.Environment):
         """jinja2's environment whose ``{{ d.key }}`` on a plain dict reads the item directly.
@@ -129,7 +121,6 @@ def _template():
         names of its methods (a dict has no instance attributes), and only then ``d["key"]``:
         the template's fields were an AttributeError raised and caught each. The same values
         (method names and missing keys go the default way)."""
-
         def getattr(self, obj, attribute):
             if type(obj) is dict and attribute not in _DICT_ATTRS:
                 try:
@@ -171,8 +162,6 @@ def render_idf(zones: Sequence[ZoneShell], pieces: Sequence[list[Piece]], delta:
     stats : dict
     warnings : list of str
     """
-    from lod2energy import __version__
-
     reg = NameRegistry()
     warnings: list[str] = []
     constructions: dict[str, dict] = {}
@@ -203,7 +192,6 @@ def render_idf(zones: Sequence[ZoneShell], pieces: Sequence[list[Piece]], delta:
               "conditioned": conditioned, "use": None, "infiltration": None,
               "building": info.building_id if info is not None else z.building_id}
         if options.use_loads and info is not None:
-            from lod2energy.thermal.use import use_conditions
             if conditioned:
                 uc = use_conditions(info.use)
                 uses[uc.use] = uc
@@ -359,16 +347,7 @@ def _use_ctx(uc) -> dict:
     key = (uc.use, uc.teaser_entry, uc.people_per_m2, uc.activity_w_per_person, uc.sensible_fraction,
            uc.lighting_w_per_m2, uc.equipment_w_per_m2, uc.ventilation_m3h_per_m2,
            tuple((k, tuple(v)) for k, v in uc.schedules.items()))
-    hit = _USE_CTX.get(key)
-    if hit is None:
-        if len(_USE_CTX) >= 64:
-            _USE_CTX.clear()
-        hit = _USE_CTX[key] = _use_ctx_of(uc)
-    return hit
-
-
-#: :func:`_use_ctx` by the values of its use conditions.
-_USE_CTX: dict[tuple, dict] = {}
+    return cache.remember("idf.use_fields", key, lambda: _use_ctx_of(uc), 64)
 
 
 def _use_ctx_of(uc) -> dict:

@@ -24,8 +24,11 @@ import time
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 
-from ..result import ExportResult
-from .options import IdfOptions
+import numpy as np
+
+from lod2energy.exporters.energyplus.idd import load_idd
+from lod2energy.exporters.energyplus.options import IdfOptions
+from lod2energy.exporters.result import ExportResult
 
 J_PER_KWH = 3.6e6
 
@@ -58,10 +61,8 @@ def idd_path() -> Path | None:
 
 
 def idd():
-    """The installed ``Energy+.idd`` parsed (:class:`lod2energy.idd.Idd`), once per process;
+    """The installed ``Energy+.idd`` parsed (:class:`lod2energy.exporters.energyplus.idd.Idd`), once per process;
     None when EnergyPlus is not installed."""
-    from lod2energy.idd import load_idd
-
     p = idd_path()
     return load_idd(str(p)) if p is not None else None
 
@@ -107,7 +108,6 @@ class ErrSummary:
     not_enclosed : tuple of str
         Zone names reported "not fully enclosed" ("?" when only a count was given).
     """
-
     severe: tuple[str, ...] = ()
     fatal: bool = False
     completed: bool = False
@@ -187,8 +187,6 @@ def read_rates_sql(sql_path: str | Path) -> dict[str, dict[str, "object"]]:
         {"heating": (t,) float W, "cooling": (t,) float W}}``, the series on a common time
         index; empty when the IDF did not ask for the hourly rates.
     """
-    import numpy as np
-
     try:
         con = sqlite3.connect(f"file:{Path(sql_path)}?mode=ro", uri=True)
     except sqlite3.Error:
@@ -226,7 +224,6 @@ class ZoneDemand:
         Highest hourly mean rate (None without hourly rates in the SQL output).
     floor_area_m2 : float
     """
-
     heating_kwh: float
     cooling_kwh: float
     heating_peak_w: float | None
@@ -295,7 +292,6 @@ class RunResult:
     seconds : float
         Wall time of the run.
     """
-
     returncode: int
     outdir: str
     err: ErrSummary
@@ -379,7 +375,6 @@ def demand_stats(sql: str | Path, stats: dict) -> dict:
         figures at the top level: ``heating_kwh_m2``, ``cooling_kwh_m2``, ``heating_peak_w``,
         ``cooling_peak_w``, ``conditioned_floor_area_m2``.
     """
-
     zones = list(stats.get("conditioned_zones", []))
     areas = stats.get("zone_floor_area_m2", {})
     by_b: dict[str, list[str]] = {}

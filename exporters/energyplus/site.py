@@ -5,7 +5,9 @@ from pathlib import Path
 
 import numpy as np
 
-from .names import sanitize_name
+from lod2energy import site as site_mod
+from lod2energy.exporters.energyplus.names import sanitize_name
+from lod2energy.site import read_weather_header
 
 
 #: Default site (Heino, NL; the project's weather file) when no weather file is given.
@@ -15,8 +17,6 @@ DEFAULT_SITE = {"name": "Heino_NL", "latitude": 52.43, "longitude": 6.27, "time_
 def read_epw_header(path: str | Path) -> tuple[dict, list[float] | None]:
     """``Site:Location`` fields and 12 monthly ground temperatures (C, ~2 m depth) from an EPW
     (read by :func:`lod2energy.site.read_weather_header`; the Heino site when it has no LOCATION)."""
-    from lod2energy.site import read_weather_header
-
     site = dict(DEFAULT_SITE)
     h = read_weather_header(path)
     if h is None:
@@ -28,8 +28,6 @@ def read_epw_header(path: str | Path) -> tuple[dict, list[float] | None]:
 
 def _group_site(gb, crs, frame, epw_site, station):
     """``Site:Location`` fields of a group of buildings, warnings and stats."""
-    from lod2energy import site as site_mod
-
     pts = np.concatenate([b.vertices for b in gb if len(b.vertices)]) if any(len(b.vertices) for b in gb) \
         else np.zeros((0, 3))
     name = sanitize_name(gb[0].id if len(gb) == 1 else "Dataset", 60)

@@ -1,7 +1,7 @@
 """The EnergyPlus writer: :func:`write` (one IDF per building, or one per dataset) and its self-check.
 
 It writes the energy model it is given (``provenance["energy_model"]``, made by the stage
-:mod:`lod2energy.exporters.energyplus.model` before the writer runs): zones, pieces and party walls
+:mod:`lod2energy.energy.model` before the writer runs): zones, pieces and party walls
 in their local frame. Called directly on buildings without one, it has the stage make it.
 """
 from __future__ import annotations
@@ -13,22 +13,25 @@ from typing import Iterable
 
 import numpy as np
 
-from lod2energy import safe_write
+from lod2energy import safe_write, site as site_mod
+from lod2energy.energy import model as energy_model
+from lod2energy.energy.model import with_energy_model
+from lod2energy.energy.pieces import _face_frame, _pieces_from_points
+from lod2energy.energy.surfaces import zone_pieces
+from lod2energy.energy.zones.shells import local_origin
+from lod2energy.energy.zones.storeys import _written_zones
 from lod2energy.errors import ParameterError
+from lod2energy.exporters.energyplus.check import self_check
+from lod2energy.exporters.energyplus.options import IdfOptions
+from lod2energy.exporters.energyplus.render import render_idf
+from lod2energy.exporters.energyplus.run import _run
+from lod2energy.exporters.energyplus.site import _group_site, read_epw_header
+from lod2energy.exporters.paths import not_written, output_path, safe_stem, set_aside_failed
+from lod2energy.exporters.polygons import polygon_area3d
+from lod2energy.exporters.registry import register_writer
+from lod2energy.exporters.result import ExportResult
 from lod2energy.model import Building
-from . import model as energy_model
-from ..paths import not_written, output_path, safe_stem, set_aside_failed
-from ..polygons import polygon_area3d
-from ..result import ExportResult
-from ..zones import local_origin
-from .check import self_check
-from .options import IdfOptions
-from .pieces import _face_frame, _pieces_from_points
-from .render import render_idf
-from .run import _run
-from .site import _group_site, read_epw_header
-from .surfaces import zone_pieces
-from .zones import _written_zones
+from lod2energy.thermal.use import check_use
 
 
 def _bbox(b: Building) -> np.ndarray:
@@ -72,7 +75,6 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
     if options.attic not in ("conditioned", "unconditioned"):
         raise ParameterError(f"--attic must be 'conditioned' or 'unconditioned', not {options.attic!r}")
     if options.use is not None:
-        from lod2energy.thermal.use import check_use
         options = replace(options, use=check_use(options.use))
     if options.mode not in ("building", "dataset"):
         raise ParameterError(f"--idf-mode must be 'building' or 'dataset', not {options.mode!r}")
@@ -84,7 +86,6 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
     if weather and not Path(weather).is_file():
         raise ParameterError(f"weather file not found: {weather}")
     site, ground = read_epw_header(weather) if weather else (None, None)
-    from lod2energy import site as site_mod
     station = site_mod.read_weather_header(weather) if weather else None
     out = Path(outdir)
     out.mkdir(parents=True, exist_ok=True)
@@ -219,3 +220,19 @@ def _shading_for(bi: int, blist, bboxes, zones, zones_of, party, radius: float) 
                 pts, ends, n, c = _face_frame(z, f)
                 out.extend(p for p in _pieces_from_points(pts, ends, n, c) if polygon_area3d(p) > 0.01)
     return out
+
+
+def _scope(options) -> str:
+    return "dataset" if options.mode == "dataset" else "context"
+
+
+def _halo(options) -> float:
+    # party walls are faces within a few cm of each other; shading reaches shading_radius
+    return float(options.shading_radius) if options.shading else 1.0
+
+
+def _write(buildings, outdir, options, *, crs=None, context=(), frame=None, **_):
+    return write(buildings, outdir, options, crs=crs, context=context, frame=frame)
+
+
+register_writer("idf", _write, self_check, scope=_scope, halo=_halo, prepare=with_energy_model)

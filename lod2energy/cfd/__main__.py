@@ -13,7 +13,8 @@ import os
 import sys
 import time
 
-from . import CfdOptions, add_cli_arguments, export_case, options_from_args
+from lod2energy.exporters.cfd.options import add_cli_arguments, options_from_args
+from lod2energy.exporters.cfd.writer import export_case
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -68,7 +69,8 @@ def main(argv: list[str] | None = None) -> int:
     t_prep = time.perf_counter() - t0
     os.makedirs(a.output, exist_ok=True)
     res = export_case(prepared + others, model, a.output, opts)
-    report = {"input_file": a.input, "seconds_prepare": round(t_prep, 2), "input_errors": errors, **res.to_dict()}
+    report = {"input_file": a.input, "seconds_prepare": round(t_prep, 2), "input_errors": errors, "ok": res.ok, "path": res.path,
+              "problems": list(res.problems), "stats": dict(res.stats), "building_ids": list(res.building_ids)}
     write_json(os.path.join(a.output, "cfd_report.json"), report, root=a.output, inputs=[a.input])
     for e in errors:
         print(f"lod2energy: error: {a.input}: {e}", file=sys.stderr)
@@ -86,7 +88,7 @@ def main(argv: list[str] | None = None) -> int:
 
 def _prefilter(opts: CfdOptions):
     """A cheap test of whether a raw building can meet the region (None: every building)."""
-    from .region import building_hull, make_region
+    from lod2energy.exporters.cfd.region import building_hull, make_region
     shape = make_region(opts.region, opts.centre, opts.radius).shape()
     if shape is None:
         return None

@@ -28,6 +28,8 @@ from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
 
+from lod2energy import cache
+
 
 @dataclass(frozen=True)
 class FieldDef:
@@ -481,11 +483,11 @@ def _plain_tail(c: ClassDef) -> int | None:
     return k if k <= c.first_extensible else None
 
 
-#: :func:`_object_problems` of objects without a coordinate list, by class, IDD version and fields
-#: (an IDF repeats them from file to file: materials, schedules, output requests); a pure
-#: function of its key, so never stale. Emptied when full.
-_OBJECT_MEMO: dict[tuple, tuple[ClassDef, tuple[str, ...]]] = {}
-_OBJECT_MEMO_SIZE = 4096
+#: The :mod:`lod2energy.cache` table of :func:`_object_problems` of objects without a coordinate
+#: list, by class, IDD version and fields (an IDF repeats them from file to file: materials,
+#: schedules, output requests), and its size.
+OBJECT_PROBLEMS = "idd.object_problems"
+OBJECT_PROBLEMS_KEPT = 4096
 
 
 def _object_problems(idd: Idd, c: ClassDef, fields: tuple[str, ...]) -> tuple[str, ...]:
@@ -502,13 +504,11 @@ def _object_problems(idd: Idd, c: ClassDef, fields: tuple[str, ...]) -> tuple[st
             return _fields_problems(idd, c, fields, len(head))
         return _fields_problems(idd, c, fields, len(fields))
     key = (id(c), idd.version, fields)
-    hit = _OBJECT_MEMO.get(key)
+    hit = cache.recall(OBJECT_PROBLEMS, key)
     if hit is not None and hit[0] is c:  # the entry holds its class: its id is not reused
         return hit[1]
     found = _fields_problems(idd, c, fields, len(fields))
-    if len(_OBJECT_MEMO) >= _OBJECT_MEMO_SIZE:
-        _OBJECT_MEMO.clear()
-    _OBJECT_MEMO[key] = (c, found)
+    cache.keep(OBJECT_PROBLEMS, key, (c, found), OBJECT_PROBLEMS_KEPT)
     return found
 
 

@@ -14,7 +14,7 @@ from lod2energy.crs import cityjson_reference_system
 from lod2energy.io import cityjson as cjio
 from lod2energy.model import CityModel, frozen_mapping
 
-from .cityjson_schema import EXTENSION_FILE, EXTENSION_NAME, EXTENSION_VERSION, _validators
+from lod2energy.exporters.cityjson.schema import EXTENSION_FILE, EXTENSION_NAME, EXTENSION_VERSION, _validators
 
 
 def _crs_for_version(crs: str, version: str) -> str:
@@ -122,8 +122,3 @@ def fix_header(doc: dict, version: str) -> dict:
     return doc
 
 
-def fix_document(doc: dict, version: str) -> dict:
-    """Version-specific details the shared writer leaves generic."""
-    for co in doc.get("CityObjects", {}).values():
-        fix_cityobject(co, version)
-    return fix_header(doc, version)

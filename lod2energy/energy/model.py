@@ -3,16 +3,16 @@
 The last stage before the EnergyPlus writer, for the IDF only: the STL and CityJSON writers
 keep the Building's own geometry. In the order of the work:
 
-1. floorless parts (:func:`floorless_parts`: a dormer whose underside follows a roof steeper
-   than 60 degrees) united with the part they sit on, or left out (:func:`merge_floorless_parts`);
-2. one zone shell per Building/BuildingPart (:func:`lod2energy.exporters.zones.zone_shells`)
+1. floorless parts (:func:`~lod2energy.energy.parts.floorless_parts`: a dormer whose underside follows a roof steeper
+   than 60 degrees) united with the part they sit on, or left out (:func:`~lod2energy.energy.parts.merge_floorless_parts`);
+2. one zone shell per Building/BuildingPart (:func:`lod2energy.energy.zones.shells.zone_shells`)
    in the writer's local frame, the real windows and doors split off (LoD3), the party walls
-   found and each zone's written pieces cut (:mod:`lod2energy.exporters.energyplus.surfaces`);
+   found and each zone's written pieces cut (:mod:`lod2energy.energy.surfaces`);
 3. a zone whose pieces EnergyPlus would call not fully enclosed replaced by the first simpler
-   envelope that passes (:func:`enclosable`, :data:`lod2energy.exporters.energyplus.fallback.FALLBACKS`).
+   envelope that passes (:func:`enclosable`, :data:`lod2energy.energy.fallback.FALLBACKS`).
 
 Which fallback passes depends on the frame (the local origin of the buildings *and* their
-neighbours, floored to whole metres, :func:`~lod2energy.exporters.zones.local_origin`) and on
+neighbours, floored to whole metres, :func:`~lod2energy.energy.zones.shells.local_origin`) and on
 the party walls with the neighbours, so the stage takes the buildings and neighbours the
 writer gets: the pipeline calls it in the pass that calls the writer (the neighbour pass in
 building mode, the dataset pass in dataset mode). :func:`with_energy_model` records the
@@ -21,72 +21,26 @@ the IDF writer writes that model as it is (:func:`model_of`).
 """
 from __future__ import annotations
 
-from collections import OrderedDict
+import hashlib
+import pickle
+from collections.abc import Mapping
 from dataclasses import dataclass, replace
 from functools import partial
-from collections.abc import Mapping
 from typing import Iterable, Sequence
 
 import numpy as np
 
-from lod2energy.exporters.energyplus.enclosure import enclosure_defects
-from lod2energy.exporters.energyplus.openings import Opening, split_openings
-from lod2energy.exporters.energyplus.pieces import Piece
-from lod2energy.exporters.energyplus.surfaces import find_party_faces, zone_pieces
-from lod2energy.exporters.energyplus.zones import FLOOR_NZ
-from lod2energy.exporters.polygons import newell_normal, unit
+from lod2energy import cache
+
+from lod2energy.energy.enclosure import enclosure_defects
+from lod2energy.energy.openings import Opening, split_openings
+from lod2energy.energy.pieces import Piece
+from lod2energy.energy.surfaces import find_party_faces, zone_pieces
+from lod2energy.energy.parts import merge_floorless_parts
 from lod2energy.exporters.shellcheck import check_closed_outward
-from lod2energy.exporters.zones import COLLINEAR_TOL, local_origin, zone_shells, ZoneShell
+from lod2energy.energy.zones.shells import COLLINEAR_TOL, local_origin, zone_shells, ZoneShell
 from lod2energy.model import BUILDING_TYPES, Building, frozen_mapping
-from lod2energy.repair.parts import merge_parts, touching_part, without_geometry
-from .fallback import FALLBACKS
-
-def floorless_parts(b: Building, lod: str | None = None) -> list[str]:
-    """BuildingParts of ``b`` without a face EnergyPlus can take as a floor (n_z < ``FLOOR_NZ``).
-
-    Typically a dormer or roof superstructure modelled as its own part, whose underside
-    follows a roof steeper than 60 degrees.
-    """
-    out = []
-    for o, _, g in b.energy_objects(lod):
-        nz = [unit(newell_normal(b.vertices[list(s.rings[0])]))[2] for *_, s in g.iter_surfaces()]
-        if o.type == "BuildingPart" and nz and not min(nz) < FLOOR_NZ:
-            out.append(o.id)
-    return out
-
-
-def merge_floorless_parts(b: Building, lod: str | None = None) -> tuple[Building, list[str]]:
-    """``b`` with no floorless part (:func:`floorless_parts`) left as a zone of its own.
-
-    A dormer is no separately conditioned zone, and EnergyPlus cannot distribute solar gains
-    in a zone without a floor. Its solid is united with the part it sits on when the union
-    is a valid solid (the repair ladder's criterion); otherwise it is left out of the IDF
-    (such parts are small: their underside follows a roof steeper than 60 degrees), and the
-    roof under it is then written as an outdoor roof. A union keeps its host's floor, so one
-    pass over the floorless parts suffices.
-
-    Returns
-    -------
-    building : Building
-        For the IDF only; the other exports keep the parts.
-    warnings : list of str
-    """
-    lod = lod if lod is not None else b.default_lod()
-    warnings: list[str] = []
-    for pid in floorless_parts(b, lod):
-        host = touching_part(b, pid, lod)
-        merged = merge_parts(b, {pid, host}, lod=lod, into=host) if host else b
-        if merged is not b:
-            b = merged
-            warnings.append(f"part {pid} has no surface EnergyPlus can take as a floor: united with {host} "
-                            "into one zone")
-        else:
-            b = without_geometry(b, {pid}, lod)
-            warnings.append(f"part {pid} has no surface EnergyPlus can take as a floor (none faces down more "
-                            "than 30 degrees past vertical) and no valid union with the part it sits on: left "
-                            "out of the IDF")
-    return b, warnings
-
+from lod2energy.energy.fallback import FALLBACKS
 
 def _fallback_name(make) -> str:
     if isinstance(make, partial):
@@ -99,7 +53,7 @@ def enclosable(zone: ZoneShell, zi: int, pieces: list[Piece]) -> tuple[ZoneShell
     """A simpler envelope for a zone whose pieces EnergyPlus would call not fully enclosed.
 
     Returns None when the pieces pass (:func:`enclosure_defects`) or no fallback of
-    :mod:`lod2energy.exporters.energyplus.fallback` (near misses cleared, sheets separated, 2.5D
+    :mod:`lod2energy.energy.fallback` (near misses cleared, sheets separated, 2.5D
     model, then LoD1 block) passes either; else the first fallback zone that does, with its
     pieces (party walls not split) and the fallback's name.
     """
@@ -136,7 +90,7 @@ class EnergyModel:
     openings : mapping of int to tuple of Opening
         Zone index -> its real windows and doors (LoD3 input; none on a simpler envelope).
     party : mapping
-        Shared faces (:func:`~lod2energy.exporters.energyplus.surfaces.find_party_faces`),
+        Shared faces (:func:`~lod2energy.energy.surfaces.find_party_faces`),
         none of a simpler envelope's.
     pieces : tuple of list of Piece
         Each zone's written pieces (empty for a neighbour's zones when the IDF has no shading).
@@ -183,10 +137,10 @@ def _neighbours(own: Sequence[Building], context: Iterable[Building], lod: str |
     return [b for b in _energy_buildings(context, lod) if b.id not in own_ids]
 
 
-#: Neighbours' zones a process keeps (least recently used dropped first): a building is the
-#: neighbour of ~3.8 others in Den Haag, whose jobs often run in the same worker.
+#: Neighbours' zones a process keeps (:mod:`lod2energy.cache` table :data:`NEIGHBOUR_ZONES`): a
+#: building is the neighbour of ~3.8 others in Den Haag, whose jobs often run in the same worker.
+NEIGHBOUR_ZONES = "energy.neighbour_zones"
 NEIGHBOUR_ZONES_KEPT = 64
-_NEIGHBOUR_ZONES: "OrderedDict[bytes, tuple]" = OrderedDict()
 
 
 def _neighbour_zones(b: Building, lod: str | None, wwr) -> tuple[Building, list[str], tuple]:
@@ -201,19 +155,13 @@ def _neighbour_zones(b: Building, lod: str | None, wwr) -> tuple[Building, list[
     per worker, not once each. Moved, a vertex differs from one made in the job's frame by
     ~1e-14 m, far below the party faces' 5 cm plane tolerance and the 1 mm weld.
     """
-    import hashlib
-    import pickle
-    k = hashlib.blake2b(pickle.dumps((b, lod, wwr), protocol=pickle.HIGHEST_PROTOCOL), digest_size=20).digest()
-    hit = _NEIGHBOUR_ZONES.get(k)
-    if hit is None:
+    def make():
         mb, notes = merge_floorless_parts(b, lod)
         o = local_origin([mb])
-        hit = (mb, notes, (o, tuple(zone_shells(mb, o, lod, wwr=wwr, collinear_tol=COLLINEAR_TOL))))
-        _NEIGHBOUR_ZONES[k] = hit
-        while len(_NEIGHBOUR_ZONES) > NEIGHBOUR_ZONES_KEPT:
-            _NEIGHBOUR_ZONES.popitem(last=False)
-    else:
-        _NEIGHBOUR_ZONES.move_to_end(k)
+        return mb, notes, (o, tuple(zone_shells(mb, o, lod, wwr=wwr, collinear_tol=COLLINEAR_TOL)))
+
+    k = hashlib.blake2b(pickle.dumps((b, lod, wwr), protocol=pickle.HIGHEST_PROTOCOL), digest_size=20).digest()
+    hit = cache.remember(NEIGHBOUR_ZONES, k, make, NEIGHBOUR_ZONES_KEPT)
     return hit[0], list(hit[1]), hit[2]
 
 
@@ -303,15 +251,26 @@ def with_energy_model(buildings: Iterable[Building], options, context: Iterable[
 
 def model_of(buildings: Iterable[Building], options, context: Iterable[Building] = ()) -> EnergyModel | None:
     """The energy model the writer writes: the one the stage recorded in the buildings'
-    provenance when it was made for these buildings, neighbours and options, else made now
-    (a direct call of the writer, without the pipeline) the same way."""
+    provenance, or, when they carry none (the writer called without the pipeline), the
+    stage's model made now.
+
+    Raises
+    ------
+    ValueError
+        The buildings carry a model made for other buildings, neighbours or options: the
+        writer writes the model it is given, never one of its own.
+    """
     own = _energy_buildings(buildings, options.lod)
     if not own:
         return None
     entries = [b.provenance.get("energy_model") for b in own]
+    if all(e is None for e in entries):
+        return prepare_energy_model(own, options, context)
     models = {id(e["model"]): e["model"] for e in entries if isinstance(e, Mapping) and "model" in e}
-    if len(models) == 1 and all(isinstance(e, Mapping) for e in entries):
-        model = next(iter(models.values()))
-        if model.key == _key(own, _neighbours(own, context, options.lod), options):
-            return model
-    return prepare_energy_model(own, options, context)
+    if len(models) != 1 or not all(isinstance(e, Mapping) for e in entries):
+        raise ValueError("the buildings carry no one energy model: run with_energy_model on them together")
+    model = next(iter(models.values()))
+    if model.key != _key(own, _neighbours(own, context, options.lod), options):
+        raise ValueError("the buildings' energy model was made for other buildings, neighbours or options: "
+                         "run with_energy_model again")
+    return model

@@ -14,7 +14,7 @@ import time
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from lod2energy.openfoam import DEFAULT_PROJECT_DIR
+from lod2energy.exporters.cfd.openfoam import DEFAULT_PROJECT_DIR
 from lod2energy.safe_write import write_text
 
 #: The meshing chain, in order.

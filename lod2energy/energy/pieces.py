@@ -10,9 +10,11 @@ from typing import Sequence
 
 import numpy as np
 
-from ..polygons import _is_convex_2d, merge_convex, newell_normal, PLANAR_TOL, plane_basis, triangulate, unit
-from ..zones import ZoneFace, ZoneShell
-from .options import WRITE_DECIMALS
+from lod2energy.exporters.polygons import _is_convex_2d, merge_convex, newell_normal, PLANAR_TOL, plane_basis, triangulate, unit
+from lod2energy.energy.zones.shells import ZoneFace, ZoneShell
+
+#: Decimals of the vertex coordinates written to the IDF (m): 0.1 mm.
+WRITE_DECIMALS = 4
 
 
 @dataclass(frozen=True)

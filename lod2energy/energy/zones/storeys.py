@@ -1,7 +1,7 @@
 """Zones as written: one per Building/BuildingPart or per storey, floors, what each zone is.
 
 Floorless parts and simpler envelopes are decided before the writer, by the energy model
-stage (:mod:`lod2energy.exporters.energyplus.model`).
+stage (:mod:`lod2energy.energy.model`).
 """
 from __future__ import annotations
 
@@ -10,12 +10,15 @@ from typing import Sequence
 
 import numpy as np
 
-from ..polygons import newell_normal, unit
-from ..shellcheck import check_closed_outward
-from ..zones import ZoneShell
-from .enclosure import enclosure_defects
-from .openings import Opening
-from .pieces import Piece, _pieces_from_points
+from lod2energy.energy.enclosure import enclosure_defects
+from lod2energy.energy.openings import Opening
+from lod2energy.energy.pieces import Piece, _pieces_from_points
+from lod2energy.energy.zones import cut as zoning
+from lod2energy.energy.zones.shells import ZoneShell
+from lod2energy.exporters.polygons import newell_normal, unit
+from lod2energy.exporters.shellcheck import check_closed_outward
+from lod2energy.thermal.storeys import ATTIC_MIN_HEIGHT, MIN_STOREY_HEIGHT, storeys
+from lod2energy.thermal.use import building_use
 
 
 #: EnergyPlus puts a zone's interior solar gains on its floors, and counts a surface as one
@@ -68,7 +71,6 @@ class ZoneInfo:
         (:func:`upper_floor_area`), which the IDF adds to the area of its floor surfaces as the
         ``Zone``'s Floor Area. 0 for a storey zone and a one-storey zone.
     """
-
     building_id: str
     storey: int | None
     attic: bool
@@ -80,9 +82,6 @@ class ZoneInfo:
 def _storey_plan(pieces: list[Piece], n_below: int, storey_height: float) -> tuple[float, float, float, int, bool]:
     """``(ground, eave, ridge, storeys below the eave, attic)`` of a zone's pieces (m): the storeys
     :func:`storey_zones` cuts it into and the ones :func:`upper_floor_area` counts."""
-    from lod2energy import zoning
-    from lod2energy.thermal.storeys import ATTIC_MIN_HEIGHT, MIN_STOREY_HEIGHT
-
     ground, eave, ridge, pitched = zoning.zone_levels([(p.points, p.kind) for p in pieces])
     n = max(1, int(round((eave - ground) / storey_height))) if storey_height > 0 else 1
     n = min(n, max(n_below, 1)) if n_below else n
@@ -98,7 +97,7 @@ def upper_floor_area(pieces: list[Piece], n_below: int, storey_height: float, at
     under the eave split ``eave - ground`` evenly) has, besides its floor surfaces (the lowest
     storey's floor), the floors of storeys ``2 .. n``: each the horizontal section of its
     closed shell at that storey's floor level ``ground + k (eave - ground) / n``
-    (:func:`lod2energy.zoning.section_area`), and, with ``attic_mode == "conditioned"``, the
+    (:func:`lod2energy.energy.zones.cut.section_area`), and, with ``attic_mode == "conditioned"``, the
     attic floor (the section at the eave) as a conditioned attic zone would have. These are
     the floors storey zoning would write, so a building has the same conditioned floor area
     whether it is cut into storey zones or kept whole. The sections follow the real shell
@@ -119,8 +118,6 @@ def upper_floor_area(pieces: list[Piece], n_below: int, storey_height: float, at
     float, m2
         0 for a one-storey zone without a conditioned attic.
     """
-    from lod2energy import zoning
-
     if not pieces:
         return 0.0
     ground, eave, _, n, attic = _storey_plan(pieces, n_below, storey_height)
@@ -133,7 +130,7 @@ def upper_floor_area(pieces: list[Piece], n_below: int, storey_height: float, at
 
 def storey_zones(zone: ZoneShell, zi: int, pieces: list[Piece], n_below: int, storey_height: float,
                  attic_mode: str, openings: Sequence[Opening] = ()) -> tuple[list[tuple[ZoneShell, list[Piece], bool]], str | None]:
-    """One zone per storey of a zone's written pieces (:func:`lod2energy.zoning.split_storeys`).
+    """One zone per storey of a zone's written pieces (:func:`lod2energy.energy.zones.cut.split_storeys`).
 
     Parameters
     ----------
@@ -158,8 +155,6 @@ def storey_zones(zone: ZoneShell, zi: int, pieces: list[Piece], n_below: int, st
         Why it stayed one zone (a cut that would not close, a storey EnergyPlus would find not
         enclosed), when it did.
     """
-    from lod2energy import zoning
-
     single = [(zone, pieces, False)]
     if not pieces:
         return single, None
@@ -197,9 +192,6 @@ def storey_zones(zone: ZoneShell, zi: int, pieces: list[Piece], n_below: int, st
 
 def _written_zones(blist, zones, zones_of, pieces, options, openings):
     """Per building: the zones to write ``[(ZoneShell, pieces, ZoneInfo, source zone index)]``, notes, stats."""
-    from lod2energy.thermal.storeys import storeys
-    from lod2energy.thermal.use import building_use
-
     written_of, notes, bstats = {}, {}, {}
     for bi, b in enumerate(blist):
         use = building_use(b, options.use)

@@ -4,7 +4,7 @@ A terrain is no part of the energy model, but it is part of the city model the u
 (issue 19). Both readers yield a ``TINRelief`` as one feature (the CityJSON one as it is in
 the file; CityGML's ``dem:TINRelief`` with its ``dem:tin`` as a CompositeSurface of
 triangles, :mod:`lod2energy.io.citygml`). The energy CityJSON writer
-(:func:`lod2energy.exporters.cityjson.write`) writes each such feature after the buildings,
+(:func:`lod2energy.exporters.cityjson.writer.write`) writes each such feature after the buildings,
 one object at a time from the spool as it writes the buildings, through the same
 ``transform`` (the file's grid), with its attributes and at its own LoD(s): no ``+energy``
 attribute, so the self-check validates it against the official schema (and re-reads it) but

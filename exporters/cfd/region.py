@@ -10,6 +10,8 @@ from dataclasses import dataclass
 from typing import Iterable, Sequence
 
 import numpy as np
+from shapely import MultiPoint
+from shapely.geometry import Point, box
 
 from lod2energy.errors import ParameterError
 from lod2energy.model import Building
@@ -21,13 +23,11 @@ class Region:
 
     ``kind`` is "all" (no region given: every building), "box" or "circle".
     """
-
     kind: str = "all"
     bounds: tuple[float, ...] = ()
 
     def shape(self):
         """The shapely geometry of the region, or None for "all"."""
-        from shapely.geometry import Point, box
         if self.kind == "box":
             return box(*self.bounds)
         if self.kind == "circle":
@@ -78,7 +78,6 @@ def make_region(region: Sequence[float] | None = None, centre: Sequence[float] |
 
 def building_hull(b: Building):
     """Convex hull (shapely) of a building's vertices in the map plane, or None without vertices."""
-    from shapely import MultiPoint
     v = np.asarray(b.vertices)
     if len(v) == 0:
         return None

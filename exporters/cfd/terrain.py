@@ -8,13 +8,17 @@ ground follows the surface written, and the volume under it is known exactly.
 """
 from __future__ import annotations
 
+import manifold3d as m3
 import numpy as np
+from scipy.interpolate import LinearNDInterpolator, NearestNDInterpolator
+
+from lod2energy.exporters.cfd.domain import from_wind_frame
+from lod2energy.geometry import triangulate_surface
 
 
 def tin_of(features) -> tuple[np.ndarray, np.ndarray] | None:
     """Triangles of the ``TINRelief`` features ``(vertices (n, 3), triangles (t, 3))`` in map
     coordinates, or None when there is none."""
-    from lod2energy.geometry import triangulate_surface
     vs, ts, k = [], [], 0
     for f in features:
         if f.type != "TINRelief":
@@ -44,7 +48,6 @@ def local_tin(tin, offset) -> tuple[np.ndarray, np.ndarray]:
 
 def height_function(tin):
     """``f(xy (n, 2)) -> z (n,)``: linear over the TIN's vertices, nearest outside their hull."""
-    from scipy.interpolate import LinearNDInterpolator, NearestNDInterpolator
     v, t = tin
     used = np.unique(np.asarray(t).ravel())
     p = np.asarray(v)[used]
@@ -81,7 +84,6 @@ def terrain_grid(domain, cells: tuple[int, int, int], level: int, height, pad: i
     vertices (n, 3), triangles (t, 3) (upward), inner : (t,) bool
         ``inner`` marks the triangles inside the box's plan.
     """
-    from .domain import from_wind_frame
     nx, ny = cells[0] * 2 ** level, cells[1] * 2 ** level
     dx = (domain.x_max - domain.x_min) / nx
     dy = (domain.y_max - domain.y_min) / ny
@@ -110,7 +112,6 @@ def volume_under(verts: np.ndarray, tris: np.ndarray, floor: float) -> float:
 
 def solid_under(verts: np.ndarray, tris: np.ndarray, bottom: float):
     """The closed solid (manifold3d) between a grid height field and ``z = bottom``."""
-    import manifold3d as m3
     n = len(verts)
     low = verts.copy()
     low[:, 2] = bottom

@@ -8,11 +8,14 @@ from __future__ import annotations
 from typing import Sequence
 
 import numpy as np
+import shapely
+from scipy.spatial import cKDTree
+from shapely.geometry import GeometryCollection, MultiPolygon, Polygon
 
-from ..polygons import plane_basis, polygon_area3d
-from ..zones import MIN_PIECE_AREA, WELD_TOL, ZoneFace, ZoneShell
-from .conform import clean_piece, conform, eplus_enclose, keep_corners
-from .pieces import _as_written, _face_frame, _outer_boundary, Piece, _pieces_from_points, _planar
+from lod2energy.energy.conform import clean_piece, conform, eplus_enclose, keep_corners
+from lod2energy.energy.pieces import Piece, _as_written, _face_frame, _outer_boundary, _pieces_from_points, _planar
+from lod2energy.energy.zones.shells import MIN_PIECE_AREA, WELD_TOL, ZoneFace, ZoneShell
+from lod2energy.exporters.polygons import plane_basis, polygon_area3d
 
 
 #: Party-wall / outdoor parts of a split face thinner than 2 x THIN (m) join the other part:
@@ -21,8 +24,6 @@ THIN = 0.015
 
 
 def _shapely_poly(pts: np.ndarray, ends: Sequence[int], c: np.ndarray, u: np.ndarray, v: np.ndarray):
-    import shapely
-    from shapely.geometry import Polygon
 
     xy = np.column_stack([(pts - c) @ u, (pts - c) @ v])
     rings = np.split(xy, ends[:-1])
@@ -56,8 +57,6 @@ def find_party_faces(zones: Sequence[ZoneShell], plane_tol: float = 0.05, min_ar
         ``{(zone_index, face_index): [(other_zone_index, overlap polygon in the face's
         (u, v) plane frame), ...]}``.
     """
-    import shapely
-
     boxes = np.array([[*z.vertices.min(axis=0), *z.vertices.max(axis=0)] if len(z.vertices)
                       else [np.inf] * 3 + [-np.inf] * 3 for z in zones])
     frames: dict[int, list] = {}
@@ -113,7 +112,6 @@ def find_party_faces(zones: Sequence[ZoneShell], plane_tol: float = 0.05, min_ar
 
 
 def _polygons_of(geom) -> list:
-    from shapely.geometry import GeometryCollection, MultiPolygon, Polygon
 
     if isinstance(geom, Polygon):
         return [geom] if not geom.is_empty else []
@@ -127,8 +125,6 @@ def _polygons_of(geom) -> list:
 
 def _split_face(zone: ZoneShell, face: ZoneFace, overlaps: list, min_area: float = 0.01) -> list[tuple[np.ndarray, str]]:
     """(points, boundary) pieces of a face partly shared with other zones."""
-    import shapely
-
     pts, ends, n, c = _face_frame(zone, face)
     outer = _outer_boundary(face.kind)
     u, v = plane_basis(n)
@@ -141,7 +137,6 @@ def _split_face(zone: ZoneShell, face: ZoneFace, overlaps: list, min_area: float
     if shared.area < min_area or not _planar(pts, n, c):
         return [(p, outer) for p in _pieces_from_points(pts, ends, n, c)]
     out = []
-    from scipy.spatial import cKDTree
     tree = cKDTree(zone.vertices)
     edges = [(pts[k], pts[(k + 1 - s0) % (e - s0) + s0]) for s0, e in zip((0,) + tuple(ends[:-1]), ends)
              for k in range(s0, e)]
@@ -162,8 +157,6 @@ def _split_face(zone: ZoneShell, face: ZoneFace, overlaps: list, min_area: float
 
 def _opening(geom, width: float = 2 * THIN):
     """Remove the parts of a polygon narrower than ``width`` (m), keeping square corners."""
-    import shapely
-
     if geom.is_empty:
         return geom
     opened = shapely.buffer(shapely.buffer(geom, -width / 2, join_style="mitre"), width / 2, join_style="mitre")
@@ -229,8 +222,6 @@ def zone_pieces(zone: ZoneShell, zi: int, party: dict, split: bool = True) -> li
 
 def _whole_face(zone: ZoneShell, face: ZoneFace, overlaps: list) -> list[tuple[np.ndarray, str]]:
     """Unsplit pieces of a face, Adiabatic when at least half of it is shared."""
-    import shapely
-
     pts, ends, n, c = _face_frame(zone, face)
     u, v = plane_basis(n)
     whole = _shapely_poly(pts, ends, c, u, v)

@@ -29,8 +29,18 @@ from pathlib import Path
 from typing import Any, Iterable, Mapping, Sequence
 
 import numpy as np
+import shapely
+from shapely.geometry import MultiPolygon, Polygon, shape
+from shapely.validation import explain_validity
 
+from lod2energy.exporters.registry import register_writer
+from lod2energy.exporters.result import ExportResult
+from lod2energy.io.json_stream import Scanner
 from lod2energy.model import Building
+from lod2energy.safe_write import atomic_write
+from lod2energy.site import SiteError, to_wgs84
+from lod2energy.thermal.storeys import storeys
+from lod2energy.thermal.use import building_use
 
 #: Decimal places of the coordinates (1e-8 degree is about 1 mm).
 DECIMALS = 8
@@ -43,32 +53,6 @@ MIN_AREA = 0.01
 RUN_KEYS = ("heating_kwh", "cooling_kwh", "heating_kwh_m2", "cooling_kwh_m2", "heating_peak_w",
             "cooling_peak_w", "conditioned_floor_area_m2")
 SUFFIX = ".footprints.geojson"
-
-
-@dataclass(frozen=True)
-class GeoJsonResult:
-    """What :func:`write` did.
-
-    Attributes
-    ----------
-    path : str
-    ok : bool
-        Written and self-checked.
-    problems : tuple of str
-    building_ids : tuple of str
-        The buildings that have a Feature.
-    left_out : mapping of str to str
-        Building id -> why it has no Feature (no footprint, not placeable on the Earth).
-    seen : tuple of (str, str)
-        ``(id, type)`` of every building given, in order (with a Feature or left out).
-    """
-
-    path: str
-    ok: bool
-    problems: tuple[str, ...] = ()
-    building_ids: tuple[str, ...] = ()
-    left_out: Mapping[str, str] = None  # type: ignore[assignment]
-    seen: tuple[tuple[str, str], ...] = ()
 
 
 # ----------------------------------------------------------------------------- footprint
@@ -88,9 +72,6 @@ def footprint(b: Building, lod: str | None = None):
     shapely Polygon or MultiPolygon, or None
         In the building's xy coordinates (m); None when no face has a projected area.
     """
-    import shapely
-    from shapely.geometry import Polygon
-
     v = np.asarray(b.vertices, dtype=np.float64)
     polys = []
     for _, _, g in b.envelope(lod):
@@ -111,14 +92,12 @@ def footprint(b: Building, lod: str | None = None):
     parts = [g for g in getattr(u, "geoms", [u]) if g.geom_type == "Polygon" and g.area >= MIN_AREA]
     if not parts:
         return None
-    from shapely.geometry import MultiPolygon
     clean = [Polygon(p.exterior.coords, [h.coords for h in p.interiors if Polygon(h).area >= MIN_AREA])
              for p in parts]
     return clean[0] if len(clean) == 1 else MultiPolygon(clean)
 
 
 def _ring_lonlat(xy: np.ndarray, z: float, crs: Any, frame) -> list[list[float]]:
-    from lod2energy.site import to_wgs84
     p = np.column_stack([xy, np.full(len(xy), z)])
     ll = to_wgs84(p, crs, frame)
     return [[round(float(lon), DECIMALS), round(float(lat), DECIMALS)] for lat, lon in ll]
@@ -192,9 +171,6 @@ def properties(b: Building, record=None, use: str | None = None, lod: str | None
     run : bool
         Add the run figures (None where the record has none).
     """
-    from lod2energy.thermal.storeys import storeys
-    from lod2energy.thermal.use import building_use
-
     energy = dict(b.provenance.get("energy") or {})
     thermal = dict(b.provenance.get("thermal") or {})
     u = building_use(b, use)
@@ -231,7 +207,7 @@ def properties(b: Building, record=None, use: str | None = None, lod: str | None
 
 def write(buildings: Iterable[Building], path: str | os.PathLike, *, crs: Any = None, frame=None,
           records: Sequence | None = None, use: str | None = None, lod: str | None = None, run: bool = False,
-          root: str | os.PathLike | None = None) -> GeoJsonResult:
+          root: str | os.PathLike | None = None) -> ExportResult:
     """Write the footprints of ``buildings`` to ``path`` and self-check the file.
 
     Parameters
@@ -248,9 +224,6 @@ def write(buildings: Iterable[Building], path: str | os.PathLike, *, crs: Any = 
     root : path, optional
         The folder the file must stay in (:func:`lod2energy.safe_write.check_target`).
     """
-    from lod2energy.safe_write import atomic_write
-    from lod2energy.site import SiteError
-
     records = records or ()
     by_id = {r.id: i for i, r in enumerate(records)}  # the index: a record may be rebuilt when read
     ids, left_out, seen = [], {}, []
@@ -262,7 +235,7 @@ def write(buildings: Iterable[Building], path: str | os.PathLike, *, crs: Any = 
         for b in buildings:
             if not b.is_building:
                 continue
-            seen.append((str(b.id), b.type))
+            seen.append(str(b.id))
             try:
                 geom = footprint_geometry(b, crs, frame, lod)
             except SiteError as e:
@@ -278,7 +251,8 @@ def write(buildings: Iterable[Building], path: str | os.PathLike, *, crs: Any = 
             ids.append(str(b.id))
         f.write("]}\n")
     problems = self_check(str(path), n_features=len(ids))
-    return GeoJsonResult(str(path), not problems, tuple(problems), tuple(ids), left_out, tuple(seen))
+    return ExportResult(tuple(ids), str(path), not problems, tuple(problems), None, given=tuple(seen),
+                        skipped=tuple(left_out.items()))
 
 
 def _dumps(x) -> str:
@@ -325,8 +299,6 @@ def self_check(path: str, n_features: int | None = None) -> list[str]:
 def _features(path: str, head: dict):
     """``(index, Feature)`` of the file's ``features`` array, one at a time; ``head`` gets
     the other members (and ``features: []`` when it is an array). ValueError: not JSON."""
-    from lod2energy.io.json_stream import Scanner
-
     with open(path, encoding="utf-8") as f:
         sc = Scanner(f)
         if sc.peek() != "{":  # valid JSON, not an object: not a FeatureCollection
@@ -346,8 +318,6 @@ def _features(path: str, head: dict):
 
 def _feature_problems(path: str, i: int, ft) -> list[str]:
     """The first problem of Feature ``i`` (empty: good)."""
-    from shapely.geometry import shape
-
     where = f"{path}: feature {i} ({ft.get('id') if isinstance(ft, dict) else '?'})"
     if not isinstance(ft, dict) or ft.get("type") != "Feature" or "id" not in ft:
         return [f"{where}: not a Feature with an id"]
@@ -362,6 +332,17 @@ def _feature_problems(path: str, i: int, ft) -> list[str]:
             if not bad and (_signed_area(ring) > 0) != (k == 0):
                 bad.append(f"{where}: ring {k} wound {'clockwise' if k == 0 else 'counter-clockwise'}")
     if not bad and not shape(g).is_valid:
-        from shapely.validation import explain_validity
         bad.append(f"{where}: invalid polygon: {explain_validity(shape(g))}")
     return bad[:1]
+
+
+def _write(buildings, outdir, options, *, crs=None, frame=None, records=None, stem="out", **_):
+    """``OUTDIR/<stem>.footprints.geojson``: the footprints (WGS84) with the buildings' records;
+    ``options`` are the IDF options (``use``, ``lod``, ``run``: the figures of the energy model)."""
+    path = os.path.join(str(outdir), f"{stem}{SUFFIX}")
+    return [write(buildings, path, crs=crs, frame=frame, records=records, use=getattr(options, "use", None),
+                  lod=getattr(options, "lod", None), run=bool(getattr(options, "run", False)), root=outdir)]
+
+
+# after "idf": the footprints carry the run figures of the IDF pass
+register_writer("geojson", _write, self_check, scope="dataset", records=True)

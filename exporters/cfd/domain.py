@@ -26,6 +26,7 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
+from shapely import box, polygons, union_all
 
 from lod2energy.errors import ParameterError
 
@@ -90,7 +91,6 @@ class Domain:
         Bottom of the box when it lies under ``z_min`` (a terrain surface meshed by
         snappyHexMesh above it); None: the box stands on the ground level ``z_min``.
     """
-
     centre: tuple[float, float]
     wind_direction: float
     x_min: float
@@ -227,8 +227,6 @@ def size_domain(xy: np.ndarray, h_max: float, ground: float, wind_direction: flo
 def frontal_area(vertices: np.ndarray, tris: np.ndarray, wind_direction: float, ground: float) -> float:
     """Area (m2) of the triangles ``(t, 3)`` of ``vertices (n, 3)`` above ``ground`` projected on a
     vertical plane normal to the wind (the buildings' frontal area)."""
-    from shapely import polygons, union_all, box
-
     v = np.asarray(vertices, dtype=np.float64)
     t = np.asarray(tris, dtype=np.intp).reshape(-1, 3)
     if len(t) == 0:

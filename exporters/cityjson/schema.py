@@ -12,11 +12,17 @@ from __future__ import annotations
 
 import json
 import os
+import re
+from collections.abc import Mapping
 from dataclasses import dataclass
 from functools import lru_cache
 from importlib import resources
-from collections.abc import Mapping
 from typing import Any, Callable
+
+import fastjsonschema
+import jsonschema
+from referencing import Registry, Resource
+from referencing.jsonschema import DRAFT7
 
 from lod2energy.errors import Lod2EnergyError
 
@@ -41,7 +47,6 @@ def extension_schema(version: str) -> dict:
 @dataclass(frozen=True)
 class _SchemaSet:
     """Validators of one CityJSON version (whole document, feature, one per CityObject type)."""
-
     document: Any
     feature: Any
     branches: tuple  # one validator per alternative of CityObjects' "oneOf"
@@ -56,10 +61,6 @@ def _wrap(branch: Mapping, base: str, i: int) -> dict:
 @lru_cache(maxsize=None)
 def _validators(version: str) -> _SchemaSet:
     """Validators for the official schema of ``version`` (bundled copy)."""
-    import jsonschema
-    from referencing import Registry, Resource
-    from referencing.jsonschema import DRAFT7
-
     d = _data() / "schemas" / "cityjson" / _VDIR[version]
     registry = Registry()
     feat = None
@@ -161,8 +162,6 @@ def _disjoint_oneof_as_anyof(schema: Any) -> Any:
 
 def _merged_enum_branches(branches: Any) -> list | None:
     """:func:`_disjoint_oneof_as_anyof`'s ``anyOf`` for the ``oneOf`` ``branches``, or None."""
-    import re
-
     if not isinstance(branches, list) or not branches or not all(isinstance(b, dict) for b in branches):
         return None
     words: list[str] = []
@@ -180,12 +179,6 @@ def _merged_enum_branches(branches: Any) -> list | None:
     if others and any(re.search(others[0]["pattern"], w) for w in words):
         return None  # a string of the enums the pattern branch takes too
     return [{"enum": words}] + others
-
-
-def _compiled(version: str) -> tuple[Any, Any]:
-    """Compiled (``fastjsonschema``) validators of the document and of a CityJSONFeature for
-    ``version`` (:func:`_compiled_one`). (None, None) when fastjsonschema is missing."""
-    return _compiled_one(version, False), _compiled_one(version, True)
 
 
 @lru_cache(maxsize=None)
@@ -232,8 +225,6 @@ def _schema_valid_fast(version: str, doc: Any, feature: bool = False) -> bool:
     """True when the compiled validator accepts ``doc``. Only a shortcut for valid files:
     False (or no compiled validator) sends the document to the interpreted validators of
     :func:`_schema_errors`, which give the messages and the final verdict."""
-    import fastjsonschema
-
     _COMPILED_VERSIONS.add(version)
     v = _compiled_one(version, bool(feature))
     if v is None:
@@ -305,7 +296,6 @@ def _schema_errors(schemas: _SchemaSet, doc: Any, what: str, feature: bool = Fal
 
 
 def extension_problems(doc: Mapping, extension: Mapping | None, what: str) -> list[str]:
-    import jsonschema
 
     out = []
     if extension is None:

@@ -6,9 +6,12 @@ import math
 from dataclasses import dataclass, replace
 
 import numpy as np
+import shapely
+from shapely.geometry import Point, Polygon
 
-from ..polygons import _is_convex_2d, newell_normal, plane_basis, polygon_area3d, unit
-from ..zones import ZoneShell
+from lod2energy.energy.zones.shells import ZoneShell
+from lod2energy.exporters.polygons import _is_convex_2d, newell_normal, plane_basis, polygon_area3d, unit
+from lod2energy.io.openings import polygon_rings
 
 
 def window_for(piece: np.ndarray, wwr: float) -> np.ndarray | None:
@@ -18,9 +21,6 @@ def window_for(piece: np.ndarray, wwr: float) -> np.ndarray | None:
     centred on the area centroid (shrunk when the ratio cannot be reached: EnergyPlus turns
     non-rectangular quadrilateral windows into rectangles anyway).
     """
-    import shapely
-    from shapely.geometry import Polygon
-
     if wwr <= 0:
         return None
     if len(piece) == 3:
@@ -68,18 +68,6 @@ def window_for(piece: np.ndarray, wwr: float) -> np.ndarray | None:
     return c0 + rect[:, :1] * u + rect[:, 1:2] * v
 
 
-def _area_centroid(p: np.ndarray) -> np.ndarray:
-    tri_c, tri_a = [], []
-    for k in range(1, len(p) - 1):
-        a = 0.5 * np.linalg.norm(np.cross(p[k] - p[0], p[k + 1] - p[0]))
-        tri_a.append(a)
-        tri_c.append((p[0] + p[k] + p[k + 1]) / 3)
-    tri_a = np.asarray(tri_a)
-    if tri_a.sum() <= 0:
-        return p.mean(axis=0)
-    return (np.asarray(tri_c) * tri_a[:, None]).sum(axis=0) / tri_a.sum()
-
-
 #: Semantic types of LoD3 openings and the EnergyPlus fenestration type each becomes.
 OPENING_SURFACE_TYPE = {"Window": "Window", "Door": "Door"}
 
@@ -102,7 +90,6 @@ class Opening:
     wall_index : int
         ``ZoneFace.index`` (input face) of the parent wall; its pieces carry the same index.
     """
-
     points: np.ndarray
     kind: str
     wall_index: int
@@ -130,8 +117,6 @@ def split_openings(zone: ZoneShell, recess: float = OPENING_RECESS) -> tuple[Zon
     unmatched : int
         Opening faces left in the zone as opaque wall (no hole of a wall to fill).
     """
-    from shapely.geometry import Point, Polygon
-
     v = zone.vertices
     faces = list(zone.faces)
     cand = [i for i, f in enumerate(faces) if f.semantic_type in OPENING_SURFACE_TYPE]
@@ -204,9 +189,7 @@ def _merge_notch(zone: ZoneShell, faces, new_rings, oi: int, drop: set):
     exactly the edges of either that the other does not use (so the zone stays as closed as
     it was). None when there is no such wall.
     """
-    from shapely.geometry import Polygon
 
-    from lod2energy.io.openings import polygon_rings
 
     v = zone.vertices
     op = faces[oi]
@@ -255,8 +238,6 @@ def opening_polygon(op: Opening, piece: np.ndarray) -> np.ndarray | None:
     takes 3 or 4 vertices), any other shape (a round window) as the upright rectangle of the
     same area centred on its centroid, inside its bounding box in the wall plane.
     """
-    from shapely.geometry import Polygon
-
     n = unit(newell_normal(piece))
     up = np.array([0.0, 0.0, 1.0])
     a = np.cross(up, n)

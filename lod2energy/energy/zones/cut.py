@@ -25,8 +25,10 @@ from dataclasses import dataclass
 from typing import Any, Sequence
 
 import numpy as np
+from shapely.geometry import Point, Polygon
 
 from lod2energy.geometry.vectors import cross_rows, roll_next
+from lod2energy.thermal.storeys import FLAT_TILT
 
 #: A cut is moved to a vertex height this close (m).
 SNAP = 0.4
@@ -58,12 +60,24 @@ class Slab:
     attic : bool
         The roof space above the eave.
     """
-
     polygons: list
     floor: list
     ceiling: list
     z_range: tuple[float, float]
     attic: bool = False
+
+
+def _heights(z_values: np.ndarray) -> np.ndarray:
+    """The zone's vertex heights (m), rounded to :data:`DECIMALS`, unique and sorted."""
+    return np.unique(np.round(np.asarray(z_values, dtype=np.float64), DECIMALS))
+
+
+def _clears(c: float, z: np.ndarray, horizontal_z: Sequence[float]) -> bool:
+    """A cut at ``c`` (m) lies inside the zone and clears every vertex height ``z`` (but the
+    ones on it) and every horizontal surface by :data:`CLEARANCE`."""
+    d = np.abs(z - c)
+    return (float(z[0]) + CLEARANCE < c < float(z[-1]) - CLEARANCE and not np.any((d > ON_PLANE) & (d < CLEARANCE))
+            and not any(abs(h - c) < CLEARANCE for h in horizontal_z))
 
 
 def storey_cuts(z_values: np.ndarray, ground: float, eave: float, ridge: float, n_below: int,
@@ -88,8 +102,7 @@ def storey_cuts(z_values: np.ndarray, ground: float, eave: float, ridge: float, 
     attic : bool
         Whether the attic cut was kept.
     """
-    z = np.unique(np.round(np.asarray(z_values, dtype=np.float64), DECIMALS))
-    zmin, zmax = float(z.min()), float(z.max())
+    z = _heights(z_values)
     targets = [ground + k * (eave - ground) / max(n_below, 1) for k in range(1, max(n_below, 1))]
     if attic:
         targets.append(eave)
@@ -102,14 +115,7 @@ def storey_cuts(z_values: np.ndarray, ground: float, eave: float, ridge: float, 
                        key=lambda c: (abs(c - t), c))
         for c in cands:
             c = round(c, DECIMALS)
-            if not (zmin + CLEARANCE < c < zmax - CLEARANCE):
-                continue
-            d = np.abs(z - c)
-            if np.any((d > ON_PLANE) & (d < CLEARANCE)):
-                continue
-            if any(abs(h - c) < CLEARANCE for h in horizontal_z):
-                continue
-            if any(lo - CLEARANCE < c < hi + CLEARANCE for lo, hi in avoid):
+            if not _clears(c, z, horizontal_z) or any(lo - CLEARANCE < c < hi + CLEARANCE for lo, hi in avoid):
                 continue
             if out and c - out[-1] < 1.0:
                 continue
@@ -124,17 +130,10 @@ def cut_variants(cuts: Sequence[float], attic: bool, z_values: np.ndarray,
     """Cut sets to try in turn: the cuts, then the storey cuts shifted by :data:`SHIFTS` (the
     attic cut stays at the eave), then the same without the attic cut; each kept only when
     it clears every vertex by :data:`CLEARANCE` and every horizontal surface."""
-    z = np.unique(np.round(np.asarray(z_values, dtype=np.float64), DECIMALS))
-    zmin, zmax = float(z.min()), float(z.max())
+    z = _heights(z_values)
 
     def ok(cs):
-        for c in cs:
-            d = np.abs(z - c)
-            if not (zmin + CLEARANCE < c < zmax - CLEARANCE) or np.any((d > ON_PLANE) & (d < CLEARANCE)):
-                return False
-            if any(abs(h - c) < CLEARANCE for h in horizontal_z):
-                return False
-        return all(b - a >= 1.0 for a, b in zip(cs, cs[1:]))
+        return all(_clears(c, z, horizontal_z) for c in cs) and all(b - a >= 1.0 for a, b in zip(cs, cs[1:]))
 
     out = []
     for with_attic in ((True, False) if attic else (False,)):
@@ -260,8 +259,6 @@ def _signed_xy(loop: np.ndarray) -> float:
 
 def cap_polygons(loops: list[np.ndarray]) -> list[list[np.ndarray]]:
     """Loops grouped into polygons ``[outer, hole, ...]`` (outer counter-clockwise from above)."""
-    from shapely.geometry import Point, Polygon
-
     outers = [lp for lp in loops if _signed_xy(lp) > 0]
     holes = [lp for lp in loops if _signed_xy(lp) < 0]
     groups = [[o] for o in outers]
@@ -346,25 +343,9 @@ def split_storeys(polygons: Sequence[tuple[np.ndarray, Any]], cuts: Sequence[flo
     return out
 
 
-def polygons_volume(polys: Sequence[np.ndarray]) -> float:
-    """Enclosed volume (m3) of closed outward polygons (divergence theorem)."""
-    v = 0.0
-    for q in polys:
-        for k in range(1, len(q) - 1):
-            v += float(np.dot(q[0], np.cross(q[k], q[k + 1]))) / 6.0
-    return v
-
-
-def slab_volume(s: Slab) -> float:
-    """Volume (m3) of one slab."""
-    return polygons_volume([p for p, _ in s.polygons] + list(s.floor) + list(s.ceiling))
-
-
 def zone_levels(polygons: Sequence[tuple[np.ndarray, str]]) -> tuple[float, float, float, bool]:
     """``(ground, eave, ridge, pitched)`` (m) of a zone from its polygons tagged by kind
     ("roof", "wall", "ground", "floor"): as :func:`lod2energy.thermal.storeys.roof_levels`."""
-    from lod2energy.thermal.storeys import FLAT_TILT
-
     allz = np.concatenate([p[:, 2] for p, _ in polygons])
     roofs = []
     for p, kind in polygons:

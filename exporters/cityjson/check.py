@@ -1,7 +1,7 @@
-"""The self-check of a written CityJSON document (``.json``), one building at a time.
+"""The self-check of a written CityJSON file (:func:`self_check`); a document (``.json``) one building at a time.
 
-The same checks as on the whole document (:func:`lod2energy.exporters.cityjson.self_check`):
-the official schema of the file's version, the Energy extension's attributes, then every
+A CityJSONSeq (``.jsonl``) is read whole; a document gets the same checks
+(:func:`self_check_document`): the official schema of the file's version, the Energy extension's attributes, then every
 energy building re-read (as :func:`lod2energy.io.cityjson.read` reads it) and checked with
 val3dity's checks and the envelope checks. The file is read twice with a
 :class:`~lod2energy.io.json_stream.Scanner` instead of being parsed whole, and what the check
@@ -25,6 +25,7 @@ third reading: the same verdict, with memory growing with the file.
 from __future__ import annotations
 
 import array
+import json
 import errno
 import os
 import sys
@@ -34,16 +35,19 @@ from typing import Any, Iterator
 
 import numpy as np
 
+from lod2energy.config import DEFAULT
 from lod2energy.errors import Lod2EnergyError
-from lod2energy.io import cityjson as cjio
-from lod2energy.io import shape
-from lod2energy.io.json_stream import Scanner, StreamError
-from lod2energy.model import Building, FeatureError
-
-from .cityjson_schema import (
+from lod2energy.exporters.cityjson.schema import (
     EXTENSION_NAME, MAX_PROBLEMS, _schema_errors, _schema_valid_fast, _validators, _worth_compiling,
     extension_problems, extension_schema, load_extension_beside,
 )
+from lod2energy.io import cityjson as cjio
+from lod2energy.io import shape, to_local_frame
+from lod2energy.io.json_stream import Scanner, StreamError
+from lod2energy.model import Building, FeatureError
+from lod2energy.repair.accept import TOLERATED_CODES, envelope_problems
+from lod2energy.validate.checks import validate_building
+from lod2energy.validate.codes import name
 
 #: CityObjects validated together (one small document each).
 BATCH = 64
@@ -338,7 +342,7 @@ def _feature(root: str, ids: list[str], cos: Mapping, verts: np.ndarray, transfo
 
 def self_check_document(path: str, extension: Mapping | None = None, tol=None) -> list[str]:
     """Problems of an exported CityJSON document (empty: the file is OK), read one
-    CityObject at a time; see :func:`lod2energy.exporters.cityjson.self_check`."""
+    CityObject at a time; see :func:`lod2energy.exporters.cityjson.writer.self_check`."""
     try:
         p = _first_pass(path, os.path.dirname(os.path.abspath(path)))
     except (OSError, UnicodeDecodeError) as e:
@@ -352,12 +356,6 @@ def self_check_document(path: str, extension: Mapping | None = None, tol=None) -
 
 
 def _check(path: str, p: _Pass1, extension: Mapping | None, tol) -> list[str]:
-    from lod2energy.config import DEFAULT
-    from lod2energy.exporters.cityjson import TOLERATED_CODES, envelope_problems
-    from lod2energy.io import to_local_frame
-    from lod2energy.validate.checks import validate_building
-    from lod2energy.validate.codes import name
-
     tol = tol or DEFAULT
     head = p.head
     try:
@@ -476,18 +474,8 @@ def _check(path: str, p: _Pass1, extension: Mapping | None, tol) -> list[str]:
             _, feats = to_local_frame(model, feats)  # a geographic file is checked in metres
         geometry: list[str] = []
         for f in feats:
-            if len(geometry) > MAX_PROBLEMS:
-                continue  # the schema of every CityObject is still checked
-            if not isinstance(f, Building):
-                geometry.append(f"re-read: {f.message}")
-                continue
-            if not any(k.startswith("+energy") for k in f.root.attributes):
-                continue
-            for d in validate_building(f, tol):
-                if d.code in TOLERATED_CODES:
-                    continue
-                geometry.append(f"{d.location}: {d.code} {name(d.code)} {d.info}".rstrip())
-            geometry += envelope_problems(f)
+            if len(geometry) <= MAX_PROBLEMS:  # the schema of every CityObject is still checked
+                geometry += feature_problems(f, tol)
         return out, geometry
 
     try:
@@ -500,3 +488,93 @@ def _check(path: str, p: _Pass1, extension: Mapping | None, tol) -> list[str]:
     if problems:  # the schema's and the extension's problems come first, as on the whole document
         return problems[:MAX_PROBLEMS]
     return geometry[:MAX_PROBLEMS]
+
+
+def self_check(path: str, extension: Mapping | None = None, tol=None) -> list[str]:
+    """Problems of an exported file (empty list: the file is OK).
+
+    Parameters
+    ----------
+    path : str
+        CityJSON (``.json``) or CityJSONSeq (``.jsonl``) file.
+    extension : mapping, optional
+        Energy extension schema to check ``+energy`` attributes against (default: the
+        file referenced under ``extensions``, looked up next to ``path``, else the shipped one).
+    tol : Tolerances, optional
+        For the val3dity checks.
+
+    Returns
+    -------
+    list of str
+        One line per problem (schema errors with their JSON path, then geometry problems
+        with val3dity-style locations).
+    """
+    tol = tol or DEFAULT
+    if not cjio.is_cityjsonseq(path):  # a document: read one CityObject at a time
+        return self_check_document(path, extension, tol)
+    problems: list[str] = []
+    try:
+        with open(path, "rb") as f:
+            raw = f.read().decode("utf-8")
+    except (OSError, UnicodeDecodeError) as e:
+        return [f"cannot read {path}: {e}"]
+    docs: list[tuple[str, Any]] = []
+    try:
+        if cjio.is_cityjsonseq(path):
+            lines = [ln for ln in raw.splitlines() if ln.strip()]
+            docs = [(f"line {i + 1}", json.loads(ln)) for i, ln in enumerate(lines)]
+        else:
+            docs = [("document", json.loads(raw))]
+    except json.JSONDecodeError as e:
+        return [f"{path} is not valid JSON: {e.msg} at line {e.lineno}"]
+    if not docs or not isinstance(docs[0][1], dict):
+        return [f"{path}: no CityJSON object"]
+    head = docs[0][1]
+    try:
+        version = cjio.normalise_version(head.get("version"))
+    except Lod2EnergyError as e:
+        return [f"{path}: {e}"]
+    schemas = _validators(version)
+    # a document the compiled validator accepts has no schema error: the interpreted
+    # validators (slow, with the messages) only see the documents it rejects
+    n_objects = sum(len(d.get("CityObjects") or {}) for _, d in docs if isinstance(d, Mapping))
+    fast = _worth_compiling(version, n_objects)
+    if not (fast and _schema_valid_fast(version, head)):
+        problems += _schema_errors(schemas, head, docs[0][0])
+    for what, d in docs[1:]:
+        if schemas.feature is None:
+            problems.append(f"{what}: CityJSONFeature needs CityJSON 1.1 or later")
+            break
+        if not (fast and _schema_valid_fast(version, d, feature=True)):
+            problems += _schema_errors(schemas, d, what, feature=True)
+        if len(problems) > MAX_PROBLEMS:
+            break
+    if extension is None:
+        extension = load_extension_beside(path, head)
+        if extension is None and EXTENSION_NAME in (head.get("extensions") or {}):
+            extension = extension_schema(version)
+    for what, d in docs[1:] if len(docs) > 1 else docs:
+        if len(docs) > 1:
+            d = {**d, "extensions": head.get("extensions")}
+        problems += extension_problems(d, extension, what)
+    if problems:
+        return problems[:MAX_PROBLEMS]
+    model, feats = to_local_frame(*cjio.read(path))  # a geographic file is checked in metres
+    for f in feats:
+        problems += feature_problems(f, tol)
+        if len(problems) > MAX_PROBLEMS:
+            break
+    return problems[:MAX_PROBLEMS]
+
+
+def feature_problems(f: Building | FeatureError, tol) -> list[str]:
+    """What the self-check finds in one re-read feature: its reading error, or for an energy
+    building (``+energy`` attributes) val3dity's defects (but the tolerated ones) and the
+    envelope's problems."""
+    if not isinstance(f, Building):
+        return [f"re-read: {f.message}"]
+    if not any(k.startswith("+energy") for k in f.root.attributes):
+        return []
+    out = [f"{d.location}: {d.code} {name(d.code)} {d.info}".rstrip()
+           for d in validate_building(f, tol) if d.code not in TOLERATED_CODES]
+    return out + envelope_problems(f)

@@ -3,7 +3,7 @@
 Method, per building of the region (already validated, repaired and labelled):
 
 1. its solids (Building and BuildingParts) are triangulated by the STL exporter's functions
-   (:func:`lod2energy.exporters.zones.zone_shells`, ``stl._zone_mesh``), every triangle keeping
+   (:func:`lod2energy.energy.zones.shells.zone_shells`, ``stl._zone_mesh``), every triangle keeping
    its class (roof, wall, ground, floor);
 2. every vertex of its ground (bottom) faces is moved down to ``ground level - SINK`` so that
    the body goes through the domain floor: a building standing a little above the region's
@@ -24,7 +24,13 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+import manifold3d as m3
 import numpy as np
+from shapely import STRtree, polygons, union_all
+from shapely.geometry import MultiPolygon, Polygon
+
+from lod2energy.energy.zones.shells import zone_shells
+from lod2energy.exporters.stl.writer import ZONE_WELD_TOL, _closed_by_position, _zone_mesh, ascii_solids, merge_meshes
 
 #: Depth (m) below the ground level the building bottoms are sunk to.
 SINK = 1.0
@@ -52,7 +58,6 @@ class BuildingBody:
     eave : float, m
         Lowest roof vertex z (``top`` without roof faces).
     """
-
     id: str
     meshes: tuple
     footprint: object
@@ -80,7 +85,6 @@ class UnitedSurface:
     gap_fill_area : float, m2
     warnings : tuple of str
     """
-
     vertices: np.ndarray
     triangles: np.ndarray
     codes: np.ndarray
@@ -92,14 +96,12 @@ class UnitedSurface:
 
 
 def _to_manifold(v: np.ndarray, t: np.ndarray):
-    import manifold3d as m3
     return m3.Manifold(m3.Mesh64(vert_properties=np.ascontiguousarray(v, dtype=np.float64),
                                  tri_verts=np.ascontiguousarray(t, dtype=np.uint64)))
 
 
 def _plan_shape(v: np.ndarray, t: np.ndarray):
     """Union of the triangles' plan projections (shapely)."""
-    from shapely import polygons, union_all
     P = v[t][:, :, :2]
     a = 0.5 * np.abs((P[:, 1, 0] - P[:, 0, 0]) * (P[:, 2, 1] - P[:, 0, 1])
                      - (P[:, 2, 0] - P[:, 0, 0]) * (P[:, 1, 1] - P[:, 0, 1]))
@@ -115,10 +117,6 @@ def building_body(b, origin: np.ndarray, lod: str | None = None) -> BuildingBody
     ValueError
         The building has no solid, or one of its solids is not a closed 2-manifold.
     """
-    from lod2energy.exporters.zones import zone_shells
-    from lod2energy.exporters.stl import ZONE_WELD_TOL, _closed_by_position, _zone_mesh
-    import manifold3d as m3
-
     zs = zone_shells(b, origin, lod, weld_tol=ZONE_WELD_TOL)
     ms = [_zone_mesh(z) for z in zs]
     if not all(_closed_by_position(v, t) for v, t, _ in ms):
@@ -135,7 +133,6 @@ def building_body(b, origin: np.ndarray, lod: str | None = None) -> BuildingBody
     roofz = [v[np.unique(t[c == 0])][:, 2] for v, t, c in ms if (c == 0).any()]
     top = float(allv[:, 2].max())
     eave = float(min(r.min() for r in roofz)) if roofz else top
-    from shapely import union_all
     fp = union_all([s for s in (_plan_shape(v, t) for v, t, _ in ms) if s is not None])
     return BuildingBody(b.id, tuple(ms), fp, float(allv[:, 2].min()), top, eave)
 
@@ -161,9 +158,6 @@ def gap_fills(bodies: list[BuildingBody], min_gap: float, floor: float
     """
     if min_gap <= 0 or not bodies:
         return [], 0.0
-    import manifold3d as m3
-    from shapely import STRtree, union_all
-    from shapely.geometry import MultiPolygon, Polygon
 
     fps = [bd.footprint for bd in bodies]
     union = union_all(fps)
@@ -225,9 +219,6 @@ def unite(bodies: list[BuildingBody], ground: float, min_gap: float = 0.0,
     ValueError
         The union is not a closed 2-manifold.
     """
-    from lod2energy.exporters.stl import merge_meshes
-    import manifold3d as m3
-
     floor = ground - SINK if sink_to is None else float(sink_to)
     meshes = [sink(m, floor) for bd in bodies for m in bd.meshes]
     fills, fill_area = gap_fills(bodies, min_gap, floor)
@@ -245,7 +236,6 @@ def unite(bodies: list[BuildingBody], ground: float, min_gap: float = 0.0,
 
 def stl_text(v: np.ndarray, t: np.ndarray, codes: np.ndarray, names: tuple[str, ...]) -> str:
     """ASCII STL with one ``solid <name>`` per code present (the STL exporter's format)."""
-    from lod2energy.exporters.stl import ascii_solids
     return "".join(ascii_solids(v, t, codes, names))
 
 

@@ -8,17 +8,27 @@ from __future__ import annotations
 
 import math
 import os
-from dataclasses import dataclass, field
+import shutil
+import tempfile
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
+import jinja2
 import numpy as np
 
+import lod2energy.templates as tpl
+from lod2energy.energy.zones.shells import local_origin
 from lod2energy.errors import ParameterError
-from lod2energy.safe_write import write_json, write_text
-
-from .domain import Domain, frontal_area, size_domain
-from .region import Region
-from .surfaces import SINK, SOLIDS, BuildingBody, UnitedSurface, flat_ground, smallest_feature, stl_text, unite
+from lod2energy.exporters.cfd.domain import Domain, from_wind_frame, frontal_area, size_domain
+from lod2energy.exporters.cfd.openfoam import surface_check, surface_check_binary
+from lod2energy.exporters.cfd.region import Region, select
+from lod2energy.exporters.cfd.surfaces import (
+    BuildingBody, SINK, SOLIDS, UnitedSurface, _to_manifold, building_body, flat_ground, smallest_feature, stl_text,
+    unite,
+)
+from lod2energy.exporters.cfd.terrain import height_function, local_tin, solid_under, terrain_grid, volume_under
+from lod2energy.exporters.stl.writer import self_check
+from lod2energy.safe_write import write_checked, write_json, write_text
 
 #: Neutral ABL inlet: reference speed (m/s) at the WMO reference height (m), roughness (m).
 UREF, ZREF, Z0 = 10.0, 10.0, 0.1
@@ -46,7 +56,6 @@ class MeshPlan:
         blockMesh cells along the wind, across, up.
     smallest_feature : float, m
     """
-
     background_cell: float
     surface_level: int
     feature_level: int
@@ -112,7 +121,6 @@ class Case:
     terrain_level : int
         Refinement level of the terrain surface.
     """
-
     offset: tuple[float, float, float]
     region: Region
     included: tuple[str, ...]
@@ -139,16 +147,13 @@ def build_case(buildings, region: Region, wind_direction: float, cell_size: floa
     buildings : list of Building
         Prepared (repaired, labelled) buildings; non-buildings are ignored.
     terrain : (vertices (n, 3), triangles (t, 3)) or None
-        A TIN in map coordinates (see :func:`lod2energy.cfd.terrain.tin_of`); None: flat ground.
+        A TIN in map coordinates (see :func:`lod2energy.exporters.cfd.terrain.tin_of`); None: flat ground.
 
     Raises
     ------
     ParameterError
         No building of the region could be used.
     """
-    from lod2energy.exporters.zones import local_origin
-    from .region import select
-
     blist = [b for b in buildings if b.is_building]
     inside, excluded = select(blist, region)
     if not inside:
@@ -166,7 +171,6 @@ def build_case(buildings, region: Region, wind_direction: float, cell_size: floa
                              "; ".join(f"{i}: {m}" for i, m in failed[:3]))
     tin = None
     if terrain is not None:
-        from .terrain import local_tin
         tin = local_tin(terrain, offset)
     ground_level = float(min(bd.base for bd in bodies))
     notes = []
@@ -178,8 +182,6 @@ def build_case(buildings, region: Region, wind_direction: float, cell_size: floa
         return Case(tuple(float(x) for x in offset), region, tuple(bd.id for bd in bodies), tuple(excluded),
                     tuple(failed), united, ground_level, domain, mesh, flat_ground(domain.corners()), False,
                     float(min_gap), tuple(notes), domain.volume, 0)
-    from dataclasses import replace
-    from .terrain import height_function, solid_under, terrain_grid, volume_under
     height = height_function(tin)
     # the domain is sized on the buildings as for flat ground; the box then reaches down under
     # the terrain, and the terrain grid is sampled along the background mesh's lines
@@ -194,7 +196,6 @@ def build_case(buildings, region: Region, wind_direction: float, cell_size: floa
     domain = replace(domain0, floor=float(floor))
     mesh = plan_mesh(domain, cell_size, small)
     under = solid_under(gv, gt, min(floor, sink_to) - 1.0)
-    from .surfaces import _to_manifold
     bodies_above = (_to_manifold(united.vertices, united.triangles) - under).volume()
     fluid = domain.volume - volume_under(gv, gt[inner], floor)
     united = replace(united, volume_above_ground=float(bodies_above))
@@ -214,13 +215,10 @@ def _size(united, h_max, ground_level, wind_direction, cell_size, small):
 
 
 def building_body_of(b, offset, lod):
-    from .surfaces import building_body
     return building_body(b, offset, lod)
 
 
 def _env():
-    import jinja2
-    import lod2energy.templates as tpl
     folder = Path(tpl.__file__).resolve().parent / "cfd"
     return jinja2.Environment(loader=jinja2.FileSystemLoader(str(folder)), undefined=jinja2.StrictUndefined,
                               autoescape=False, keep_trailing_newline=True)
@@ -229,7 +227,6 @@ def _env():
 def location_in_mesh(domain: Domain, plan: MeshPlan) -> np.ndarray:
     """A point in the air: 1.2345 background cells in from the inlet, off-centre laterally,
     above half height; never on a cell face of any refinement level."""
-    from .domain import from_wind_frame
     h = plan.background_cell
     u = domain.x_min + 1.2345 * h
     v = 0.5 * (domain.y_min + domain.y_max) + 0.2345 * h
@@ -241,9 +238,6 @@ def location_in_mesh(domain: Domain, plan: MeshPlan) -> np.ndarray:
 
 def _surface_check(path: Path):
     """surfaceCheck on ``path`` whatever its suffix (write_checked stages files as ``.staged``)."""
-    import shutil
-    import tempfile
-    from lod2energy.openfoam import surface_check
     with tempfile.TemporaryDirectory(prefix="cfd_surface_") as tmp:
         local = Path(tmp) / "surface.stl"
         shutil.copyfile(path, local)
@@ -252,7 +246,6 @@ def _surface_check(path: Path):
 
 def _ground_check(path: Path) -> list[str]:
     """surfaceCheck on an open ground sheet: no illegal triangle, one part, one normal zone."""
-    from lod2energy.openfoam import surface_check_binary
     if surface_check_binary() is None:
         return []
     sc = _surface_check(path)
@@ -268,9 +261,7 @@ def _ground_check(path: Path) -> list[str]:
 
 def _buildings_check(expected_bodies: int):
     def check(path: Path) -> list[str]:
-        from lod2energy.openfoam import surface_check_binary
         if surface_check_binary() is None:  # without OpenFOAM: the STL exporter's own re-read check
-            from lod2energy.exporters.stl import self_check
             return self_check(path)
         sc = _surface_check(path)
         problems = list(sc.failures)
@@ -295,8 +286,6 @@ def write_case(case: Case, outdir: str | Path, *, source: str = "", crs: str | N
     -------
     (case folder, surface check results {file: problems}, problems)
     """
-    from lod2energy.safe_write import write_checked
-
     root = Path(outdir)
     cdir = root / "cfd"
     env = _env()
@@ -305,7 +294,6 @@ def write_case(case: Case, outdir: str | Path, *, source: str = "", crs: str | N
     plan = case.mesh
     loc = location_in_mesh(d, plan)
     if case.terrain:
-        from .terrain import height_function
         zt = height_function(case.ground)(loc[None, :2])[0]
         if loc[2] < zt + plan.background_cell:
             raise ParameterError("the terrain rises above the domain's mid-height: no point in the air found")

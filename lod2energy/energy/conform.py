@@ -1,23 +1,23 @@
 """Pieces conformed to EnergyPlus's enclosure test: kept corners, folded slivers, merged vertices.
 
-The emulated test itself is :mod:`exporters.energyplus.enclosure`.
+The emulated test itself is :mod:`lod2energy.energy.enclosure`.
 """
 from __future__ import annotations
 
+from collections import Counter
 from dataclasses import replace
 
 import numpy as np
 
-from ..polygons import polygon_area3d
+from lod2energy.energy.enclosure import (
+    _drop_coincident, _on_line, enclosure_defects, eplus_collinear, eplus_degenerate, snap_polygons,
+)
+from lod2energy.energy.pieces import Piece, WRITE_DECIMALS, _planar_dev, _surely_planar
+from lod2energy.energy.zones.shells import MIN_PIECE_AREA
+from lod2energy.exporters.polygons import polygon_area3d
+from lod2energy.exporters.shellcheck import check_closed_outward
+from lod2energy.exporters.weld import weld
 from lod2energy.geometry import split_at_points
-
-from ..shellcheck import check_closed_outward
-from ..weld import weld
-from ..zones import MIN_PIECE_AREA
-from .enclosure import (_collinear_many, _drop_coincident_many, enclosure_defects, eplus_degenerate_many, _on_line,
-                        snap_polygons)
-from .options import WRITE_DECIMALS
-from .pieces import Piece, _planar_dev, _surely_planar
 
 
 #: A vertex EnergyPlus finds collinear but which lies farther than this (m) from the line
@@ -39,7 +39,7 @@ def keep_corners(pieces: list[Piece], tol: float = CORNER_TOL) -> list[Piece]:
     # EnergyPlus's collinear and degenerate tests batched over all pieces (the same verdicts
     # as eplus_collinear / eplus_degenerate of each one, bit for bit)
     rings = [np.asarray(p.points, dtype=np.float64) for p in pieces]
-    collinear = _collinear_many(rings)
+    collinear = eplus_collinear(rings)
     degenerate = _degenerate_given(rings, collinear)
     # the planarity test of the pieces with more than 3 vertices at once, where certain
     flat = iter(_surely_planar([q for q in rings if len(q) > 3], PIECE_PLANAR))
@@ -54,20 +54,20 @@ def keep_corners(pieces: list[Piece], tol: float = CORNER_TOL) -> list[Piece]:
         c = np.round(q.mean(axis=0), WRITE_DECIMALS)
         tris = [np.array([c, q[i], q[(i + 1) % len(q)]]) for i in range(len(q))]
         tris = [t for t in tris if polygon_area3d(t) > 1e-9]
-        for tri, bad in zip(tris, eplus_degenerate_many(tris)):
+        for tri, bad in zip(tris, eplus_degenerate(tris)):
             if not bad:
                 out.append(replace(p, points=tri))
     return out
 
 
 def _degenerate_given(rings: list[np.ndarray], collinear: list[list[int]]) -> list[bool]:
-    """:func:`enclosure.eplus_degenerate_many` of ``rings`` whose :func:`_collinear_many` is
+    """:func:`enclosure.eplus_degenerate` of ``rings`` whose :func:`eplus_collinear` is
     ``collinear``: the coincident test keeps every vertex of most rings, and then the
     collinear test it runs is that one (the same rows, the same verdicts)."""
-    keeps = _drop_coincident_many(rings, 1)
+    keeps = _drop_coincident(rings, 1)
     redo = [k for k, (q, kq) in enumerate(zip(rings, keeps)) if len(kq) != len(q)]
     cols = list(collinear)
-    for k, c in zip(redo, _collinear_many([keeps[k] for k in redo])):
+    for k, c in zip(redo, eplus_collinear([keeps[k] for k in redo])):
         cols[k] = c
     return [len(kq) - len(c) < 3 for kq, c in zip(keeps, cols)]
 
@@ -129,7 +129,6 @@ class _PieceMemo:
     """Values per Piece object (a Piece holds arrays, so it is not hashable): keyed by identity,
     each piece held here so that its id is not reused while the memo lives. Pieces are
     immutable, so what was found for one stays true."""
-
     def __init__(self):
         self._d: dict[int, tuple[Piece, object]] = {}
 
@@ -205,8 +204,6 @@ def eplus_conform(pieces: list[Piece], tol: float = EPLUS_POINT_TOL) -> list[Pie
 
 def _edge_defects(pieces: list[Piece]) -> int:
     """Directed edges used more than once plus edges without their reverse."""
-    from collections import Counter
-
     cnt = Counter()
     for p in pieces:
         k = [tuple(np.round(x, 6).tolist()) for x in p.points]

@@ -11,7 +11,7 @@ What is written (through :mod:`lod2energy.io.cityjson`'s writer):
   referenced under the document's ``"extensions"`` (relative URL ``energy.ext.json``; the
   extension file is copied next to the output);
 - the input's terrain (``TINRelief`` city objects) as read, after the buildings, on the same
-  grid (:mod:`lod2energy.exporters.cityjson_terrain`);
+  grid (:mod:`lod2energy.exporters.cityjson.terrain`);
 - CityJSON version: the input's by default, else ``version`` ("1.0", "1.1", "2.0").
 
 Self-check (:func:`self_check`): re-parse the file, validate it against the official
@@ -39,30 +39,25 @@ from collections.abc import Mapping
 from typing import Any, Iterable, Iterator, Sequence
 
 from lod2energy import safe_write
+from lod2energy.config import DEFAULT
 from lod2energy.errors import Lod2EnergyError
 from lod2energy.heap import give_back
 from lod2energy.io import cityjson as cjio
 from lod2energy.io.cityjson_grid import on_grid
 from lod2energy.io.cityjson_write import write_document
 from lod2energy.model import Building, CityModel, frozen_mapping
-from lod2energy.repair.accept import (  # noqa: F401 - acceptance_problem: importable from here as before
-    TOLERATED_CODES, acceptance_problem, envelope_problems, export_problem, strip_to_energy,
-)
+from lod2energy.repair.accept import export_problem, strip_to_energy
 
-from .cityjson_schema import (  # noqa: F401 - the schema helpers, importable from here as before
-    COMPILE_MIN_OBJECTS, EXTENSION_FILE, EXTENSION_NAME, EXTENSION_VERSION, MAX_PROBLEMS, _schema_errors,
-    _schema_valid_fast, _validators, _worth_compiling, extension_problems, extension_schema,
-    load_extension_beside,
-)
-from .cityjson_terrain import is_terrain, n_faces, prepare_terrain, terrain_problem
-from .cityjson_version import fix_cityobject, fix_document, fix_header, model_for  # noqa: F401
-from .result import ExportResult
-from .run_results import result_attributes
+from lod2energy.exporters.cityjson.check import self_check
+from lod2energy.exporters.cityjson.schema import EXTENSION_FILE, extension_schema
+from lod2energy.exporters.cityjson.terrain import is_terrain, n_faces, prepare_terrain, terrain_problem
+from lod2energy.exporters.cityjson.version import fix_cityobject, fix_header, model_for
+from lod2energy.exporters.registry import as_sequence, register_writer
+from lod2energy.exporters.result import ExportResult
+from lod2energy.exporters.run_results import result_attributes
 
 INVALID_SUFFIX = ".invalid"
 _STAGED = itertools.count()
-#: The former private name of :func:`lod2energy.repair.accept.envelope_problems`.
-_envelope_problems = envelope_problems
 
 
 # ----------------------------------------------------------------------------- preparing
@@ -106,19 +101,13 @@ def _ready_problem(b: Building, lod: str | None, keep_other_lods: bool = False, 
     """Why ``b`` cannot be exported as an energy building (None when it can): the pipeline's
     final check (:func:`lod2energy.repair.accept.export_problem`) on the file's grid
     ``transform`` (default: the building's own, :func:`lod2energy.io.cityjson_grid.building_grid`)."""
-    from lod2energy.config import DEFAULT
-
     return export_problem(b, lod, tol or DEFAULT, transform=transform, frame=frame, keep_other_lods=keep_other_lods)
-
-
-#: The former private name.
-_strip_to_energy = strip_to_energy
 
 
 def prepare_building(b: Building, lod: str | None = None, keep_other_lods: bool = False) -> Building:
     """The building as exported: energy LoD only, ``+energy`` attributes on the root."""
     lod = lod if lod is not None else (b.provenance.get("thermal") or {}).get("lod") or b.default_lod()
-    b = _strip_to_energy(b, lod, keep_other_lods)
+    b = strip_to_energy(b, lod, keep_other_lods)
     root = b.root
     attrs = dict(root.attributes)
     attrs.update(_energy_attributes(b))
@@ -141,7 +130,7 @@ def write(path: str, model: CityModel, buildings: Iterable[Building], version: s
         File-level data of the input (metadata, transform, extensions, version).
     buildings : iterable of Building
         Output of label + U-value stages (``provenance["thermal"]`` present). Terrain
-        features (``TINRelief``, :mod:`lod2energy.exporters.cityjson_terrain`) among them are
+        features (``TINRelief``, :mod:`lod2energy.exporters.cityjson.terrain`) among them are
         written as they were read and listed in ``ExportResult.terrain``; other
         non-buildings are left out (``skipped``).
     version : str, optional
@@ -234,9 +223,9 @@ def write(path: str, model: CityModel, buildings: Iterable[Building], version: s
     if problems:
         return ExportResult(ids, target, False,
                             tuple(problems) + (f"failed its self-check: kept as {base}{INVALID_SUFFIX}",),
-                            version=version, skipped=tuple(skipped), extension_path=ext_path, notes=tuple(notes),
+                            version=version, skipped=tuple(skipped), sidecars=(ext_path,), notes=tuple(notes),
                             terrain=tuple(terrain))
-    return ExportResult(ids, path, True, (), version=version, skipped=tuple(skipped), extension_path=ext_path,
+    return ExportResult(ids, path, True, (), version=version, skipped=tuple(skipped), sidecars=(ext_path,),
                         notes=tuple(notes), terrain=tuple(terrain))
 
 
@@ -247,97 +236,16 @@ def _remove(p: str) -> None:
         pass
 
 
-# ----------------------------------------------------------------------------- self-check
+def _write(buildings, outdir, options, *, model=None, stem="out", tol=None, **_):
+    """One CityJSON for all ``buildings``: a record for each Building, written or left out; the
+    input's terrain (TINRelief) it carries and other objects left out get none."""
+    buildings = as_sequence(buildings)
+    res = write(os.path.join(str(outdir), f"{stem}.energy.city.json"), model, buildings,
+                version=options.version if options is not None else None, tol=tol)
+    heads = getattr(buildings, "heads", None) or [(b.id, b.type) for b in buildings]
+    out = {str(t[0]) for t in res.terrain} | {bid for bid, _ in res.skipped}
+    return [replace(res, given=tuple(bid for bid, btype in heads if btype == "Building" or bid not in out))]
 
-def self_check(path: str, extension: Mapping | None = None, tol=None) -> list[str]:
-    """Problems of an exported file (empty list: the file is OK).
 
-    Parameters
-    ----------
-    path : str
-        CityJSON (``.json``) or CityJSONSeq (``.jsonl``) file.
-    extension : mapping, optional
-        Energy extension schema to check ``+energy`` attributes against (default: the
-        file referenced under ``extensions``, looked up next to ``path``, else the shipped one).
-    tol : Tolerances, optional
-        For the val3dity checks.
-
-    Returns
-    -------
-    list of str
-        One line per problem (schema errors with their JSON path, then geometry problems
-        with val3dity-style locations).
-    """
-    from lod2energy.config import DEFAULT
-    from lod2energy.validate.checks import validate_building
-    from lod2energy.validate.codes import name
-
-    tol = tol or DEFAULT
-    if not cjio.is_cityjsonseq(path):  # a document: read one CityObject at a time
-        from .cityjson_check import self_check_document
-        return self_check_document(path, extension, tol)
-    problems: list[str] = []
-    try:
-        with open(path, "rb") as f:
-            raw = f.read().decode("utf-8")
-    except (OSError, UnicodeDecodeError) as e:
-        return [f"cannot read {path}: {e}"]
-    docs: list[tuple[str, Any]] = []
-    try:
-        if cjio.is_cityjsonseq(path):
-            lines = [ln for ln in raw.splitlines() if ln.strip()]
-            docs = [(f"line {i + 1}", json.loads(ln)) for i, ln in enumerate(lines)]
-        else:
-            docs = [("document", json.loads(raw))]
-    except json.JSONDecodeError as e:
-        return [f"{path} is not valid JSON: {e.msg} at line {e.lineno}"]
-    if not docs or not isinstance(docs[0][1], dict):
-        return [f"{path}: no CityJSON object"]
-    head = docs[0][1]
-    try:
-        version = cjio.normalise_version(head.get("version"))
-    except Lod2EnergyError as e:
-        return [f"{path}: {e}"]
-    schemas = _validators(version)
-    # a document the compiled validator accepts has no schema error: the interpreted
-    # validators (slow, with the messages) only see the documents it rejects
-    n_objects = sum(len(d.get("CityObjects") or {}) for _, d in docs if isinstance(d, Mapping))
-    fast = _worth_compiling(version, n_objects)
-    if not (fast and _schema_valid_fast(version, head)):
-        problems += _schema_errors(schemas, head, docs[0][0])
-    for what, d in docs[1:]:
-        if schemas.feature is None:
-            problems.append(f"{what}: CityJSONFeature needs CityJSON 1.1 or later")
-            break
-        if not (fast and _schema_valid_fast(version, d, feature=True)):
-            problems += _schema_errors(schemas, d, what, feature=True)
-        if len(problems) > MAX_PROBLEMS:
-            break
-    if extension is None:
-        extension = load_extension_beside(path, head)
-        if extension is None and EXTENSION_NAME in (head.get("extensions") or {}):
-            extension = extension_schema(version)
-    for what, d in docs[1:] if len(docs) > 1 else docs:
-        if len(docs) > 1:
-            d = {**d, "extensions": head.get("extensions")}
-        problems += extension_problems(d, extension, what)
-    if problems:
-        return problems[:MAX_PROBLEMS]
-    from lod2energy.io import to_local_frame
-    model, feats = to_local_frame(*cjio.read(path))  # a geographic file is checked in metres
-    n_energy = 0
-    for f in feats:
-        if not isinstance(f, Building):
-            problems.append(f"re-read: {f.message}")
-            continue
-        if not any(k.startswith("+energy") for k in f.root.attributes):
-            continue
-        n_energy += 1
-        for d in validate_building(f, tol):
-            if d.code in TOLERATED_CODES:
-                continue
-            problems.append(f"{d.location}: {d.code} {name(d.code)} {d.info}".rstrip())
-        problems += envelope_problems(f)
-        if len(problems) > MAX_PROBLEMS:
-            break
-    return problems[:MAX_PROBLEMS]
+# after the IDF: the CityJSON carries the results of its EnergyPlus runs (exporters.run_results)
+register_writer("cityjson", _write, self_check, scope="dataset")

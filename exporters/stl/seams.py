@@ -12,8 +12,8 @@ from dataclasses import replace
 import numpy as np
 
 from lod2energy.geometry import split_at_points
-from .rows import unique_rows
-from .zones import ZoneShell
+from lod2energy.exporters.stl.rows import unique_rows
+from lod2energy.energy.zones.shells import ZoneShell
 
 #: A vertex this close (m) to an edge that has no twin (or an open triangle edge) is a T-junction:
 #: it is inserted into that edge (:func:`split_t_junctions`, :func:`split_open_edges`).

@@ -1,11 +1,11 @@
 """Simpler envelopes for a zone EnergyPlus would not accept as written (the energy model's fallbacks).
 
-Part of the energy model stage (:mod:`lod2energy.exporters.energyplus.model`), which tries them in
+Part of the energy model stage (:mod:`lod2energy.energy.model`), which tries them in
 the order of :data:`FALLBACKS` before the IDF writer runs; the writer only writes the result.
 
 A repaired LoD2 shell is a closed 2-manifold, but EnergyPlus's enclosure test merges points
 within 1.27 cm per axis and inserts points within 1.27 cm of an edge
-(:mod:`exporters.energyplus.enclosure`); a shell with many centimetre-scale features (alpha wraps
+(:mod:`lod2energy.energy.enclosure`); a shell with many centimetre-scale features (alpha wraps
 of buildings with crossing walls) can fail it however its pieces are cut. Such a zone is
 written as a simpler envelope of the same building, least change first:
 
@@ -28,12 +28,13 @@ from dataclasses import replace
 from functools import partial
 
 import numpy as np
+from shapely.geometry.polygon import orient
 
 from lod2energy.config import DEFAULT
-from lod2energy.exporters.energyplus.enclosure import eplus_merge
+from lod2energy.energy.enclosure import eplus_merge
+from lod2energy.energy.zones.shells import ZoneFace, ZoneShell, classify
 from lod2energy.exporters.polygons import newell_normal, polygon_area3d
 from lod2energy.exporters.weld import clean_ring
-from lod2energy.exporters.zones import ZoneFace, ZoneShell, classify
 from lod2energy.polymesh import Face, PolyMesh, signed_volume
 from lod2energy.repair.footprint import footprint_polygon, roof_height
 from lod2energy.repair.roofs import roof_model
@@ -220,7 +221,6 @@ def block_zone(zone: ZoneShell, simplify: float = BLOCK_SIMPLIFY, opening: float
     hull : bool
         Use the footprint's convex hull.
     """
-    from shapely.geometry.polygon import orient
     m = _mesh(zone)
     fp = footprint_polygon(m, simplify=simplify)
     if fp is None:

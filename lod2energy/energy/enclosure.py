@@ -26,14 +26,15 @@ The steps follow EnergyPlus 9-25:
 from __future__ import annotations
 
 import math
-import threading
 from dataclasses import dataclass
 from typing import Sequence
 
 import numpy as np
+from scipy.spatial import cKDTree
 
-from ..polygons import polygon_area3d
-from ..weld import weld
+from lod2energy import cache
+from lod2energy.exporters.polygons import polygon_area3d
+from lod2energy.exporters.weld import weld
 
 #: Per-axis tolerance (m) of EnergyPlus's ``isAlmostEqual3dPt`` and the slack of its
 #: ``isPointOnLineBetweenPoints`` (1/2 inch).
@@ -70,37 +71,16 @@ class BadEdge:
     surfaces: tuple[int, ...]
 
 
-def eplus_collinear(points: np.ndarray) -> list[int]:
-    """Indices of the vertices EnergyPlus's ``CheckConvexity`` finds collinear with their
-    neighbours (in its projection plane, see :data:`PLANE_DET`, :data:`TURN_THRESHOLD`)."""
-    q = np.asarray(points, dtype=np.float64)
-    k = len(q)
-    if k < 3:
-        return []
-    # the rows shifted once each way, built once (np.roll per axis and plane cost 3/4 of this
-    # function); the values and their arithmetic are the same as with np.roll
-    qn = np.concatenate((q[1:], q[:1]))     # q[i + 1]
-    qp = np.concatenate((q[-1:], q[:-1]))   # q[i - 1]
-    for i, j in ((0, 1), (0, 2), (1, 2)):
-        A, B = q[:, i], q[:, j]
-        if abs(float(np.sum(A * qn[:, j] - qn[:, i] * B))) > PLANE_DET:
-            break
-    ua, ub = A - qp[:, i], B - qp[:, j]
-    va, vb = qn[:, i] - A, qn[:, j] - B
-    turn = np.arctan2(ua * vb - ub * va, ua * va + ub * vb)
-    # the sine of the turn decides: a spike (the outline doubling back, turn = pi) counts too;
-    # a vertex next to an edge that projects to a point (a vertical edge seen from above) has
-    # no turn and is kept
-    seen = (np.hypot(ua, ub) > PROJECTED_EPS) & (np.hypot(va, vb) > PROJECTED_EPS)
-    return np.flatnonzero(seen & (np.abs(np.sin(turn)) < TURN_THRESHOLD)).tolist()
-
-
-def _collinear_many(rings: Sequence[np.ndarray]) -> list[list[int]]:
-    """:func:`eplus_collinear` of many rings at once, each ``(k_i, 3)`` float64.
+def eplus_collinear(rings: Sequence[np.ndarray]) -> list[list[int]]:
+    """The vertices EnergyPlus's ``CheckConvexity`` finds collinear with their neighbours, in
+    each ring ``(k_i, 3)`` float64 (in its projection plane, see :data:`PLANE_DET`,
+    :data:`TURN_THRESHOLD`).
 
     The element-wise arithmetic runs once over the concatenated rings; each ring's projected
-    doubled area (which picks its coordinate plane) is still summed on its own slice, so
-    every value and every decision is the one the ring alone gives, bit for bit.
+    doubled area (which picks its coordinate plane) is summed on its own slice, so every
+    decision is the one the ring alone gives. The sine of the turn decides: a spike (the
+    outline doubling back, turn = pi) counts too; a vertex next to an edge that projects to a
+    point (a vertical edge seen from above) has no turn and is kept.
 
     Returns
     -------
@@ -140,7 +120,7 @@ def _collinear_many(rings: Sequence[np.ndarray]) -> list[list[int]]:
     ua, ub = A - Qp[rows, ia], B - Qp[rows, ib]
     va, vb = Qn[rows, ia] - A, Qn[rows, ib] - B
     turn = np.arctan2(ua * vb - ub * va, ua * va + ub * vb)
-    seen = (np.hypot(ua, ub) > PROJECTED_EPS) & (np.hypot(va, vb) > PROJECTED_EPS)  # as above
+    seen = (np.hypot(ua, ub) > PROJECTED_EPS) & (np.hypot(va, vb) > PROJECTED_EPS)
     hit = np.flatnonzero(seen & (np.abs(np.sin(turn)) < TURN_THRESHOLD))
     if len(hit):
         ring_of = np.repeat(np.arange(len(qs)), lens)
@@ -149,7 +129,7 @@ def _collinear_many(rings: Sequence[np.ndarray]) -> list[list[int]]:
     return out
 
 
-def _drop_coincident(points: np.ndarray, floor: int) -> np.ndarray:
+def _drop_coincident_one(points: np.ndarray, floor: int) -> np.ndarray:
     """``GetVertices``' coincident test: a vertex closer than :data:`COINCIDENT` to the
     previous kept one is dropped, then the last ones while closer than that to the first and
     more than ``floor`` remain. (k, 3) -> (k', 3), a new array."""
@@ -175,14 +155,14 @@ def _drop_coincident(points: np.ndarray, floor: int) -> np.ndarray:
     return keep[:n]
 
 
-def _drop_coincident_many(surfaces: Sequence[np.ndarray], floor: int) -> list[np.ndarray]:
-    """:func:`_drop_coincident` of each surface (the same values).
+def _drop_coincident(surfaces: Sequence[np.ndarray], floor: int) -> list[np.ndarray]:
+    """``GetVertices``' coincident test of each surface (:func:`_drop_coincident_one`).
 
     The common case for all surfaces at once: no two consecutive vertices closer than
     :data:`COINCIDENT` (the same row sums as one surface at a time) and the last vertex
     clearly farther than that from the first (with a margin: the surface alone measures that
     distance with a dot product, whose rounding may differ); such a surface keeps every
-    vertex. The others go through :func:`_drop_coincident`.
+    vertex. The others go through :func:`_drop_coincident_one`.
     """
     arrs = [np.asarray(s, dtype=np.float64).reshape(-1, 3) for s in surfaces]
     out: list[np.ndarray | None] = [None] * len(arrs)
@@ -201,36 +181,30 @@ def _drop_coincident_many(surfaces: Sequence[np.ndarray], floor: int) -> list[np
         for i, sure in zip(idx, (np.logical_and.reduceat(ok, starts) & closed).tolist()):
             if sure:
                 out[i] = arrs[i].copy()
-    return [q if q is not None else _drop_coincident(a, floor) for q, a in zip(out, arrs)]
+    return [q if q is not None else _drop_coincident_one(a, floor) for q, a in zip(out, arrs)]
 
 
-def eplus_degenerate(points: np.ndarray) -> bool:
-    """Would EnergyPlus call the surface degenerate (fewer than 3 sides once coincident and
+def eplus_degenerate(surfaces: Sequence[np.ndarray]) -> list[bool]:
+    """Would EnergyPlus call each surface degenerate (fewer than 3 sides once coincident and
     collinear vertices are removed: a severe error)?"""
-    keep = _drop_coincident(points, 1)
-    return len(keep) - len(eplus_collinear(keep)) < 3
-
-
-def eplus_degenerate_many(surfaces: Sequence[np.ndarray]) -> list[bool]:
-    """:func:`eplus_degenerate` of each surface (the collinear test batched over all of them)."""
-    keeps = _drop_coincident_many(surfaces, 1)
-    return [len(q) - len(c) < 3 for q, c in zip(keeps, _collinear_many(keeps))]
+    keeps = _drop_coincident(surfaces, 1)
+    return [len(q) - len(c) < 3 for q, c in zip(keeps, eplus_collinear(keeps))]
 
 
 def eplus_vertices_and_degenerate(surfaces: Sequence[np.ndarray]) -> tuple[list[np.ndarray], list[bool]]:
-    """:func:`eplus_vertices_many` and :func:`eplus_degenerate_many` of the same surfaces,
+    """:func:`eplus_vertices` and :func:`eplus_degenerate` of the same surfaces,
     their shared work done once.
 
     The coincident test with a floor of 1 (degenerate) and of 3 (vertices) keeps the same
     vertices whenever the first keeps at least 3 (the trailing drop stops where it stops
     for both, or at 3 for the floor of 3), so the collinear test runs once on those.
     """
-    keeps = _drop_coincident_many(surfaces, 1)
-    cols = _collinear_many(keeps)
+    keeps = _drop_coincident(surfaces, 1)
+    cols = eplus_collinear(keeps)
     degenerate = [len(q) - len(c) < 3 for q, c in zip(keeps, cols)]
     short = [i for i, q in enumerate(keeps) if len(q) < 3]
     if short:
-        redo = eplus_vertices_many([surfaces[i] for i in short])
+        redo = eplus_vertices([surfaces[i] for i in short])
     faces: list[np.ndarray] = []
     for q, drop in zip(keeps, cols):
         if drop and len(q) - len(drop) >= 3:
@@ -241,21 +215,16 @@ def eplus_vertices_and_degenerate(surfaces: Sequence[np.ndarray]) -> tuple[list[
     return faces, degenerate
 
 
-def eplus_vertices(points: np.ndarray) -> np.ndarray:
-    """A surface's vertices as EnergyPlus keeps them, (k, 3) -> (k', 3).
+def eplus_vertices(surfaces: Sequence[np.ndarray]) -> list[np.ndarray]:
+    """Each surface's vertices as EnergyPlus keeps them, (k, 3) -> (k', 3).
 
     Vertices closer than :data:`COINCIDENT` to the previous kept one are dropped
     (``GetVertices``), then the vertices :func:`eplus_collinear` finds, while at least three
     remain (``CheckConvexity``).
     """
-    return eplus_vertices_many([points])[0]
-
-
-def eplus_vertices_many(surfaces: Sequence[np.ndarray]) -> list[np.ndarray]:
-    """:func:`eplus_vertices` of each surface (the collinear test batched over all of them)."""
-    qs = _drop_coincident_many(surfaces, 3)
+    qs = _drop_coincident(surfaces, 3)
     out = []
-    for q, drop in zip(qs, _collinear_many(qs)):
+    for q, drop in zip(qs, eplus_collinear(qs)):
         if drop and len(q) - len(drop) >= 3:
             q = np.delete(q, drop, axis=0)
         out.append(q)
@@ -270,8 +239,6 @@ def _near_pairs(points: np.ndarray, tol: float) -> np.ndarray:
     EnergyPlus makes (strictly less, per axis) then decides, with the same arithmetic as a
     point-by-point comparison.
     """
-    from scipy.spatial import cKDTree
-
     P = np.asarray(points, dtype=np.float64).reshape(-1, 3)
     if len(P) < 2:
         return np.empty((0, 2), dtype=np.intp)
@@ -442,12 +409,11 @@ def _insert_collinear(face: np.ndarray, uniq: np.ndarray, tol: float) -> np.ndar
     return pts
 
 
-#: Verdicts of :func:`enclosure_defects` by the exact content of its input (the writer tests
-#: a zone's pieces in :func:`conform.eplus_enclose`, then the same values again in
-#: :func:`model.enclosable`); a pure function of the vertex bits, so never stale.
-_DEFECTS_MEMO: dict[tuple, list[BadEdge]] = {}
-_DEFECTS_MEMO_SIZE = 64
-_DEFECTS_LOCK = threading.Lock()
+#: The :mod:`lod2energy.cache` table of :func:`enclosure_defects`' verdicts, by the exact content
+#: of its input (a zone's pieces are tested in :func:`conform.eplus_enclose`, then the same values
+#: again in :func:`model.enclosable`), and its size.
+DEFECTS = "energy.enclosure_defects"
+DEFECTS_KEPT = 64
 
 
 def enclosure_defects(surfaces: Sequence[np.ndarray], tol: float = POINT_TOL) -> list[BadEdge]:
@@ -468,24 +434,17 @@ def enclosure_defects(surfaces: Sequence[np.ndarray], tol: float = POINT_TOL) ->
     """
     arrs = [np.asarray(s, dtype=np.float64) for s in surfaces]
     key = (float(tol),) + tuple((a.shape, a.tobytes()) for a in arrs)
-    found = _DEFECTS_MEMO.get(key)
-    if found is None:
-        found = _enclosure_defects(arrs, tol)
-        with _DEFECTS_LOCK:
-            if len(_DEFECTS_MEMO) >= _DEFECTS_MEMO_SIZE:
-                _DEFECTS_MEMO.pop(next(iter(_DEFECTS_MEMO)), None)  # the oldest
-            _DEFECTS_MEMO[key] = found
-    return list(found)
+    return list(cache.remember(DEFECTS, key, lambda: _enclosure_defects(arrs, tol), DEFECTS_KEPT))
 
 
 def _enclosure_defects(arrs: list[np.ndarray], tol: float) -> list[BadEdge]:
     """:func:`enclosure_defects` of float64 ``(k_i, 3)`` arrays, computed."""
-    return face_defects(eplus_vertices_many(arrs), tol)
+    return face_defects(eplus_vertices(arrs), tol)
 
 
 def face_defects(faces: Sequence[np.ndarray], tol: float = POINT_TOL) -> list[BadEdge]:
     """:func:`enclosure_defects` of surfaces given as EnergyPlus keeps them
-    (:func:`eplus_vertices_many` of the zone's surfaces, float64 ``(k_i, 3)``)."""
+    (:func:`eplus_vertices` of the zone's surfaces, float64 ``(k_i, 3)``)."""
     first = _edges_not_two(faces, tol)
     if not first:
         return []
@@ -543,7 +502,6 @@ def snap_polygons(polygons: Sequence[np.ndarray], tol: float | None = None, merg
         and pairs of polygons that became the same polygon with opposite orientation (a fold)
         are dropped together, so are polygons narrower than ``min_width`` (m).
     """
-
     allp = np.concatenate([np.asarray(p, dtype=np.float64) for p in polygons])
     if not merge:
         V, idx = weld(allp, 1e-9)  # shared corners only

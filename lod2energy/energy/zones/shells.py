@@ -17,10 +17,10 @@ import numpy as np
 from lod2energy.model import Building
 from lod2energy.semantics import DEFAULT_RULES
 
-from .polygons import _norm, newell_normal, polygon_area3d, triangulate, unit
-from .shellcheck import signed_volume
-from .weld import clean_ring, weld
-from .uvalues import face_u_value, positive_number, window_u_value
+from lod2energy.exporters.polygons import _norm, newell_normal, polygon_area3d, triangulate, unit
+from lod2energy.exporters.shellcheck import signed_volume
+from lod2energy.exporters.weld import clean_ring, weld
+from lod2energy.energy.uvalues import face_u_value, positive_number, window_u_value
 
 #: Weld distance for zone vertices (m): EnergyPlus warns about vertices closer than 1 cm.
 WELD_TOL = 0.01
@@ -137,36 +137,14 @@ def _face_index(face: ZoneFace) -> np.ndarray:
     return np.concatenate([np.asarray(r, dtype=np.intp) for r in face.rings])
 
 
-def drop_collinear(ring: list[int], v: np.ndarray, tol: float = COLLINEAR_TOL) -> list[int]:
-    """Remove ring vertices lying within ``tol`` (m) of the segment joining their neighbours.
+def _drop_shared_collinear(faces: list, v: np.ndarray, tol: float) -> list:
+    """Drop vertices within ``tol`` (m) of the segment joining their neighbours in every ring
+    that uses them.
 
     EnergyPlus deletes such vertices itself (with a warning) and then sees slivers and
     T-junctions within its own ~1.3 cm point tolerance; doing it here keeps what is written
-    and what EnergyPlus uses the same.
-    """
-    ring = list(ring)
-    changed = True
-    while changed and len(ring) > 3:
-        changed = False
-        for k in range(len(ring)):
-            a, b, c = v[ring[k - 1]], v[ring[k]], v[ring[(k + 1) % len(ring)]]
-            ac = c - a
-            L2 = float(ac @ ac)
-            if L2 == 0:
-                continue
-            t = float((b - a) @ ac) / L2
-            if 0 < t < 1 and _norm(a + t * ac - b) < tol:
-                del ring[k]
-                changed = True
-                break
-    return ring
-
-
-def _drop_shared_collinear(faces: list, v: np.ndarray, tol: float) -> list:
-    """Drop vertices that are within ``tol`` of collinear in EVERY ring using them.
-
-    A vertex collinear in one face but a corner of another is kept everywhere: dropping it
-    from one face only would leave a T-junction.
+    and what EnergyPlus uses the same. A vertex collinear in one face but a corner of another
+    is kept everywhere: dropping it from one face only would leave a T-junction.
     """
     def collinear_in(ring, k):
         a, b, c = v[ring[k - 1]], v[ring[k]], v[ring[(k + 1) % len(ring)]]
@@ -195,7 +173,6 @@ def _drop_shared_collinear(faces: list, v: np.ndarray, tol: float) -> list:
             rings.append(nr)
         out.append(replace(f, rings=tuple(rings)))
     return out
-
 
 
 def classify(semantic_type: str | None, normal: np.ndarray) -> str:
@@ -239,7 +216,7 @@ def zone_shells(b: Building, origin: np.ndarray, lod: str | None = None,
     wwr : float, optional
         Overrides ``provenance["thermal"]["wwr"]``.
     collinear_tol : float, m
-        Drop ring vertices this close to their neighbours' segment (:func:`drop_collinear`);
+        Drop ring vertices this close to their neighbours' segment (:func:`_drop_shared_collinear`);
         0 keeps them (needed for triangle meshes, where dropping makes T-junctions).
     """
     thermal = _thermal(b)

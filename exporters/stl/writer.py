@@ -18,21 +18,24 @@ from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import Iterable
 
+import manifold3d as m3
 import numpy as np
+from scipy.spatial import cKDTree
 
 from lod2energy import safe_write
+from lod2energy.energy.parts import united_input_parts
+from lod2energy.energy.zones.shells import ZoneShell, local_origin, zone_shells
 from lod2energy.errors import ParameterError
-from lod2energy.geometry import collapse_short_edges  # noqa: F401 - re-exported, used below
+from lod2energy.exporters.paths import not_written, output_path, safe_stem
+from lod2energy.exporters.registry import register_writer
+from lod2energy.exporters.result import ExportResult
+from lod2energy.exporters.shellcheck import signed_volume
+from lod2energy.exporters.stl.rows import row_keys, same_position, unique_rows
+from lod2energy.exporters.stl.seams import T_JUNCTION_TOL, split_open_edges, split_t_junctions  # noqa: F401 - part of stl's API
+from lod2energy.exporters.weld import weld
 from lod2energy.geometry import triangle_areas, triangle_normals
+from lod2energy.geometry import collapse_short_edges  # noqa: F401 - re-exported, used below
 from lod2energy.model import BUILDING_TYPES, Building
-
-from .paths import not_written, output_path, safe_stem
-from .result import ExportResult
-from .rows import row_keys, same_position, unique_rows
-from .shellcheck import signed_volume
-from .stl_seams import T_JUNCTION_TOL, split_open_edges, split_t_junctions  # noqa: F401 - part of stl's API
-from .weld import weld
-from .zones import ZoneShell, local_origin, zone_shells
 
 #: Edge-collapse tolerance (m) after the union: removes sliver triangles.
 SIMPLIFY_TOL = 1e-3
@@ -66,7 +69,6 @@ class StlOptions:
         Merge parts / touching buildings into one closed surface (manifold3d).
     lod : str, optional
     """
-
     mode: str = "building"
     ascii: bool = False
     union: bool = True
@@ -233,8 +235,6 @@ def merge_meshes(meshes: list[tuple[np.ndarray, np.ndarray, np.ndarray]], union:
     """
     warnings: list[str] = []
     if union and len(meshes) > 1:
-        import manifold3d as m3
-
         code_of: list[int] = []
         parts = []
         ok = True
@@ -304,8 +304,6 @@ def separate_touching(v: np.ndarray, t: np.ndarray, dist: float | None = None) -
     -------
     vertices (n, 3) float, number of vertices moved
     """
-    from scipy.spatial import cKDTree
-
     dist = SEPARATION if dist is None else dist
     pairs = cKDTree(v).query_pairs(1e-6, output_type="ndarray")
     # distinct in float64 but one point once written as float32
@@ -473,7 +471,8 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: StlOptions
                  "volume_m3": round(signed_volume(v, t), 3) if len(t) else 0.0}
         try:  # the STL self-checked on its staged temporary: a failed one never gets the good name
             # its folder is synced after the STL's rename, just below (write_checked)
-            safe_write.write_text(output_path(out, stem, ".json"), json.dumps(sidecar, indent=1), root=out,
+            sidecar_path = output_path(out, stem, ".json")
+            safe_write.write_text(sidecar_path, json.dumps(sidecar, indent=1), root=out,
                                   sync_folder=False)
             final, problems = safe_write.write_checked(
                 path, lambda f: (write_ascii if options.ascii else write_binary)(f, v, t, c), self_check,
@@ -486,7 +485,8 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: StlOptions
             problems = list(problems) + [f"failed its self-check: kept as {Path(final).name}" if final
                                          else "failed its self-check: removed"]
         results.append(ExportResult(tuple(b.id for b in g), final, not problems, tuple(problems),
-                                    tuple(float(x) for x in offset), tuple(warnings), stats))
+                                    tuple(float(x) for x in offset), tuple(warnings), stats,
+                                    sidecars=(str(sidecar_path),)))
     return results
 
 
@@ -564,3 +564,11 @@ def self_check(path: str | Path) -> list[str]:
     if len(set(codes.tolist())) and not names:
         problems.append("no patch names")
     return problems
+
+
+def _write(buildings, outdir, options, *, crs=None, **_):
+    return write(buildings, outdir, options, crs=crs)
+
+
+register_writer("stl", _write, self_check, scope=lambda options: "dataset" if options.mode == "dataset" else "building",
+                prepare=united_input_parts)
