@@ -99,7 +99,7 @@ def test_a_wall_with_collinear_corners_is_planar(shift):
     # wall (6 triangles for 7 corners) and its noise normal gave 204 at 90 degrees
     V = BERLIN_WALL - BERLIN_WALL.mean(axis=0) if shift else BERLIN_WALL
     shell = Shell(surfaces=(Surface(rings=(np.arange(len(V)),)),))
-    assert check_polygons(V, shell) == []
+    assert check_polygons([(V, shell)]) == [[]]
 
 
 def test_the_fast_path_refuses_a_flat_triangle():

@@ -254,14 +254,14 @@ def test_checks_do_not_mutate_input():
 def test_check_shell_contract_returns_plain_tuples():
     b = open_box()
     sh = b.root.geometries[0].solids[0].shells[0]
-    out = shell_checks.check_shell(b.vertices, sh, DEFAULT, True)
+    out, composite = shell_checks.check_shells([(b.vertices, sh, True), (b.vertices, sh, False)], DEFAULT)
     assert out and all(len(t) == 3 and isinstance(t[1], int) for t in out)
-    assert shell_checks.check_shell(b.vertices, sh, DEFAULT, False) == []   # fine as a CompositeSurface
+    assert composite == []   # fine as a CompositeSurface
 
 
 def test_exterior_shell_orientation_is_checked_once_shell_is_valid():
     b = _reversed(box())
-    assert solid_checks.check_solid(b.vertices, b.root.geometries[0].solids[0], DEFAULT)[0][1] == 405
+    assert solid_checks.check_solids([(b.vertices, b.root.geometries[0].solids[0])], DEFAULT)[0][0][1] == 405
 
 
 # ----------------------------------------------------------------------------- geometry helpers

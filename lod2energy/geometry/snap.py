@@ -5,7 +5,8 @@
 - :func:`snap_points`: val3dity's first-come rule, which validation must reproduce exactly:
   val3dity adds the points of a shell one by one (face by face, ring by ring) and merges a
   new point into the *first* already-kept point whose squared distance is strictly below
-  ``snap_tol**2`` (``Surface::add_point``); chains do not collapse transitively.
+  ``snap_tol**2`` (``Surface::add_point``); chains do not collapse transitively;
+  :func:`snapped_ids` applies it to a shell's ring indices.
 """
 from __future__ import annotations
 
@@ -16,7 +17,7 @@ from lod2energy.geometry.pairs import close_pairs_grid, connected_components
 # the pairs and clusters are numpy alone (no scipy import for them); split_at_points imports
 # scipy's k-d tree where it is used: importing lod2energy stays cheap (issue 13)
 
-__all__ = ["snap_map", "close_pairs", "snap_points", "first_occurrence"]
+__all__ = ["snap_map", "close_pairs", "snap_points", "snapped_ids", "first_occurrence"]
 
 
 def close_pairs(points: np.ndarray, tol: float, groups: np.ndarray | None = None) -> np.ndarray:
@@ -137,6 +138,33 @@ def snap_points(points: np.ndarray, snap_tol: float) -> np.ndarray:
             rep[i] = cands[0]
             kept[i] = False
     return rep
+
+
+def snapped_ids(vertices: np.ndarray, ids: np.ndarray, snap_tol: float) -> np.ndarray:
+    """Vertex indices after val3dity's snapping (:func:`snap_points`), for vertex indices listed
+    in insertion order (rings of a shell, concatenated).
+
+    Parameters
+    ----------
+    vertices : (n, 3) float
+        All vertices, m.
+    ids : (k,) int
+    snap_tol : float, m
+
+    Returns
+    -------
+    (k,) int
+        For each entry of ``ids``, the vertex index of its representative.
+    """
+    ids = np.asarray(ids, dtype=np.intp)
+    order = first_occurrence(ids)
+    if len(order) < 2:
+        return ids.copy()
+    rep = snap_points(vertices[order], snap_tol)
+    if (rep == np.arange(len(order))).all():
+        return ids.copy()
+    lut = {int(v): int(order[r]) for v, r in zip(order.tolist(), rep.tolist())}
+    return np.fromiter((lut[i] for i in ids.tolist()), dtype=np.intp, count=len(ids))
 
 
 def split_at_points(v: np.ndarray, polys: list[list[int]], tol: float, only_unmatched: bool = False,

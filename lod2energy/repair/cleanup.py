@@ -187,7 +187,7 @@ def invalid_surfaces(vertices: np.ndarray, shell: Shell, tol: Tolerances) -> dic
     """:func:`invalid_polygons` of a shell of a building (``vertices`` (n, 3), m): the
     validator's answer is kept per shell, so a shell it checked is not checked again."""
     out: dict[int, set[int]] = defaultdict(set)
-    for fi, code, _ in check_polygons(vertices, shell, tol):
+    for fi, code, _ in check_polygons([(vertices, shell)], tol)[0]:
         if fi is not None:
             out[int(fi)].add(int(code))
     return out

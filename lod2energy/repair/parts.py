@@ -196,7 +196,7 @@ def overlap_pairs(b: Building, tol: Tolerances = DEFAULT, overlaps: Sequence[str
     """
     if overlaps is None:
         from lod2energy.validate.solid import check_parts_overlap
-        overlaps = [loc for loc, _code, _info in check_parts_overlap(b, tol)]
+        overlaps = [loc for loc, _code, _info in check_parts_overlap([b], tol)[0]]
     out: dict[tuple[str, str], float | None] = {}
     for loc in overlaps:
         a, c = (s.split("|", 1)[0].removeprefix("coid=") for s in loc.split("&&", 1))

@@ -21,7 +21,7 @@ import numpy as np
 from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.geometry import bbox_pairs, cross_rows as _cross, signed_volume, winding_number
 from lod2energy.model import Building, Geometry, Solid
-from lod2energy.validate.shell import shell_meshes, shell_meshes_multi
+from lod2energy.validate.shell import shell_meshes
 
 
 def _m3d():
@@ -47,7 +47,7 @@ PARTS_TYPES = ("Building", "BuildingPart")
 
 def solid_triangles(vertices: np.ndarray, solid: Solid, tol: Tolerances = DEFAULT) -> list[np.ndarray]:
     """Snapped triangles of each shell of a solid, (T_i, 3) int each, as they are oriented."""
-    return [m.tris for m in shell_meshes(vertices, solid.shells, tol)]
+    return [m.tris for m in shell_meshes([(vertices, sh) for sh in solid.shells], tol)]
 
 
 def to_manifold(vertices: np.ndarray, tris: np.ndarray, origin: np.ndarray):
@@ -128,23 +128,37 @@ def _same_shell(vertices: np.ndarray, t1: np.ndarray, t2: np.ndarray, tol: Toler
 
 # ----------------------------------------------------------------------------- 401-405
 
-def check_solid(vertices: np.ndarray, solid: Solid, tol: Tolerances = DEFAULT
-                ) -> list[tuple[int | None, int, str]]:
-    """Solid checks: 405 orientation of shells, then 401-404 between its shells.
+def check_solids(items: Sequence[tuple[np.ndarray, Solid]], tol: Tolerances = DEFAULT
+                 ) -> list[list[tuple[int | None, int, str]]]:
+    """Solid checks of many solids (of one or more buildings): 405 orientation of shells, then
+    401-404 between the shells of a solid with cavities.
 
     Parameters
     ----------
-    vertices : (n, 3) float
-        The building's vertices, m.
-    solid : Solid
-        Exterior shell first; every shell already passed the shell checks.
+    items : sequence of (vertices (n, 3) float, Solid)
+        The building's vertices (m) and a solid (exterior shell first) whose every shell
+        already passed the shell checks.
     tol : Tolerances
 
     Returns
     -------
-    list of ``(shell_index | None, code, info)``; for 401/402 the info names the pair
-    (``"0--2"``) as val3dity does.
+    list (one per item) of lists of ``(shell_index | None, code, info)``; for 401/402 the
+    info names the pair (``"0--2"``) as val3dity does.
     """
+    out: list[list[tuple[int | None, int, str]]] = [[] for _ in items]
+    single = [k for k, (_, so) in enumerate(items) if len(so.shells) == 1]
+    meshes = shell_meshes([(items[k][0], items[k][1].shells[0]) for k in single], tol)
+    for k, m in zip(single, meshes):
+        if signed_volume(items[k][0], m.tris) <= 0:
+            out[k].append((0, 405, "exterior shell oriented inwards"))
+    for k, (v, so) in enumerate(items):
+        if len(so.shells) > 1:
+            out[k] = _check_cavities(v, so, tol)
+    return out
+
+
+def _check_cavities(vertices: np.ndarray, solid: Solid, tol: Tolerances) -> list[tuple[int | None, int, str]]:
+    """:func:`check_solids` of one solid with interior shells."""
     tris = solid_triangles(vertices, solid, tol)
     out: list[tuple[int | None, int, str]] = []
     for i, t in enumerate(tris):
@@ -203,31 +217,6 @@ def check_solid(vertices: np.ndarray, solid: Solid, tol: Tolerances = DEFAULT
     return out
 
 
-def check_solids_multi(items: Sequence[tuple[np.ndarray, Solid]], tol: Tolerances = DEFAULT
-                       ) -> list[list[tuple[int | None, int, str]]]:
-    """:func:`check_solid` for many solids (of one or more buildings) at once.
-
-    Parameters
-    ----------
-    items : sequence of (vertices (n, 3) float, Solid)
-    tol : Tolerances
-
-    Returns
-    -------
-    list (one per item) of lists of ``(shell_index | None, code, info)``
-    """
-    out: list[list[tuple[int | None, int, str]]] = [[] for _ in items]
-    single = [k for k, (_, so) in enumerate(items) if len(so.shells) == 1]
-    meshes = shell_meshes_multi([(items[k][0], items[k][1].shells[0]) for k in single], tol)
-    for k, m in zip(single, meshes):
-        if signed_volume(items[k][0], m.tris) <= 0:
-            out[k].append((0, 405, "exterior shell oriented inwards"))
-    for k, (v, so) in enumerate(items):
-        if len(so.shells) > 1:
-            out[k] = check_solid(v, so, tol)
-    return out
-
-
 # ----------------------------------------------------------------------------- 501-503
 
 def check_multisolid(vertices: np.ndarray, geometry: Geometry, tol: Tolerances = DEFAULT
@@ -278,28 +267,6 @@ def check_multisolid(vertices: np.ndarray, geometry: Geometry, tol: Tolerances =
 
 
 # ----------------------------------------------------------------------------- 601
-
-def check_parts_overlap(building: Building, tol: Tolerances = DEFAULT) -> list[tuple[str, int, str]]:
-    """601 BUILDINGPARTS_OVERLAP: interiors of the Building's and its BuildingParts' solids overlap.
-
-    Per LoD, every Solid / CompositeSolid geometry of the Building and its parts is
-    tested against the others: bounding boxes first, then a separating face plane (parts
-    sharing a wall), then the shared volume.
-
-    Parameters
-    ----------
-    building : Building
-        Its geometries already passed levels 1xx-5xx.
-    tol : Tolerances
-        ``overlap_tol`` as in val3dity.
-
-    Returns
-    -------
-    list of ``(location, 601, info)`` with location ``"coid=A|geom=0&&coid=B|geom=0"``
-    and info ``"geometries are lod=2"``.
-    """
-    return check_parts_overlap_multi([building], tol)[0]
-
 
 def _ragged_pairs(na: np.ndarray, nb: np.ndarray):
     """For k groups of sizes na[k] x nb[k]: group id, index in a, index in b of every combination."""
@@ -366,18 +333,26 @@ def _separated_pairs(pts, pstart, npts, nrm, off, fstart, nf, pairs, eps: float 
     return sep
 
 
-def check_parts_overlap_multi(buildings: Sequence[Building], tol: Tolerances = DEFAULT
-                              ) -> list[list[tuple[str, int, str]]]:
-    """:func:`check_parts_overlap` for many buildings in one vectorised pass.
+def check_parts_overlap(buildings: Sequence[Building], tol: Tolerances = DEFAULT
+                        ) -> list[list[tuple[str, int, str]]]:
+    """601 BUILDINGPARTS_OVERLAP of many buildings: interiors of a Building's and its
+    BuildingParts' solids overlap.
+
+    Per LoD, every Solid / CompositeSolid geometry of the Building and its parts is
+    tested against the others: bounding boxes first, then a separating face plane (parts
+    sharing a wall), then the shared volume.
 
     Parameters
     ----------
     buildings : sequence of Building
+        Their geometries already passed levels 1xx-5xx.
     tol : Tolerances
+        ``overlap_tol`` as in val3dity.
 
     Returns
     -------
-    list (one per building) of lists of ``(location, 601, info)``
+    list (one per building) of lists of ``(location, 601, info)``, location
+    ``"coid=A|geom=0&&coid=B|geom=0"`` and info ``"geometries are lod=2"``.
     """
     outs: list[list[tuple[str, int, str]]] = [[] for _ in buildings]
     items = []                                    # (building, group, lod, object id, geom index, Geometry)
@@ -399,7 +374,7 @@ def check_parts_overlap_multi(buildings: Sequence[Building], tol: Tolerances = D
     if not items:
         return outs
     shells = [(buildings[it[0]].vertices, sh) for it in items for so in it[5].solids for sh in so.shells]
-    meshes = iter(shell_meshes_multi(shells, tol))
+    meshes = iter(shell_meshes(shells, tol))
     # all items' triangles over one vertex array (buildings stacked), item by item
     boff: dict[int, int] = {}
     blocks, n = [], 0
