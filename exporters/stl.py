@@ -29,9 +29,9 @@ from lod2energy.model import BUILDING_TYPES, Building
 from .paths import not_written, output_path, safe_stem
 from .result import ExportResult
 from .rows import row_keys, same_position, unique_rows
-from .shellcheck import signed_volume
+from lod2energy.geometry import signed_volume
 from .stl_seams import T_JUNCTION_TOL, split_open_edges, split_t_junctions  # noqa: F401 - part of stl's API
-from .weld import weld
+from lod2energy.geometry.snap import weld
 from .zones import ZoneShell, local_origin, zone_shells
 
 #: Edge-collapse tolerance (m) after the union: removes sliver triangles.

@@ -12,8 +12,8 @@ from export_helpers import energy_ready
 from factories import box, box_polygons, building_from_polygons, BOX_SEMANTICS
 
 from lod2energy.exporters import energyplus, zones
-from lod2energy.exporters.polygons import polygon_area3d
-from lod2energy.exporters.shellcheck import check_closed_outward
+from lod2energy.geometry.polygons import polygon_area3d
+from lod2energy.validate.closed import check_closed_outward
 from lod2energy.exporters.energyplus.enclosure import (_edges_not_two, enclosure_defects, snap_polygons,
                                        unique_vertices)
 from lod2energy.exporters.energyplus import fallback as zone_fallback, model as energy_model

@@ -20,7 +20,7 @@ from lod2energy.exporters.energyplus import fallback, model as energy_model
 from lod2energy.exporters.energyplus.enclosure import enclosure_defects
 from lod2energy.exporters.energyplus.pieces import _pieces_volume
 from lod2energy.exporters.energyplus.surfaces import zone_pieces
-from lod2energy.exporters.shellcheck import check_closed_outward
+from lod2energy.validate.closed import check_closed_outward
 
 
 def hipped_house(dx: float = 10.0, dy: float = 6.0, eaves: float = 3.0, rise: float = 2.0,

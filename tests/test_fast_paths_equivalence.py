@@ -9,7 +9,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from exporters import polygons
+from lod2energy.geometry import polygons
 from lod2energy.geometry import vectors
 
 
@@ -98,7 +98,7 @@ def test_unit_and_plane_basis_same_bits():
     for n in normals:
         with np.errstate(invalid="ignore"):
             assert _same(polygons.unit(n), _ref_unit(n))
-            u, v = polygons.plane_basis(n)
+            u, v = polygons.wall_basis(n)
             ru, rv = _ref_plane_basis(n)
         assert _same(u, ru) and _same(v, rv), n
     # lists and integer arrays still go through np.linalg.norm

@@ -50,7 +50,7 @@ def test_help_and_usage_errors_load_nothing_heavy(argv):
 
 @pytest.mark.parametrize("module", ["lod2energy.geometry", "lod2energy.polymesh", "lod2energy.semantics",
                                     "lod2energy.thermal", "lod2energy.validate.report", "lod2energy.repair",
-                                    "lod2energy.pipeline", "lod2energy.exporters.weld"])
+                                    "lod2energy.pipeline", "lod2energy.geometry.snap"])
 def test_core_modules_import_scipy_and_shapely_on_first_use(module):
     loaded = loaded_after(f"import {module}")
     assert not loaded & {"scipy", "shapely", "trimesh", "pyproj", "jsonschema", "eppy", "jinja2",

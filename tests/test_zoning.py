@@ -6,7 +6,7 @@ from export_helpers import EPW, energy_ready, parts_building, real_buildings, sh
 from factories import box, box_polygons, gabled_house
 from lod2energy import zoning
 from lod2energy.exporters import energyplus
-from lod2energy.exporters.shellcheck import check_closed_outward
+from lod2energy.validate.closed import check_closed_outward
 from lod2energy.exporters.zones import local_origin, zone_shells
 from lod2energy.exporters.energyplus.enclosure import enclosure_defects
 

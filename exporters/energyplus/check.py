@@ -6,8 +6,8 @@ from pathlib import Path
 import numpy as np
 
 from lod2energy.errors import ExportError
-from ..polygons import newell_normal
-from ..shellcheck import check_closed_outward
+from lod2energy.geometry.polygons import newell_normal
+from lod2energy.validate.closed import check_closed_outward
 from ..zones import MIN_PIECE_AREA
 from .conform import PIECE_PLANAR
 from .enclosure import eplus_vertices_and_degenerate, face_defects

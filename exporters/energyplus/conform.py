@@ -8,11 +8,11 @@ from dataclasses import replace
 
 import numpy as np
 
-from ..polygons import polygon_area3d
+from lod2energy.geometry.polygons import polygon_area3d
 from lod2energy.geometry import split_at_points
 
-from ..shellcheck import check_closed_outward
-from ..weld import weld
+from lod2energy.validate.closed import check_closed_outward
+from lod2energy.geometry.snap import weld
 from ..zones import MIN_PIECE_AREA
 from .enclosure import (_collinear_many, _drop_coincident_many, enclosure_defects, eplus_degenerate_many, _on_line,
                         snap_polygons)

@@ -32,8 +32,8 @@ from typing import Sequence
 
 import numpy as np
 
-from ..polygons import polygon_area3d
-from ..weld import weld
+from lod2energy.geometry.polygons import polygon_area3d
+from lod2energy.geometry.snap import weld
 
 #: Per-axis tolerance (m) of EnergyPlus's ``isAlmostEqual3dPt`` and the slack of its
 #: ``isPointOnLineBetweenPoints`` (1/2 inch).

@@ -31,8 +31,8 @@ import numpy as np
 
 from lod2energy.config import DEFAULT
 from lod2energy.exporters.energyplus.enclosure import eplus_merge
-from lod2energy.exporters.polygons import newell_normal, polygon_area3d
-from lod2energy.exporters.weld import clean_ring
+from lod2energy.geometry.polygons import newell_normal, polygon_area3d
+from lod2energy.geometry.snap import drop_repeats as clean_ring
 from lod2energy.exporters.zones import ZoneFace, ZoneShell, classify
 from lod2energy.polymesh import Face, PolyMesh, signed_volume
 from lod2energy.repair.footprint import footprint_polygon, roof_height

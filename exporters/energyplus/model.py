@@ -34,8 +34,8 @@ from lod2energy.exporters.energyplus.openings import Opening, split_openings
 from lod2energy.exporters.energyplus.pieces import Piece
 from lod2energy.exporters.energyplus.surfaces import find_party_faces, zone_pieces
 from lod2energy.exporters.energyplus.zones import FLOOR_NZ
-from lod2energy.exporters.polygons import newell_normal, unit
-from lod2energy.exporters.shellcheck import check_closed_outward
+from lod2energy.geometry.polygons import newell_normal, unit
+from lod2energy.validate.closed import check_closed_outward
 from lod2energy.exporters.zones import COLLINEAR_TOL, local_origin, zone_shells, ZoneShell
 from lod2energy.model import BUILDING_TYPES, Building, frozen_mapping
 from lod2energy.repair.parts import merge_parts, touching_part, without_geometry

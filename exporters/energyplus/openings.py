@@ -7,7 +7,9 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from ..polygons import _is_convex_2d, newell_normal, plane_basis, polygon_area3d, unit
+from lod2energy.geometry.polygons import (
+    is_convex_2d as _is_convex_2d, newell_normal, polygon_area3d, unit, wall_basis as plane_basis,
+)
 from ..zones import ZoneShell
 
 

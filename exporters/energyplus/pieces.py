@@ -10,7 +10,9 @@ from typing import Sequence
 
 import numpy as np
 
-from ..polygons import _is_convex_2d, merge_convex, newell_normal, PLANAR_TOL, plane_basis, triangulate, unit
+from lod2energy.geometry.polygons import (
+    PLANAR_TOL, is_convex_2d as _is_convex_2d, merge_convex, newell_normal, triangulate, unit, wall_basis as plane_basis,
+)
 from ..zones import ZoneFace, ZoneShell
 from .options import WRITE_DECIMALS
 

@@ -9,7 +9,7 @@ from typing import Sequence
 import numpy as np
 
 from lod2energy.errors import ExportError
-from ..polygons import _norm, newell_normal, polygon_area3d, unit
+from lod2energy.geometry.polygons import _norm, newell_normal, polygon_area3d, unit
 from ..zones import ZoneShell
 from .constructions import construction_layers, _construction_name, INTERZONE_SLAB, _KIND_TYPE, MASS
 from .names import comment_text, _IDF_NAME_BAD, NameRegistry

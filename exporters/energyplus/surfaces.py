@@ -9,7 +9,7 @@ from typing import Sequence
 
 import numpy as np
 
-from ..polygons import plane_basis, polygon_area3d
+from lod2energy.geometry.polygons import polygon_area3d, wall_basis as plane_basis
 from ..zones import MIN_PIECE_AREA, WELD_TOL, ZoneFace, ZoneShell
 from .conform import clean_piece, conform, eplus_enclose, keep_corners
 from .pieces import _as_written, _face_frame, _outer_boundary, Piece, _pieces_from_points, _planar

@@ -18,7 +18,7 @@ from lod2energy.errors import ParameterError
 from lod2energy.model import Building
 from . import model as energy_model
 from ..paths import not_written, output_path, safe_stem, set_aside_failed
-from ..polygons import polygon_area3d
+from lod2energy.geometry.polygons import polygon_area3d
 from ..result import ExportResult
 from ..zones import local_origin
 from .check import self_check

@@ -10,8 +10,8 @@ from typing import Sequence
 
 import numpy as np
 
-from ..polygons import newell_normal, unit
-from ..shellcheck import check_closed_outward
+from lod2energy.geometry.polygons import newell_normal, unit
+from lod2energy.validate.closed import check_closed_outward
 from ..zones import ZoneShell
 from .enclosure import enclosure_defects
 from .openings import Opening

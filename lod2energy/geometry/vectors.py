@@ -15,7 +15,7 @@ from typing import Sequence
 import numpy as np
 
 __all__ = ["roll_next", "cross_rows", "unit_rows", "newell_normal", "polygon_normal", "newell_normals",
-           "rings_normal", "plane_basis", "plane_bases", "project_2d", "cross2", "vector_length"]
+           "rings_normal", "plane_basis", "plane_bases", "project_2d", "cross2", "vector_length", "unit"]
 
 
 def newell_normal(points: np.ndarray, centred: bool = True) -> np.ndarray:
@@ -222,6 +222,15 @@ def vector_length(v: np.ndarray) -> float:
     """Euclidean length of a 1-D float64 vector, computed as ``np.linalg.norm`` does it
     (``sqrt(v.dot(v))``, the same bits) without its argument handling."""
     return math.sqrt(float(v.dot(v)))
+
+
+def unit(v: np.ndarray) -> np.ndarray:
+    """``v`` (3,) scaled to length 1 (unchanged when it is zero)."""
+    if type(v) is np.ndarray and v.ndim == 1 and v.dtype == np.float64:
+        n = vector_length(v)
+    else:
+        n = float(np.linalg.norm(v))
+    return v / n if n > 0 else v
 
 
 def cross2(o, a, b):

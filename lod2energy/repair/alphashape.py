@@ -18,7 +18,7 @@ import numpy as np
 from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.polymesh import PolyMesh, merge_coplanar, triangles_to_mesh, triangulate_mesh
 from lod2energy.repair.metrics import point_triangle_distance
-from lod2energy.repair.validity import shell_defects
+from lod2energy.validate.closed import shell_defects
 
 ALPHAS = (8.0, 4.0, 2.0)  # m: 8 and 4 bridge missing party walls; 2 follows closed but tangled shells closer (hollow skins are rejected below)
 OFFSET = DEFAULT.wrap_offset  # m, default of Tolerances.wrap_offset
@@ -272,7 +272,7 @@ def alpha_repair(m: PolyMesh, tol: Tolerances = DEFAULT, deadline: float | None 
             continue  # a coarser valid wrap is already in hand
         r = alpha_complex(m, a) if kind == "complex" else alpha_wrap(m, a, tol.wrap_offset, target_faces=target[0],
                                                                             deadline=deadline)
-        if r is None or shell_defects(r, tol, first_only=True):
+        if r is None or shell_defects([r], tol, first_only=True)[0]:
             continue
         if accept is not None and not accept(r):
             continue

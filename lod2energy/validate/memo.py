@@ -14,7 +14,8 @@ is harmless: it is only used when its key matches.
 """
 from __future__ import annotations
 
-from typing import Iterable, Sequence
+import hashlib
+from typing import Sequence
 
 import numpy as np
 
@@ -63,15 +64,19 @@ def shell_keys(items: Sequence[tuple[np.ndarray, object]], *extra) -> list[bytes
     """Digest of each ``(vertices (n, 3), Shell)`` pair and ``extra`` (tolerances): the whole
     vertex array (digested once per array) and the shell's rings with their structure."""
     arrays: dict[int, bytes] = {}
+    tail = cache.digest(*extra)
     keys = []
     for v, sh in items:
         vk = arrays.get(id(v))
         if vk is None:
-            vk = arrays[id(v)] = cache.digest(np.asarray(v))
+            vk = arrays[id(v)] = cache.digest(np.asarray(v), tail)
         rings = [r for s in sh.surfaces for r in s.rings]
         shape = [len(sh.surfaces)] + [len(s.rings) for s in sh.surfaces] + [len(r) for r in rings]
-        keys.append(cache.digest(vk, np.asarray(shape, dtype=np.int64),
-                                 np.concatenate(rings) if rings else np.zeros(0, np.intp), *extra))
+        h = hashlib.blake2b(vk, digest_size=16)
+        h.update(np.asarray(shape, dtype=np.int64).tobytes())
+        if rings:
+            h.update(np.concatenate(rings).astype(np.int64, copy=False).tobytes())
+        keys.append(h.digest())
     return keys
 
 

@@ -45,9 +45,10 @@ PARTS_TYPES = ("Building", "BuildingPart")
 
 # ----------------------------------------------------------------------------- meshes -> manifolds
 
-def solid_triangles(vertices: np.ndarray, solid: Solid, tol: Tolerances = DEFAULT) -> list[np.ndarray]:
-    """Snapped triangles of each shell of a solid, (T_i, 3) int each, as they are oriented."""
-    return [m.tris for m in shell_meshes([(vertices, sh) for sh in solid.shells], tol)]
+def _triangles(vertices: np.ndarray, solids, tol: Tolerances) -> list[list[np.ndarray]]:
+    """Snapped triangles (T, 3) int of each shell of each solid, as they are oriented."""
+    meshes = iter(shell_meshes([(vertices, sh) for so in solids for sh in so.shells], tol))
+    return [[next(meshes).tris for _ in so.shells] for so in solids]
 
 
 def to_manifold(vertices: np.ndarray, tris: np.ndarray, origin: np.ndarray):
@@ -91,12 +92,12 @@ def _overlaps(a, b, tol: Tolerances) -> bool:
     return True
 
 
-def _geometry_manifold(vertices: np.ndarray, g: Geometry, tol: Tolerances, origin: np.ndarray):
-    """Manifold of a Solid, or the union of a CompositeSolid's members (None if rejected)."""
+def _geometry_manifold(vertices: np.ndarray, solids: list[np.ndarray], origin: np.ndarray):
+    """Manifold of a Solid, or the union of a CompositeSolid's members, given each solid's
+    triangles (T_i, 3) int (None if rejected)."""
     mans = []
-    for so in g.solids:
-        ts = solid_triangles(vertices, so, tol)
-        m = to_manifold(vertices, np.concatenate(ts) if len(ts) > 1 else ts[0], origin)
+    for t in solids:
+        m = to_manifold(vertices, t, origin)
         if m is None:
             return None
         mans.append(m)
@@ -123,7 +124,8 @@ def _same_shell(vertices: np.ndarray, t1: np.ndarray, t2: np.ndarray, tol: Toler
     p2 = np.unique(np.round(vertices[np.unique(t2)] / max(tol.snap_tol, 1e-12)), axis=0)
     if p1.shape != p2.shape or not np.array_equal(p1, p2):
         return False
-    return abs(abs(signed_volume(vertices, t1)) - abs(signed_volume(vertices, t2))) <= tol.volume_eps
+    v1, v2 = signed_volume(vertices, t1, origin="first"), signed_volume(vertices, t2, origin="first")
+    return abs(abs(v1) - abs(v2)) <= tol.volume_eps
 
 
 # ----------------------------------------------------------------------------- 401-405
@@ -149,7 +151,7 @@ def check_solids(items: Sequence[tuple[np.ndarray, Solid]], tol: Tolerances = DE
     single = [k for k, (_, so) in enumerate(items) if len(so.shells) == 1]
     meshes = shell_meshes([(items[k][0], items[k][1].shells[0]) for k in single], tol)
     for k, m in zip(single, meshes):
-        if signed_volume(items[k][0], m.tris) <= 0:
+        if signed_volume(items[k][0], m.tris, origin="first") <= 0:
             out[k].append((0, 405, "exterior shell oriented inwards"))
     for k, (v, so) in enumerate(items):
         if len(so.shells) > 1:
@@ -159,10 +161,10 @@ def check_solids(items: Sequence[tuple[np.ndarray, Solid]], tol: Tolerances = DE
 
 def _check_cavities(vertices: np.ndarray, solid: Solid, tol: Tolerances) -> list[tuple[int | None, int, str]]:
     """:func:`check_solids` of one solid with interior shells."""
-    tris = solid_triangles(vertices, solid, tol)
+    tris, = _triangles(vertices, [solid], tol)
     out: list[tuple[int | None, int, str]] = []
     for i, t in enumerate(tris):
-        v = signed_volume(vertices, t)
+        v = signed_volume(vertices, t, origin="first")
         if (i == 0 and v <= 0) or (i > 0 and v >= 0):
             out.append((i, 405, "exterior shell oriented inwards" if i == 0
                         else "interior shell oriented outwards"))
@@ -239,7 +241,7 @@ def check_multisolid(vertices: np.ndarray, geometry: Geometry, tol: Tolerances =
     solids = geometry.solids
     if len(solids) < 2:
         return []
-    tris = [solid_triangles(vertices, so, tol) for so in solids]
+    tris = _triangles(vertices, solids, tol)
     out: list[tuple[int | None, int, str]] = []
     allp = vertices[np.unique(np.concatenate([t for ts in tris for t in ts]))]
     origin = allp.min(axis=0)
@@ -384,7 +386,8 @@ def check_parts_overlap(buildings: Sequence[Building], tol: Tolerances = DEFAULT
             blocks.append(buildings[it[0]].vertices)
             n += len(buildings[it[0]].vertices)
     V = np.concatenate(blocks)
-    tris = [np.concatenate([next(meshes).tris for so in it[5].solids for _ in so.shells]) for it in items]
+    solid_tris = [[np.concatenate([next(meshes).tris for _ in so.shells]) for so in it[5].solids] for it in items]
+    tris = [np.concatenate(ts) for ts in solid_tris]
     ntri = np.array([len(t) for t in tris])
     item_of_tri = np.repeat(np.arange(len(items)), ntri)
     gtris = np.concatenate(tris) + np.repeat([boff[it[0]] for it in items], ntri)[:, None]
@@ -428,7 +431,7 @@ def check_parts_overlap(buildings: Sequence[Building], tol: Tolerances = DEFAULT
         v = buildings[bi].vertices
         for k in (i, j):
             if k not in mans:
-                mans[k] = _geometry_manifold(v, items[k][5], tol, borigin[items[k][0]])
+                mans[k] = _geometry_manifold(v, solid_tris[k], borigin[items[k][0]])
         if mans[i] is None or mans[j] is None:
             overlap = _overlap_by_vertices(v, tris[i], tris[j])
         else:
