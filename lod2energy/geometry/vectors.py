@@ -14,6 +14,8 @@ from typing import Sequence
 
 import numpy as np
 
+from lod2energy import cache
+
 __all__ = ["roll_next", "cross_rows", "unit_rows", "newell_normal", "polygon_normal", "newell_normals",
            "rings_normal", "plane_basis", "plane_bases", "project_2d", "cross2", "vector_length", "unit"]
 
@@ -44,19 +46,12 @@ def newell_normal(points: np.ndarray, centred: bool = True) -> np.ndarray:
         # the same ring is measured by several stages: remember its normal by its coordinates
         # (bytes and shape; strides and order change neither path's bits for k < 8)
         key = (centred, p.shape, p.tobytes())
-        hit = _NORMAL_CACHE.get(key)
-        if hit is None:
-            hit = _newell_small(p, centred)
-            if len(_NORMAL_CACHE) >= NORMAL_CACHE_SIZE:
-                _NORMAL_CACHE.clear()
-            _NORMAL_CACHE[key] = hit
-        return hit.copy()
+        return cache.remember("geometry.ring-normals", key, lambda: _newell_small(p, centred), KEPT_RINGS).copy()
     return _newell_numpy(p, centred)
 
 
-#: Most small rings :func:`newell_normal` remembers (the cache is emptied when it is full).
-NORMAL_CACHE_SIZE = 8192
-_NORMAL_CACHE: dict = {}
+#: Small rings whose normal :func:`newell_normal` keeps (:mod:`lod2energy.cache`).
+KEPT_RINGS = 8192
 
 
 #: Rings with fewer vertices than this go through :func:`_newell_small` (Python floats): below

@@ -21,18 +21,7 @@ def template_geometry(building, geometry):
     templates = (building.provenance or {}).get("geometry_templates")
     if not isinstance(t, int) or isinstance(t, bool) or not templates:
         return None
-    key = (id(templates), t)
-    hit = _TEMPLATE_CACHE.get(key)
-    if hit is not None and hit[0] is templates:
-        return hit[1]
-    parsed = parse_template(templates, t)
-    if len(_TEMPLATE_CACHE) > 256:
-        _TEMPLATE_CACHE.clear()
-    _TEMPLATE_CACHE[key] = (templates, parsed)
-    return parsed
-
-
-_TEMPLATE_CACHE: dict = {}
+    return parse_template(templates, t)
 
 
 def parse_template(templates, index: int):
