@@ -212,8 +212,8 @@ def graph_picture(b: Building, defects=(), tol: Tolerances = DEFAULT, lod: str |
         "xy" ((2, 2))}]`` with kinds ``adjacency``, ``inconsistent_adjacency``, ``boundary_edge``,
         ``nonmanifold_edge``; ``counts``: elements per kind; ``status``: the graph's status.
     """
-    from lod2energy.graph import building_graph
-    g = building_graph(b, lod, tol)
+    from lod2energy.graph import building_graphs
+    g = building_graphs([b], lod, tol)[0]
     n = g.n_faces
     out = {"nodes": [], "edges": [], "counts": {}, "status": g.status, "colours": dict(GRAPH_COLOURS)}
     if n == 0:
