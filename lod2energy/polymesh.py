@@ -13,21 +13,18 @@ from dataclasses import dataclass, field
 from itertools import accumulate
 
 import numpy as np
+import shapely
 
 from lod2energy import cache
 from lod2energy.geometry import (
-    constrained_delaunay, drop_collinear, earcut_rings, newell_normal, plane_basis, plane_distance, rings_normal,
+    constrained_delaunay, earcut_rings, newell_normal, plane_basis, plane_distance, rings_normal,
     signed_volume as _signed_volume,
 )
 from lod2energy.geometry.vectors import vector_length
 
 __all__ = ["Face", "PolyMesh", "Topology", "face_normal", "face_area", "planarity", "triangulate_face",
            "triangulate_mesh", "signed_volume", "edge_faces", "topology", "fan_groups", "nonmanifold_vertices",
-           "compact", "split_loop", "ring_is_simple_2d", "triangles_to_mesh", "merge_coplanar",
-           # geometry re-exported for the repair stages' old import lines
-           "newell_normal", "plane_basis", "drop_collinear"]
-
-# shapely is imported in the functions that use it: importing lod2energy stays cheap (issue 13)
+           "compact", "split_loop", "ring_is_simple_2d", "triangles_to_mesh", "merge_coplanar"]
 
 
 @dataclass(frozen=True)
@@ -347,7 +344,6 @@ def ring_is_simple_2d(P2: np.ndarray) -> bool:
     """True when a 2D ring does not touch or cross itself."""
     if len(P2) < 3:
         return False
-    import shapely
     try:
         return bool(shapely.LinearRing(P2).is_simple)
     except Exception:  # noqa: BLE001 - shapely raises on degenerate rings

@@ -30,6 +30,8 @@ from dataclasses import dataclass, replace
 from typing import Any, Iterable, Mapping
 
 import numpy as np
+from shapely.geometry import Point, Polygon
+from shapely.validation import make_valid
 
 from lod2energy import cache
 from lod2energy.geometry import cross_rows, newell_normal, plane_basis
@@ -263,8 +265,6 @@ def rule_labels(t: FaceTable, rules: LabelRules = DEFAULT_RULES) -> list[str]:
 # ----------------------------------------------------------------------------- helpers
 
 def _polygon2d(vertices: np.ndarray, s: Surface, origin: np.ndarray, u: np.ndarray, v: np.ndarray):
-    from shapely.geometry import Polygon
-    from shapely.validation import make_valid
 
     rings = [np.c_[(vertices[r] - origin) @ u, (vertices[r] - origin) @ v] for r in s.rings if len(r) >= 3]
     if not rings:
@@ -337,7 +337,6 @@ class _SourceFaces:
         off = float(d @ n)
         if poly is None or poly.is_empty:
             return float(np.linalg.norm(d))
-        from shapely.geometry import Point
         din = poly.distance(Point(float(d @ u), float(d @ v)))
         return math.hypot(din, off)
 

@@ -12,6 +12,7 @@ from __future__ import annotations
 from typing import Sequence
 
 import numpy as np
+import shapely
 
 from lod2energy.geometry.vectors import cross2
 
@@ -20,7 +21,7 @@ try:  # mapbox_earcut is a declared dependency; keep import errors readable
 except ImportError:  # pragma: no cover
     _earcut = None
 
-# shapely and scipy are imported in the functions that use them: importing lod2energy stays cheap (issue 13)
+# scipy (0.4 s to import) is imported where Qhull is needed: most validations never need it
 __all__ = ["earcut_rings", "ear_triangles", "constrained_delaunay", "constrained_delaunay_many", "lawson_cdt"]
 
 
@@ -130,7 +131,6 @@ def _delaunay_if_conforming(pts: np.ndarray, ring_ends) -> np.ndarray | None:
     n = len(pts)
     if len(set(map(tuple, pts.tolist()))) < n:
         return None  # a ring touching another at a vertex: leave it to the general path
-    import shapely
     from scipy.spatial import Delaunay
     try:
         tri = Delaunay(pts).simplices
@@ -297,7 +297,6 @@ def constrained_delaunay_many(polygons: Sequence[tuple[np.ndarray, np.ndarray]])
 
 def _geos_cdt(polygons: Sequence[tuple[np.ndarray, np.ndarray]], out: list) -> list[int]:
     """Fill ``out`` with GEOS's CDT where it applies; return the polygons left to do."""
-    import shapely
     P = len(polygons)
     if not hasattr(shapely, "constrained_delaunay_triangles"):
         return list(range(P))
@@ -358,7 +357,6 @@ def _geos_cdt(polygons: Sequence[tuple[np.ndarray, np.ndarray]], out: list) -> l
 
 
 def _geos_one(geom):
-    import shapely
     try:
         return shapely.constrained_delaunay_triangles(geom)
     except Exception:

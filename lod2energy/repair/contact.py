@@ -9,6 +9,7 @@ import numpy as np
 
 from lod2energy.geometry import closest_on_triangle
 from lod2energy.polymesh import PolyMesh, triangulate_mesh
+from lod2energy.repair.metrics import _sqdist
 
 
 def onto_surface(m: PolyMesh, other: PolyMesh, tol: float) -> PolyMesh | None:
@@ -21,7 +22,6 @@ def onto_surface(m: PolyMesh, other: PolyMesh, tol: float) -> PolyMesh | None:
     millimetre grid (a self-intersecting ring); with the corner on the wall the difference
     leaves no strip.
     """
-    from lod2energy.repair.metrics import _sqdist
     tris, _ = triangulate_mesh(other)
     if not len(tris):
         return None

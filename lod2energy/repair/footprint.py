@@ -9,14 +9,14 @@ mean height of the upward-facing faces (the roof), so that its volume approximat
 from __future__ import annotations
 
 import numpy as np
+import shapely
+from shapely.geometry import MultiPoint, Polygon
 
 from lod2energy.polymesh import Face, PolyMesh, face_area, face_normal
 
 
 def footprint_polygon(m: PolyMesh, simplify: float = 0.01):
     """The shapely Polygon of the footprint, or None."""
-    import shapely
-    from shapely.geometry import MultiPoint, Polygon
     V = m.vertices
     polys = []
     for f in m.faces:

@@ -44,9 +44,11 @@ import numpy as np
 from lod2energy import cache
 from lod2energy.errors import ParameterError
 from lod2energy.model import Building, frozen_mapping
-from lod2energy.semantics import (CLOSURE, GROUND, OUTER_CEILING, OUTER_FLOOR, ROOF, WALL,
-                                  envelope_objects, face_table)
-from lod2energy.thermal.typology import Typology, classify
+from lod2energy.semantics import (
+    CLOSURE, GROUND, OUTER_CEILING, OUTER_FLOOR, ROOF, WALL, envelope_objects, face_metrics, face_table,
+)
+from lod2energy.thermal.typology import Typology, classify, country_from_crs
+from lod2energy.thermal.use import building_use
 from lod2energy.validate.defect import Defect
 
 ELEMENTS = ("roof", "wall", "ground", "window")
@@ -261,7 +263,6 @@ def lookup(country: str, btype: str, year: int, rows, *more_tiers) -> tuple[dict
 # ----------------------------------------------------------------------------- geometry sums
 
 def _solid_volume(vertices: np.ndarray, g, origin: np.ndarray) -> float:
-    from lod2energy.semantics import face_metrics
     vol = 0.0
     if not g.is_volumetric:
         return 0.0
@@ -310,8 +311,6 @@ def assign_u_values(b: Building, options: ThermalOptions = ThermalOptions()) -> 
         country, typology, construction_period, u_values, wwr, areas {roof, wall, ground},
         A_env (m2), volume (m3), UA (W/K) and the attributes used.
     """
-    from lod2energy.thermal.typology import country_from_crs
-    from lod2energy.thermal.use import building_use
 
     lod = options.lod if options.lod is not None else b.default_lod()
     energy = envelope_objects(b, lod)

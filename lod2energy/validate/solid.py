@@ -16,22 +16,13 @@ from __future__ import annotations
 
 from typing import Sequence
 
+import manifold3d as m3d
 import numpy as np
 
 from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.geometry import bbox_pairs, cross_rows as _cross, signed_volume, winding_number
 from lod2energy.model import Building, Geometry, Solid
 from lod2energy.validate.shell import shell_meshes
-
-
-def _m3d():
-    """manifold3d, imported on first use: a validation that never compares two solids' volumes
-    does not load it (issue 13: ``validate``'s start-up)."""
-    try:
-        import manifold3d
-    except ImportError:  # pragma: no cover - declared dependency
-        raise ImportError("manifold3d is required for checks 401-404, 501-503, 601") from None
-    return manifold3d
 
 
 VOLUME_EPS = DEFAULT.volume_eps
@@ -67,7 +58,6 @@ def to_manifold(vertices: np.ndarray, tris: np.ndarray, origin: np.ndarray):
     manifold3d.Manifold or None
         None when manifold3d rejects the mesh.
     """
-    m3d = _m3d()
     tris = np.asarray(tris, dtype=np.intp)
     if len(tris) == 0:
         return None
@@ -103,7 +93,7 @@ def _geometry_manifold(vertices: np.ndarray, solids: list[np.ndarray], origin: n
         mans.append(m)
     if not mans:
         return None
-    return mans[0] if len(mans) == 1 else _m3d().Manifold.batch_boolean(mans, _m3d().OpType.Add)
+    return mans[0] if len(mans) == 1 else m3d.Manifold.batch_boolean(mans, m3d.OpType.Add)
 
 
 def _overlap_by_vertices(vertices: np.ndarray, t1: np.ndarray, t2: np.ndarray) -> bool:
@@ -261,7 +251,7 @@ def check_multisolid(vertices: np.ndarray, geometry: Geometry, tol: Tolerances =
             out.append((i, 501, f"solid #{i} and solid #{j}"))
     if out or geometry.type != "CompositeSolid":
         return out
-    union = _m3d().Manifold.batch_boolean(mans, _m3d().OpType.Add)
+    union = m3d.Manifold.batch_boolean(mans, m3d.OpType.Add)
     n = _positive_parts(union, tol)
     if n != 1:
         out.append((None, 503, f"CompositeSolid is formed of {n} parts"))

@@ -20,6 +20,7 @@ from lod2energy import cache
 from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.geometry.polygons import newell_normal
 from lod2energy.geometry.vectors import unit
+from lod2energy.graph import building_graphs
 from lod2energy.model import Building
 
 #: Colours of the graph picture (the method's Figure 5 legend: valid faces, defective faces,
@@ -212,7 +213,6 @@ def graph_picture(b: Building, defects=(), tol: Tolerances = DEFAULT, lod: str |
         "xy" ((2, 2))}]`` with kinds ``adjacency``, ``inconsistent_adjacency``, ``boundary_edge``,
         ``nonmanifold_edge``; ``counts``: elements per kind; ``status``: the graph's status.
     """
-    from lod2energy.graph import building_graphs
     g = building_graphs([b], lod, tol)[0]
     n = g.n_faces
     out = {"nodes": [], "edges": [], "counts": {}, "status": g.status, "colours": dict(GRAPH_COLOURS)}
