@@ -43,7 +43,8 @@ def earcut_rings(p2: np.ndarray, ring_ends: np.ndarray) -> np.ndarray:
 
 def _incircle_d(adx: float, ady: float, bdx: float, bdy: float, cdx: float, cdy: float) -> float:
     """The incircle determinant from the corners' offsets to ``pd`` (``a - d``, ``b - d``,
-    ``c - d``), 0 where its sign is rounding noise (see :func:`_incircle`)."""
+    ``c - d``): > 0 when ``d`` is inside the circle through the counter-clockwise triangle
+    ``a, b, c``; 0 where its sign is rounding noise."""
     ad = adx * adx + ady * ady
     bd = bdx * bdx + bdy * bdy
     cd = cdx * cdx + cdy * cdy
@@ -52,15 +53,6 @@ def _incircle_d(adx: float, ady: float, bdx: float, bdy: float, cdx: float, cdy:
     perm = ((abs(bdx * cdy) + abs(bdy * cdx)) * ad + (abs(cdx * ady) + abs(cdy * adx)) * bd
             + (abs(adx * bdy) + abs(ady * bdx)) * cd)
     return det if abs(det) > 1e-14 * perm else 0.0
-
-
-def _incircle(pa, pb, pc, pd) -> float:
-    """> 0 when ``pd`` is inside the circle through the CCW triangle ``pa, pb, pc``."""
-    return _incircle_d(pa[0] - pd[0], pa[1] - pd[1], pb[0] - pd[0], pb[1] - pd[1], pc[0] - pd[0], pc[1] - pd[1])
-
-
-def _orient(pa, pb, pc) -> float:
-    return (pb[0] - pa[0]) * (pc[1] - pa[1]) - (pb[1] - pa[1]) * (pc[0] - pa[0])
 
 
 def ear_triangles(points2d: np.ndarray, ring_ends: np.ndarray) -> np.ndarray:
@@ -190,8 +182,8 @@ _EDGE_TABLE_MAX = 2048
 def lawson_cdt(pts: np.ndarray, ring_ends, max_flips: int | None = None) -> np.ndarray:
     """CDT by ear clipping then constrained Lawson flips (general, slower path).
 
-    The flip test is :func:`_incircle_d` (the arithmetic of :func:`_incircle`) and
-    :func:`_orient` written out inline (same arithmetic, same order, so the same flips).
+    The flip test is :func:`_incircle_d` and the orientation of the new diagonal's triangles,
+    written out inline.
     """
     tri = ear_triangles(pts, ring_ends)
     n = len(pts)
