@@ -36,7 +36,7 @@ from shapely.validation import make_valid
 from lod2energy import cache
 from lod2energy.geometry import cross_rows, newell_normal, plane_basis
 from lod2energy.model import BUILDING_TYPES, Building, Geometry, Shell, Solid, Surface, frozen_mapping
-from lod2energy.validate.defect import Defect
+from lod2energy.validate.codes import Defect
 
 ROOF, WALL, GROUND, CLOSURE = "RoofSurface", "WallSurface", "GroundSurface", "ClosureSurface"
 OUTER_CEILING, OUTER_FLOOR = "OuterCeilingSurface", "OuterFloorSurface"

@@ -238,7 +238,7 @@ def building_from_box(lo, hi) -> Building:
 
 
 def test_corners_a_hair_off_a_neighbours_wall_go_onto_it():
-    from lod2energy.repair.contact import onto_surface
+    from lod2energy.repair.parts import _onto_surface as onto_surface
     other = _box_mesh((0, 0, 0), (10, 8, 6))
     near = _box_mesh((10.00014, 2, 1), (14, 4, 3))            # its west corners 0.14 mm off the wall x = 10
     moved = onto_surface(near, other, 0.005)

@@ -84,7 +84,7 @@ def test_installations_are_features_of_their_own():
 
     from lod2energy.model import Building, CityObject
     from _val3dity_agreement import split_by_feature
-    from lod2energy.validate.defect import Defect
+    from lod2energy.validate.codes import Defect
 
     b = Building("B", "Building", np.zeros((0, 3)), (
         CityObject("B", "Building", children=("B_1", "I")), CityObject("B_1", "BuildingPart", parents=("B",)),

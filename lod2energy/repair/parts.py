@@ -14,12 +14,11 @@ import manifold3d as m3d
 import numpy as np
 
 from lod2energy.config import DEFAULT, Tolerances
-from lod2energy.geometry import collapse_short_edges
+from lod2energy.geometry import closest_on_triangle, collapse_short_edges
 from lod2energy.io.cityjson_grid import building_grid, on_grid
 from lod2energy.model import Building, Geometry, Shell, Solid, Surface
 from lod2energy.polymesh import Face, PolyMesh, compact, face_area, merge_coplanar, signed_volume, triangulate_mesh
 from lod2energy.repair.accept import is_repaired
-from lod2energy.repair.contact import onto_surface as _onto_surface
 from lod2energy.repair.convert import geometry_of_mesh, mesh_of_geometry
 from lod2energy.repair.metrics import _sqdist, winding_number
 from lod2energy.validate.solid import check_parts_overlap
@@ -223,6 +222,32 @@ def _part_meshes_all(b: Building, lod):
                 out.append((o, gi, g, mesh_of_geometry(b.vertices, g)))
                 break
     return out
+
+
+def _onto_surface(m: PolyMesh, other: PolyMesh, tol: float) -> PolyMesh | None:
+    """``m`` with each vertex within ``tol`` (m) of ``other``'s surface (but not on it) put
+    onto its nearest point there; None when no vertex moves.
+
+    Where a part's corner stands a fraction of a millimetre off its neighbour's wall, the
+    difference of the two (:func:`lod2energy.repair.parts.clip_overlapping_parts`) keeps a
+    hairline strip along the part's edge, which folds into a line once written on a
+    millimetre grid (a self-intersecting ring); with the corner on the wall the difference
+    leaves no strip.
+    """
+    tris, _ = triangulate_mesh(other)
+    if not len(tris):
+        return None
+    A, B, C = (other.vertices[tris[:, k]] for k in range(3))
+    V = np.array(m.vertices, dtype=np.float64)
+    moved = False
+    for i in range(len(V)):
+        d = _sqdist(V[i][None, :], A, B, C)
+        k = int(np.argmin(d))
+        if not 1e-16 < d[k] <= tol * tol:
+            continue
+        V[i] = closest_on_triangle(V[i], A[k], B[k], C[k])
+        moved = True
+    return m.with_faces(m.faces, V) if moved else None
 
 
 def _snap_back(m: PolyMesh, other: PolyMesh, max_move: float = SNAP_BACK) -> PolyMesh | None:

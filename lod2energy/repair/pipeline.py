@@ -34,9 +34,8 @@ from lod2energy.repair.cleanup import (
     clean_rings, cleanup, desliver, drop_degenerate, merge_slivers, snap_vertices,
 )
 from lod2energy.repair.convert import geometry_of_mesh, mesh_of_geometry
-from lod2energy.repair.footprint import extrude_footprint
+from lod2energy.repair.footprint import convex_hull, extrude_footprint
 from lod2energy.repair.holefill import fill_holes
-from lod2energy.repair.hull import convex_hull
 from lod2energy.repair.metrics import fidelity
 from lod2energy.repair.orientation import orient
 from lod2energy.repair.parts import keep_parts_apart, merge_overlapping_parts, overlapping_parts

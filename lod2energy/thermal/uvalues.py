@@ -49,7 +49,7 @@ from lod2energy.semantics import (
 )
 from lod2energy.thermal.typology import Typology, classify, country_from_crs
 from lod2energy.thermal.use import building_use
-from lod2energy.validate.defect import Defect
+from lod2energy.validate.codes import Defect
 
 ELEMENTS = ("roof", "wall", "ground", "window")
 RELATED_TYPE = {"terraced": "single-family", "single-family": "terraced",

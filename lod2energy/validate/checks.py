@@ -22,11 +22,14 @@ vectorised across buildings (feed chunks of a few hundred for speed).
 """
 from __future__ import annotations
 
+import numpy as np
+
 from lod2energy.config import DEFAULT, Tolerances
+from lod2energy.errors import InputError
+from lod2energy.io.cityjson import _Collector, _parse_geometry
 from lod2energy.model import MULTISOLID_TYPES, Building, Geometry
 from lod2energy.validate import memo, polygon, shell as shell_checks, solid as solid_checks
-from lod2energy.validate.defect import Defect
-from lod2energy.validate.instance import template_geometry
+from lod2energy.validate.codes import Defect
 
 
 def validate_geometry(vertices, coid: str, gi: int, g: Geometry, tol: Tolerances = DEFAULT) -> list[Defect]:
@@ -206,8 +209,15 @@ def check_instance(building, obj, gi, geometry, tol: Tolerances = DEFAULT) -> li
     -------
     list of Defect
     """
-    resolved = template_geometry(building, geometry)
-    if resolved is None:
+    t = (geometry.raw or {}).get("template")
+    templates = (building.provenance or {}).get("geometry_templates")
+    if not isinstance(t, int) or isinstance(t, bool) or not templates:
         return []
-    tverts, tgeom = resolved
-    return validate_geometry(tverts, obj.id, gi, tgeom, tol)
+    try:
+        tv = np.asarray(templates.get("vertices-templates") or [], dtype=np.float64).reshape(-1, 3)
+        g = dict((templates.get("templates") or [])[t])
+        g.setdefault("lod", "0")
+        tgeom = _parse_geometry(g, _Collector(len(tv)), f"template={t}")  # the reader's own parser
+    except (TypeError, ValueError, IndexError, AttributeError, InputError):
+        return []
+    return validate_geometry(tv, obj.id, gi, tgeom, tol) if tgeom.is_polygonal else []

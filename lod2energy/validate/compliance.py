@@ -18,7 +18,7 @@ import numpy as np
 from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.graph import FaceGraph, building_graphs
 from lod2energy.model import Building, lod_key
-from lod2energy.validate.defect import Defect
+from lod2energy.validate.codes import Defect
 
 LABELS = ("RoofSurface", "WallSurface", "GroundSurface", "ClosureSurface",
           "OuterCeilingSurface", "OuterFloorSurface", "Window", "Door")

@@ -1,6 +1,6 @@
 """Validation verdicts remembered by geometry, so that nothing validates the same geometry twice.
 
-A verdict (the list of :class:`~lod2energy.validate.defect.Defect` of
+A verdict (the list of :class:`~lod2energy.validate.codes.Defect` of
 :func:`lod2energy.validate.checks.validate_building`, or of one geometry) is kept in
 :mod:`lod2energy.cache` under a digest of everything the checks read: the vertex array bit for
 bit, every ring's vertex indices with the solid / shell / surface structure, the object ids and
@@ -20,7 +20,7 @@ from typing import Sequence
 import numpy as np
 
 from lod2energy import cache
-from lod2energy.validate.defect import Defect
+from lod2energy.validate.codes import Defect
 
 #: Verdicts kept per process in each table (least recently used dropped first).
 MAX_ENTRIES = 4096

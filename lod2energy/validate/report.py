@@ -17,8 +17,8 @@ from lod2energy.graph import building_graphs
 from lod2energy.model import Building, FeatureError
 from lod2energy.validate.checks import validate_building, validate_buildings
 from lod2energy.validate.codes import name
+from lod2energy.validate.codes import Defect
 from lod2energy.validate.compliance import energy_compliance
-from lod2energy.validate.defect import Defect
 
 
 def parameters_json(tol: Tolerances) -> dict:
