@@ -16,7 +16,7 @@ import numpy as np
 
 from lod2energy import cache
 
-__all__ = ["roll_next", "cross_rows", "unit_rows", "newell_normal", "polygon_normal", "newell_normals",
+__all__ = ["roll_next", "cross_rows", "unit_rows", "newell_normal", "newell_normals",
            "rings_normal", "plane_basis", "plane_bases", "project_2d", "cross2", "vector_length", "unit"]
 
 
@@ -117,23 +117,6 @@ def roll_next(a: np.ndarray) -> np.ndarray:
         A new array (``a`` is not modified).
     """
     return np.concatenate((a[1:], a[:1]))
-
-
-def polygon_normal(points: np.ndarray) -> np.ndarray:
-    """Unit normal of a ring (Newell), right-hand rule; zeros when degenerate.
-
-    Parameters
-    ----------
-    points : (k, 3) float
-        Ring vertices, m.
-
-    Returns
-    -------
-    (3,) float
-    """
-    n = newell_normal(points)
-    ln = np.linalg.norm(n)
-    return n / ln if ln > 0 else n
 
 
 def newell_normals(vertices: np.ndarray, rings: Sequence[np.ndarray]) -> np.ndarray:
