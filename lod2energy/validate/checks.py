@@ -33,7 +33,9 @@ from lod2energy.validate.codes import Defect
 
 
 def validate_geometry(vertices, coid: str, gi: int, g: Geometry, tol: Tolerances = DEFAULT) -> list[Defect]:
-    """Defects of one polygonal geometry (levels 1xx-5xx).
+    """Defects of one polygonal geometry (levels 1xx-5xx), through the geometry-level memory
+    (:func:`memo.entry_key`): a geometry whose exact input was checked before in this process
+    gets that answer.
 
     Parameters
     ----------
@@ -44,28 +46,11 @@ def validate_geometry(vertices, coid: str, gi: int, g: Geometry, tol: Tolerances
     gi : int
         Index of the geometry in the CityObject's ``geometry`` array.
     """
-    return validate_geometries(vertices, [(coid, gi, g)], tol)[0]
-
-
-def validate_geometries(vertices, items, tol: Tolerances = DEFAULT) -> list[list[Defect]]:
-    """Defects of several polygonal geometries sharing one vertex array (levels 1xx-5xx).
-
-    Parameters
-    ----------
-    vertices : (n, 3) float
-        The building's vertices, m.
-    items : sequence of (coid, geom_index, Geometry)
-
-    Returns
-    -------
-    list (one per item) of list of Defect
-    """
-    return _validate_entries_remembered([(vertices, coid, gi, g) for coid, gi, g in items], tol)
+    return _validate_entries_remembered([(vertices, coid, gi, g)], tol)[0]
 
 
 def _validate_entries_remembered(entries, tol: Tolerances) -> list[list[Defect]]:
-    """:func:`_validate_entries` through the geometry-level memory (:func:`memo.entry_key`): an
-    entry whose exact input was checked before in this process gets that answer."""
+    """:func:`_validate_entries` through the geometry-level memory."""
     keys = [memo.entry_key(v, coid, gi, g, tol) for v, coid, gi, g in entries]
     return memo.remembered(memo.GEOMETRIES, entries, keys, lambda todo: _validate_entries(todo, tol))
 

@@ -56,7 +56,7 @@ def geometry_key(b) -> bytes:
 
 def entry_key(vertices, coid: str, gi: int, g, tol) -> bytes:
     """Digest of one geometry's input to the geometry-level checks (levels 1xx-5xx of
-    :func:`lod2energy.validate.checks.validate_geometries`), tolerances included."""
+    :func:`lod2energy.validate.checks.validate_geometry`), tolerances included."""
     return cache.digest(np.asarray(vertices), coid, gi, *_structure(g), tol)
 
 

@@ -16,8 +16,7 @@ from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.graph import building_graphs
 from lod2energy.model import Building, FeatureError
 from lod2energy.validate.checks import validate_building, validate_buildings
-from lod2energy.validate.codes import name
-from lod2energy.validate.codes import Defect
+from lod2energy.validate.codes import Defect, name
 from lod2energy.validate.compliance import energy_compliance
 
 
