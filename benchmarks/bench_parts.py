@@ -86,7 +86,7 @@ def bench_tile(path: Path, tol, timeout: float, clip: bool = False) -> dict:
         if n_parts(b, lod) < 2:
             continue
         row["with_parts"] += 1
-        before = len(check_parts_overlap(b, tol)) if n_solids(b, lod) >= 2 else 0
+        before = len(check_parts_overlap([b], tol)[0]) if n_solids(b, lod) >= 2 else 0
         rb = repair_building(b, tol=tol, timeout=timeout, lod=lod)
         if rb is not b:
             row["repaired"] += 1
@@ -95,7 +95,7 @@ def bench_tile(path: Path, tol, timeout: float, clip: bool = False) -> dict:
             row["clipped"] += int(bool(crec.get("clipped") or crec.get("united")))
             row["kept"] += int(bool(crec.get("left")))
             row["removed_m3"] += crec.get("volume_removed_m3", 0.0)
-        after = len(check_parts_overlap(rb, tol)) if n_solids(rb, lod) >= 2 else 0
+        after = len(check_parts_overlap([rb], tol)[0]) if n_solids(rb, lod) >= 2 else 0
         row["before"] += before
         row["after"] += after
         if after > before:

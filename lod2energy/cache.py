@@ -20,8 +20,11 @@ their entries, which are valid there too: keys are contents). Tests empty them w
 """
 from __future__ import annotations
 
+import hashlib
 from collections import OrderedDict
-from typing import Any, Callable, Hashable
+from typing import Any, Callable, Hashable, Sequence
+
+import numpy as np
 
 _TABLES: dict[str, "OrderedDict[Hashable, Any]"] = {}
 _SIZES: dict[str, int] = {}
@@ -73,6 +76,34 @@ def remember(name: str, key: Hashable, make: Callable[[], Any], size: int) -> An
     if value is _MISSING:
         value = keep(name, key, make(), size)
     return value
+
+
+def remember_each(name: str, keys: Sequence[Hashable | None], make: Callable[[list[int]], list], size: int) -> list:
+    """One value per key of ``keys`` from table ``name``: the kept ones recalled, the others made
+    together by ``make(indices)`` (a list of values, one per index) and kept; a None key is
+    never kept."""
+    out = [_MISSING if k is None else recall(name, k, _MISSING) for k in keys]
+    todo = [i for i, v in enumerate(out) if v is _MISSING]
+    if todo:
+        for i, value in zip(todo, make(todo)):
+            out[i] = value if keys[i] is None else keep(name, keys[i], value, size)
+    return out
+
+
+def digest(*parts: Any) -> bytes:
+    """A 16-byte key of ``parts``: arrays by dtype, shape and bytes, bytes as they are, anything
+    else by its ``repr``."""
+    h = hashlib.blake2b(digest_size=16)
+    for p in parts:
+        if isinstance(p, np.ndarray):
+            h.update(f"{p.dtype.str}{p.shape}".encode())
+            h.update(np.ascontiguousarray(p).tobytes())
+        elif isinstance(p, bytes):
+            h.update(p)
+        else:
+            h.update(repr(p).encode("utf-8", "surrogatepass"))
+        h.update(b"|")
+    return h.digest()
 
 
 def clear(name: str | None = None) -> None:

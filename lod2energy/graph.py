@@ -26,27 +26,6 @@ FEATURE_NAMES = ("area", "n_x", "n_y", "n_z", "h", "degenerate", "planarity",
 EDGE_FEATURE_NAMES = ("cos_dihedral", "boundary", "nonmanifold")
 
 
-def snap_ids(vertices: np.ndarray, snap_tol: float, groups: np.ndarray | None = None) -> np.ndarray:
-    """Canonical vertex id per vertex: vertices closer than ``snap_tol`` share one id.
-
-    Parameters
-    ----------
-    vertices : (n, 3) float
-    snap_tol : float, m
-    groups : (n,) int, optional
-        Vertices of different groups (buildings) never merge.
-
-    Returns
-    -------
-    (n,) int
-        The smallest index of each vertex's cluster (transitively merged).
-    """
-    n = len(vertices)
-    if n < 2 or snap_tol <= 0:
-        return np.arange(n)
-    return snap_map(vertices, snap_tol, groups)
-
-
 @dataclass(frozen=True, eq=False)
 class FaceGraph:
     """Face-adjacency graph (arrays in PyTorch Geometric's layout).
@@ -171,7 +150,7 @@ def face_graph(vertices: np.ndarray, surfaces: Sequence[Surface], tol: Tolerance
     shell_of_face : (N,) int, optional
         Faces of different shells never share mesh edges (BuildingParts stay apart).
     vertex_groups : (n,) int, optional
-        Vertices of different groups never snap together (see :func:`snap_ids`).
+        Vertices of different groups never snap together.
     face_offset : (N,) int, optional
         Added to each face's ring indices (faces of many buildings, each indexing its own
         vertices, over their stacked ``vertices``); default 0.
@@ -200,9 +179,9 @@ def face_graph(vertices: np.ndarray, surfaces: Sequence[Surface], tol: Tolerance
     if face_offset is not None and len(ids):
         ids = ids + np.repeat(np.asarray(face_offset, dtype=np.intp)[ring_face], lens)
     used = np.unique(ids) if rings and len(V) else np.zeros(0, np.intp)
-    if len(used):
+    if len(used) > 1 and tol.snap_tol > 0:  # the lowest index of each cluster of close vertices
         groups = None if vertex_groups is None else np.asarray(vertex_groups)[used]
-        canon[used] = used[snap_ids(V[used], tol.snap_tol, groups)]
+        canon[used] = used[snap_map(V[used], tol.snap_tol, groups)]
     flat = canon[ids] if lens.sum() else np.zeros(0, np.intp)
     rid = np.repeat(np.arange(len(rings)), lens)
     # drop consecutive repeats (cyclically) after snapping
@@ -320,18 +299,12 @@ def face_graph(vertices: np.ndarray, surfaces: Sequence[Surface], tol: Tolerance
                      centroids, shell_of_face, mesh_edge_shell)
 
 
-def building_graph(b: Building, lod: str | None = None, tol: Tolerances = DEFAULT) -> FaceGraph:
-    """Face graph of a building's envelope at ``lod`` (default: highest LoD).
-
-    Every exterior shell of the Building and its BuildingParts contributes its faces; shells
-    never share mesh edges with each other (parts are separate shells).
-    """
-    return building_graphs([b], lod, tol)[0]
-
-
 def building_graphs(buildings: Sequence[Building], lod: str | None = None,
                     tol: Tolerances = DEFAULT) -> list[FaceGraph]:
-    """:func:`building_graph` of many buildings, computed in one vectorised pass.
+    """Face graphs of buildings' envelopes, computed in one vectorised pass.
+
+    Every exterior shell at ``lod`` of a Building and its BuildingParts contributes its faces;
+    shells never share mesh edges with each other (parts are separate shells).
 
     Parameters
     ----------
@@ -341,7 +314,7 @@ def building_graphs(buildings: Sequence[Building], lod: str | None = None,
 
     Returns
     -------
-    list of FaceGraph, one per building (same values as :func:`building_graph`)
+    list of FaceGraph, one per building
     """
     surfaces, ids, shell_of, zlo, zhi, groups, offsets = [], [], [], [], [], [], []
     v_off, f_bounds, s_bounds, v_bounds = [], [], [], []

@@ -13,20 +13,18 @@ from dataclasses import dataclass, field
 from itertools import accumulate
 
 import numpy as np
+import shapely
 
+from lod2energy import cache
 from lod2energy.geometry import (
-    constrained_delaunay, drop_collinear, earcut_rings, newell_normal, plane_basis, plane_distance, rings_normal,
+    constrained_delaunay, earcut_rings, newell_normal, plane_basis, plane_distance, rings_normal,
     signed_volume as _signed_volume,
 )
 from lod2energy.geometry.vectors import vector_length
 
 __all__ = ["Face", "PolyMesh", "Topology", "face_normal", "face_area", "planarity", "triangulate_face",
            "triangulate_mesh", "signed_volume", "edge_faces", "topology", "fan_groups", "nonmanifold_vertices",
-           "compact", "split_loop", "ring_is_simple_2d", "triangles_to_mesh", "merge_coplanar",
-           # geometry re-exported for the repair stages' old import lines
-           "newell_normal", "plane_basis", "drop_collinear"]
-
-# shapely is imported in the functions that use it: importing lod2energy stays cheap (issue 13)
+           "compact", "split_loop", "ring_is_simple_2d", "triangles_to_mesh", "merge_coplanar"]
 
 
 @dataclass(frozen=True)
@@ -121,10 +119,9 @@ def planarity(V: np.ndarray, f: Face) -> tuple[float, float]:
     return d, dev
 
 
-_TRI_CACHE: dict = {}
-#: Faces whose triangles are kept per process: enough for the faces of the buildings a job
-#: handles, small enough that a worker's memory does not grow with the file (cleared when full).
-TRI_CACHE_FACES = 8192
+#: Faces whose triangles are kept per process (:mod:`lod2energy.cache`): enough for the faces
+#: of the buildings a job handles, small enough that a worker's memory does not grow with the file.
+KEPT_FACES = 8192
 
 
 def triangulate_face(V: np.ndarray, f: Face) -> np.ndarray:
@@ -138,15 +135,12 @@ def triangulate_face(V: np.ndarray, f: Face) -> np.ndarray:
     if len(f.rings) == 1 and len(f.rings[0]) == 3:
         return np.array([f.rings[0]], dtype=np.int64)
     key = (f.rings, V[[i for r in f.rings for i in r]].tobytes())
-    hit = _TRI_CACHE.get(key)
-    if hit is not None:
-        return hit
-    t = _triangulate_face(V, f)
-    t.setflags(write=False)
-    if len(_TRI_CACHE) >= TRI_CACHE_FACES:
-        _TRI_CACHE.clear()
-    _TRI_CACHE[key] = t
-    return t
+    return cache.remember("polymesh.face-triangles", key, lambda: _read_only(_triangulate_face(V, f)), KEPT_FACES)
+
+
+def _read_only(a: np.ndarray) -> np.ndarray:
+    a.setflags(write=False)
+    return a
 
 
 def _triangulate_face(V: np.ndarray, f: Face) -> np.ndarray:
@@ -350,7 +344,6 @@ def ring_is_simple_2d(P2: np.ndarray) -> bool:
     """True when a 2D ring does not touch or cross itself."""
     if len(P2) < 3:
         return False
-    import shapely
     try:
         return bool(shapely.LinearRing(P2).is_simple)
     except Exception:  # noqa: BLE001 - shapely raises on degenerate rings

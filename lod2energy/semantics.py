@@ -30,10 +30,13 @@ from dataclasses import dataclass, replace
 from typing import Any, Iterable, Mapping
 
 import numpy as np
+from shapely.geometry import Point, Polygon
+from shapely.validation import make_valid
 
-from lod2energy.geometry import newell_normal, plane_basis
+from lod2energy import cache
+from lod2energy.geometry import cross_rows, newell_normal, plane_basis
 from lod2energy.model import BUILDING_TYPES, Building, Geometry, Shell, Solid, Surface, frozen_mapping
-from lod2energy.validate.defect import Defect
+from lod2energy.validate.codes import Defect
 
 ROOF, WALL, GROUND, CLOSURE = "RoofSurface", "WallSurface", "GroundSurface", "ClosureSurface"
 OUTER_CEILING, OUTER_FLOOR = "OuterCeilingSurface", "OuterFloorSurface"
@@ -111,33 +114,12 @@ def envelope_objects(b: Building, lod: str | None = None) -> list:
 
 # ----------------------------------------------------------------------------- face geometry
 
-def _cross_rows(d1: np.ndarray, d2: np.ndarray) -> np.ndarray:
-    """Row-wise cross product of two (m, 3) arrays, ``np.cross``'s operations in its order
-    (the same bits and memory layout) without its axis handling.
-
-    Parameters
-    ----------
-    d1, d2 : (m, 3) float
-
-    Returns
-    -------
-    (m, 3) float, C-contiguous
-    """
-    out = np.empty(d1.shape, dtype=np.result_type(d1, d2))
-    a0, a1, a2 = d1[:, 0], d1[:, 1], d1[:, 2]
-    b0, b1, b2 = d2[:, 0], d2[:, 1], d2[:, 2]
-    np.subtract(a1 * b2, a2 * b1, out=out[:, 0])
-    np.subtract(a2 * b0, a0 * b2, out=out[:, 1])
-    np.subtract(a0 * b1, a1 * b0, out=out[:, 2])
-    return out
-
-
 def _ring_centroid(p: np.ndarray, n_hat: np.ndarray) -> tuple[float, np.ndarray]:
     """Signed area (along ``n_hat``) and area centroid of a planar ring (fan triangulation)."""
     if len(p) < 3:
         return 0.0, p.mean(axis=0) if len(p) else np.zeros(3)
     a, b, c = p[0], p[1:-1], p[2:]
-    w = 0.5 * _cross_rows(b - a, c - a) @ n_hat
+    w = 0.5 * cross_rows(b - a, c - a) @ n_hat
     tot = w.sum()
     cent = (a + b + c) / 3.0
     if abs(tot) < 1e-15:
@@ -151,7 +133,7 @@ def face_metrics(vertices: np.ndarray, surface: Surface) -> tuple[float, np.ndar
     A pure function of the polygon's ring coordinates: the same polygon is measured by the
     labelling, the U-value volume and the acceptance check, so the answers are kept in a
     bounded cache keyed by the coordinates themselves (their bytes, dtype, shape and strides,
-    ring by ring), never by the identity of ``vertices`` (see :func:`clear_face_cache`).
+    ring by ring), never by the identity of ``vertices`` (:mod:`lod2energy.cache`).
 
     Parameters
     ----------
@@ -170,24 +152,13 @@ def face_metrics(vertices: np.ndarray, surface: Surface) -> tuple[float, np.ndar
     """
     rings = [vertices[r] for r in surface.rings]
     key = tuple((p.dtype.str, p.shape, p.strides, p.tobytes()) for p in rings)
-    hit = _FACE_CACHE.get(key)
-    if hit is None:
-        hit = _face_metrics(rings)
-        if len(_FACE_CACHE) >= FACE_CACHE_SIZE:
-            _FACE_CACHE.clear()
-        _FACE_CACHE[key] = hit
-    area, n_hat, centroid = hit
+    area, n_hat, centroid = cache.remember(FACE_METRICS, key, lambda: _face_metrics(rings), KEPT_FACES)
     return area, n_hat.copy(), centroid.copy()
 
 
-#: Most polygons :func:`face_metrics` remembers (the cache is emptied when it is full).
-FACE_CACHE_SIZE = 8192
-_FACE_CACHE: dict = {}
-
-
-def clear_face_cache() -> None:
-    """Forget every polygon :func:`face_metrics` remembers."""
-    _FACE_CACHE.clear()
+#: Polygons whose metrics :func:`face_metrics` keeps (:mod:`lod2energy.cache`, table ``FACE_METRICS``).
+KEPT_FACES = 8192
+FACE_METRICS = "semantics.face-metrics"
 
 
 def _face_metrics(rings: list[np.ndarray]) -> tuple[float, np.ndarray, np.ndarray]:
@@ -294,8 +265,6 @@ def rule_labels(t: FaceTable, rules: LabelRules = DEFAULT_RULES) -> list[str]:
 # ----------------------------------------------------------------------------- helpers
 
 def _polygon2d(vertices: np.ndarray, s: Surface, origin: np.ndarray, u: np.ndarray, v: np.ndarray):
-    from shapely.geometry import Polygon
-    from shapely.validation import make_valid
 
     rings = [np.c_[(vertices[r] - origin) @ u, (vertices[r] - origin) @ v] for r in s.rings if len(r) >= 3]
     if not rings:
@@ -368,7 +337,6 @@ class _SourceFaces:
         off = float(d @ n)
         if poly is None or poly.is_empty:
             return float(np.linalg.norm(d))
-        from shapely.geometry import Point
         din = poly.distance(Point(float(d @ u), float(d @ v)))
         return math.hypot(din, off)
 

@@ -7,14 +7,14 @@ import math
 import numpy as np
 from shapely.geometry import Polygon, box
 
-from lod2energy.exporters import polygons
+from lod2energy.geometry import polygons
 
 
 def bisection_window(piece: np.ndarray, wwr: float):
     """The window (4, 3) of wall piece ``piece`` (k, 3) at window-to-wall ratio ``wwr``, or None."""
     area = polygons.polygon_area3d(piece)
     n = polygons.unit(polygons.newell_normal(piece))
-    u, v = polygons.plane_basis(n)
+    u, v = polygons.wall_basis(n)
     c0 = piece.mean(axis=0)
     xy = np.column_stack([(piece - c0) @ u, (piece - c0) @ v])
     poly = Polygon(xy)

@@ -99,7 +99,7 @@ def test_a_wall_with_collinear_corners_is_planar(shift):
     # wall (6 triangles for 7 corners) and its noise normal gave 204 at 90 degrees
     V = BERLIN_WALL - BERLIN_WALL.mean(axis=0) if shift else BERLIN_WALL
     shell = Shell(surfaces=(Surface(rings=(np.arange(len(V)),)),))
-    assert check_polygons(V, shell) == []
+    assert check_polygons([(V, shell)]) == [[]]
 
 
 def test_the_fast_path_refuses_a_flat_triangle():
@@ -113,3 +113,9 @@ def test_the_fast_path_refuses_a_flat_triangle():
     assert len(t) == len(p2) - 2
     (many,) = cdt.constrained_delaunay_many([(p2, ends)])
     assert len(many) == len(p2) - 2
+
+
+def test_signed_zero_points_are_duplicates():
+    sq = np.array([[0.0, 0.0], [1, 0], [1, 1], [0, 1], [-0.0, 0.0], [0.5, 0.5]])
+    assert cdt._delaunay_if_conforming(sq, np.array([4, 6])) is None
+    assert cdt._delaunay_if_conforming(sq[:4], np.array([4])) is not None

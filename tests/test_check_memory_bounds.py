@@ -9,7 +9,7 @@ import lod2energy.validate.solid as S
 from lod2energy.geometry.intersect import bbox_pairs, triangle_pairs_intersect
 from lod2energy.io import read
 from lod2energy.model import Building
-from lod2energy.validate.solid import check_parts_overlap_multi
+from lod2energy.validate.solid import check_parts_overlap
 
 from conftest import shared_path
 
@@ -54,9 +54,9 @@ def test_parts_overlap_in_small_chunks_gives_the_same_verdicts(monkeypatch):
     _, feats = read(str(shared_path("denhaag", "DenHaag_01.city.json")))
     parts = [f for f in feats if isinstance(f, Building) and len(f.objects) > 1][:120]
     assert len(parts) >= 50
-    whole = check_parts_overlap_multi(parts)
+    whole = check_parts_overlap(parts)
     monkeypatch.setattr(S, "PLANE_VALUES_CHUNK", 13)
-    assert check_parts_overlap_multi(parts) == whole
+    assert check_parts_overlap(parts) == whole
 
 
 def test_triangle_pairs_memory_is_bounded_by_the_chunk():

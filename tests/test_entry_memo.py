@@ -5,6 +5,7 @@ import numpy as np
 import pytest
 
 from lod2energy.config import DEFAULT, Tolerances
+from lod2energy import cache
 from lod2energy.validate import checks, memo
 
 from factories import box, flipped_wall, open_box
@@ -63,4 +64,4 @@ def test_memory_is_bounded(monkeypatch):
     (coid, gi, g), = _geoms(b)[:1]
     for k in range(10):
         checks.validate_geometry(b.vertices + k, coid, gi, g, DEFAULT)
-        assert len(memo._ENTRIES) <= 3
+        assert cache.sizes()[memo.GEOMETRIES][0] <= 3

@@ -19,8 +19,8 @@ import lod2energy.energy.conform  # noqa: F401 - energy.conform
 from lod2energy.exporters import energyplus
 
 from lod2energy.energy.zones import shells as zones
-from lod2energy.exporters.polygons import polygon_area3d
-from lod2energy.exporters.shellcheck import check_closed_outward
+from lod2energy.geometry.polygons import polygon_area3d
+from lod2energy.validate.closed import check_closed_outward
 from lod2energy.energy.enclosure import (_edges_not_two, enclosure_defects, snap_polygons,
                                        unique_vertices)
 from lod2energy.energy import fallback as zone_fallback

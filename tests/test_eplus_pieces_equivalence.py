@@ -97,7 +97,7 @@ def test_vertices_and_degenerate_together_as_apart():
 def test_surely_planar_only_when_the_tests_pass():
     from lod2energy.energy.conform import PIECE_PLANAR
     from lod2energy.energy.pieces import _planar_dev_of, _surely_planar
-    from lod2energy.exporters.polygons import newell_normal
+    from lod2energy.geometry.polygons import newell_normal
     from lod2energy.energy.zones.shells import MIN_PIECE_AREA
 
     rng = np.random.default_rng(13)
@@ -150,7 +150,7 @@ def _ref_find_party_faces(zones, plane_tol=0.05, min_area=0.01, angle_cos=0.985)
 
     from lod2energy.energy.pieces import _face_frame
     from lod2energy.energy.surfaces import _shapely_poly
-    from lod2energy.exporters.polygons import plane_basis
+    from lod2energy.geometry.polygons import wall_basis as plane_basis
 
     boxes = np.array([[*z.vertices.min(axis=0), *z.vertices.max(axis=0)] if len(z.vertices)
                       else [np.inf] * 3 + [-np.inf] * 3 for z in zones])

@@ -19,7 +19,8 @@ import lod2energy.energy.zones.storeys  # noqa: F401 - energy.zones.storeys
 import lod2energy.energy.pieces  # noqa: F401 - energy.pieces
 from lod2energy.exporters import energyplus
 from lod2energy.errors import ParameterError
-from lod2energy.exporters import energyplus, polygons
+from lod2energy.exporters import energyplus
+from lod2energy.geometry import polygons
 from lod2energy.energy import model as energy_model
 from lod2energy.energy import parts as energy_parts
 
@@ -188,9 +189,9 @@ def test_non_convex_and_non_planar_faces_become_planar_convex_pieces(tmp_path):
         p = np.asarray(s.coords, float)
         n = polygons.unit(polygons.newell_normal(p))
         assert np.abs((p - p.mean(axis=0)) @ n).max() < 1e-3, f"{s.Name} not planar"
-        u, w = polygons.plane_basis(n)
+        u, w = polygons.wall_basis(n)
         xy = np.column_stack([p @ u, p @ w])
-        assert polygons._is_convex_2d(xy), f"{s.Name} not convex"
+        assert polygons.is_convex_2d(xy), f"{s.Name} not convex"
 
 
 @pytest.mark.parametrize("evil", [

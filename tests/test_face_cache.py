@@ -1,7 +1,7 @@
 """semantics.face_metrics remembers polygons by their coordinates: never a stale answer."""
 import numpy as np
 
-from lod2energy import semantics
+from lod2energy import cache, semantics
 from lod2energy.model import Surface
 
 
@@ -10,7 +10,7 @@ def _square(z=0.0, s=1.0):
 
 
 def test_same_surface_moved_vertices_gives_new_answer():
-    semantics.clear_face_cache()
+    cache.clear(semantics.FACE_METRICS)
     surf = Surface.from_lists([[0, 1, 2, 3]])
     v = _square()
     a1, n1, c1 = semantics.face_metrics(v, surf)
@@ -25,7 +25,7 @@ def test_same_surface_moved_vertices_gives_new_answer():
 
 
 def test_cached_answer_equals_uncached_and_is_not_shared():
-    semantics.clear_face_cache()
+    cache.clear(semantics.FACE_METRICS)
     rng = np.random.default_rng(3)
     v = np.vstack([_square(s=4.0), _square(s=1.0) + [1, 1, 0]]) + rng.normal(0, 1e-4, (8, 3))
     surf = Surface.from_lists([[0, 1, 2, 3], [7, 6, 5, 4]])
@@ -42,7 +42,7 @@ def test_cached_answer_equals_uncached_and_is_not_shared():
 
 
 def test_ring_split_is_part_of_the_key():
-    semantics.clear_face_cache()
+    cache.clear(semantics.FACE_METRICS)
     v = np.vstack([_square(s=4.0), _square(s=1.0) + [1, 1, 0]])
     with_hole = semantics.face_metrics(v, Surface.from_lists([[0, 1, 2, 3], [7, 6, 5, 4]]))
     assert with_hole[0] == 15.0
@@ -52,9 +52,9 @@ def test_ring_split_is_part_of_the_key():
 
 
 def test_cache_is_bounded(monkeypatch):
-    semantics.clear_face_cache()
-    monkeypatch.setattr(semantics, "FACE_CACHE_SIZE", 5)
+    cache.clear(semantics.FACE_METRICS)
+    monkeypatch.setattr(semantics, "KEPT_FACES", 5)
     surf = Surface.from_lists([[0, 1, 2, 3]])
     for k in range(20):
         semantics.face_metrics(_square(z=float(k)), surf)
-        assert len(semantics._FACE_CACHE) <= 5
+        assert cache.sizes()[semantics.FACE_METRICS][0] <= 5

@@ -21,7 +21,7 @@ from lod2energy.energy import model as energy_model
 from lod2energy.energy.enclosure import enclosure_defects
 from lod2energy.energy.pieces import _pieces_volume
 from lod2energy.energy.surfaces import zone_pieces
-from lod2energy.exporters.shellcheck import check_closed_outward
+from lod2energy.validate.closed import check_closed_outward
 
 
 def hipped_house(dx: float = 10.0, dy: float = 6.0, eaves: float = 3.0, rise: float = 2.0,

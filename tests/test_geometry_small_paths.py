@@ -9,7 +9,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from exporters import polygons
+from lod2energy.geometry import polygons
 from lod2energy.energy.zones import cut as zoning
 from lod2energy.geometry import earcut_rings, vectors
 
@@ -87,7 +87,7 @@ def _ref_triangulate(points, ring_ends, normal=None):
     n = polygons.unit(normal)
     if not n.any():
         return np.zeros((0, 3), dtype=np.intp)
-    u, v = polygons.plane_basis(n)
+    u, v = polygons.wall_basis(n)
     c = np.add.reduce(p, axis=0) / len(p)
     xy = np.column_stack([(p - c) @ u, (p - c) @ v])
     tri = earcut_rings(xy, ring_ends)
@@ -183,7 +183,7 @@ def test_is_convex_2d_same_answers():
             xy[0, 0] = np.nan
         for strict in (False, True):
             with np.errstate(invalid="ignore"):
-                got, ref = polygons._is_convex_2d(xy, strict=strict), _ref_is_convex_2d(xy, strict=strict)
+                got, ref = polygons.is_convex_2d(xy, strict=strict), _ref_is_convex_2d(xy, strict=strict)
             assert got == ref, (i, strict)
             answers.add(got)
     assert answers == {True, False}
@@ -217,7 +217,7 @@ def test_cross_rows_unit_rows_and_plane_basis_same_bits():
     normals += [np.array(v, dtype=np.float64) for v in ([0, 0, 1], [0, 0, -1], [1e-8, 0, 1], [0, 0, 0], [1, 0, 0])]
     for n in normals:
         with np.errstate(invalid="ignore"):
-            got, ref = polygons.plane_basis(n), ref_basis(n)
+            got, ref = polygons.wall_basis(n), ref_basis(n)
         assert _same(got[0], ref[0]) and _same(got[1], ref[1]), n
 
 

@@ -5,7 +5,8 @@ import numpy as np
 import pytest
 from hypothesis import given, settings, strategies as st
 
-from lod2energy.graph import FEATURE_NAMES, building_graph, face_graph, snap_ids
+from lod2energy.geometry import snap_map
+from lod2energy.graph import FEATURE_NAMES, building_graphs, face_graph
 from lod2energy.model import Surface
 
 from cityjson_docs import BOX_FACES, BOX_VERTICES
@@ -64,7 +65,7 @@ def test_duplicate_vertices_within_snap_tol_are_merged():
     faces = [list(f) for f in BOX_FACES]
     faces[1] = [[8, 5, 6, 7]]                                                 # roof uses the near-duplicate
     assert face_graph(v, surfaces(faces)).status == "watertight"
-    assert snap_ids(v, 0.001)[8] == 4
+    assert snap_map(v, 0.001)[8] == 4
 
 
 def test_degenerate_and_sliver_faces_are_flagged():
@@ -86,7 +87,7 @@ def test_building_graph_keeps_parts_apart(tmp_path):
     from cityjson_docs import parts_doc, write
     doc = parts_doc()
     _, it = read(write(tmp_path, doc))
-    g = building_graph(next(it))
+    g = building_graphs([next(it)])[0]
     assert g.n_faces == 12 and g.status == "watertight"                      # identical parts: no N_nm
     assert g.face_ids[6][0] == "p2"
     assert g.shell_volumes() == pytest.approx([480.0, 480.0])
@@ -113,7 +114,7 @@ def test_batched_graphs_equal_one_by_one():
     _, it = read(str(path))
     bs = [b for b in it if hasattr(b, "vertices")]
     assert len(bs) == 10
-    for a, b in zip([building_graph(x) for x in bs], building_graphs(bs)):
+    for a, b in zip([building_graphs([x])[0] for x in bs], building_graphs(bs)):
         np.testing.assert_allclose(a.x, b.x)
         assert np.array_equal(a.edge_index, b.edge_index) and np.array_equal(a.mesh_edges, b.mesh_edges)
         assert np.array_equal(a.incidence, b.incidence) and a.face_ids == b.face_ids
@@ -133,7 +134,7 @@ def test_an_unused_vertex_does_not_chain_two_vertices_into_one():
     g = face_graph(v, surfaces(faces))
     g_chained = face_graph(np.vstack([V, V[4] + [0, 0, 0.0012]]), surfaces(faces))
     assert g.n_faces == g_chained.n_faces == 7
-    snapped_if_chained = snap_ids(v, 0.001)
+    snapped_if_chained = snap_map(v, 0.001)
     assert snapped_if_chained[8] == snapped_if_chained[9] == 4                 # all three, transitively
     # with 9 unused, 8 stays a vertex of its own: the sliver keeps three corners
     assert g.x[6, 0] > 0 and g_chained.x[6, 0] > 0

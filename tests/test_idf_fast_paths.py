@@ -1,6 +1,6 @@
 """The IDF writer's and self-check's shortcuts give what the full computations give.
 
-- :func:`exporters.shellcheck._surely_outward` (the closed-shell check's volume sign without
+- :func:`lod2energy.validate.closed._surely_outward` (the closed-shell check's volume sign without
   triangulating) only says "positive" when the earcut volume is positive, so the check's
   problems are those of the full computation;
 - :func:`lod2energy.energy.openings.window_for` (one containment test when the ratio, not
@@ -11,7 +11,9 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from lod2energy.exporters import polygons, shellcheck
+from lod2energy.geometry import polygons, signed_volume
+from lod2energy.geometry.snap import drop_repeats, split_at_points, weld
+from lod2energy.validate import closed as shellcheck
 
 
 def _prism(outline: np.ndarray, z0: float, z1: float) -> list[np.ndarray]:
@@ -48,16 +50,16 @@ def _shells(rng) -> list[list[np.ndarray]]:
 def _earcut_volume(polys: list[np.ndarray]) -> float:
     """The volume check_closed_outward computes (earcut triangles, signed volume about the centroid)."""
     allp = np.concatenate(polys)
-    v, idx = shellcheck.weld(allp, 1e-3)
+    v, idx = weld(allp, 1e-3)
     rings, k = [], 0
     for p in polys:
-        ring = shellcheck.clean_ring(idx[k:k + len(p)].tolist())
+        ring = drop_repeats(idx[k:k + len(p)].tolist())
         k += len(p)
         if len(set(ring)) >= 3:
             rings.append(ring)
-    rings = shellcheck.split_at_points(v, rings, 0.0127, only_unmatched=True)
+    rings = split_at_points(v, rings, 0.0127, only_unmatched=True)
     tris = [[r[i] for i in t] for r in rings for t in polygons.triangulate(v[r], [len(r)])]
-    return shellcheck.signed_volume(v, np.asarray(tris, dtype=np.intp).reshape(-1, 3)), v, rings
+    return signed_volume(v, np.asarray(tris, dtype=np.intp).reshape(-1, 3)), v, rings
 
 
 def test_surely_outward_only_when_the_earcut_volume_is_positive():
@@ -114,7 +116,7 @@ def test_window_for_same_as_the_bisection(wwr):
 def test_union_roots_same_as_scipy_disjoint_set():
     from scipy.cluster.hierarchy import DisjointSet
 
-    from lod2energy.exporters.weld import _union_roots
+    from lod2energy.geometry.snap import _union_roots
 
     rng = np.random.default_rng(5)
     for n in (1, 2, 7, 40, 300):

@@ -16,9 +16,8 @@ from lod2energy.polymesh import PolyMesh
 from lod2energy.repair.alphashape import alpha_repair
 from lod2energy.repair.cleanup import cleanup
 from lod2energy.repair.convert import mesh_of_geometry
-from lod2energy.repair.footprint import extrude_footprint
+from lod2energy.repair.footprint import convex_hull, extrude_footprint
 from lod2energy.repair.holefill import fill_holes
-from lod2energy.repair.hull import convex_hull
 from lod2energy.repair.orientation import orient
 from lod2energy.repair.pipeline import STAGES, repair_building
 from lod2energy.repair.refill import refill

@@ -73,7 +73,7 @@ def test_a_part_pushed_further_than_the_snap_is_clipped_by_its_neighbour():
     fixed, rec = keep_parts_apart(before, after)
     assert overlap_pairs(fixed) == {} and rec["resolved"] == [["b", "a", "clip"]]
     from lod2energy.repair.pipeline import mesh_of_geometry
-    from lod2energy.repair._mesh import signed_volume
+    from lod2energy.polymesh import signed_volume
     m = mesh_of_geometry(fixed.vertices, fixed.object_index["b"].geometries[0])
     assert signed_volume(m) == pytest.approx(10 * 8 * 6, rel=1e-4)
 
@@ -104,7 +104,7 @@ def test_real_denhaag_building_has_no_new_overlap_after_repair(bid):
 
 
 def part_volume(b: Building, pid: str) -> float:
-    from lod2energy.repair._mesh import signed_volume
+    from lod2energy.polymesh import signed_volume
     from lod2energy.repair.pipeline import mesh_of_geometry
     return signed_volume(mesh_of_geometry(b.vertices, b.object_index[pid].geometries[0]))
 
@@ -238,7 +238,7 @@ def building_from_box(lo, hi) -> Building:
 
 
 def test_corners_a_hair_off_a_neighbours_wall_go_onto_it():
-    from lod2energy.repair.contact import onto_surface
+    from lod2energy.repair.parts import _onto_surface as onto_surface
     other = _box_mesh((0, 0, 0), (10, 8, 6))
     near = _box_mesh((10.00014, 2, 1), (14, 4, 3))            # its west corners 0.14 mm off the wall x = 10
     moved = onto_surface(near, other, 0.005)
@@ -290,7 +290,7 @@ def test_surfaces_beside_the_objects_own_solid_are_not_made_a_second_solid():
     tol = Tolerances(overlap_tol=-1.0)
     rb = repair_building(b, tol=tol, timeout=20, lod="2")
     from lod2energy.validate.solid import check_parts_overlap
-    assert check_parts_overlap(rb, tol) == []
+    assert check_parts_overlap([rb], tol) == [[]]
     assert [g.type for g in rb.objects[0].geometries] == ["MultiSurface", "Solid"]
     # the open surfaces alone (no solid beside them) are still repaired into a solid
     alone = Building("C", "Building", np.array(verts), (CityObject("C", "Building", (open_surfaces,), {}),))

@@ -133,7 +133,7 @@ def test_compliant_means_every_writer_accepts_it_at_the_users_tolerances(tmp_pat
 
 def test_final_check_rejects_what_the_writers_would(tmp_path):
     from lod2energy.pipeline import final_check
-    from lod2energy.validate.defect import Defect
+    from lod2energy.validate.codes import Defect
     pb, rec = prepare_building(box(id="fc"), PrepareOptions())
     assert final_check(pb, [], None) is None
     bad = Defect(203, "coid=fc|geom=0|shell=0|face=1", "non planar")

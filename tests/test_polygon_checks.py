@@ -15,13 +15,13 @@ from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.model import Shell, Surface
 from lod2energy.validate import polygon
 from lod2energy.validate.polygon import check_polygons
-from lod2energy.validate.snap import snap_points, snapped_ids
+from lod2energy.geometry.snap import snap_points, snapped_ids
 
 
 def _codes(b, tol=DEFAULT) -> set[int]:
     out = set()
     for _, _, sh in b.objects[0].geometries[0].iter_shells():
-        out.update(code for _, code, _ in check_polygons(b.vertices, sh, tol))
+        out.update(code for _, code, _ in check_polygons([(b.vertices, sh)], tol)[0])
     return out
 
 
@@ -105,7 +105,7 @@ def test_canonical_buildings_have_valid_polygons(factory):
 def test_info_strings_match_val3dity():
     b = building_from_polygons([[_ring([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0.5]])]], "MultiSurface")
     sh = b.objects[0].geometries[0].solids[0].shells[0]
-    (face, code, info), = check_polygons(b.vertices, sh)
+    (face, code, info), = check_polygons([(b.vertices, sh)])[0]
     assert (face, code) == (0, 203)
     m = re.fullmatch(r"distance to fitted plane: ([0-9.e+-]+) \(tolerance=0\.01\)", info)
     # least-squares plane by SVD: the first point farther than the tolerance is reported
@@ -115,14 +115,14 @@ def test_info_strings_match_val3dity():
     assert m and math.isclose(float(m.group(1)), d[np.argmax(d > 0.01)], rel_tol=1e-5)
     bent = building_from_polygons([[_ring([[0, 0, 0], [1, 0, 0], [1, 1, 0.5], [0, 1, 0]])]], "MultiSurface")
     sh = bent.objects[0].geometries[0].solids[0].shells[0]
-    (_, code, info), = check_polygons(bent.vertices, sh, Tolerances(planarity_d2p_tol=1.0))
+    (_, code, info), = check_polygons([(bent.vertices, sh)], Tolerances(planarity_d2p_tol=1.0))[0]
     assert code == 204 and re.fullmatch(r"deviation normals: [0-9.]+ \(tolerance=20\)", info)
 
 
 def test_collinear_triangle_info():
     b = building_from_polygons([[_ring([[0, 0, 0], [1, 0, 0], [2, 0, 0]])]], "MultiSurface")
     sh = b.objects[0].geometries[0].solids[0].shells[0]
-    assert check_polygons(b.vertices, sh) == [(0, 104, " outer ring (a triangle) is collapsed to a line")]
+    assert check_polygons([(b.vertices, sh)])[0] == [(0, 104, " outer ring (a triangle) is collapsed to a line")]
 
 
 # ----------------------------------------------------------------------------- snapping
@@ -201,7 +201,7 @@ def test_check_polygons_never_raises_on_random_rings(faces, tol):
     assume(pts)
     index = {p: i for i, p in enumerate(pts)}
     surfaces = tuple(Surface.from_lists([[index[p] for p in r] for r in f]) for f in faces)
-    out = check_polygons(np.asarray(pts, float), Shell(surfaces), tol)
+    out, = check_polygons([(np.asarray(pts, float), Shell(surfaces))], tol)
     for face, code, info in out:
         assert 0 <= face < len(surfaces)
         assert code in (101, 102, 104, 201, 202, 203, 204, 205, 206, 207, 208)
@@ -209,8 +209,8 @@ def test_check_polygons_never_raises_on_random_rings(faces, tol):
 
 
 def test_check_polygons_handles_empty_shell_and_bad_indices():
-    assert check_polygons(np.zeros((0, 3)), Shell(())) == []
-    out = check_polygons(np.zeros((3, 3)), Shell((Surface.from_lists([[0, 1, 7]]),)))
+    assert check_polygons([(np.zeros((0, 3)), Shell(()))]) == [[]]
+    out, = check_polygons([(np.zeros((3, 3)), Shell((Surface.from_lists([[0, 1, 7]]),)))])
     assert out and out[0][1] == 999
 
 
@@ -236,7 +236,7 @@ def test_denhaag_polygon_defects_match_val3dity_report(denhaag_path):
                         where.append((o.id, gi, si, hi, g))
                         items.append((b.vertices, sh))
     mine = set()
-    for (oid, gi, si, hi, g), found in zip(where, polygon.check_polygons_multi(items)):
+    for (oid, gi, si, hi, g), found in zip(where, check_polygons(items)):
         mine.update((f"coid={oid}|" + g.location(gi, si, hi, f), code, info) for f, code, info in found)
     assert len(theirs) > 100
     assert mine == theirs
@@ -258,21 +258,21 @@ def _named_shells():
 @pytest.mark.parametrize("tol", [DEFAULT, Tolerances(planarity_d2p_tol=1.0)])
 def test_batched_checks_equal_shell_by_shell(tol):
     items = _named_shells()
-    one_by_one = [polygon.check_polygons_multi([it], tol)[0] for it in items]
-    assert polygon.check_polygons_multi(items, tol) == one_by_one
+    one_by_one = [polygon._check([it], tol)[0] for it in items]  # without the cache
+    assert polygon._check(items, tol) == one_by_one
     assert any(one_by_one) and not all(one_by_one)
 
 
-def test_prefetch_cache_is_keyed_on_vertices_shell_and_tolerances():
+def test_kept_answers_are_keyed_on_vertices_shell_and_tolerances():
     bent = building_from_polygons([[_ring([[0, 0, 0], [1, 0, 0], [1, 1, 0.5], [0, 1, 0]])]], "MultiSurface")
     sh = bent.objects[0].geometries[0].solids[0].shells[0]
-    polygon.prefetch(bent, DEFAULT)
-    assert [c for _, c, _ in check_polygons(bent.vertices, sh)] == [203]
+    assert [c for _, c, _ in check_polygons([(bent.vertices, sh)])[0]] == [203]
+    assert [c for _, c, _ in check_polygons([(bent.vertices, sh)])[0]] == [203]  # kept
     # other tolerances, or other vertices for the same shell: computed afresh
-    assert [c for _, c, _ in check_polygons(bent.vertices, sh, Tolerances(planarity_d2p_tol=1.0))] == [204]
+    assert [c for _, c, _ in check_polygons([(bent.vertices, sh)], Tolerances(planarity_d2p_tol=1.0))[0]] == [204]
     flat = bent.vertices.copy()
     flat[:, 2] = 0
-    assert check_polygons(flat, sh) == []
+    assert check_polygons([(flat, sh)]) == [[]]
 
 
 def test_geometry_instance_is_validated_on_its_template(tmp_path):

@@ -14,7 +14,7 @@ import time
 import pytest
 
 from conftest import REFERENCE, SHARED
-from lod2energy.validate.agreement import compare, report_tolerances, validate_codes
+from _val3dity_agreement import compare, report_tolerances, validate_codes
 
 REPORTS = sorted(REFERENCE.glob("*.report.json")) if REFERENCE.exists() else []
 
@@ -83,8 +83,8 @@ def test_installations_are_features_of_their_own():
     import numpy as np
 
     from lod2energy.model import Building, CityObject
-    from lod2energy.validate.agreement import split_by_feature
-    from lod2energy.validate.defect import Defect
+    from _val3dity_agreement import split_by_feature
+    from lod2energy.validate.codes import Defect
 
     b = Building("B", "Building", np.zeros((0, 3)), (
         CityObject("B", "Building", children=("B_1", "I")), CityObject("B_1", "BuildingPart", parents=("B",)),

@@ -13,7 +13,7 @@ from lod2energy.model import Building, CityObject, FeatureError, Geometry, Shell
 from lod2energy.repair.pipeline import (
     STAGES, dataset_table, mesh_of_geometry, repair_building, repair_features, repair_info,
 )
-from lod2energy.repair.validity import shell_defects
+from lod2energy.validate.closed import shell_defects
 from lod2energy.validate.checks import validate_building
 
 REPO = Path(__file__).resolve().parents[1]
@@ -148,7 +148,7 @@ def assert_energy_ready(b):
     for g in output_shells(b):
         assert g.type == "Solid"
         m = mesh_of_geometry(b.vertices, g)
-        assert shell_defects(m, DEFAULT) == []
+        assert shell_defects([m], DEFAULT) == [[]]
         tris = []
         from lod2energy.polymesh import triangulate_mesh
         tris, _ = triangulate_mesh(m)

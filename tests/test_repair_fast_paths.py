@@ -15,8 +15,9 @@ import pytest
 
 from lod2energy.config import DEFAULT
 from lod2energy.polymesh import Face, PolyMesh, face_area
-from lod2energy.repair import validity
-from lod2energy.repair.cleanup import invalid_polygons, invalid_surfaces, snap_vertices
+from lod2energy.repair.cleanup import snap_vertices
+from lod2energy.validate import closed as validity
+from lod2energy.validate.closed import invalid_polygons, invalid_surfaces
 from lod2energy.repair.convert import mesh_of_geometry
 
 from conftest import DATA
@@ -162,11 +163,11 @@ def test_real_shells_same_verdicts(rel, n):
                     continue
                 shell = g.solids[0].shells[0]
                 assert dict(invalid_surfaces(b.vertices, shell, tol)) == dict(invalid_polygons(m, tol))
-                fast = validity.shell_defects(m, tol, invalid=invalid_surfaces(b.vertices, shell, tol))
+                fast = validity.shell_defects([m], tol, invalid=[invalid_surfaces(b.vertices, shell, tol)])[0]
                 slow_poly = _ref_polygon_defects(m, tol)
                 assert validity.polygon_defects(m, tol) == slow_poly
                 if not slow_poly:
-                    assert fast == validity.shell_defects(m, tol)
+                    assert fast == validity.shell_defects([m], tol)[0]
                 seen += 1
     assert seen > 10 or "3dbag" in rel  # 3DBAG shells repeat vertices: snapping changes them
 
@@ -228,20 +229,20 @@ def test_self_intersections_batch_same_pairs(seed):
         tris = rng.integers(0, len(V), size=(n, 3))
         owner = rng.integers(0, max(1, n // 2), size=n)
         items.append((V, tris, owner))
-    got = validity.self_intersections_many(items)
+    got = validity.self_intersections(items)
     hits = 0
     for (V, tris, owner), g in zip(items, got):
         ref = _reference_self_intersections(V, tris, owner)
         assert g.dtype == ref.dtype and np.array_equal(g, ref)
-        assert np.array_equal(validity.self_intersections(V, tris, owner), ref)
+        assert np.array_equal(validity.self_intersections([(V, tris, owner)])[0], ref)
         hits += len(ref)
     assert hits > 0
 
 
 @pytest.mark.parametrize("rel,n", REAL, ids=[r[0].split("/")[-1] for r in REAL])
 def test_real_shells_batch_same_defects(rel, n):
-    """shell_defects_many of a building's shells (valid and broken, as the ladder gets them)
-    answers as shell_defects shell by shell."""
+    """shell_defects of a building's shells together (valid and broken, as the ladder gets them)
+    answers as shell by shell."""
     if not (DATA / rel).exists():
         pytest.skip(f"shared data not available: {rel}")
     import itertools
@@ -252,12 +253,12 @@ def test_real_shells_batch_same_defects(rel, n):
     _, it = read(str(DATA / rel))
     some_306 = False
     for b in itertools.islice((x for x in it if isinstance(x, Building)), n):
-        shells = [(snap_vertices(mesh_of_geometry(b.vertices, g), tol.snap_tol), None)
+        shells = [snap_vertices(mesh_of_geometry(b.vertices, g), tol.snap_tol)
                   for o in b.objects for g in o.geometries if g.is_polygonal and g.solids]
         if not shells:
             continue
-        got = validity.shell_defects_many(shells, tol)
-        ref = [validity.shell_defects(m, tol) for m, _ in shells]
+        got = validity.shell_defects(shells, tol)
+        ref = [validity.shell_defects([m], tol)[0] for m in shells]
         assert got == ref
         some_306 |= any(c == 306 for r in ref for _, c, _ in r)
 

@@ -7,7 +7,7 @@ import pytest
 
 from factories import box_polygons, building_from_polygons
 from lod2energy.repair import pipeline
-from lod2energy.repair._mesh import Face, PolyMesh, signed_volume
+from lod2energy.polymesh import Face, PolyMesh, signed_volume
 from lod2energy.repair.plausible import hollow
 from lod2energy.repair.pipeline import mesh_of_geometry, repair_building
 

@@ -8,7 +8,7 @@ from lod2energy.config import DEFAULT
 from lod2energy.polymesh import Face, PolyMesh, signed_volume, topology
 from lod2energy.repair.pipeline import repair_building
 from lod2energy.repair.unpinch import OFFSET, unpinch
-from lod2energy.repair.validity import shell_defects
+from lod2energy.validate.closed import shell_defects
 
 from test_repair import assert_energy_ready, building
 
@@ -124,7 +124,7 @@ def test_unpinch_makes_a_2manifold_and_moves_only_the_pinch(make, bridge):
 def test_separated_sheets_do_not_touch():
     V, faces = courtyard_pinch()
     u = unpinch(mesh(V, faces), DEFAULT)
-    assert shell_defects(u, DEFAULT) == []
+    assert shell_defects([u], DEFAULT) == [[]]
 
 
 def test_unpinch_none_without_pinch():

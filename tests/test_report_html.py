@@ -75,19 +75,19 @@ def test_three_report_shapes_give_the_same_rows():
     for rep in (export, repair):
         rs = D.rows(rep)
         assert [r.status for r in rs] == ["valid", "repaired locally", "irreparable"]
-        assert D.stage_distribution(rs) == {"valid": 1, "holefill": 1, "irreparable": 1}
-        assert D.validity_by_code(rs) == {"104": [1, 1], "302": [1, 0], "1001": [1, 0]}
-        h = D.iou_histogram(rs)
+        assert D.Tally(rs).stage_distribution() == {"valid": 1, "holefill": 1, "irreparable": 1}
+        assert D.Tally(rs).validity_by_code() == {"104": [1, 1], "302": [1, 0], "1001": [1, 0]}
+        h = D.Tally(rs).iou.result()
         assert h["n"] == 1 and sum(h["counts"]) == 1 and h["counts"][-1] == 1      # 0.97 in the last bin
-        d = D.displacement_histogram(rs)
+        d = D.Tally(rs).displacement.result()
         assert d["counts"][2] == 1                                                  # 0.01 <= 0.012 < 0.02
-        s = D.summary(rs)
+        s = D.Tally(rs).summary()
         assert (s["miou"], s["map_v"], s["local_repairs"], s["irreparable"]) == (0.97, 0.012, 1, 1)
     rs = D.rows(validate)
-    assert D.stage_distribution(rs) == {} and [r.status for r in rs] == ["valid", "not repaired", "not repaired"]
-    assert D.validity_by_code(rs) == {"104": [1, 0], "302": [1, 0]}
+    assert D.Tally(rs).stage_distribution() == {} and [r.status for r in rs] == ["valid", "not repaired", "not repaired"]
+    assert D.Tally(rs).validity_by_code() == {"104": [1, 0], "302": [1, 0]}
     # heating per m2 of floor: 8000 kWh / (50 m2 x 2 storeys)
-    assert D.heating_by_typology(D.rows(export)) == {"terraced": [80.0, 1]}
+    assert D.Tally(D.rows(export)).heating_by_typology() == {"terraced": [80.0, 1]}
 
 
 def test_panel_cap_keeps_every_building_of_a_small_file_and_the_worst_of_a_large_one():
@@ -148,7 +148,7 @@ def test_page_embeds_the_plotted_numbers_and_needs_no_network(tmp_path):
     out = write_report_html(rep, tmp_path / "report.html", inputs={b.id: b for b in bs}, outputs=outs)
     html = out.read_text(encoding="utf-8")
     data = page_data(html)
-    assert data["figures"] == json.loads(json.dumps(D.figure_data(D.rows(rep))))
+    assert data["figures"] == json.loads(json.dumps(D.Tally(D.rows(rep)).figure_data()))
     assert data["figures"]["stages"] == {r["repair"]["stage"]: 1 for r in rep["buildings"]}
     assert data["panels"] == ["ok", "hole"] and html.count('class="panel"') == 2
     assert html.count('class="fp"') == 2 and 'href="#b-hole"' in html
@@ -273,7 +273,7 @@ def test_every_plot_is_an_svg_image_and_heating_colours_the_plan(tmp_path):
     for k, row in enumerate(rep["buildings"]):
         row["exports"]["idf"] = {"ok": True, "heating_kwh": 4000.0 * (k + 1), "problems": []}
     rs = D.rows(rep)
-    fd = D.figure_data(rs)
+    fd = D.Tally(rs).figure_data()
     assert sum(n for _, n in fd["heating_by_typology"].values()) == 2
     urls = [F.plot_stages(fd["stages"]), F.plot_histograms(fd["iou"], fd["displacement"]),
             F.plot_compliance(fd["compliance"]), F.plot_validity(fd["validity_by_code"]),

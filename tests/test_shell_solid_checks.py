@@ -11,7 +11,7 @@ import pytest
 from factories import box, box_polygons, building_from_polygons, flipped_wall, gabled_house, inward_box, open_box
 from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.geometry import (
-    bbox_pairs, signed_volume, snap_map, triangle_pairs_intersect, triangulate_shell, triangulate_surface,
+    bbox_pairs, signed_volume, snap_map, triangle_pairs_intersect, triangulate_surface, triangulate_surfaces,
     winding_number,
 )
 from lod2energy.model import Building, CityObject, Geometry, Shell, Solid, Surface
@@ -254,14 +254,14 @@ def test_checks_do_not_mutate_input():
 def test_check_shell_contract_returns_plain_tuples():
     b = open_box()
     sh = b.root.geometries[0].solids[0].shells[0]
-    out = shell_checks.check_shell(b.vertices, sh, DEFAULT, True)
+    out, composite = shell_checks.check_shells([(b.vertices, sh, True), (b.vertices, sh, False)], DEFAULT)
     assert out and all(len(t) == 3 and isinstance(t[1], int) for t in out)
-    assert shell_checks.check_shell(b.vertices, sh, DEFAULT, False) == []   # fine as a CompositeSurface
+    assert composite == []   # fine as a CompositeSurface
 
 
 def test_exterior_shell_orientation_is_checked_once_shell_is_valid():
     b = _reversed(box())
-    assert solid_checks.check_solid(b.vertices, b.root.geometries[0].solids[0], DEFAULT)[0][1] == 405
+    assert solid_checks.check_solids([(b.vertices, b.root.geometries[0].solids[0])], DEFAULT)[0][0][1] == 405
 
 
 # ----------------------------------------------------------------------------- geometry helpers
@@ -269,7 +269,7 @@ def test_exterior_shell_orientation_is_checked_once_shell_is_valid():
 def test_triangulation_keeps_orientation_and_area():
     b = gabled_house()
     sh = b.root.geometries[0].solids[0].shells[0]
-    tris, fot = triangulate_shell(b.vertices, sh)
+    tris, fot = triangulate_surfaces(b.vertices, [f.rings for f in sh.surfaces])
     assert len(tris) == 2 + 2 * 4 + 2 * 3 and fot.max() == 6
     assert signed_volume(b.vertices, tris) == pytest.approx(10 * 8 * 6 + 0.5 * 8 * 3 * 10)
 
@@ -284,14 +284,14 @@ def test_triangulate_surface_with_hole():
 
 def test_collinear_vertex_gives_no_zero_area_triangle():
     v = np.array([[0, 0, 0], [2, 0, 0], [1, 1, 0], [0, 2, 0]], float)    # (1,1) lies on the diagonal
-    t, _ = triangulate_shell(v, Shell((Surface.from_lists([[0, 1, 2, 3]]),)))
+    t, _ = triangulate_surfaces(v, [Surface.from_lists([[0, 1, 2, 3]]).rings])
     p = v[t]
     assert (np.abs(np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])[:, 2]) > 1e-9).all()
 
 
 def test_winding_number_inside_outside():
     b = box(2, 2, 2)
-    tris, _ = triangulate_shell(b.vertices, b.root.geometries[0].solids[0].shells[0])
+    tris, _ = triangulate_surfaces(b.vertices, [f.rings for f in b.root.geometries[0].solids[0].shells[0].surfaces])
     w = winding_number(np.array([[1, 1, 1], [3, 1, 1]], float), b.vertices, tris)
     assert w == pytest.approx([1.0, 0.0], abs=1e-9)
 

@@ -50,10 +50,12 @@ def test_help_and_usage_errors_load_nothing_heavy(argv):
 
 @pytest.mark.parametrize("module", ["lod2energy.geometry", "lod2energy.polymesh", "lod2energy.semantics",
                                     "lod2energy.thermal", "lod2energy.validate.report", "lod2energy.repair",
-                                    "lod2energy.pipeline", "lod2energy.exporters.weld"])
-def test_core_modules_import_scipy_and_shapely_on_first_use(module):
+                                    "lod2energy.pipeline", "lod2energy.geometry.snap"])
+def test_core_modules_import_scipy_on_first_use(module):
+    """shapely is imported at the top of the modules that use it (validation needs it anyway);
+    scipy (0.4 s) only where a path needs it, which validation mostly does not."""
     loaded = loaded_after(f"import {module}")
-    assert not loaded & {"scipy", "shapely", "trimesh", "pyproj", "jsonschema", "eppy", "jinja2",
+    assert not loaded & {"scipy", "trimesh", "pyproj", "jsonschema", "eppy", "jinja2",
                          "matplotlib", "pyvista"}, (module, loaded)
 
 

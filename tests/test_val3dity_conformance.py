@@ -9,7 +9,7 @@ from __future__ import annotations
 import pytest
 
 from conftest import VAL3DITY_TESTS
-from lod2energy.validate.conformance import case_id, load_cases, matches, run_case
+from _val3dity_suite import case_id, load_cases, matches, run_case
 
 _HAVE = (VAL3DITY_TESTS / "EXPECTED_RESULTS.json").exists()
 CASES = load_cases(VAL3DITY_TESTS) if _HAVE else []

@@ -5,7 +5,7 @@ import numpy as np
 from hypothesis import HealthCheck, given, settings, strategies as st
 
 from lod2energy.config import DEFAULT
-from lod2energy.graph import building_graph
+from lod2energy.graph import building_graphs
 from lod2energy.model import Building, CityObject, Geometry, Shell, Solid, Surface
 from lod2energy.validate.checks import validate_building
 from lod2energy.validate.compliance import energy_compliance
@@ -55,7 +55,7 @@ def test_rigid_motions_keep_validity_area_and_volume(yaw, tilt, shift, shape):
     b0, b1 = building(v, f), building(moved, f)
     d0, d1 = validate_building(b0), validate_building(b1)
     assert [d.code for d in d0] == [] and [d.code for d in d1] == []
-    g0, g1 = building_graph(b0), building_graph(b1)
+    g0, g1 = building_graphs([b0])[0], building_graphs([b1])[0]
     np.testing.assert_allclose(g0.x[:, 0], g1.x[:, 0], rtol=1e-6, atol=1e-6)
     np.testing.assert_allclose(g0.shell_volumes(), g1.shell_volumes(), rtol=1e-6)
 
@@ -65,7 +65,7 @@ def test_validation_does_not_mutate_its_input():
     b = building(v, f)
     before = b.vertices.copy(), [r.copy() for _, _, _, s in b.root.geometries[0].iter_surfaces() for r in s.rings]
     validate_building(b, DEFAULT)
-    building_graph(b)
+    building_graphs([b])[0]
     assert np.array_equal(before[0], b.vertices)
     after = [r for _, _, _, s in b.root.geometries[0].iter_surfaces() for r in s.rings]
     assert all(np.array_equal(x, y) for x, y in zip(before[1], after))

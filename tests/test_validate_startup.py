@@ -1,6 +1,6 @@
-"""What ``lod2energy validate`` loads (issue 13): a CityJSON file in a projected CRS whose
-solids never need a volume comparison loads neither manifold3d nor the export-side modules
-(``lod2energy.reports`` and its records, options, spool); they load once a file needs them.
+"""What ``lod2energy validate`` loads (issue 13): a CityJSON file in a projected CRS does not load
+the export-side modules (``lod2energy.reports`` and its records, options, spool); they load once
+a file needs them.
 """
 from __future__ import annotations
 
@@ -38,15 +38,15 @@ def _loaded_by_validate(path: str, tmp_path) -> set[str]:
         import json, sys
         from lod2energy.cli import main
         rc = main(["validate", {path!r}, "-q", "--report", {str(tmp_path / "r.json")!r}])
-        print(json.dumps([rc] + sorted(m for m in sys.modules if m.split(".")[0] == "manifold3d"
-                                       or m in ("lod2energy.reports", "lod2energy.records", "lod2energy.spool"))))
+        print(json.dumps([rc] + sorted(m for m in sys.modules
+                                       if m in ("lod2energy.reports", "lod2energy.records", "lod2energy.spool"))))
     """)
     out = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, check=True)
     rc, *mods = json.loads(out.stdout.strip().splitlines()[-1])
-    return rc, {m.split(".")[0] if m.startswith("manifold3d") else m for m in mods}
+    return rc, set(mods)
 
 
-def test_validate_of_a_plain_file_loads_no_export_modules_nor_manifold3d(tmp_path):
+def test_validate_of_a_plain_file_loads_no_export_modules(tmp_path):
     rc, loaded = _loaded_by_validate(_city(tmp_path / "one.city.json", 7415), tmp_path)
     assert rc == 0
     assert loaded == set(), loaded
@@ -55,7 +55,6 @@ def test_validate_of_a_plain_file_loads_no_export_modules_nor_manifold3d(tmp_pat
 
 
 @pytest.mark.parametrize("parts, epsg, want", [
-    (2, 7415, {"manifold3d"}),   # overlapping BuildingParts: the 601 test compares volumes
     (1, 4979, {"lod2energy.reports", "lod2energy.records", "lod2energy.spool"}),  # geographic: local frame
 ])
 def test_they_load_when_the_file_needs_them(tmp_path, parts, epsg, want):

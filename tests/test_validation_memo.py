@@ -10,6 +10,7 @@ from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.io import read
 import lod2energy.records  # noqa: F401 - makes Building picklable
 from lod2energy.model import Building
+from lod2energy import cache
 from lod2energy.validate import checks, memo
 
 from conftest import shared_path
@@ -76,7 +77,7 @@ def test_the_memory_is_bounded(monkeypatch):
     monkeypatch.setattr(memo, "MAX_ENTRIES", 3)
     for dx in (1.0, 2.0, 3.0, 4.0, 5.0):
         checks.validate_building(box(dx=dx), DEFAULT)
-    assert len(memo._MEMORY) == 3
+    assert cache.sizes()[memo.BUILDINGS][0] == 3
 
 
 def test_batched_validation_with_the_memory_equals_validation_without_it_on_a_real_tile():

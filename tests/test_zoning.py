@@ -10,7 +10,7 @@ import lod2energy.energy.surfaces  # noqa: F401 - energy.surfaces
 import lod2energy.energy.pieces  # noqa: F401 - energy.pieces
 from lod2energy.energy.zones import cut as zoning
 from lod2energy.exporters import energyplus
-from lod2energy.exporters.shellcheck import check_closed_outward
+from lod2energy.validate.closed import check_closed_outward
 from lod2energy.energy.zones.shells import local_origin, zone_shells
 from lod2energy.energy.enclosure import enclosure_defects
 

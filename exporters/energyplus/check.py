@@ -12,8 +12,8 @@ from lod2energy.energy.zones.shells import MIN_PIECE_AREA
 from lod2energy.errors import ExportError
 from lod2energy.exporters.energyplus import run as eplus_run
 from lod2energy.exporters.energyplus.idd import check_idf, parse_idf
-from lod2energy.exporters.polygons import newell_normal
-from lod2energy.exporters.shellcheck import check_closed_outward
+from lod2energy.geometry.polygons import newell_normal
+from lod2energy.validate.closed import check_closed_outward
 
 
 class _Record:

@@ -22,7 +22,7 @@ from lod2energy.exporters.energyplus.constructions import (
 from lod2energy.exporters.energyplus.names import NameRegistry, _IDF_NAME_BAD, comment_text
 from lod2energy.exporters.energyplus.options import ATTIC_ACH, IdfOptions
 from lod2energy.exporters.energyplus.site import DEFAULT_SITE
-from lod2energy.exporters.polygons import _norm, newell_normal, polygon_area3d, unit
+from lod2energy.geometry.polygons import _norm, newell_normal, polygon_area3d, unit
 from lod2energy.thermal.use import use_conditions
 
 

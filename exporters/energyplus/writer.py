@@ -27,7 +27,7 @@ from lod2energy.exporters.energyplus.render import render_idf
 from lod2energy.exporters.energyplus.run import _run
 from lod2energy.exporters.energyplus.site import _group_site, read_epw_header
 from lod2energy.exporters.paths import not_written, output_path, safe_stem, set_aside_failed
-from lod2energy.exporters.polygons import polygon_area3d
+from lod2energy.geometry.polygons import polygon_area3d
 from lod2energy.exporters.registry import register_writer
 from lod2energy.exporters.result import ExportResult
 from lod2energy.model import Building

@@ -14,9 +14,9 @@ from lod2energy.energy.enclosure import (
 )
 from lod2energy.energy.pieces import Piece, WRITE_DECIMALS, _planar_dev, _surely_planar
 from lod2energy.energy.zones.shells import MIN_PIECE_AREA
-from lod2energy.exporters.polygons import polygon_area3d
-from lod2energy.exporters.shellcheck import check_closed_outward
-from lod2energy.exporters.weld import weld
+from lod2energy.geometry.polygons import polygon_area3d
+from lod2energy.validate.closed import check_closed_outward
+from lod2energy.geometry.snap import weld
 from lod2energy.geometry import split_at_points
 
 

@@ -33,8 +33,8 @@ import numpy as np
 from scipy.spatial import cKDTree
 
 from lod2energy import cache
-from lod2energy.exporters.polygons import polygon_area3d
-from lod2energy.exporters.weld import weld
+from lod2energy.geometry.polygons import polygon_area3d
+from lod2energy.geometry.snap import weld
 
 #: Per-axis tolerance (m) of EnergyPlus's ``isAlmostEqual3dPt`` and the slack of its
 #: ``isPointOnLineBetweenPoints`` (1/2 inch).

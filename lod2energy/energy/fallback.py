@@ -33,8 +33,8 @@ from shapely.geometry.polygon import orient
 from lod2energy.config import DEFAULT
 from lod2energy.energy.enclosure import eplus_merge
 from lod2energy.energy.zones.shells import ZoneFace, ZoneShell, classify
-from lod2energy.exporters.polygons import newell_normal, polygon_area3d
-from lod2energy.exporters.weld import clean_ring
+from lod2energy.geometry.polygons import newell_normal, polygon_area3d
+from lod2energy.geometry.snap import drop_repeats as clean_ring
 from lod2energy.polymesh import Face, PolyMesh, signed_volume
 from lod2energy.repair.footprint import footprint_polygon, roof_height
 from lod2energy.repair.roofs import roof_model

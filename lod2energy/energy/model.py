@@ -37,7 +37,7 @@ from lod2energy.energy.openings import Opening, split_openings
 from lod2energy.energy.pieces import Piece
 from lod2energy.energy.surfaces import find_party_faces, zone_pieces
 from lod2energy.energy.parts import merge_floorless_parts
-from lod2energy.exporters.shellcheck import check_closed_outward
+from lod2energy.validate.closed import check_closed_outward
 from lod2energy.energy.zones.shells import COLLINEAR_TOL, local_origin, zone_shells, ZoneShell
 from lod2energy.model import BUILDING_TYPES, Building, frozen_mapping
 from lod2energy.energy.fallback import FALLBACKS

@@ -10,7 +10,7 @@ import shapely
 from shapely.geometry import Point, Polygon
 
 from lod2energy.energy.zones.shells import ZoneShell
-from lod2energy.exporters.polygons import _is_convex_2d, newell_normal, plane_basis, polygon_area3d, unit
+from lod2energy.geometry.polygons import is_convex_2d as _is_convex_2d, newell_normal, wall_basis as plane_basis, polygon_area3d, unit
 from lod2energy.io.openings import polygon_rings
 
 

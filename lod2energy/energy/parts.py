@@ -2,7 +2,7 @@
 from __future__ import annotations
 
 from lod2energy.energy.zones.storeys import FLOOR_NZ
-from lod2energy.exporters.polygons import newell_normal, unit
+from lod2energy.geometry.polygons import newell_normal, unit
 from lod2energy.model import Building
 from lod2energy.repair.parts import input_parts, merge_parts, touching_part, without_geometry
 

@@ -10,7 +10,7 @@ from typing import Sequence
 
 import numpy as np
 
-from lod2energy.exporters.polygons import _is_convex_2d, merge_convex, newell_normal, PLANAR_TOL, plane_basis, triangulate, unit
+from lod2energy.geometry.polygons import is_convex_2d as _is_convex_2d, merge_convex, newell_normal, PLANAR_TOL, wall_basis as plane_basis, triangulate, unit
 from lod2energy.energy.zones.shells import ZoneFace, ZoneShell
 
 #: Decimals of the vertex coordinates written to the IDF (m): 0.1 mm.

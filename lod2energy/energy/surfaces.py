@@ -15,7 +15,7 @@ from shapely.geometry import GeometryCollection, MultiPolygon, Polygon
 from lod2energy.energy.conform import clean_piece, conform, eplus_enclose, keep_corners
 from lod2energy.energy.pieces import Piece, _as_written, _face_frame, _outer_boundary, _pieces_from_points, _planar
 from lod2energy.energy.zones.shells import MIN_PIECE_AREA, WELD_TOL, ZoneFace, ZoneShell
-from lod2energy.exporters.polygons import plane_basis, polygon_area3d
+from lod2energy.geometry.polygons import wall_basis as plane_basis, polygon_area3d
 
 
 #: Party-wall / outdoor parts of a split face thinner than 2 x THIN (m) join the other part:

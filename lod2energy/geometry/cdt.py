@@ -12,6 +12,7 @@ from __future__ import annotations
 from typing import Sequence
 
 import numpy as np
+import shapely
 
 from lod2energy.geometry.vectors import cross2
 
@@ -20,7 +21,7 @@ try:  # mapbox_earcut is a declared dependency; keep import errors readable
 except ImportError:  # pragma: no cover
     _earcut = None
 
-# shapely and scipy are imported in the functions that use them: importing lod2energy stays cheap (issue 13)
+# scipy (0.4 s to import) is imported where Qhull is needed: most validations never need it
 __all__ = ["earcut_rings", "ear_triangles", "constrained_delaunay", "constrained_delaunay_many", "lawson_cdt"]
 
 
@@ -42,7 +43,8 @@ def earcut_rings(p2: np.ndarray, ring_ends: np.ndarray) -> np.ndarray:
 
 def _incircle_d(adx: float, ady: float, bdx: float, bdy: float, cdx: float, cdy: float) -> float:
     """The incircle determinant from the corners' offsets to ``pd`` (``a - d``, ``b - d``,
-    ``c - d``), 0 where its sign is rounding noise (see :func:`_incircle`)."""
+    ``c - d``): > 0 when ``d`` is inside the circle through the counter-clockwise triangle
+    ``a, b, c``; 0 where its sign is rounding noise."""
     ad = adx * adx + ady * ady
     bd = bdx * bdx + bdy * bdy
     cd = cdx * cdx + cdy * cdy
@@ -51,15 +53,6 @@ def _incircle_d(adx: float, ady: float, bdx: float, bdy: float, cdx: float, cdy:
     perm = ((abs(bdx * cdy) + abs(bdy * cdx)) * ad + (abs(cdx * ady) + abs(cdy * adx)) * bd
             + (abs(adx * bdy) + abs(ady * bdx)) * cd)
     return det if abs(det) > 1e-14 * perm else 0.0
-
-
-def _incircle(pa, pb, pc, pd) -> float:
-    """> 0 when ``pd`` is inside the circle through the CCW triangle ``pa, pb, pc``."""
-    return _incircle_d(pa[0] - pd[0], pa[1] - pd[1], pb[0] - pd[0], pb[1] - pd[1], pc[0] - pd[0], pc[1] - pd[1])
-
-
-def _orient(pa, pb, pc) -> float:
-    return (pb[0] - pa[0]) * (pc[1] - pa[1]) - (pb[1] - pa[1]) * (pc[0] - pa[0])
 
 
 def ear_triangles(points2d: np.ndarray, ring_ends: np.ndarray) -> np.ndarray:
@@ -130,7 +123,6 @@ def _delaunay_if_conforming(pts: np.ndarray, ring_ends) -> np.ndarray | None:
     n = len(pts)
     if len(set(map(tuple, pts.tolist()))) < n:
         return None  # a ring touching another at a vertex: leave it to the general path
-    import shapely
     from scipy.spatial import Delaunay
     try:
         tri = Delaunay(pts).simplices
@@ -190,8 +182,8 @@ _EDGE_TABLE_MAX = 2048
 def lawson_cdt(pts: np.ndarray, ring_ends, max_flips: int | None = None) -> np.ndarray:
     """CDT by ear clipping then constrained Lawson flips (general, slower path).
 
-    The flip test is :func:`_incircle_d` (the arithmetic of :func:`_incircle`) and
-    :func:`_orient` written out inline (same arithmetic, same order, so the same flips).
+    The flip test is :func:`_incircle_d` and the orientation of the new diagonal's triangles,
+    written out inline.
     """
     tri = ear_triangles(pts, ring_ends)
     n = len(pts)
@@ -297,7 +289,6 @@ def constrained_delaunay_many(polygons: Sequence[tuple[np.ndarray, np.ndarray]])
 
 def _geos_cdt(polygons: Sequence[tuple[np.ndarray, np.ndarray]], out: list) -> list[int]:
     """Fill ``out`` with GEOS's CDT where it applies; return the polygons left to do."""
-    import shapely
     P = len(polygons)
     if not hasattr(shapely, "constrained_delaunay_triangles"):
         return list(range(P))
@@ -358,7 +349,6 @@ def _geos_cdt(polygons: Sequence[tuple[np.ndarray, np.ndarray]], out: list) -> l
 
 
 def _geos_one(geom):
-    import shapely
     try:
         return shapely.constrained_delaunay_triangles(geom)
     except Exception:

@@ -10,7 +10,7 @@ import numpy as np
 from lod2energy.geometry.vectors import _cross, _unit, cross2 as _cross2, plane_bases
 
 __all__ = ["bbox_pairs", "segment_triangle_intersect", "triangle_pairs_intersect", "winding_number",
-           "points_in_solid"]
+           "closest_on_triangle"]
 
 
 def bbox_pairs(lo: np.ndarray, hi: np.ndarray, pad: float = 0.0,
@@ -309,22 +309,6 @@ def winding_number(points: np.ndarray, vertices: np.ndarray, tris: np.ndarray,
                + np.einsum("ptk,ptk->pt", b, c) * la + np.einsum("ptk,ptk->pt", c, a) * lb)
         out[s:s + step] = np.arctan2(det, den).sum(axis=1) / (2 * np.pi)
     return out
-
-
-def points_in_solid(points: np.ndarray, vertices: np.ndarray, tris: np.ndarray) -> np.ndarray:
-    """Whether points lie inside a closed triangle surface (either orientation).
-
-    Parameters
-    ----------
-    points : (P, 3) float
-    vertices : (n, 3) float
-    tris : (T, 3) int
-
-    Returns
-    -------
-    (P,) bool
-    """
-    return np.abs(winding_number(points, vertices, tris)) > 0.5
 
 
 def closest_on_triangle(p, a, b, c):

@@ -39,8 +39,8 @@ def triangle_areas(vertices: np.ndarray, tris: np.ndarray) -> np.ndarray:
     return 0.5 * np.linalg.norm(triangle_normals(vertices, tris, unit=False), axis=1)
 
 
-def signed_volume(vertices: np.ndarray, tris: np.ndarray, origin: str = "first") -> float:
-    """Signed volume enclosed by triangles (divergence theorem), m3.
+def signed_volume(vertices: np.ndarray, tris: np.ndarray, origin: str = "centroid") -> float:
+    """Signed volume enclosed by triangles (divergence theorem), m3: the one formula.
 
     Positive when a closed surface's normals point outwards. Computed about a point of the
     surface, so large real-world coordinates do not cost precision.
@@ -49,9 +49,10 @@ def signed_volume(vertices: np.ndarray, tris: np.ndarray, origin: str = "first")
     ----------
     vertices : (n, 3) float
     tris : (T, 3) int
-    origin : {"first", "centroid"}
-        The point the tetrahedra share: the first triangle's first corner, or the mean of
-        the vertices the triangles use (the repair ladder's choice).
+    origin : {"centroid", "first"}
+        The point the tetrahedra share: the mean of the vertices the triangles use (the repair
+        ladder's and the writers' choice), or the first triangle's first corner (the
+        validator's).
 
     Returns
     -------
@@ -60,6 +61,7 @@ def signed_volume(vertices: np.ndarray, tris: np.ndarray, origin: str = "first")
     tris = np.asarray(tris, dtype=np.intp)
     if len(tris) == 0:
         return 0.0
+    vertices = np.asarray(vertices, dtype=np.float64)
     if origin == "centroid":
         c = vertices[np.unique(tris)].mean(axis=0)
         a, b, d = vertices[tris[:, 0]] - c, vertices[tris[:, 1]] - c, vertices[tris[:, 2]] - c

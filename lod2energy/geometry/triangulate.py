@@ -14,7 +14,7 @@ import numpy as np
 from lod2energy.geometry.cdt import constrained_delaunay, constrained_delaunay_many, earcut_rings
 from lod2energy.geometry.vectors import _cross, cross2 as _cross2, newell_normal, project_2d
 
-__all__ = ["triangulate_surface", "triangulate_surfaces", "triangulate_flat", "triangulate_shell", "SLIVER_RATIO"]
+__all__ = ["triangulate_surface", "triangulate_surfaces", "triangulate_flat", "SLIVER_RATIO"]
 
 
 def _fix_orientation(tris: np.ndarray, p2: np.ndarray, local: np.ndarray) -> np.ndarray:
@@ -327,31 +327,3 @@ def triangulate_flat(vertices: np.ndarray, ids: np.ndarray, ring_len: np.ndarray
     fot = np.concatenate(out_f).astype(np.intp)
     order = np.argsort(fot, kind="stable")
     return tris[order], fot[order]
-
-
-def triangulate_shell(vertices: np.ndarray, shell, rings_map: np.ndarray | None = None
-                      ) -> tuple[np.ndarray, np.ndarray]:
-    """Triangulate every surface of a shell.
-
-    Parameters
-    ----------
-    vertices : (n, 3) float
-        The building's vertices, m.
-    shell : Shell or sequence of Surface
-    rings_map : (n,) int, optional
-        Index map applied to ring indices first (e.g. snapped representatives).
-
-    Returns
-    -------
-    tris : (T, 3) int
-        Indices into ``vertices``, each oriented like its surface's outer ring.
-    face_of_tri : (T,) int
-        Index of the surface (in ``shell.surfaces``) each triangle comes from.
-    """
-    surfaces = shell.surfaces if hasattr(shell, "surfaces") else shell
-    if rings_map is not None:
-        mp = np.asarray(rings_map)
-        ringsets = [[mp[r] for r in s.rings] for s in surfaces]
-    else:
-        ringsets = [s.rings for s in surfaces]
-    return triangulate_surfaces(vertices, ringsets)

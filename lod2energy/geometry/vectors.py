@@ -14,8 +14,10 @@ from typing import Sequence
 
 import numpy as np
 
-__all__ = ["roll_next", "cross_rows", "unit_rows", "newell_normal", "polygon_normal", "newell_normals",
-           "rings_normal", "plane_basis", "plane_bases", "project_2d", "cross2", "vector_length"]
+from lod2energy import cache
+
+__all__ = ["roll_next", "cross_rows", "unit_rows", "newell_normal", "newell_normals",
+           "rings_normal", "plane_basis", "plane_bases", "project_2d", "cross2", "vector_length", "unit"]
 
 
 def newell_normal(points: np.ndarray, centred: bool = True) -> np.ndarray:
@@ -44,19 +46,12 @@ def newell_normal(points: np.ndarray, centred: bool = True) -> np.ndarray:
         # the same ring is measured by several stages: remember its normal by its coordinates
         # (bytes and shape; strides and order change neither path's bits for k < 8)
         key = (centred, p.shape, p.tobytes())
-        hit = _NORMAL_CACHE.get(key)
-        if hit is None:
-            hit = _newell_small(p, centred)
-            if len(_NORMAL_CACHE) >= NORMAL_CACHE_SIZE:
-                _NORMAL_CACHE.clear()
-            _NORMAL_CACHE[key] = hit
-        return hit.copy()
+        return cache.remember("geometry.ring-normals", key, lambda: _newell_small(p, centred), KEPT_RINGS).copy()
     return _newell_numpy(p, centred)
 
 
-#: Most small rings :func:`newell_normal` remembers (the cache is emptied when it is full).
-NORMAL_CACHE_SIZE = 8192
-_NORMAL_CACHE: dict = {}
+#: Small rings whose normal :func:`newell_normal` keeps (:mod:`lod2energy.cache`).
+KEPT_RINGS = 8192
 
 
 #: Rings with fewer vertices than this go through :func:`_newell_small` (Python floats): below
@@ -122,23 +117,6 @@ def roll_next(a: np.ndarray) -> np.ndarray:
         A new array (``a`` is not modified).
     """
     return np.concatenate((a[1:], a[:1]))
-
-
-def polygon_normal(points: np.ndarray) -> np.ndarray:
-    """Unit normal of a ring (Newell), right-hand rule; zeros when degenerate.
-
-    Parameters
-    ----------
-    points : (k, 3) float
-        Ring vertices, m.
-
-    Returns
-    -------
-    (3,) float
-    """
-    n = newell_normal(points)
-    ln = np.linalg.norm(n)
-    return n / ln if ln > 0 else n
 
 
 def newell_normals(vertices: np.ndarray, rings: Sequence[np.ndarray]) -> np.ndarray:
@@ -222,6 +200,15 @@ def vector_length(v: np.ndarray) -> float:
     """Euclidean length of a 1-D float64 vector, computed as ``np.linalg.norm`` does it
     (``sqrt(v.dot(v))``, the same bits) without its argument handling."""
     return math.sqrt(float(v.dot(v)))
+
+
+def unit(v: np.ndarray) -> np.ndarray:
+    """``v`` (3,) scaled to length 1 (unchanged when it is zero)."""
+    if type(v) is np.ndarray and v.ndim == 1 and v.dtype == np.float64:
+        n = vector_length(v)
+    else:
+        n = float(np.linalg.norm(v))
+    return v / n if n > 0 else v
 
 
 def cross2(o, a, b):

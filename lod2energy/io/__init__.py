@@ -1,9 +1,17 @@
 """Readers and writers, chosen by file suffix (a small format registry, as meshio does)."""
 from __future__ import annotations
 
+import itertools
 import re
+from dataclasses import replace
 from typing import Callable, Iterator
 
+import numpy as np
+
+from lod2energy import crs as crs_
+from lod2energy.errors import InputError
+from lod2energy.geodesy import LocalFrame
+from lod2energy.io.shape import check_input_file
 from lod2energy.model import Building, CityModel, FeatureError
 
 Reader = Callable[..., "tuple[CityModel | None, Iterator[Building | FeatureError]]"]
@@ -17,11 +25,13 @@ def register_format(name: str, suffixes: tuple[str, ...], reader: Reader) -> Non
 
 
 def format_of(path: str) -> str | None:
+    """Name of the registered format of ``path`` (by its longest matching suffix), or None."""
+    return _lookup(path, (None, None))[0]
+
+
+def _lookup(path: str, default):
     p = path.lower()
-    for s in sorted(_READERS, key=len, reverse=True):
-        if p.endswith(s):
-            return _READERS[s][0]
-    return None
+    return next((_READERS[s] for s in sorted(_READERS, key=len, reverse=True) if p.endswith(s)), default)
 
 
 def read(path: str, **options) -> "tuple[CityModel | None, Iterator[Building | FeatureError]]":
@@ -32,19 +42,14 @@ def read(path: str, **options) -> "tuple[CityModel | None, Iterator[Building | F
     of first-level CityObject ids: only those features are given (the CityJSON readers pass
     over the others before building them; the others build and drop them).
     """
-    from lod2energy.errors import InputError
-    from lod2energy.io.shape import check_input_file
     try:  # the input-shape check starts here: a regular file of bounded size
         check_input_file(str(path))
     except InputError as e:
         return None, iter([FeatureError(None, e.code, str(e))])
     only = options.pop("only", None)
-    p = path.lower()
-    reader = next((_READERS[s][1] for s in sorted(_READERS, key=len, reverse=True) if p.endswith(s)),
-                  _READERS[".json"][1])  # unknown suffix: sniff JSON
+    reader = _lookup(path, _READERS[".json"])[1]  # unknown suffix: sniff JSON
     if only is None:
         return to_local_frame(*reader(path, **options))
-    from lod2energy import crs as crs_
     gate = _Only(only)
     model, feats = reader(path, only=gate, **options) if getattr(reader, "takes_only", False) else \
         reader(path, **options)
@@ -91,14 +96,6 @@ def to_local_frame(model: "CityModel | None", features: "Iterator[Building | Fea
     5 km away stands 0.045 degrees off it (its shape, areas and volume are exact). Files in
     a projected CRS pass through unchanged.
     """
-    import itertools
-    from dataclasses import replace
-
-    import numpy as np
-
-    from lod2energy import crs as crs_
-    from lod2energy.geodesy import LocalFrame
-
     if model is None or not crs_.is_geographic(model.crs):
         return model, features
     features = iter(features)
@@ -157,29 +154,22 @@ def _json_document_type(path: str, head: int = 65536) -> str | None:
     return None
 
 
-def _register_builtin() -> None:
-    from lod2energy.io import cityjson
-
-    def _cj(path, only=None, **_):
-        other = _json_document_type(path) if not cityjson.is_cityjsonseq(path) else None
-        if other == "tu3djson":  # ``only`` is applied after these by :func:`read`
-            from lod2energy.io import tu3djson
-            return tu3djson.read(path)
-        if other in ("Feature", "FeatureCollection"):
-            from lod2energy.io import jsonfg
-            return jsonfg.read(path)
-        return cityjson.read(path, only=only)
-    _cj.takes_only = True
-
-    register_format("CityJSON", (".json", ".city.json"), _cj)
-    register_format("CityJSONSeq", (".jsonl", ".city.jsonl", ".cjseq"), _cj)
-    from lod2energy.io import citygml
-    register_format("CityGML", (".gml", ".xml"), citygml.read)
-    try:  # mesh readers (POLY/OBJ/OFF) live in lod2energy.io.mesh
-        from lod2energy.io import mesh
-        mesh.register(register_format)
-    except ImportError:
-        pass
+# the readers register themselves in this module's registry: imported once it exists
+from lod2energy.io import citygml, cityjson, jsonfg, mesh, tu3djson  # noqa: E402
 
 
-_register_builtin()
+def _cityjson_family(path, only=None, **_):
+    """CityJSON / CityJSONSeq, or tu3djson / JSON-FG told by the document's ``"type"``."""
+    other = _json_document_type(path) if not cityjson.is_cityjsonseq(path) else None
+    if other == "tu3djson":  # ``only`` is applied after these by :func:`read`
+        return tu3djson.read(path)
+    if other in ("Feature", "FeatureCollection"):
+        return jsonfg.read(path)
+    return cityjson.read(path, only=only)
+
+
+_cityjson_family.takes_only = True
+register_format("CityJSON", (".json", ".city.json"), _cityjson_family)
+register_format("CityJSONSeq", (".jsonl", ".city.jsonl", ".cjseq"), _cityjson_family)
+register_format("CityGML", (".gml", ".xml"), citygml.read)
+mesh.register(register_format)

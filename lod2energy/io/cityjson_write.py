@@ -16,6 +16,7 @@ from typing import Any, Callable, Iterable, Mapping, Sequence
 
 import numpy as np
 
+from lod2energy import safe_write
 from lod2energy.crs import cityjson_reference_system
 from lod2energy.io.cityjson_grid import GEOGRAPHIC_SCALE, default_transform, file_coordinates
 from lod2energy.io.cityjson_grid import quantise as _quantise
@@ -234,7 +235,6 @@ def write(path: str, model: CityModel, buildings: Iterable[Building], version: s
     the target's folder), never over one of ``inputs`` (default: the model's source file)
     or a link, and atomically (a full disk leaves no half file under ``path``).
     """
-    from lod2energy import safe_write
 
     version = version or model.version
     root = os.path.dirname(os.path.abspath(path)) if root is None else root

@@ -19,6 +19,8 @@ from __future__ import annotations
 import xml.etree.ElementTree as ET
 from typing import Any
 
+import numpy as np
+
 from lod2energy.errors import InputError
 
 XLINK_HREF = "{http://www.w3.org/1999/xlink}href"
@@ -135,7 +137,6 @@ class GmlGeometry:
         pts = list(dict.fromkeys(pts))
         if len(pts) < 3:
             raise InputError(f"{where}: gml:Tin without triangle patches and fewer than 3 control points")
-        import numpy as np
         from scipy.spatial import Delaunay, QhullError
         p = np.asarray(pts, dtype=np.float64)
         try:

@@ -20,6 +20,7 @@ from typing import Iterator
 import numpy as np
 
 from lod2energy.errors import EmptyPrimitiveError, InputError, ParameterError
+from lod2energy.io.shape import read_bounded
 from lod2energy.model import Building, CityModel, CityObject, FeatureError, Geometry, Shell, Solid, Surface
 
 PRIMITIVES = ("Solid", "CompositeSurface", "MultiSurface")
@@ -36,7 +37,6 @@ def _stem(path: str) -> str:
 
 
 def _read_text(path: str) -> str:
-    from lod2energy.io.shape import read_bounded
     data = read_bounded(path)
     try:
         return data.decode("utf-8-sig")

@@ -20,10 +20,11 @@ left as it is. What was cut is counted in ``provenance["openings_cut"]``.
 """
 from __future__ import annotations
 
-from dataclasses import replace
 from collections.abc import Mapping
+from dataclasses import replace
 
 import numpy as np
+from shapely.geometry import Polygon
 
 from lod2energy.geometry import newell_normal, plane_basis, split_at_points
 from lod2energy.model import BUILDING_TYPES, Building, Geometry, Shell, Solid, Surface, frozen_mapping
@@ -117,7 +118,6 @@ def _cut_shell(v: np.ndarray, g: Geometry, faces: list[Surface], kinds: Mapping[
 
 def _cut(v: np.ndarray, wall: Surface, op: Surface, n_o: np.ndarray, plane_tol: float) -> Surface | None:
     """``wall`` minus ``op`` when ``op`` lies in it (same plane, inside), else None."""
-    from shapely.geometry import Polygon
 
     outer = v[wall.outer]
     n = newell_normal(outer)

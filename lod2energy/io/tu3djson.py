@@ -6,14 +6,14 @@ A tu3djson document is ``{"type": "tu3djson", "features": [{"geometry": {"type",
 """
 from __future__ import annotations
 
-from dataclasses import replace
 from collections.abc import Mapping
+from dataclasses import replace
 from typing import Any, Iterator
 
 import numpy as np
 
 from lod2energy.errors import InputError
-from lod2energy.io.cityjson import read_json
+from lod2energy.io.cityjson import _Collector, _parse_geometry, read_json
 from lod2energy.model import Building, CityModel, CityObject, FeatureError
 
 
@@ -35,7 +35,6 @@ def read_document(doc: Mapping[str, Any], path: str) -> "tuple[CityModel | None,
 
 
 def _feature(fid: str, f: Any) -> Building:
-    from lod2energy.io.cityjson import _Collector, _parse_geometry
 
     if not isinstance(f, Mapping) or not isinstance(f.get("geometry"), Mapping):
         raise InputError(f"feature {fid}: no 'geometry' object")

@@ -2,7 +2,7 @@
 
 - :func:`is_repaired`, the ladder's test: a result is kept when it is a closed, outward
   2-manifold without degenerate, sliver or crossing faces
-  (:func:`lod2energy.repair.validity.shell_defects`) and the project's val3dity-grade
+  (:func:`lod2energy.validate.closed.shell_defects`) and the project's val3dity-grade
   validator finds no error on it as a Solid, both as computed and, inside
   :func:`output_grid`, once its vertices are rounded to the grid the building will be written
   on (the final check's judgement, :func:`export_problem`): a result the grid spoils goes
@@ -23,7 +23,7 @@ import numpy as np
 
 from lod2energy.model import Building, Geometry, Shell, Solid, Surface
 from lod2energy.polymesh import PolyMesh
-from lod2energy.repair.validity import shell_defects
+from lod2energy.validate.closed import shell_defects
 from lod2energy.semantics import ENVELOPE_TYPES, envelope_objects, face_metrics
 from lod2energy.io.cityjson_grid import building_grid, file_coordinates, on_grid
 from lod2energy.validate.checks import validate_building, validate_geometry
@@ -86,7 +86,7 @@ def repair_verdict(m: PolyMesh | None, lod, tol: Tolerances) -> str | None:
     if m is None or not m.faces:
         return "no result"
     # crossings are the project validator's call (val3dity semantics: touching counts)
-    if shell_defects(m, tol, first_only=True, self_intersection=False):
+    if shell_defects([m], tol, first_only=True, self_intersection=False)[0]:
         return "failed"
     if val3dity_codes(m, lod, tol):
         return "failed"

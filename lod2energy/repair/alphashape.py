@@ -9,16 +9,21 @@ convex hull's) the one closest to the input (two-way mean vertex-to-surface dist
 """
 from __future__ import annotations
 
+import multiprocessing as mp
 import os
+import resource
+import signal
 import threading
 import time
+from multiprocessing.connection import Connection
 
 import numpy as np
 
 from lod2energy.config import DEFAULT, Tolerances
-from lod2energy.polymesh import PolyMesh, merge_coplanar, triangles_to_mesh, triangulate_mesh
+from lod2energy.polymesh import PolyMesh, face_area, merge_coplanar, signed_volume, triangles_to_mesh, triangulate_mesh
+from lod2energy.repair.cleanup import fix_nonplanar
 from lod2energy.repair.metrics import point_triangle_distance
-from lod2energy.repair.validity import shell_defects
+from lod2energy.validate.closed import shell_defects
 
 ALPHAS = (8.0, 4.0, 2.0)  # m: 8 and 4 bridge missing party walls; 2 follows closed but tangled shells closer (hollow skins are rejected below)
 OFFSET = DEFAULT.wrap_offset  # m, default of Tolerances.wrap_offset
@@ -66,7 +71,6 @@ def _wrap_arrays(P: np.ndarray, F: np.ndarray, alpha_pct: float, offset_pct: flo
 
 def _wrap_child(conn, args) -> None:  # pragma: no cover - runs in the forked child
     try:
-        import resource
         with open("/proc/self/statm") as f:
             vm = int(f.read().split()[0]) * resource.getpagesize()
         resource.setrlimit(resource.RLIMIT_AS, (vm + WRAP_MEMORY, vm + WRAP_MEMORY))
@@ -94,7 +98,6 @@ def _wrap_until(args, deadline: float | None):
     worker, where fork is unsafe) wraps in-process. Without a deadline, or where fork is
     unavailable, the wrap runs in this process.
     """
-    import multiprocessing as mp
     if deadline is None or not hasattr(os, "fork"):
         return _wrap_arrays(*args)
     if mp.current_process().daemon and threading.active_count() > 1:
@@ -108,8 +111,6 @@ def _wrap_until(args, deadline: float | None):
 def _wrap_forked(args, left: float):
     """:func:`_wrap_arrays` in a child of :func:`os.fork`, killed after ``left`` seconds; None
     when it fails or overruns."""
-    import signal
-    from multiprocessing.connection import Connection
     r, w = os.pipe()
     try:
         pid = os.fork()
@@ -174,7 +175,6 @@ def alpha_wrap(m: PolyMesh, alpha: float, offset: float = OFFSET, target_faces: 
     V = V + origin
     if len(T) < 4:
         return None
-    from lod2energy.repair.cleanup import fix_nonplanar
     return fix_nonplanar(merge_coplanar(triangles_to_mesh(V, T), angle_tol=1e-5, dist_tol=1e-3), DEFAULT)
 
 
@@ -238,12 +238,10 @@ SKIN_DEPTH = DEFAULT.skin_depth
 
 
 def _area(m: PolyMesh) -> float:
-    from lod2energy.polymesh import face_area
     return float(sum(face_area(m.vertices, f) for f in m.faces))
 
 
 def _volume(m: PolyMesh) -> float:
-    from lod2energy.polymesh import signed_volume
     return signed_volume(m)
 
 
@@ -272,7 +270,7 @@ def alpha_repair(m: PolyMesh, tol: Tolerances = DEFAULT, deadline: float | None 
             continue  # a coarser valid wrap is already in hand
         r = alpha_complex(m, a) if kind == "complex" else alpha_wrap(m, a, tol.wrap_offset, target_faces=target[0],
                                                                             deadline=deadline)
-        if r is None or shell_defects(r, tol, first_only=True):
+        if r is None or shell_defects([r], tol, first_only=True)[0]:
             continue
         if accept is not None and not accept(r):
             continue

@@ -13,14 +13,13 @@ import numpy as np
 
 from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.geometry import plane_basis, snap_map
-from lod2energy.model import Shell, Surface
 from lod2energy.polymesh import (
     Face, PolyMesh, edge_faces, face_area, face_normal, planarity, ring_is_simple_2d, split_loop, triangulate_face,
 )
 from lod2energy.repair.holefill import triangulate_loop
-from lod2energy.validate.polygon import check_polygons
+from lod2energy.validate.closed import invalid_polygons
 
-# scipy is imported in the functions that use it: importing lod2energy stays cheap (issue 13)
+# scipy (0.4 s to import) is imported where it is used: validation never needs it
 
 
 def snap_vertices(m: PolyMesh, snap_tol: float) -> PolyMesh:
@@ -175,22 +174,6 @@ def drop_degenerate(m: PolyMesh, area_eps: float = 1e-10) -> PolyMesh:
     """Drop faces of (near) zero area."""
     faces = [f for f in m.faces if face_area(m.vertices, f) > area_eps]
     return m.with_faces(faces) if len(faces) != len(m.faces) else m
-
-
-def invalid_polygons(m: PolyMesh, tol: Tolerances) -> dict[int, set[int]]:
-    """Faces the project's polygon validator rejects: ``{face_index: {codes}}``."""
-    shell = Shell(tuple(Surface.from_lists([list(r) for r in f.rings]) for f in m.faces))
-    return invalid_surfaces(m.vertices, shell, tol)
-
-
-def invalid_surfaces(vertices: np.ndarray, shell: Shell, tol: Tolerances) -> dict[int, set[int]]:
-    """:func:`invalid_polygons` of a shell of a building (``vertices`` (n, 3), m): the
-    validator's answer is kept per shell, so a shell it checked is not checked again."""
-    out: dict[int, set[int]] = defaultdict(set)
-    for fi, code, _ in check_polygons(vertices, shell, tol):
-        if fi is not None:
-            out[int(fi)].add(int(code))
-    return out
 
 
 def fix_nonplanar(m: PolyMesh, tol: Tolerances, rounds: int = 3) -> PolyMesh:

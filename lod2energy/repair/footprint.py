@@ -1,22 +1,26 @@
-"""Stage 5 of the repair ladder: extrude the building's 2D footprint to its heights.
+"""Stages 5 and 6 of the repair ladder: the building's 2D footprint extruded to its heights, its convex hull.
 
 The 2.5D model with every roof plane kept is the earlier ``roofs`` stage
 (:mod:`lod2energy.repair.roofs`). Here (:func:`extrude_footprint`): the footprint is the union of the faces' XY projections
 (walls vanish); when that is not one polygon, the 2D alpha shape (``shapely.concave_hull``) of
 all the points is used instead. The prism goes from the lowest point to the area-weighted
 mean height of the upward-facing faces (the roof), so that its volume approximates the input's.
+:func:`convex_hull` is the last resort; its coplanar triangles are merged back into convex
+polygons so the face count stays low.
 """
 from __future__ import annotations
 
 import numpy as np
+import shapely
+from shapely.geometry import MultiPoint, Polygon
 
-from lod2energy.polymesh import Face, PolyMesh, face_area, face_normal
+from lod2energy.polymesh import Face, PolyMesh, face_area, face_normal, merge_coplanar, triangles_to_mesh
+
+# scipy (0.4 s to import) is imported where it is used: validation never needs it
 
 
 def footprint_polygon(m: PolyMesh, simplify: float = 0.01):
     """The shapely Polygon of the footprint, or None."""
-    import shapely
-    from shapely.geometry import MultiPoint, Polygon
     V = m.vertices
     polys = []
     for f in m.faces:
@@ -90,3 +94,28 @@ def extrude_footprint(m: PolyMesh) -> PolyMesh | None:
             walls.append(Face(((b[i], b[j], t[j], t[i]),)))
     faces = [Face(tuple(bottom)), Face(tuple(top))] + walls
     return PolyMesh(np.asarray(verts, dtype=np.float64), tuple(faces))
+
+
+def convex_hull(m: PolyMesh) -> PolyMesh | None:
+    """Outward convex hull of the vertices used by ``m`` (None if they span no volume)."""
+    used = np.unique([i for f in m.faces for r in f.rings for i in r])
+    if len(used) < 4:
+        return None
+    from scipy.spatial import ConvexHull, QhullError
+    P = m.vertices[used]
+    try:
+        h = ConvexHull(P)
+    except (QhullError, ValueError):
+        return None
+    tris = h.simplices.copy()
+    # Qhull does not orient simplices: make each one face away from the centroid
+    c = P[h.vertices].mean(axis=0)
+    T = P[tris]
+    n = np.cross(T[:, 1] - T[:, 0], T[:, 2] - T[:, 0])
+    flip = np.einsum("ij,ij->i", n, T[:, 0] - c) < 0
+    tris[flip] = tris[flip][:, ::-1]
+    keep = np.unique(tris)
+    lut = np.full(len(P), -1)
+    lut[keep] = np.arange(len(keep))
+    hm = triangles_to_mesh(P[keep], lut[tris])
+    return merge_coplanar(hm, angle_tol=1e-9, dist_tol=1e-6)

@@ -8,13 +8,13 @@ union of both bounding boxes (``closure = "winding-number"``).
 """
 from __future__ import annotations
 
+import manifold3d as m3d
 import numpy as np
 
 from lod2energy.polymesh import PolyMesh, triangulate_mesh
 
 
 def _manifold(V: np.ndarray, tris: np.ndarray):
-    import manifold3d as m3d
     mesh = m3d.Mesh(vert_properties=np.ascontiguousarray(V, dtype=np.float32),
                     tri_verts=np.ascontiguousarray(tris, dtype=np.uint32))
     man = m3d.Manifold(mesh)

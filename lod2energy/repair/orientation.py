@@ -56,11 +56,3 @@ def orient(m: PolyMesh) -> PolyMesh:
     if all(a is b for a, b in zip(out, faces)):
         return m
     return m.with_faces(out)
-
-
-def flip_all(m: PolyMesh) -> PolyMesh:
-    """Every face reversed."""
-    return m.with_faces([f.flipped() for f in m.faces])
-
-
-__all__ = ["orient", "flip_all", "np"]

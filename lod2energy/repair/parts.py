@@ -10,14 +10,18 @@ from __future__ import annotations
 from dataclasses import replace
 from typing import Sequence
 
+import manifold3d as m3d
 import numpy as np
 
 from lod2energy.config import DEFAULT, Tolerances
+from lod2energy.geometry import closest_on_triangle, collapse_short_edges
+from lod2energy.io.cityjson_grid import building_grid, on_grid
 from lod2energy.model import Building, Geometry, Shell, Solid, Surface
-from lod2energy.polymesh import Face, PolyMesh, compact, merge_coplanar, signed_volume, triangulate_mesh
+from lod2energy.polymesh import Face, PolyMesh, compact, face_area, merge_coplanar, signed_volume, triangulate_mesh
 from lod2energy.repair.accept import is_repaired
 from lod2energy.repair.convert import geometry_of_mesh, mesh_of_geometry
-from lod2energy.repair.contact import onto_surface as _onto_surface
+from lod2energy.repair.metrics import _sqdist, winding_number
+from lod2energy.validate.solid import check_parts_overlap
 
 
 def _part_meshes(b: Building, lod):
@@ -40,7 +44,6 @@ def without_geometry(b: Building, ids, lod) -> Building:
 
 
 def _manifold(m: PolyMesh, origin):
-    import manifold3d as m3d
     tris, _ = triangulate_mesh(m)
     man = m3d.Manifold(m3d.Mesh(vert_properties=np.ascontiguousarray(m.vertices - origin, dtype=np.float32),
                                 tri_verts=np.ascontiguousarray(tris, dtype=np.uint32)))
@@ -136,7 +139,6 @@ def merge_parts(b: Building, ids, tol: Tolerances = DEFAULT, lod=None, into: str
     T = np.asarray(mesh.tri_verts, dtype=np.int64)
     # where parts meet, the union leaves sub-millimetre edges (a vertex of one part a hair off
     # a face of the other): collapsed one at a time, keeping the surface 2-manifold
-    from lod2energy.geometry import collapse_short_edges
     V, T, _ = collapse_short_edges(V, T, np.zeros(len(T), dtype=np.intp), tol.snap_tol)
     # semantics: the part face each union triangle lies on
     sems, offs = [], []
@@ -148,7 +150,6 @@ def merge_parts(b: Building, ids, tol: Tolerances = DEFAULT, lod=None, into: str
     for k, (o, gi, g, m) in enumerate(parts):
         tris, owner = triangulate_mesh(m)
         cands.append((k, m, tris, owner))
-    from lod2energy.repair.metrics import _sqdist
     for t in T:
         c = V[t].mean(axis=0)
         n = np.cross(V[t[1]] - V[t[0]], V[t[2]] - V[t[0]])
@@ -195,8 +196,7 @@ def overlap_pairs(b: Building, tol: Tolerances = DEFAULT, overlaps: Sequence[str
     already found them (:func:`lod2energy.validate.solid.check_parts_overlap` otherwise).
     """
     if overlaps is None:
-        from lod2energy.validate.solid import check_parts_overlap
-        overlaps = [loc for loc, _code, _info in check_parts_overlap(b, tol)]
+        overlaps = [loc for loc, _code, _info in check_parts_overlap([b], tol)[0]]
     out: dict[tuple[str, str], float | None] = {}
     for loc in overlaps:
         a, c = (s.split("|", 1)[0].removeprefix("coid=") for s in loc.split("&&", 1))
@@ -224,11 +224,36 @@ def _part_meshes_all(b: Building, lod):
     return out
 
 
+def _onto_surface(m: PolyMesh, other: PolyMesh, tol: float) -> PolyMesh | None:
+    """``m`` with each vertex within ``tol`` (m) of ``other``'s surface (but not on it) put
+    onto its nearest point there; None when no vertex moves.
+
+    Where a part's corner stands a fraction of a millimetre off its neighbour's wall, the
+    difference of the two (:func:`lod2energy.repair.parts.clip_overlapping_parts`) keeps a
+    hairline strip along the part's edge, which folds into a line once written on a
+    millimetre grid (a self-intersecting ring); with the corner on the wall the difference
+    leaves no strip.
+    """
+    tris, _ = triangulate_mesh(other)
+    if not len(tris):
+        return None
+    A, B, C = (other.vertices[tris[:, k]] for k in range(3))
+    V = np.array(m.vertices, dtype=np.float64)
+    moved = False
+    for i in range(len(V)):
+        d = _sqdist(V[i][None, :], A, B, C)
+        k = int(np.argmin(d))
+        if not 1e-16 < d[k] <= tol * tol:
+            continue
+        V[i] = closest_on_triangle(V[i], A[k], B[k], C[k])
+        moved = True
+    return m.with_faces(m.faces, V) if moved else None
+
+
 def _snap_back(m: PolyMesh, other: PolyMesh, max_move: float = SNAP_BACK) -> PolyMesh | None:
     """``m`` with its vertices inside (or on) ``other`` projected onto the nearest face plane of
     ``other`` that faces a face of ``m`` (antiparallel normals within 10 degrees: the wall they
     share); None when no vertex is inside or one would move farther than ``max_move``."""
-    from lod2energy.repair.metrics import _sqdist, winding_number
     tris, _ = triangulate_mesh(other)
     mt, _ = triangulate_mesh(m)
     if not len(tris) or not len(mt):
@@ -270,7 +295,6 @@ def _clip_by(m: PolyMesh, other: PolyMesh, min_edge: float = 0.0, snap_to: np.nd
     hair apart, the difference keeps sub-millimetre edges that a writer's grid would fold), after
     its vertices within ``min_edge`` of a corner of ``other`` (or of ``snap_to``, (n, 3) m: the
     corners of the building's other parts) are put onto that corner."""
-    from lod2energy.repair.metrics import _sqdist
     origin = np.vstack([m.vertices, other.vertices]).mean(axis=0)
     a, b = _manifold(m, origin), _manifold(other, origin)
     if a is None or b is None:
@@ -309,7 +333,6 @@ def _clip_by(m: PolyMesh, other: PolyMesh, min_edge: float = 0.0, snap_to: np.nd
         if len(hit):
             own[k] = int(owner[hit[0]])
     if min_edge > 0:
-        from lod2energy.geometry import collapse_short_edges
         V, T, own = collapse_short_edges(V, T, own, min_edge)
         if not len(T):
             return None
@@ -423,7 +446,6 @@ CLIP_MIN_AREA = 1e-3
 
 def _writable(m: PolyMesh) -> bool:
     """No hairline edge or sliver face in ``m`` (see :data:`CLIP_MIN_EDGE`)."""
-    from lod2energy.polymesh import face_area
     V = m.vertices
     for f in m.faces:
         if face_area(V, f) < CLIP_MIN_AREA:
@@ -439,7 +461,6 @@ def _valid_on_grid(b: Building, part_id: str, lod, tol: Tolerances) -> bool:
     """The solid of ``part_id`` in ``b`` is still a valid, writable solid once its vertices are
     rounded to the grid ``b`` will be written on (the writers' final check,
     :func:`lod2energy.repair.accept.export_problem`, judges it there)."""
-    from lod2energy.io.cityjson_grid import building_grid, on_grid
     snapped = on_grid(b, *building_grid(b))
     mine = [m for o, _gi, _g, m in _part_meshes_all(snapped, lod) if o.id == part_id]
     return bool(mine) and is_repaired(mine[0], lod, tol) and _writable(mine[0])

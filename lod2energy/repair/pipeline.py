@@ -31,12 +31,11 @@ from lod2energy.polymesh import PolyMesh, compact, face_area, topology
 from lod2energy.repair.accept import grid_rounding, is_repaired, output_grid, repair_verdict, val3dity_codes
 from lod2energy.repair.alphashape import alpha_repair
 from lod2energy.repair.cleanup import (
-    clean_rings, cleanup, desliver, drop_degenerate, invalid_surfaces, merge_slivers, snap_vertices,
+    clean_rings, cleanup, desliver, drop_degenerate, merge_slivers, snap_vertices,
 )
 from lod2energy.repair.convert import geometry_of_mesh, mesh_of_geometry
-from lod2energy.repair.footprint import extrude_footprint
+from lod2energy.repair.footprint import convex_hull, extrude_footprint
 from lod2energy.repair.holefill import fill_holes
-from lod2energy.repair.hull import convex_hull
 from lod2energy.repair.metrics import fidelity
 from lod2energy.repair.orientation import orient
 from lod2energy.repair.parts import keep_parts_apart, merge_overlapping_parts, overlapping_parts
@@ -44,7 +43,7 @@ from lod2energy.repair.plausible import closed_volume, implausible, not_hollow
 from lod2energy.repair.refill import close, refill
 from lod2energy.repair.roofs import ROOF_MODEL_MAX_DISPLACEMENT, roof_model
 from lod2energy.repair.unpinch import unpinch
-from lod2energy.repair.validity import energy_codes, shell_defects, shell_defects_many
+from lod2energy.validate.closed import energy_codes, invalid_surfaces, shell_defects
 from lod2energy.validate.checks import validate_building, validate_geometry
 
 STAGES = ("valid", "cleanup", "orientation", "holefill", "refill", "roofs", "alphashape", "footprint",
@@ -78,7 +77,8 @@ def _input_defects(V: np.ndarray, items, tol: Tolerances) -> list[list[int]]:
             invalid = invalid_surfaces(V, g.solids[0].shells[0], tol)
         shells.append((s, invalid))
     out = []
-    for (g, _, _, m), c, (s, _), sd in zip(items, codes, shells, shell_defects_many(shells, tol)):
+    found = shell_defects([s for s, _ in shells], tol, invalid=[inv for _, inv in shells])
+    for (g, _, _, m), c, (s, _), sd in zip(items, codes, shells, found):
         if g.is_volumetric:
             c |= {x if x < 1000 else 1003 for _, x, _ in sd}
         else:
@@ -119,7 +119,7 @@ def ladder(m: PolyMesh, lod, tol: Tolerances, deadline: float) -> tuple[str, Pol
     if ok("orientation", m1):
         return "orientation", m1, log
     m2 = close(m1, tol)
-    if not topology(m2).boundary and shell_defects(m2, tol, first_only=True):
+    if not topology(m2).boundary and shell_defects([m2], tol, first_only=True)[0]:
         # filled faces may leave new slivers or T-junctions: one more clean-up round
         m2b = close(cleanup(m2, tol), tol)
         if ok("holefill", m2b):

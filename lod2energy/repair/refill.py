@@ -17,7 +17,7 @@ from lod2energy.polymesh import PolyMesh, face_area, topology, triangulate_mesh
 from lod2energy.repair.cleanup import drop_degenerate, fix_nonplanar, merge_slivers
 from lod2energy.repair.holefill import fill_holes
 from lod2energy.repair.orientation import orient
-from lod2energy.repair.validity import self_intersections, shell_defects
+from lod2energy.validate.closed import self_intersections, shell_defects
 
 
 def corrupted_faces(m: PolyMesh) -> set[int]:
@@ -32,7 +32,7 @@ def corrupted_faces(m: PolyMesh) -> set[int]:
             if any(v in nmv for r in f.rings for v in r):
                 bad.add(fi)
     tris, owner = triangulate_mesh(m)
-    for i, j in self_intersections(m.vertices, tris, owner):
+    for i, j in self_intersections([(m.vertices, tris, owner)])[0]:
         bad.add(int(owner[i]))
         bad.add(int(owner[j]))
     return bad
@@ -96,7 +96,7 @@ def refill(m: PolyMesh, tol: Tolerances = DEFAULT, rings=(0, 1, 2), accept=None)
     """
     if accept is None:
         def accept(r):
-            return not shell_defects(r, tol, first_only=True)
+            return not shell_defects([r], tol, first_only=True)[0]
     bad = corrupted_faces(m)
     best = None
     for k in rings:

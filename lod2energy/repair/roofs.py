@@ -14,11 +14,16 @@ close to it.
 """
 from __future__ import annotations
 
+import manifold3d as m3
+import mapbox_earcut as earcut
 import numpy as np
+import shapely
+from shapely.geometry import Polygon
+from shapely.geometry.polygon import orient as orient2d
 
 from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.geometry import collapse_short_edges, snap_map
-from lod2energy.polymesh import PolyMesh, face_area, face_normal, triangulate_mesh
+from lod2energy.polymesh import PolyMesh, face_area, face_normal, merge_coplanar, triangles_to_mesh, triangulate_mesh
 from lod2energy.repair.accept import is_repaired
 from lod2energy.repair.cleanup import cleanup, desliver
 from lod2energy.repair.metrics import point_triangle_distance
@@ -70,7 +75,6 @@ def _prism(P2: np.ndarray, holes: list[np.ndarray], z0: float, plane: tuple[np.n
     -------
     vertices (n, 3), triangles (t, 3), or None when the plane is not above ``z0``
     """
-    import mapbox_earcut as earcut
 
     p0, n = plane
     rings = [P2] + holes
@@ -117,8 +121,6 @@ def _roof_faces(m: PolyMesh, L: np.ndarray) -> list[tuple[object, np.ndarray, np
 
     ``L`` (n, 3) are the mesh's vertices in local coordinates (m).
     """
-    from shapely.geometry import Polygon
-    from shapely.geometry.polygon import orient as orient2d
 
     out = []
     for f in m.faces:
@@ -162,9 +164,6 @@ def roof_partition(polys: list, snap: float = ROOF_SNAP) -> list[tuple[object, l
     list of (shapely Polygon, list of int)
         Cells (counter-clockwise exteriors) and the indices into ``polys`` of the faces over them.
     """
-    import shapely
-    from shapely.geometry import Polygon
-    from shapely.geometry.polygon import orient as orient2d
 
     rings = [[np.asarray(p.exterior.coords)[:-1]] + [np.asarray(r.coords)[:-1] for r in p.interiors]
              for p in polys]
@@ -221,7 +220,6 @@ def roof_partition(polys: list, snap: float = ROOF_SNAP) -> list[tuple[object, l
 
 
 def _manifold(pr):
-    import manifold3d as m3
     mf = m3.Manifold(m3.Mesh64(vert_properties=np.ascontiguousarray(pr[0], dtype=np.float64),
                                tri_verts=np.ascontiguousarray(pr[1], dtype=np.uint64)))
     return mf if mf.status() == m3.Error.NoError and not mf.is_empty() else None
@@ -234,7 +232,6 @@ def _prism_manifolds(p, z0: float, plane: tuple[np.ndarray, np.ndarray], split: 
     touching the outline). With ``split``, such a polygon is cut into its triangles and one
     prism stands on each (they share their edges exactly, so their union is the prism).
     """
-    import mapbox_earcut as earcut
 
     ext = np.asarray(p.exterior.coords)[:-1]
     holes = [np.asarray(r.coords)[:-1] for r in p.interiors]
@@ -352,9 +349,7 @@ def extrude_roofs(m: PolyMesh, snap: float = 0.0) -> PolyMesh | None:
         Polygons (coplanar triangles of the union merged), or None when there is no roof or
         the union fails.
     """
-    import manifold3d as m3
 
-    from lod2energy.polymesh import merge_coplanar, triangles_to_mesh
 
     V = m.vertices
     used = sorted({i for f in m.faces for r in f.rings for i in r})

@@ -27,6 +27,7 @@ from typing import Any
 
 import numpy as np
 
+from lod2energy.geometry import newell_normal
 from lod2energy.model import Building
 
 STOREY_KEYS = ("storeysAboveGround", "b3_bouwlagen", "bouwlagen", "building:levels", "storeys",
@@ -150,7 +151,6 @@ def roof_levels(b: Building, lod: str | None = None) -> RoofLevels | None:
     Faces without a semantic label count as roof when they face up (n_z > 0.1) and are not the
     lowest horizontal face.
     """
-    from lod2energy.geometry import newell_normal
 
     ground_z, all_z, roofs = [], [], []
     for kind, p in _surfaces(b, lod):

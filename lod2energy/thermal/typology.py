@@ -27,6 +27,7 @@ from typing import Any, Mapping
 
 import numpy as np
 
+from lod2energy.crs import epsg_codes
 from lod2energy.model import Building
 
 YEAR_KEYS = ("yearOfConstruction", "oorspronkelijkbouwjaar", "b3_bouwjaar", "bouwjaar",
@@ -64,7 +65,6 @@ _ADV_CRS = re.compile(r"urn:adv:crs:", re.IGNORECASE)
 def country_from_crs(crs: Any) -> str | None:
     """ISO country code guessed from the EPSG codes of a CRS name (:func:`lod2energy.crs.epsg_codes`),
     or from an AdV CRS name (Germany); None when unknown."""
-    from lod2energy.crs import epsg_codes
 
     for code in reversed(epsg_codes(crs)):
         if str(code) in _CRS_COUNTRY:

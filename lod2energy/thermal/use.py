@@ -28,12 +28,12 @@ conditions (see ``data/SOURCES.md``).
 from __future__ import annotations
 
 import csv
-import functools
 import re
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Mapping
 
+from lod2energy import cache
 from lod2energy.config import USE_TYPES
 from lod2energy.errors import ParameterError
 from lod2energy.model import Building
@@ -203,8 +203,12 @@ _FLOATS = ("people_per_m2", "activity_w_per_person", "sensible_fraction", "light
            "infiltration_ach", "ventilation_m3h_per_m2")
 
 
-@functools.lru_cache(maxsize=None)
 def _table() -> dict[str, UseConditions]:
+    """The shipped use conditions by use, read once per process."""
+    return cache.remember("thermal.use-conditions", None, _read_table, 1)
+
+
+def _read_table() -> dict[str, UseConditions]:
     sched: dict[str, dict[str, tuple[float, ...]]] = {}
     with open(DATA / "use_schedules.csv", newline="", encoding="utf-8") as f:
         for r in csv.DictReader(f):

@@ -35,19 +35,21 @@ import csv
 import io
 import math
 from dataclasses import dataclass, field, replace
-from functools import lru_cache
 from importlib import resources
 from pathlib import Path
 from typing import Mapping
 
 import numpy as np
 
+from lod2energy import cache
 from lod2energy.errors import ParameterError
 from lod2energy.model import Building, frozen_mapping
-from lod2energy.semantics import (CLOSURE, GROUND, OUTER_CEILING, OUTER_FLOOR, ROOF, WALL,
-                                  envelope_objects, face_table)
-from lod2energy.thermal.typology import Typology, classify
-from lod2energy.validate.defect import Defect
+from lod2energy.semantics import (
+    CLOSURE, GROUND, OUTER_CEILING, OUTER_FLOOR, ROOF, WALL, envelope_objects, face_metrics, face_table,
+)
+from lod2energy.thermal.typology import Typology, classify, country_from_crs
+from lod2energy.thermal.use import building_use
+from lod2energy.validate.codes import Defect
 
 ELEMENTS = ("roof", "wall", "ground", "window")
 RELATED_TYPE = {"terraced": "single-family", "single-family": "terraced",
@@ -177,21 +179,21 @@ def parse_table(text: str, where: str) -> list[URow]:
     return rows
 
 
-@lru_cache(maxsize=None)
-def builtin_rows() -> tuple[URow, ...]:
-    """The shipped tables (``lod2energy/thermal/data``)."""
+def _shipped(*names: str) -> tuple[URow, ...]:
+    """The rows of shipped tables (``lod2energy/thermal/data``), read once per process."""
     d = resources.files("lod2energy.thermal") / "data"
-    rows: list[URow] = []
-    for name in ("tabula_de.csv", "u_values.csv"):
-        rows += parse_table(d.joinpath(name).read_text(encoding="utf-8"), name)
-    return tuple(rows)
+    return cache.remember("thermal.tables", names, lambda: tuple(
+        r for n in names for r in parse_table(d.joinpath(n).read_text(encoding="utf-8"), n)), 8)
 
 
-@lru_cache(maxsize=None)
+def builtin_rows() -> tuple[URow, ...]:
+    """The shipped tables (``data/tabula_de.csv``, ``data/u_values.csv``)."""
+    return _shipped("tabula_de.csv", "u_values.csv")
+
+
 def builtin_nonres_rows() -> tuple[URow, ...]:
     """The shipped non-residential table (``data/iwu_office_de.csv``)."""
-    d = resources.files("lod2energy.thermal") / "data"
-    return tuple(parse_table(d.joinpath("iwu_office_de.csv").read_text(encoding="utf-8"), "iwu_office_de.csv"))
+    return _shipped("iwu_office_de.csv")
 
 
 def nonresidential_rows(country: str, year: int) -> tuple[URow, ...]:
@@ -200,11 +202,11 @@ def nonresidential_rows(country: str, year: int) -> tuple[URow, ...]:
                  if r.country == country and r.period_start <= year <= r.period_end)
 
 
-@lru_cache(maxsize=None)
 def builtin_wwr() -> Mapping[str, float]:
+    """Window-to-wall ratios by building type (``data/wwr.csv``), read once per process."""
     d = resources.files("lod2energy.thermal") / "data"
-    return frozen_mapping({r["building_type"]: float(r["wwr"])
-                           for r in csv.DictReader(io.StringIO(d.joinpath("wwr.csv").read_text()))})
+    return cache.remember("thermal.tables", "wwr", lambda: frozen_mapping(
+        {r["building_type"]: float(r["wwr"]) for r in csv.DictReader(io.StringIO(d.joinpath("wwr.csv").read_text()))}), 8)
 
 
 def load_table(path: str | Path) -> list[URow]:
@@ -261,7 +263,6 @@ def lookup(country: str, btype: str, year: int, rows, *more_tiers) -> tuple[dict
 # ----------------------------------------------------------------------------- geometry sums
 
 def _solid_volume(vertices: np.ndarray, g, origin: np.ndarray) -> float:
-    from lod2energy.semantics import face_metrics
     vol = 0.0
     if not g.is_volumetric:
         return 0.0
@@ -310,8 +311,6 @@ def assign_u_values(b: Building, options: ThermalOptions = ThermalOptions()) -> 
         country, typology, construction_period, u_values, wwr, areas {roof, wall, ground},
         A_env (m2), volume (m3), UA (W/K) and the attributes used.
     """
-    from lod2energy.thermal.typology import country_from_crs
-    from lod2energy.thermal.use import building_use
 
     lod = options.lod if options.lod is not None else b.default_lod()
     energy = envelope_objects(b, lod)

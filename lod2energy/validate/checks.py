@@ -3,33 +3,39 @@
 Levels: polygons (1xx, 2xx) -> shells (3xx) -> solids (4xx) -> Multi/CompositeSolids (5xx)
 -> BuildingParts (601). A failed lower level stops the checks that depend on it.
 
-Contracts of the level modules (each returns plain tuples; this module adds locations):
+Contracts of the level modules (each vectorised over many items, each returning one list of
+plain tuples per item; this module adds locations):
 
-- ``polygon.check_polygons(vertices, shell, tol) -> list[(face_index, code, info)]``
-- ``shell.check_shell(vertices, shell, tol, volumetric) -> list[(face_index|None, code, info)]``
-  (``volumetric`` False: CompositeSurface rules; batched: ``shell.check_shells_multi``)
-- ``solid.check_solid(vertices, solid, tol) -> list[(shell_index|None, code, info)]``
+- ``polygon.check_polygons([(vertices, shell)], tol) -> [[(face_index, code, info)]]``
+- ``shell.check_shells([(vertices, shell, volumetric)], tol) -> [[(face_index|None, code, info)]]``
+  (``volumetric`` False: CompositeSurface rules)
+- ``solid.check_solids([(vertices, solid)], tol) -> [[(shell_index|None, code, info)]]``
   (interior shells: 401-405; 405 also for an exterior shell oriented inwards)
-- ``solid.check_multisolid(vertices, geometry, tol) -> list[(solid_index|None, code, info)]``
-- ``solid.check_parts_overlap(building, tol) -> list[(location, code, info)]``
+- ``solid.check_multisolid(vertices, geometry, tol) -> [(solid_index|None, code, info)]``
+- ``solid.check_parts_overlap([building], tol) -> [[(location, code, info)]]``
 
 As in val3dity 2.6, every geometry of every LoD is validated; MultiSurfaces get the polygon
 checks only; 601 runs only when all the building's geometries are valid (reference
 reports never show 601 next to another code in one feature). :func:`validate_buildings`
-gives the same results as :func:`validate_building` per building, with polygon and shell
-checks vectorised across buildings (feed chunks of a few hundred for speed).
+gives the same results as :func:`validate_building` per building, with the checks
+vectorised across buildings (feed chunks of a few hundred for speed).
 """
 from __future__ import annotations
 
+import numpy as np
+
 from lod2energy.config import DEFAULT, Tolerances
+from lod2energy.errors import InputError
+from lod2energy.io.cityjson import _Collector, _parse_geometry
 from lod2energy.model import MULTISOLID_TYPES, Building, Geometry
 from lod2energy.validate import memo, polygon, shell as shell_checks, solid as solid_checks
-from lod2energy.validate.defect import Defect
-from lod2energy.validate.instance import template_geometry
+from lod2energy.validate.codes import Defect
 
 
 def validate_geometry(vertices, coid: str, gi: int, g: Geometry, tol: Tolerances = DEFAULT) -> list[Defect]:
-    """Defects of one polygonal geometry (levels 1xx-5xx).
+    """Defects of one polygonal geometry (levels 1xx-5xx), through the geometry-level memory
+    (:func:`memo.entry_key`): a geometry whose exact input was checked before in this process
+    gets that answer.
 
     Parameters
     ----------
@@ -40,75 +46,43 @@ def validate_geometry(vertices, coid: str, gi: int, g: Geometry, tol: Tolerances
     gi : int
         Index of the geometry in the CityObject's ``geometry`` array.
     """
-    return validate_geometries(vertices, [(coid, gi, g)], tol)[0]
-
-
-def validate_geometries(vertices, items, tol: Tolerances = DEFAULT) -> list[list[Defect]]:
-    """Defects of several polygonal geometries sharing one vertex array (levels 1xx-5xx).
-
-    Parameters
-    ----------
-    vertices : (n, 3) float
-        The building's vertices, m.
-    items : sequence of (coid, geom_index, Geometry)
-
-    Returns
-    -------
-    list (one per item) of list of Defect
-    """
-    return _validate_entries_remembered([(vertices, coid, gi, g) for coid, gi, g in items], tol)
+    return _validate_entries_remembered([(vertices, coid, gi, g)], tol)[0]
 
 
 def _validate_entries_remembered(entries, tol: Tolerances) -> list[list[Defect]]:
-    """:func:`_validate_entries` with the geometry-level memory (:func:`memo.entry_key`): an
-    entry whose exact input was checked before in this process gets that answer."""
+    """:func:`_validate_entries` through the geometry-level memory."""
     keys = [memo.entry_key(v, coid, gi, g, tol) for v, coid, gi, g in entries]
-    return _remembered(entries, keys, lambda todo: _validate_entries(todo, tol), memo.recall_entry,
-                       memo.remember_entry)
-
-
-def _remembered(items: list, keys: list, compute, recall, remember) -> list:
-    """``compute(items)`` (a list of answers, one per item) through a memory: the items whose
-    key ``recall`` knows get that answer; the others are computed together and ``remember`` ed."""
-    outs = [recall(k) for k in keys]
-    todo = [i for i, o in enumerate(outs) if o is None]
-    if todo:
-        for i, found in zip(todo, compute([items[i] for i in todo])):
-            remember(keys[i], found)
-            outs[i] = found
-    return outs
+    return memo.remembered(memo.GEOMETRIES, entries, keys, lambda todo: _validate_entries(todo, tol))
 
 
 def _validate_entries(entries, tol: Tolerances) -> list[list[Defect]]:
     """Levels 1xx-5xx of ``(vertices, coid, geom_index, Geometry)`` entries.
 
-    Shell checks of every shell whose polygons are valid run in one vectorised batch
-    (:func:`shell.check_shells_multi`), whichever building they belong to.
-    MultiSurfaces get polygon checks only; CompositeSurfaces the shell checks that need
+    Each level runs in one vectorised batch over every entry, whichever building it belongs
+    to. MultiSurfaces get polygon checks only; CompositeSurfaces the shell checks that need
     no closedness.
     """
     results: list[list[Defect]] = [[] for _ in entries]
-    # polygon checks of all the shells in one vectorised pass; check_polygons below reads them
-    polygon.prefetch_shells([(v, sh) for v, _, _, g in entries for _, _, sh in g.iter_shells()], tol)
+    usable = [bool(g.solids) and all(so.shells and all(sh.surfaces for sh in so.shells) for so in g.solids)
+              for _, _, _, g in entries]
+    polygons = iter(polygon.check_polygons([(v, sh) for (v, _, _, g), u in zip(entries, usable) if u
+                                            for _, _, sh in g.iter_shells()], tol))
     pending = []                                  # (entry, solid, shell, Shell, volumetric)
     ok: dict[tuple[int, int, int], bool] = {}
-    usable = [False] * len(entries)
     for k, (vertices, coid, gi, g) in enumerate(entries):
-        if not g.solids or any(not so.shells for so in g.solids) or any(
-                not sh.surfaces for so in g.solids for sh in so.shells):
+        if not usable[k]:
             results[k].append(Defect(902, f"coid={coid}|geom={gi}", f"empty {g.type}"))
             continue
-        usable[k] = True
         for si, so in enumerate(g.solids):
             for hi, sh in enumerate(so.shells):
                 found = [Defect(code, f"coid={coid}|" + g.location(gi, si, hi, f), info)
-                         for f, code, info in polygon.check_polygons(vertices, sh, tol)]
+                         for f, code, info in next(polygons)]
                 results[k].extend(found)
                 ok[(k, si, hi)] = not found
                 if not found and g.type != "MultiSurface":
                     pending.append((k, si, hi, sh, g.is_volumetric))
     if pending:
-        found_all = shell_checks.check_shells_multi([(entries[p[0]][0], p[3], p[4]) for p in pending], tol)
+        found_all = shell_checks.check_shells([(entries[p[0]][0], p[3], p[4]) for p in pending], tol)
         for (k, si, hi, _, _), found in zip(pending, found_all):
             _, coid, gi, g = entries[k]
             results[k].extend(Defect(code, f"coid={coid}|" + g.location(gi, si, hi, f), info)
@@ -116,7 +90,7 @@ def _validate_entries(entries, tol: Tolerances) -> list[list[Defect]]:
             ok[(k, si, hi)] = not found
     todo = [(k, si) for k, (_, _, _, g) in enumerate(entries) if usable[k] and g.is_volumetric
             for si, so in enumerate(g.solids) if all(ok[(k, si, hi)] for hi in range(len(so.shells)))]
-    solid_found = dict(zip(todo, solid_checks.check_solids_multi(
+    solid_found = dict(zip(todo, solid_checks.check_solids(
         [(entries[k][0], entries[k][3].solids[si]) for k, si in todo], tol)))
     for k, (vertices, coid, gi, g) in enumerate(entries):
         if not usable[k] or not g.is_volumetric:
@@ -167,7 +141,7 @@ def validate_buildings(buildings, tol: Tolerances = DEFAULT) -> list[list[Defect
     """
     buildings = list(buildings)
     keys = [memo.verdict_key(b, tol) for b in buildings]
-    return _remembered(buildings, keys, lambda todo: _validate_all(todo, tol), memo.recall, memo.remember)
+    return memo.remembered(memo.BUILDINGS, buildings, keys, lambda todo: _validate_all(todo, tol))
 
 
 def _validate_all(buildings: list, tol: Tolerances) -> list[list[Defect]]:
@@ -200,7 +174,7 @@ def _validate_all(buildings: list, tol: Tolerances) -> list[list[Defect]]:
                     out.extend(found)
         outs.append(out)
         ok_parts.append(geom_ok)
-    overlaps = solid_checks.check_parts_overlap_multi([b for b, ok in zip(buildings, ok_parts) if ok], tol)
+    overlaps = solid_checks.check_parts_overlap([b for b, ok in zip(buildings, ok_parts) if ok], tol)
     found = iter(overlaps)
     for out, ok in zip(outs, ok_parts):
         if ok:
@@ -220,8 +194,15 @@ def check_instance(building, obj, gi, geometry, tol: Tolerances = DEFAULT) -> li
     -------
     list of Defect
     """
-    resolved = template_geometry(building, geometry)
-    if resolved is None:
+    t = (geometry.raw or {}).get("template")
+    templates = (building.provenance or {}).get("geometry_templates")
+    if not isinstance(t, int) or isinstance(t, bool) or not templates:
         return []
-    tverts, tgeom = resolved
-    return validate_geometry(tverts, obj.id, gi, tgeom, tol)
+    try:
+        tv = np.asarray(templates.get("vertices-templates") or [], dtype=np.float64).reshape(-1, 3)
+        g = dict((templates.get("templates") or [])[t])
+        g.setdefault("lod", "0")
+        tgeom = _parse_geometry(g, _Collector(len(tv)), f"template={t}")  # the reader's own parser
+    except (TypeError, ValueError, IndexError, AttributeError, InputError):
+        return []
+    return validate_geometry(tv, obj.id, gi, tgeom, tol) if tgeom.is_polygonal else []

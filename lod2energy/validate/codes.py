@@ -1,9 +1,11 @@
-"""Defect codes: val3dity's numbers and names, plus the project's own ranges.
+"""Defects: val3dity's numbers and names, plus the project's own ranges, and the :class:`Defect` record.
 
 val3dity codes (101-904) keep their meaning exactly. lod2energy's own checks use:
 1001-1099 energy compliance, 1101-1199 semantics, 1201-1299 thermal values.
 """
 from __future__ import annotations
+
+from dataclasses import dataclass
 
 VAL3DITY = {
     101: "TOO_FEW_POINTS",
@@ -62,3 +64,29 @@ NAMES = {**VAL3DITY, **OWN}
 def name(code: int) -> str:
     """Name of ``code`` ("UNKNOWN_ERROR" for codes nobody defined)."""
     return NAMES.get(int(code), "UNKNOWN_ERROR")
+
+
+@dataclass(frozen=True, order=True)
+class Defect:
+    """One error found by a check.
+
+    Parameters
+    ----------
+    code : int
+        val3dity code (101-904) or a project code (1001+).
+    location : str
+        val3dity-style ``coid=..|geom=..|shell=..|face=..``.
+    info : str
+        Free text (measured value and tolerance, where the hole is, ...).
+    """
+
+    code: int
+    location: str = ""
+    info: str = ""
+
+    @property
+    def description(self) -> str:
+        return name(self.code)
+
+    def to_json(self) -> dict:
+        return {"code": self.code, "description": self.description, "id": self.location, "info": self.info}

@@ -16,9 +16,9 @@ from typing import Iterable
 import numpy as np
 
 from lod2energy.config import DEFAULT, Tolerances
-from lod2energy.graph import FaceGraph, building_graph
+from lod2energy.graph import FaceGraph, building_graphs
 from lod2energy.model import Building, lod_key
-from lod2energy.validate.defect import Defect
+from lod2energy.validate.codes import Defect
 
 LABELS = ("RoofSurface", "WallSurface", "GroundSurface", "ClosureSurface",
           "OuterCeilingSurface", "OuterFloorSurface", "Window", "Door")
@@ -89,7 +89,7 @@ def energy_compliance(b: Building, defects: Iterable[Defect], graph: FaceGraph |
         hold), ``N_b``, ``N_nm``, ``status``, ``lod``, ``volume`` (m3) and ``reasons``.
     """
     lod = lod if lod is not None else b.default_lod()
-    graph = graph if graph is not None else building_graph(b, lod, tol)
+    graph = graph if graph is not None else building_graphs([b], lod, tol)[0]
     defects = list(defects)
     codes = _codes_on(defects, _energy_locations(b, lod))
     codes |= {d.code for d in defects if d.code in (901, 902)}

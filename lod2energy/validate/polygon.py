@@ -13,27 +13,28 @@ What val3dity does for one shell (``Surface::validate_2d_primitives``), reproduc
 3. only when every face of the shell passed: 204 (the normals of the face's constrained
    Delaunay triangles deviate from the first one's by more than ``planarity_n_tol``).
 
-The work is vectorised over many shells at once (:func:`check_polygons_multi`, also
-across buildings; :func:`prefetch_shells` keeps the results for :func:`check_polygons`):
-plane fits by segment sums and one batched eigen-decomposition, ring tests through
-shapely's array functions, and the 204 triangulation only for polygons where some
-triangle of their vertices could tilt enough (all-triples bound).
+:func:`check_polygons` works on many shells at once (also across buildings): plane fits by
+segment sums and one batched eigen-decomposition, ring tests through shapely's array
+functions, and the 204 triangulation only for polygons where some triangle of their vertices
+could tilt enough (all-triples bound). Its answers are kept in :mod:`lod2energy.cache` by
+content, so a shell checked once (by the validation) is not checked again (by the repair).
 """
 from __future__ import annotations
 
 import itertools
-import weakref
 from fractions import Fraction
 from typing import Sequence
 
 import numpy as np
+import shapely
 
+from lod2energy import cache
 from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.geometry import constrained_delaunay_many, cross_rows as _cross, plane_bases
+from lod2energy.geometry.pairs import close_pairs_grid
+from lod2energy.geometry.snap import snapped_ids
 from lod2energy.model import Shell
-from lod2energy.validate.snap import snapped_ids
-
-# shapely is imported in the functions that use it: importing lod2energy stays cheap (issue 13)
+from lod2energy.validate.memo import shell_keys
 
 INFO_104_TRIANGLE = " outer ring (a triangle) is collapsed to a line"
 INFO_104_RING = "ring self-intersects or is collapsed to a line"
@@ -94,26 +95,6 @@ def _smallest_eigenvector(cov: np.ndarray) -> np.ndarray:
     return np.where(bad[:, None], np.array([0.0, 0.0, 1.0]), n / np.where(norm > 0, norm, 1.0))
 
 
-def fit_planes(points: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Least-squares planes (CGAL ``linear_least_squares_fitting_3``, points), batched.
-
-    Parameters
-    ----------
-    points : (m, n, 3) float
-        ``m`` polygons of ``n`` points each, m.
-
-    Returns
-    -------
-    centroids : (m, 3) float
-    normals : (m, 3) float
-        Unit normals (eigenvector of the smallest eigenvalue of the covariance); components
-        under 1e-12 are set to 0 as val3dity does.
-    """
-    c = points.mean(axis=1)
-    X = points - c[:, None, :]
-    return c, _smallest_eigenvector(np.einsum("mni,mnj->mij", X, X))
-
-
 def _triples(n: int) -> np.ndarray:
     return np.asarray(list(itertools.combinations(range(n), 3)), dtype=np.intp).reshape(-1, 3)
 
@@ -164,21 +145,26 @@ def _normals_deviation(P3: np.ndarray, tri: np.ndarray, tol_deg: float) -> float
     return float(ang[over[0]])
 
 
-def check_polygons(vertices: np.ndarray, shell: Shell, tol: Tolerances = DEFAULT) -> list[tuple[int, int, str]]:
-    """Polygon defects of every surface of a shell, as val3dity reports them.
+#: Shells whose polygon defects are kept per process (:mod:`lod2energy.cache`).
+KEPT_SHELLS = 8192
+#: Shells checked in one vectorised pass (bounds the temporaries of a large batch).
+CHUNK = 500
+
+
+def check_polygons(items: Sequence[tuple[np.ndarray, Shell]], tol: Tolerances = DEFAULT) -> list[list[tuple[int, int, str]]]:
+    """Polygon defects of every surface of many shells, as val3dity reports them.
 
     Parameters
     ----------
-    vertices : (n, 3) float
-        The building's vertices, m.
-    shell : Shell
-        Surfaces whose rings index ``vertices``.
+    items : sequence of (vertices (n, 3) float, Shell)
+        The building's vertices (m) and a shell whose rings index them; shells of several
+        buildings may be checked together.
     tol : Tolerances
         ``snap_tol``, ``planarity_d2p_tol`` (m), ``planarity_n_tol`` (degrees), ``ignore204``.
 
     Returns
     -------
-    list of (face_index, code, info)
+    list (one per item) of lists of (face_index, code, info)
         In val3dity's order: face by face, then the 204s. Empty when every polygon is valid.
 
     Examples
@@ -186,37 +172,19 @@ def check_polygons(vertices: np.ndarray, shell: Shell, tol: Tolerances = DEFAULT
     >>> import numpy as np
     >>> from lod2energy.model import Shell, Surface
     >>> v = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0.5]])
-    >>> check_polygons(v, Shell((Surface.from_lists([[0, 1, 2, 3]]),)))
-    [(0, 203, 'distance to fitted plane: 0.117072 (tolerance=0.01)')]
+    >>> check_polygons([(v, Shell((Surface.from_lists([[0, 1, 2, 3]]),)))])
+    [[(0, 203, 'distance to fitted plane: 0.117072 (tolerance=0.01)')]]
     """
-    hit = _cached(vertices, shell, tol)
-    if hit is not None:
-        return hit
-    return check_shells(vertices, [shell], tol)[0]
+    items = list(items)
+
+    def make(todo: list[int]) -> list[tuple]:
+        return [tuple(r) for k in range(0, len(todo), CHUNK)
+                for r in _check([items[i] for i in todo[k:k + CHUNK]], tol)]
+    return [list(f) for f in cache.remember_each("validate.polygons", shell_keys(items, tol), make, KEPT_SHELLS)]
 
 
-def check_shells(vertices: np.ndarray, shells: Sequence[Shell], tol: Tolerances = DEFAULT) -> list[list[tuple[int, int, str]]]:
-    """:func:`check_polygons` for several shells of one vertex array at once.
-
-    Snapping and the 204 gate stay per shell, as in val3dity.
-
-    Returns
-    -------
-    list (one per shell) of lists of (face_index, code, info)
-    """
-    return check_polygons_multi([(vertices, sh) for sh in shells], tol)
-
-
-def check_polygons_multi(items: Sequence[tuple[np.ndarray, Shell]], tol: Tolerances = DEFAULT) -> list[list[tuple[int, int, str]]]:
-    """:func:`check_polygons` for many ``(vertices, shell)`` pairs in one vectorised pass.
-
-    The shells may belong to different buildings (different vertex arrays); each shell is
-    checked exactly as :func:`check_polygons` would.
-
-    Returns
-    -------
-    list (one per item) of lists of (face_index, code, info)
-    """
+def _check(items: Sequence[tuple[np.ndarray, Shell]], tol: Tolerances) -> list[list[tuple[int, int, str]]]:
+    """:func:`check_polygons` without the cache."""
     S = len(items)
     groups: dict[int, int] = {}
     arrays: list[np.ndarray] = []
@@ -261,7 +229,7 @@ def check_polygons_multi(items: Sequence[tuple[np.ndarray, Shell]], tol: Toleran
             bad_shells = set(np.unique(face_shell[bad]).tolist())
             keep = [i for i in range(S) if i not in bad_shells]
             if keep:
-                for i, r in zip(keep, check_polygons_multi([items[i] for i in keep], tol)):
+                for i, r in zip(keep, _check([items[i] for i in keep], tol)):
                     results[i] = r
             return results
         flat = flat + offsets[pos_group]
@@ -340,7 +308,6 @@ def check_polygons_multi(items: Sequence[tuple[np.ndarray, Shell]], tol: Toleran
         planar = code == 0
 
     # ---- 104 on projected rings, 208, GEOS
-    import shapely
     pf = np.nonzero(planar)[0]
     if len(pf):
         rsel = np.nonzero(planar[ring_face])[0]
@@ -425,7 +392,6 @@ def _snap_shells(V: np.ndarray, flat: np.ndarray, pos_shell: np.ndarray, offsets
     pts = V[used]
     if not np.isfinite(pts).all():
         return flat.copy()
-    from lod2energy.geometry.pairs import close_pairs_grid
     pairs = close_pairs_grid(pts, snap_tol * (1 + 1e-9) + 1e-300)
     if len(pairs):  # pairs across vertex arrays (neighbouring buildings) do not matter
         grp = np.searchsorted(offsets, used, side="right")
@@ -482,38 +448,3 @@ def _check_normals(faces, face_npts, face_start, face_first_ring, face_nrings, r
         if dev is not None:
             out.append((f, 204, info_204(dev, tol_deg)))
     return out
-
-
-_CACHE: "weakref.WeakKeyDictionary[Shell, tuple]" = weakref.WeakKeyDictionary()
-
-
-def _cached(vertices, shell: Shell, tol: Tolerances):
-    try:
-        hit = _CACHE.get(shell)
-    except TypeError:
-        return None
-    if hit is not None and hit[0] is vertices and hit[1] == tol:
-        return list(hit[2])
-    return None
-
-
-def prefetch(building, tol: Tolerances = DEFAULT) -> None:
-    """Check every polygonal shell of ``building`` in one pass and keep the results.
-
-    Later :func:`check_polygons` calls with the same vertices array, shell and tolerances
-    return the kept result (a weak cache: nothing outlives the building).
-    """
-    prefetch_shells([(building.vertices, sh) for o in building.objects for g in o.geometries
-                     if g.is_polygonal for _, _, sh in g.iter_shells()], tol)
-
-
-def prefetch_shells(items: Sequence[tuple[np.ndarray, Shell]], tol: Tolerances = DEFAULT,
-                    chunk: int = 500) -> None:
-    """:func:`check_polygons_multi` on ``(vertices, shell)`` pairs, results kept for
-    :func:`check_polygons` (call it first when validating many buildings: several times
-    faster than shell by shell)."""
-    items = [(v, sh) for v, sh in items if _cached(v, sh, tol) is None]
-    for i in range(0, len(items), chunk):
-        part = items[i:i + chunk]
-        for (v, sh), res in zip(part, check_polygons_multi(part, tol)):
-            _CACHE[sh] = (v, tol, tuple(res))

@@ -13,12 +13,11 @@ from typing import Callable, Iterable
 
 import lod2energy
 from lod2energy.config import DEFAULT, Tolerances
-from lod2energy.graph import building_graph, building_graphs
+from lod2energy.graph import building_graphs
 from lod2energy.model import Building, FeatureError
 from lod2energy.validate.checks import validate_building, validate_buildings
-from lod2energy.validate.codes import name
+from lod2energy.validate.codes import Defect, name
 from lod2energy.validate.compliance import energy_compliance
-from lod2energy.validate.defect import Defect
 
 
 def parameters_json(tol: Tolerances) -> dict:
@@ -71,7 +70,7 @@ def feature_report(b: Building, tol: Tolerances = DEFAULT, lod: str | None = Non
              "errors": [d.to_json() for d in defects]}
     if b.is_building:
         lod = lod if lod is not None else b.default_lod()
-        g = graph if graph is not None else building_graph(b, lod, tol)
+        g = graph if graph is not None else building_graphs([b], lod, tol)[0]
         entry["energy"] = energy_compliance(b, defects, g, lod, tol, assess_labels, assess_u_values)
         entry["graph"] = g.summary()
     entry["_primitives"] = _primitives(b, defects)

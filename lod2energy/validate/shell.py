@@ -9,28 +9,27 @@ and finally self-intersections (306, "Location close to: (centroid)"). A
 CompositeSurface needs no closedness but gets 303 for vertices where several open fans
 meet ("Non-manifold vertex at (x, y, z)").
 
-Everything is vectorised over many shells, of one building (:func:`check_shells`) or of
-many (:func:`check_shells_multi`); only shells that are *not* clean 2-manifolds go
-through a short sequential replay of val3dity's incremental construction (CGAL's rules:
-no reused directed edge, no face at a closed vertex, no face closing one fan of a vertex
-that has another), to name the refused faces as it does. Snapped triangulations are
-cached per shell (:func:`shell_meshes_multi`) for the solid-level checks.
+:func:`check_shells` works on many shells at once (of one building or of many); only shells
+that are *not* clean 2-manifolds go through a short sequential replay of val3dity's
+incremental construction (CGAL's rules: no reused directed edge, no face at a closed vertex,
+no face closing one fan of a vertex that has another), to name the refused faces as it does.
+Snapped triangulations (:func:`shell_meshes`) are kept in :mod:`lod2energy.cache` for the
+solid-level checks.
 """
 from __future__ import annotations
 
-import weakref
 from dataclasses import dataclass
 from typing import Sequence
 
 import numpy as np
 
+from lod2energy import cache
 from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.geometry import bbox_pairs, triangle_pairs_intersect, triangulate_flat
 from lod2energy.geometry.pairs import close_pairs_grid, connected_components
+from lod2energy.geometry.snap import snapped_ids
 from lod2energy.model import Shell
-from lod2energy.validate.snap import snapped_ids
-
-# close pairs and components are numpy alone: no scipy import for them (issue 13)
+from lod2energy.validate.memo import shell_keys
 
 
 def _fmt(x: float) -> str:
@@ -63,7 +62,8 @@ class ShellMesh:
     n_faces: int
 
 
-_MESHES: "weakref.WeakKeyDictionary[Shell, tuple]" = weakref.WeakKeyDictionary()
+#: Shells whose snapped triangulation is kept per process (:mod:`lod2energy.cache`).
+KEPT_MESHES = 8192
 
 
 def _snap_lut(vertices: np.ndarray, shell: Shell, snap_tol: float):
@@ -79,54 +79,33 @@ def _snap_lut(vertices: np.ndarray, shell: Shell, snap_tol: float):
     return lut
 
 
-def shell_meshes(vertices: np.ndarray, shells: Sequence[Shell], tol: Tolerances = DEFAULT) -> list[ShellMesh]:
-    """Snapped triangulations of shells of one building (see :func:`shell_meshes_multi`).
-
-    Parameters
-    ----------
-    vertices : (n, 3) float
-        The building's vertices, m.
-    shells : sequence of Shell
-    tol : Tolerances
-
-    Returns
-    -------
-    list of ShellMesh
-    """
-    return shell_meshes_multi([(vertices, sh) for sh in shells], tol)
-
-
-def shell_meshes_multi(items: Sequence[tuple[np.ndarray, Shell]], tol: Tolerances = DEFAULT) -> list[ShellMesh]:
-    """Snapped triangulations of shells of one or more buildings, in one batch, cached.
+def shell_meshes(items: Sequence[tuple[np.ndarray, Shell]], tol: Tolerances = DEFAULT) -> list[ShellMesh]:
+    """Snapped triangulations of shells of one or more buildings, in one batch, kept by content.
 
     Snapping is per shell (val3dity's ``snap_tol``, first-come representative); shells
-    without any pair of vertices closer than ``snap_tol`` are left as they are. The
-    cache is keyed by the shell object, the vertex array object and ``snap_tol``.
+    without any pair of vertices closer than ``snap_tol`` are left as they are.
 
     Parameters
     ----------
     items : sequence of (vertices (n, 3) float, Shell)
+        The building's vertices (m) and a shell whose rings index them.
     tol : Tolerances
 
     Returns
     -------
     list of ShellMesh (triangles index the item's own vertex array)
     """
-    out: list[ShellMesh | None] = [None] * len(items)
-    todo = []
-    for i, (v, sh) in enumerate(items):
-        hit = _MESHES.get(sh)
-        if hit is not None and hit[0] is v and hit[1] == tol.snap_tol:
-            out[i] = hit[2]
-        else:
-            todo.append(i)
-    if not todo:
-        return out  # type: ignore[return-value]
+    items = list(items)
+    return cache.remember_each("validate.meshes", shell_keys(items, tol.snap_tol),
+                               lambda todo: _meshes([items[i] for i in todo], tol), KEPT_MESHES)
+
+
+def _meshes(items: Sequence[tuple[np.ndarray, Shell]], tol: Tolerances) -> list[ShellMesh]:
+    """:func:`shell_meshes` without the cache."""
     offs: dict[int, int] = {}
     blocks = []
     n = 0
-    for i in todo:
-        v = items[i][0]
+    for v, _ in items:
         if id(v) not in offs:
             offs[id(v)] = n
             blocks.append(np.asarray(v, dtype=np.float64))
@@ -155,8 +134,7 @@ def shell_meshes_multi(items: Sequence[tuple[np.ndarray, Shell]], tol: Tolerance
             chain = ~clique[lab]
     flat, ring_len, rpp, owner, item_off = [], [], [], [], []
     any_chain = bool(chain.any())
-    for i in todo:
-        v, sh = items[i]
+    for v, sh in items:
         off = offs[id(v)]
         rings = [r for f in sh.surfaces for r in f.rings]
         ids = np.concatenate(rings).astype(np.intp, copy=False) if rings else np.zeros(0, dtype=np.intp)
@@ -175,21 +153,15 @@ def shell_meshes_multi(items: Sequence[tuple[np.ndarray, Shell]], tol: Tolerance
     tris, poly = triangulate_flat(V, np.concatenate(flat), np.concatenate(ring_len), np.concatenate(rpp))
     starts = np.concatenate(([0], np.cumsum(owner)))
     cut = np.searchsorted(poly, starts)
-    for k, i in enumerate(todo):
-        lo_, hi_ = cut[k], cut[k + 1]
-        t = tris[lo_:hi_]
-        mesh = ShellMesh(t - item_off[k] if item_off[k] else t, poly[lo_:hi_] - starts[k], owner[k])
-        out[i] = mesh
-        try:
-            _MESHES[items[i][1]] = (items[i][0], tol.snap_tol, mesh)
-        except TypeError:  # pragma: no cover
-            pass
-    return out  # type: ignore[return-value]
-
-
-def shell_mesh(vertices: np.ndarray, shell: Shell, tol: Tolerances = DEFAULT) -> ShellMesh:
-    """Snapped triangulation of one shell (see :func:`shell_meshes`)."""
-    return shell_meshes(vertices, [shell], tol)[0]
+    out = []
+    for k in range(len(items)):
+        t = tris[cut[k]:cut[k + 1]]
+        t = t - item_off[k] if item_off[k] else t.copy()
+        fot = poly[cut[k]:cut[k + 1]] - starts[k]
+        t.setflags(write=False)
+        fot.setflags(write=False)
+        out.append(ShellMesh(t, fot, owner[k]))
+    return out
 
 
 # ----------------------------------------------------------------------------- construction replay
@@ -301,44 +273,25 @@ def _group_count(keys: np.ndarray, groups: np.ndarray, n_groups: int) -> np.ndar
     return np.bincount(u // span, minlength=n_groups)
 
 
-def check_shells(vertices: np.ndarray, shells: Sequence[Shell], tol: Tolerances = DEFAULT,
-                 volumetric: Sequence[bool] | bool = True) -> list[list[tuple[int | None, int, str]]]:
-    """Shell checks (301-307) of many shells of one building at once.
-
-    Parameters
-    ----------
-    vertices : (n, 3) float
-        The building's vertices, m.
-    shells : sequence of Shell
-        Shells whose polygons passed the 1xx/2xx checks.
-    tol : Tolerances
-    volumetric : bool or sequence of bool
-        True: shell of a Solid (must be closed); False: a CompositeSurface.
-
-    Returns
-    -------
-    list (one per shell) of lists of ``(face_index | None, code, info)``
-    """
-    vertices = np.asarray(vertices, dtype=np.float64)
-    vol = np.broadcast_to(np.asarray(volumetric, dtype=bool), (len(shells),))
-    return check_meshes(vertices, shell_meshes(vertices, shells, tol), vol)
-
-
-def check_shells_multi(items: Sequence[tuple[np.ndarray, Shell, bool]], tol: Tolerances = DEFAULT
-                       ) -> list[list[tuple[int | None, int, str]]]:
-    """Shell checks of shells from several buildings in one vectorised pass.
+def check_shells(items: Sequence[tuple[np.ndarray, Shell, bool]], tol: Tolerances = DEFAULT
+                 ) -> list[list[tuple[int | None, int, str]]]:
+    """Shell checks (301-307) of many shells whose polygons are valid, in one vectorised pass.
 
     Parameters
     ----------
     items : sequence of (vertices (n, 3) float, Shell, volumetric bool)
-        Shells whose polygons passed; shells of one building share its vertex array.
+        The building's vertices (m), a shell whose polygons passed the 1xx/2xx checks, and True
+        for a shell of a Solid (closedness required, 301/302) or False for a CompositeSurface
+        (303 for non-manifold vertices, 305, 306, 307 still). Shells of one building share its
+        vertex array.
     tol : Tolerances
 
     Returns
     -------
     list (one per item) of lists of ``(face_index | None, code, info)``
     """
-    base = shell_meshes_multi([(v, sh) for v, sh, _ in items], tol)
+    items = list(items)
+    base = shell_meshes([(v, sh) for v, sh, _ in items], tol)
     offsets: dict[int, int] = {}
     blocks, off = [], 0
     meshes = []
@@ -351,12 +304,12 @@ def check_shells_multi(items: Sequence[tuple[np.ndarray, Shell, bool]], tol: Tol
         meshes.append(ShellMesh(m.tris + o, m.face_of_tri, m.n_faces) if o else m)
     V = np.concatenate(blocks) if blocks else np.zeros((0, 3))
     vol = np.fromiter((bool(it[2]) for it in items), dtype=bool, count=len(items))
-    return check_meshes(V, meshes, vol)  # type: ignore[arg-type]
+    return _check_meshes(V, meshes, vol)
 
 
-def check_meshes(vertices: np.ndarray, meshes: Sequence[ShellMesh], vol: np.ndarray
-                 ) -> list[list[tuple[int | None, int, str]]]:
-    """Shell checks on already snapped and triangulated shells (see :func:`check_shells`)."""
+def _check_meshes(vertices: np.ndarray, meshes: Sequence[ShellMesh], vol: np.ndarray
+                  ) -> list[list[tuple[int | None, int, str]]]:
+    """Shell checks on already snapped and triangulated shells over one vertex array."""
     S = len(meshes)
     out: list[list] = [[] for _ in range(S)]
     if S == 0:
@@ -376,7 +329,7 @@ def check_meshes(vertices: np.ndarray, meshes: Sequence[ShellMesh], vol: np.ndar
     if len(idx) > 1 and float(len(idx)) * float(len(vertices)) ** 2 >= 2.0 ** 62:
         half = len(idx) // 2
         for part in (idx[:half], idx[half:]):
-            sub = check_meshes(vertices, [meshes[s] for s in part], vol[part])
+            sub = _check_meshes(vertices, [meshes[s] for s in part], vol[part])
             for s, r in zip(part, sub):
                 out[s].extend(r)
         return out
@@ -508,24 +461,3 @@ def check_meshes(vertices: np.ndarray, meshes: Sequence[ShellMesh], vol: np.ndar
                     c = vertices[tris[t]].mean(axis=0)
                     out[int(tsh[t])].append((None, 306, "Location close to: " + _loc(c)))
     return out
-
-
-def check_shell(vertices: np.ndarray, shell: Shell, tol: Tolerances = DEFAULT,
-                volumetric: bool = True) -> list[tuple[int | None, int, str]]:
-    """Shell checks (301-307) of one shell whose polygons are valid.
-
-    Parameters
-    ----------
-    vertices : (n, 3) float
-        The building's vertices, m.
-    shell : Shell
-    tol : Tolerances
-    volumetric : bool
-        True for a shell of a Solid (closedness required, 301/302); False for a
-        CompositeSurface (303 for non-manifold vertices, 305, 306, 307 still).
-
-    Returns
-    -------
-    list of ``(face_index | None, code, info)``
-    """
-    return check_shells(vertices, [shell], tol, [volumetric])[0]

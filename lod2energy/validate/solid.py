@@ -16,22 +16,13 @@ from __future__ import annotations
 
 from typing import Sequence
 
+import manifold3d as m3d
 import numpy as np
 
 from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.geometry import bbox_pairs, cross_rows as _cross, signed_volume, winding_number
 from lod2energy.model import Building, Geometry, Solid
-from lod2energy.validate.shell import shell_meshes, shell_meshes_multi
-
-
-def _m3d():
-    """manifold3d, imported on first use: a validation that never compares two solids' volumes
-    does not load it (issue 13: ``validate``'s start-up)."""
-    try:
-        import manifold3d
-    except ImportError:  # pragma: no cover - declared dependency
-        raise ImportError("manifold3d is required for checks 401-404, 501-503, 601") from None
-    return manifold3d
+from lod2energy.validate.shell import shell_meshes
 
 
 VOLUME_EPS = DEFAULT.volume_eps
@@ -45,9 +36,10 @@ PARTS_TYPES = ("Building", "BuildingPart")
 
 # ----------------------------------------------------------------------------- meshes -> manifolds
 
-def solid_triangles(vertices: np.ndarray, solid: Solid, tol: Tolerances = DEFAULT) -> list[np.ndarray]:
-    """Snapped triangles of each shell of a solid, (T_i, 3) int each, as they are oriented."""
-    return [m.tris for m in shell_meshes(vertices, solid.shells, tol)]
+def _triangles(vertices: np.ndarray, solids, tol: Tolerances) -> list[list[np.ndarray]]:
+    """Snapped triangles (T, 3) int of each shell of each solid, as they are oriented."""
+    meshes = iter(shell_meshes([(vertices, sh) for so in solids for sh in so.shells], tol))
+    return [[next(meshes).tris for _ in so.shells] for so in solids]
 
 
 def to_manifold(vertices: np.ndarray, tris: np.ndarray, origin: np.ndarray):
@@ -66,7 +58,6 @@ def to_manifold(vertices: np.ndarray, tris: np.ndarray, origin: np.ndarray):
     manifold3d.Manifold or None
         None when manifold3d rejects the mesh.
     """
-    m3d = _m3d()
     tris = np.asarray(tris, dtype=np.intp)
     if len(tris) == 0:
         return None
@@ -91,18 +82,18 @@ def _overlaps(a, b, tol: Tolerances) -> bool:
     return True
 
 
-def _geometry_manifold(vertices: np.ndarray, g: Geometry, tol: Tolerances, origin: np.ndarray):
-    """Manifold of a Solid, or the union of a CompositeSolid's members (None if rejected)."""
+def _geometry_manifold(vertices: np.ndarray, solids: list[np.ndarray], origin: np.ndarray):
+    """Manifold of a Solid, or the union of a CompositeSolid's members, given each solid's
+    triangles (T_i, 3) int (None if rejected)."""
     mans = []
-    for so in g.solids:
-        ts = solid_triangles(vertices, so, tol)
-        m = to_manifold(vertices, np.concatenate(ts) if len(ts) > 1 else ts[0], origin)
+    for t in solids:
+        m = to_manifold(vertices, t, origin)
         if m is None:
             return None
         mans.append(m)
     if not mans:
         return None
-    return mans[0] if len(mans) == 1 else _m3d().Manifold.batch_boolean(mans, _m3d().OpType.Add)
+    return mans[0] if len(mans) == 1 else m3d.Manifold.batch_boolean(mans, m3d.OpType.Add)
 
 
 def _overlap_by_vertices(vertices: np.ndarray, t1: np.ndarray, t2: np.ndarray) -> bool:
@@ -123,32 +114,47 @@ def _same_shell(vertices: np.ndarray, t1: np.ndarray, t2: np.ndarray, tol: Toler
     p2 = np.unique(np.round(vertices[np.unique(t2)] / max(tol.snap_tol, 1e-12)), axis=0)
     if p1.shape != p2.shape or not np.array_equal(p1, p2):
         return False
-    return abs(abs(signed_volume(vertices, t1)) - abs(signed_volume(vertices, t2))) <= tol.volume_eps
+    v1, v2 = signed_volume(vertices, t1, origin="first"), signed_volume(vertices, t2, origin="first")
+    return abs(abs(v1) - abs(v2)) <= tol.volume_eps
 
 
 # ----------------------------------------------------------------------------- 401-405
 
-def check_solid(vertices: np.ndarray, solid: Solid, tol: Tolerances = DEFAULT
-                ) -> list[tuple[int | None, int, str]]:
-    """Solid checks: 405 orientation of shells, then 401-404 between its shells.
+def check_solids(items: Sequence[tuple[np.ndarray, Solid]], tol: Tolerances = DEFAULT
+                 ) -> list[list[tuple[int | None, int, str]]]:
+    """Solid checks of many solids (of one or more buildings): 405 orientation of shells, then
+    401-404 between the shells of a solid with cavities.
 
     Parameters
     ----------
-    vertices : (n, 3) float
-        The building's vertices, m.
-    solid : Solid
-        Exterior shell first; every shell already passed the shell checks.
+    items : sequence of (vertices (n, 3) float, Solid)
+        The building's vertices (m) and a solid (exterior shell first) whose every shell
+        already passed the shell checks.
     tol : Tolerances
 
     Returns
     -------
-    list of ``(shell_index | None, code, info)``; for 401/402 the info names the pair
-    (``"0--2"``) as val3dity does.
+    list (one per item) of lists of ``(shell_index | None, code, info)``; for 401/402 the
+    info names the pair (``"0--2"``) as val3dity does.
     """
-    tris = solid_triangles(vertices, solid, tol)
+    out: list[list[tuple[int | None, int, str]]] = [[] for _ in items]
+    single = [k for k, (_, so) in enumerate(items) if len(so.shells) == 1]
+    meshes = shell_meshes([(items[k][0], items[k][1].shells[0]) for k in single], tol)
+    for k, m in zip(single, meshes):
+        if signed_volume(items[k][0], m.tris, origin="first") <= 0:
+            out[k].append((0, 405, "exterior shell oriented inwards"))
+    for k, (v, so) in enumerate(items):
+        if len(so.shells) > 1:
+            out[k] = _check_cavities(v, so, tol)
+    return out
+
+
+def _check_cavities(vertices: np.ndarray, solid: Solid, tol: Tolerances) -> list[tuple[int | None, int, str]]:
+    """:func:`check_solids` of one solid with interior shells."""
+    tris, = _triangles(vertices, [solid], tol)
     out: list[tuple[int | None, int, str]] = []
     for i, t in enumerate(tris):
-        v = signed_volume(vertices, t)
+        v = signed_volume(vertices, t, origin="first")
         if (i == 0 and v <= 0) or (i > 0 and v >= 0):
             out.append((i, 405, "exterior shell oriented inwards" if i == 0
                         else "interior shell oriented outwards"))
@@ -203,31 +209,6 @@ def check_solid(vertices: np.ndarray, solid: Solid, tol: Tolerances = DEFAULT
     return out
 
 
-def check_solids_multi(items: Sequence[tuple[np.ndarray, Solid]], tol: Tolerances = DEFAULT
-                       ) -> list[list[tuple[int | None, int, str]]]:
-    """:func:`check_solid` for many solids (of one or more buildings) at once.
-
-    Parameters
-    ----------
-    items : sequence of (vertices (n, 3) float, Solid)
-    tol : Tolerances
-
-    Returns
-    -------
-    list (one per item) of lists of ``(shell_index | None, code, info)``
-    """
-    out: list[list[tuple[int | None, int, str]]] = [[] for _ in items]
-    single = [k for k, (_, so) in enumerate(items) if len(so.shells) == 1]
-    meshes = shell_meshes_multi([(items[k][0], items[k][1].shells[0]) for k in single], tol)
-    for k, m in zip(single, meshes):
-        if signed_volume(items[k][0], m.tris) <= 0:
-            out[k].append((0, 405, "exterior shell oriented inwards"))
-    for k, (v, so) in enumerate(items):
-        if len(so.shells) > 1:
-            out[k] = check_solid(v, so, tol)
-    return out
-
-
 # ----------------------------------------------------------------------------- 501-503
 
 def check_multisolid(vertices: np.ndarray, geometry: Geometry, tol: Tolerances = DEFAULT
@@ -250,7 +231,7 @@ def check_multisolid(vertices: np.ndarray, geometry: Geometry, tol: Tolerances =
     solids = geometry.solids
     if len(solids) < 2:
         return []
-    tris = [solid_triangles(vertices, so, tol) for so in solids]
+    tris = _triangles(vertices, solids, tol)
     out: list[tuple[int | None, int, str]] = []
     allp = vertices[np.unique(np.concatenate([t for ts in tris for t in ts]))]
     origin = allp.min(axis=0)
@@ -270,7 +251,7 @@ def check_multisolid(vertices: np.ndarray, geometry: Geometry, tol: Tolerances =
             out.append((i, 501, f"solid #{i} and solid #{j}"))
     if out or geometry.type != "CompositeSolid":
         return out
-    union = _m3d().Manifold.batch_boolean(mans, _m3d().OpType.Add)
+    union = m3d.Manifold.batch_boolean(mans, m3d.OpType.Add)
     n = _positive_parts(union, tol)
     if n != 1:
         out.append((None, 503, f"CompositeSolid is formed of {n} parts"))
@@ -278,28 +259,6 @@ def check_multisolid(vertices: np.ndarray, geometry: Geometry, tol: Tolerances =
 
 
 # ----------------------------------------------------------------------------- 601
-
-def check_parts_overlap(building: Building, tol: Tolerances = DEFAULT) -> list[tuple[str, int, str]]:
-    """601 BUILDINGPARTS_OVERLAP: interiors of the Building's and its BuildingParts' solids overlap.
-
-    Per LoD, every Solid / CompositeSolid geometry of the Building and its parts is
-    tested against the others: bounding boxes first, then a separating face plane (parts
-    sharing a wall), then the shared volume.
-
-    Parameters
-    ----------
-    building : Building
-        Its geometries already passed levels 1xx-5xx.
-    tol : Tolerances
-        ``overlap_tol`` as in val3dity.
-
-    Returns
-    -------
-    list of ``(location, 601, info)`` with location ``"coid=A|geom=0&&coid=B|geom=0"``
-    and info ``"geometries are lod=2"``.
-    """
-    return check_parts_overlap_multi([building], tol)[0]
-
 
 def _ragged_pairs(na: np.ndarray, nb: np.ndarray):
     """For k groups of sizes na[k] x nb[k]: group id, index in a, index in b of every combination."""
@@ -366,18 +325,26 @@ def _separated_pairs(pts, pstart, npts, nrm, off, fstart, nf, pairs, eps: float 
     return sep
 
 
-def check_parts_overlap_multi(buildings: Sequence[Building], tol: Tolerances = DEFAULT
-                              ) -> list[list[tuple[str, int, str]]]:
-    """:func:`check_parts_overlap` for many buildings in one vectorised pass.
+def check_parts_overlap(buildings: Sequence[Building], tol: Tolerances = DEFAULT
+                        ) -> list[list[tuple[str, int, str]]]:
+    """601 BUILDINGPARTS_OVERLAP of many buildings: interiors of a Building's and its
+    BuildingParts' solids overlap.
+
+    Per LoD, every Solid / CompositeSolid geometry of the Building and its parts is
+    tested against the others: bounding boxes first, then a separating face plane (parts
+    sharing a wall), then the shared volume.
 
     Parameters
     ----------
     buildings : sequence of Building
+        Their geometries already passed levels 1xx-5xx.
     tol : Tolerances
+        ``overlap_tol`` as in val3dity.
 
     Returns
     -------
-    list (one per building) of lists of ``(location, 601, info)``
+    list (one per building) of lists of ``(location, 601, info)``, location
+    ``"coid=A|geom=0&&coid=B|geom=0"`` and info ``"geometries are lod=2"``.
     """
     outs: list[list[tuple[str, int, str]]] = [[] for _ in buildings]
     items = []                                    # (building, group, lod, object id, geom index, Geometry)
@@ -399,7 +366,7 @@ def check_parts_overlap_multi(buildings: Sequence[Building], tol: Tolerances = D
     if not items:
         return outs
     shells = [(buildings[it[0]].vertices, sh) for it in items for so in it[5].solids for sh in so.shells]
-    meshes = iter(shell_meshes_multi(shells, tol))
+    meshes = iter(shell_meshes(shells, tol))
     # all items' triangles over one vertex array (buildings stacked), item by item
     boff: dict[int, int] = {}
     blocks, n = [], 0
@@ -409,7 +376,8 @@ def check_parts_overlap_multi(buildings: Sequence[Building], tol: Tolerances = D
             blocks.append(buildings[it[0]].vertices)
             n += len(buildings[it[0]].vertices)
     V = np.concatenate(blocks)
-    tris = [np.concatenate([next(meshes).tris for so in it[5].solids for _ in so.shells]) for it in items]
+    solid_tris = [[np.concatenate([next(meshes).tris for _ in so.shells]) for so in it[5].solids] for it in items]
+    tris = [np.concatenate(ts) for ts in solid_tris]
     ntri = np.array([len(t) for t in tris])
     item_of_tri = np.repeat(np.arange(len(items)), ntri)
     gtris = np.concatenate(tris) + np.repeat([boff[it[0]] for it in items], ntri)[:, None]
@@ -453,7 +421,7 @@ def check_parts_overlap_multi(buildings: Sequence[Building], tol: Tolerances = D
         v = buildings[bi].vertices
         for k in (i, j):
             if k not in mans:
-                mans[k] = _geometry_manifold(v, items[k][5], tol, borigin[items[k][0]])
+                mans[k] = _geometry_manifold(v, solid_tris[k], borigin[items[k][0]])
         if mans[i] is None or mans[j] is None:
             overlap = _overlap_by_vertices(v, tris[i], tris[j])
         else:

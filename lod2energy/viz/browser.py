@@ -14,6 +14,8 @@ from contextlib import contextmanager
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from lod2energy.safe_write import write_bytes
+
 CHROMIUM_FLAGS = ("--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
                   "--disable-background-networking", "--disable-component-update", "--disable-sync")
 
@@ -81,7 +83,6 @@ def open_page(path, width: int = 1280, height: int = 900):
 
 def screenshot(page, path, *, selector: str | None = None, quality: int | None = None) -> Path:
     """PNG screenshot of the viewport (or of the element ``selector``) to ``path``."""
-    from lod2energy.safe_write import write_bytes
     if selector:
         page.locator(selector).first.scroll_into_view_if_needed()
         png = page.locator(selector).first.screenshot()

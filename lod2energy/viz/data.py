@@ -190,25 +190,13 @@ def iter_rows(report: dict) -> Iterator[Row]:
 
 # --- figure data (pure functions of the rows) ---------------------------------------------------
 
-def fixed(rs: Iterable[Row]) -> list[Row]:
-    """Buildings repaired by a stage and measured (the rows mIoU and mAP_v average)."""
-    return [r for r in rs if _measured(r)]
-
-
 def _measured(r: Row) -> bool:
     return r.stage not in (None, "valid", "irreparable") and r.iou is not None
 
 
-def histogram(values, edges) -> dict:
-    """``{"edges": [...], "counts": [...]}`` (values above the last edge go to the last bin)."""
-    h = _Histogram(edges)
-    for x in values:
-        h.add(x)
-    return h.result()
-
-
 class _Histogram:
-    """:func:`histogram` of values given one at a time (memory: one chunk of values)."""
+    """``{"edges", "counts", "n"}`` of values given one at a time (memory: one chunk of values);
+    values outside the edges count in the first / last bin."""
 
     CHUNK = 4096
 
@@ -237,7 +225,7 @@ class _Histogram:
 
 
 class Tally:
-    """Every number of :func:`figure_data`, gathered one row at a time: a report of any size in
+    """Every number of the report's figures (:meth:`figure_data`), gathered one row at a time: a report of any size in
     memory that does not grow with its buildings (counters, sums and histogram bins only).
 
     Parameters
@@ -340,51 +328,6 @@ class Tally:
                 "exports": self.exports_table()}
 
 
-def stage_distribution(rs: Iterable[Row]) -> dict:
-    """Buildings per repair stage in ladder order (the method's Figure 10); empty for validate."""
-    return Tally(rs).stage_distribution()
-
-
-def iou_histogram(rs: Iterable[Row]) -> dict:
-    """IoU of every repaired building (the method's Figure 11, left)."""
-    return Tally(rs).iou.result()
-
-
-def displacement_histogram(rs: Iterable[Row]) -> dict:
-    """Mean vertex displacement of every repaired building, m (Figure 11, right)."""
-    return Tally(rs).displacement.result()
-
-
-def validity_by_code(rs: Iterable[Row]) -> dict:
-    """Buildings with each val3dity code before / after: ``{code: [before, after]}``."""
-    return Tally(rs).validity_by_code()
-
-
-def compliance(rs: Iterable[Row]) -> dict:
-    """Energy-compliant buildings before (no val3dity error but 601) and after the pipeline."""
-    return Tally(rs).compliance()
-
-
-def heating_by_typology(rs: Iterable[Row]) -> dict:
-    """Mean simulated heating need per m2 by typology: ``{typology: [mean kWh/m2, n]}``."""
-    return Tally(rs).heating_by_typology()
-
-
-def summary(rs: Iterable[Row]) -> dict:
-    """Dataset table (the method's Tables 4 to 6 for this file)."""
-    return Tally(rs).summary()
-
-
-def exports_table(rs: Iterable[Row]) -> dict:
-    """Per export format: buildings written and self-checked ok / failed."""
-    return Tally(rs).exports_table()
-
-
 def code_names(codes) -> dict:
     """val3dity name of each code."""
     return {str(c): code_name(int(c)) for c in codes}
-
-
-def figure_data(rs: Iterable[Row]) -> dict:
-    """Every number the report plots or tabulates (embedded in the page as JSON)."""
-    return Tally(rs).figure_data()

@@ -6,6 +6,9 @@ the page's), or ``""`` when there is nothing to plot.
 """
 from __future__ import annotations
 
+import base64
+import io
+
 import numpy as np
 
 from lod2energy.viz.data import GLOBAL, STATUS_COLOURS
@@ -30,8 +33,6 @@ def new_figure(w: float, h: float, **adjust):
 
 def _url(fig) -> str:
     """``data:image/svg+xml;base64,...`` of a plot (text kept as text: small and fast)."""
-    import base64
-    import io
 
     from matplotlib import rc_context
     buf = io.BytesIO()

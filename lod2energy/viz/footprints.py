@@ -10,6 +10,7 @@ from typing import Iterable, Iterator
 import numpy as np
 
 from lod2energy.io.seen_ids import id_key
+from lod2energy.viz.render import footprint
 
 #: A building with more faces gets a panel of text only: drawing (and re-validating) it would
 #: cost more than the rest of the page (a 100,000-face mesh that timed out, say).
@@ -33,7 +34,6 @@ def plan_footprint(b) -> list[np.ndarray]:
     """The footprint of building ``b`` on the plan view, ``[(k, 2) float, m]``: its ground faces
     (:func:`lod2energy.viz.render.footprint`), or for a mesh over ``MAX_PANEL_FACES`` faces (one
     that timed out, say) the convex hull of its vertices; empty when it cannot be drawn."""
-    from lod2energy.viz.render import footprint
     try:
         return footprint(b) if n_faces(b) <= MAX_PANEL_FACES else _hull(b)
     except Exception:  # noqa: BLE001 - a building whose footprint cannot be drawn is left off the plan

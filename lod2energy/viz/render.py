@@ -16,7 +16,11 @@ import re
 
 import numpy as np
 
+from lod2energy import cache
 from lod2energy.config import DEFAULT, Tolerances
+from lod2energy.geometry.polygons import newell_normal
+from lod2energy.geometry.vectors import unit
+from lod2energy.graph import building_graphs
 from lod2energy.model import Building
 
 #: Colours of the graph picture (the method's Figure 5 legend: valid faces, defective faces,
@@ -46,15 +50,6 @@ def faces(b: Building, lod: str | None = None) -> list[tuple[np.ndarray, str | N
     return out
 
 
-def _ring_normal(p: np.ndarray) -> np.ndarray:
-    q = np.roll(p, -1, axis=0)
-    n = np.array([np.sum((p[:, 1] - q[:, 1]) * (p[:, 2] + q[:, 2])),
-                  np.sum((p[:, 2] - q[:, 2]) * (p[:, 0] + q[:, 0])),
-                  np.sum((p[:, 0] - q[:, 0]) * (p[:, 1] + q[:, 1]))])
-    L = np.linalg.norm(n)
-    return n / L if L > 0 else n
-
-
 def footprint(b: Building) -> list[np.ndarray]:
     """Plan footprint as rings ``[(k, 2) float, m]``: the ground faces projected on the ground
     plane; else the downward faces; else the convex hull of the vertices. Empty when the
@@ -66,7 +61,7 @@ def footprint(b: Building) -> list[np.ndarray]:
     if rings:
         return rings
     fs = faces(b)
-    rings = [p[:, :2] for p, _ in fs if _ring_normal(p)[2] < -0.7]
+    rings = [p[:, :2] for p, _ in fs if unit(newell_normal(p))[2] < -0.7]
     if rings or not fs:
         return rings
     pts = np.vstack([p for p, _ in fs])[:, :2]
@@ -190,7 +185,7 @@ def draw_building(cv: Canvas, fs: list[tuple[np.ndarray, str | None]], origin: n
     for p, t in fs:
         xy, depth = project(p - origin)
         polys.append(xy)
-        cols.append(_shade(SURFACE_COLOURS.get(t, SURFACE_COLOURS[None]), _ring_normal(p)))
+        cols.append(_shade(SURFACE_COLOURS.get(t, SURFACE_COLOURS[None]), unit(newell_normal(p))))
         keys.append(depth.mean())
     order = np.argsort(keys)
     cv.add(PolyCollection([polys[i] for i in order], facecolors=[cols[i] for i in order],
@@ -218,8 +213,7 @@ def graph_picture(b: Building, defects=(), tol: Tolerances = DEFAULT, lod: str |
         "xy" ((2, 2))}]`` with kinds ``adjacency``, ``inconsistent_adjacency``, ``boundary_edge``,
         ``nonmanifold_edge``; ``counts``: elements per kind; ``status``: the graph's status.
     """
-    from lod2energy.graph import building_graph
-    g = building_graph(b, lod, tol)
+    g = building_graphs([b], lod, tol)[0]
     n = g.n_faces
     out = {"nodes": [], "edges": [], "counts": {}, "status": g.status, "colours": dict(GRAPH_COLOURS)}
     if n == 0:
@@ -305,18 +299,22 @@ def png_data_url(fig, dpi: int = 80, compress_level: int = 6) -> str:
     return "data:image/png;base64," + base64.b64encode(buf.getvalue()).decode("ascii")
 
 
-_CACHE: dict[str, str] = {}
-
-
 def panel_image(before: Building | None, after: Building | None, pic: dict) -> str:
     """One PNG (data URL) with input, repaired geometry and the input's face graph, side by side
     (captions are the page's: input | repaired | face-adjacency graph).
 
-    Cached by the digests of both buildings.
+    Kept (:mod:`lod2energy.cache`) by the digests of both buildings.
     """
     key = geometry_digest(before) + geometry_digest(after)
-    if key in _CACHE:
-        return _CACHE[key]
+    return cache.remember("viz.panels", key, lambda: _panel_image(before, after, pic), KEPT_PANELS)
+
+
+#: Panel pictures kept per process.
+KEPT_PANELS = 2048
+
+
+def _panel_image(before: Building | None, after: Building | None, pic: dict) -> str:
+    """:func:`panel_image` without the cache."""
     from lod2energy.viz.figures import new_figure
     fig = new_figure(9.6, 3.0)
     fig.dpi = 72
@@ -335,11 +333,7 @@ def panel_image(before: Building | None, after: Building | None, pic: dict) -> s
         else:
             fig.text(k / 3 + 1 / 6, 0.45, "not repaired" if k == 1 and f_in else "no geometry",
                      ha="center", va="center")
-    url = png_data_url(fig, dpi=72, compress_level=1)
-    if len(_CACHE) > 2048:
-        _CACHE.clear()
-    _CACHE[key] = url
-    return url
+    return png_data_url(fig, dpi=72, compress_level=1)
 
 
 def slug(s: str) -> str:

@@ -17,9 +17,9 @@ import numpy as np
 from lod2energy.model import Building
 from lod2energy.semantics import DEFAULT_RULES
 
-from lod2energy.exporters.polygons import _norm, newell_normal, polygon_area3d, triangulate, unit
-from lod2energy.exporters.shellcheck import signed_volume
-from lod2energy.exporters.weld import clean_ring, weld
+from lod2energy.geometry.polygons import _norm, newell_normal, polygon_area3d, triangulate, unit
+from lod2energy.geometry import signed_volume
+from lod2energy.geometry.snap import drop_repeats as clean_ring, weld
 from lod2energy.energy.uvalues import face_u_value, positive_number, window_u_value
 
 #: Weld distance for zone vertices (m): EnergyPlus warns about vertices closer than 1 cm.

@@ -15,8 +15,8 @@ from lod2energy.energy.openings import Opening
 from lod2energy.energy.pieces import Piece, _pieces_from_points
 from lod2energy.energy.zones import cut as zoning
 from lod2energy.energy.zones.shells import ZoneShell
-from lod2energy.exporters.polygons import newell_normal, unit
-from lod2energy.exporters.shellcheck import check_closed_outward
+from lod2energy.geometry.polygons import newell_normal, unit
+from lod2energy.validate.closed import check_closed_outward
 from lod2energy.thermal.storeys import ATTIC_MIN_HEIGHT, MIN_STOREY_HEIGHT, storeys
 from lod2energy.thermal.use import building_use
 

@@ -1,18 +1,17 @@
 """Agreement of our per-feature validation with a val3dity report.
 
 A feature agrees on the *verdict* when both say valid or both say invalid, and on the
-*code set* when both report the same set of distinct error codes. Used by the tests
-and to measure conformance on real tiles; nothing here special-cases a file.
+*code set* when both report the same set of distinct error codes. Helpers of
+``test_reference_agreement.py``; nothing here special-cases a file.
 """
 from __future__ import annotations
 
-import json
-import os
-import time
 from dataclasses import dataclass, field
 from typing import Iterable, Mapping
 
 from lod2energy.config import DEFAULT, Tolerances
+from lod2energy.io import read
+from lod2energy.validate.checks import validate_buildings
 
 
 @dataclass(frozen=True)
@@ -31,8 +30,6 @@ class Agreement:
         Features whose code sets differ (sorted code lists).
     missing : list of str
         Reference features we did not report at all (counted as disagreeing).
-    seconds : float
-        Time spent reading and validating (0 when not measured here).
     """
 
     n: int
@@ -40,7 +37,6 @@ class Agreement:
     codes: float
     disagreements: list = field(default_factory=list)
     missing: list = field(default_factory=list)
-    seconds: float = 0.0
 
 
 def reference_features(report: Mapping, types: Iterable[str] | None = ("Building",)) -> dict[str, tuple[bool, frozenset, str]]:
@@ -129,9 +125,6 @@ def validate_codes(path: str, tol: Tolerances = DEFAULT, chunk_size: int = 256) 
     Features are validated in chunks of ``chunk_size`` (shell checks batched across
     them). Unreadable features count with their reader code (901/902/904).
     """
-    from lod2energy.io import read
-    from lod2energy.validate.checks import validate_buildings
-
     _, feats = read(path)
     out: dict[str, set[int]] = {}
     chunk: list = []
@@ -159,33 +152,3 @@ def report_tolerances(report: Mapping) -> Tolerances:
                       planarity_d2p_tol=p.get("planarity_d2p_tol", DEFAULT.planarity_d2p_tol),
                       planarity_n_tol=p.get("planarity_n_tol", DEFAULT.planarity_n_tol),
                       overlap_tol=p.get("overlap_tol", DEFAULT.overlap_tol))
-
-
-def agreement_with_report(report_path: str, shared_root: str | None = None, tol: Tolerances | None = None,
-                          types: Iterable[str] | None = ("Building",)) -> Agreement:
-    """Validate the data file a val3dity report names and compare.
-
-    Parameters
-    ----------
-    report_path : str
-        A ``*.report.json``; its ``input_file`` is relative to ``shared_root``.
-    shared_root : str, optional
-        Default: the parent of the report's folder.
-    tol : Tolerances, optional
-        Default: the report's ``parameters`` (snap_tol, planarity, overlap_tol).
-    types : iterable of str or None
-
-    Returns
-    -------
-    Agreement (with ``seconds`` = read + validation time)
-    """
-    with open(report_path, encoding="utf-8") as f:
-        report = json.load(f)
-    root = shared_root or os.path.dirname(os.path.dirname(os.path.abspath(report_path)))
-    if tol is None:
-        tol = report_tolerances(report)
-    t0 = time.perf_counter()
-    ours = validate_codes(os.path.join(root, report["input_file"]), tol)
-    dt = time.perf_counter() - t0
-    a = compare(ours, report, types)
-    return Agreement(a.n, a.verdict, a.codes, a.disagreements, a.missing, dt)

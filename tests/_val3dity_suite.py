@@ -1,4 +1,4 @@
-"""val3dity's own test suite run through lod2energy (conformance figures).
+"""val3dity's own test suite run through lod2energy (helpers of ``test_val3dity_conformance.py``).
 
 ``../shared/data/val3dity-tests/EXPECTED_RESULTS.json`` lists, for each test file of
 val3dity, the command-line options and the acceptable outcomes (lists of distinct error
@@ -15,9 +15,11 @@ from pathlib import Path
 from typing import Any, Iterable, Mapping
 
 from lod2energy.config import DEFAULT, Tolerances
+from lod2energy.io import read
 from lod2energy.model import FeatureError
+from lod2energy.validate.checks import validate_building
 
-SUITE = Path(__file__).resolve().parents[2].parent / "shared" / "data" / "val3dity-tests"
+SUITE = Path(__file__).resolve().parents[2] / "shared" / "data" / "val3dity-tests"
 """Default location of val3dity's test data (``../shared/...`` next to the repository)."""
 
 _FLOAT_OPTIONS = {"--snap_tol": "snap_tol", "--overlap_tol": "overlap_tol",
@@ -73,9 +75,6 @@ def parse_options(options: Iterable[str]) -> tuple[dict, Tolerances]:
 
 def run_file(path: str, read_opts: Mapping[str, Any] | None = None, tol: Tolerances = DEFAULT) -> list[int]:
     """Sorted distinct codes lod2energy reports for a whole file (``[]`` when valid)."""
-    from lod2energy.io import read
-    from lod2energy.validate.checks import validate_building
-
     codes: set[int] = set()
     mesh_only = {"primitive", "inner_shells"}
     opts = dict(read_opts or {})
@@ -123,38 +122,3 @@ def matches(case: Mapping[str, Any], outcome: list[int]) -> bool:
         elif isinstance(exp, list) and sorted(set(exp)) == got:
             return True
     return False
-
-
-def summary(root: Path | str = SUITE, statuses: Iterable[str] = ("tested",)) -> dict:
-    """Pass share over the cases, overall and on polygon-level/input cases (codes < 300).
-
-    Returns
-    -------
-    dict
-        ``{"n", "passed", "share", "n_low", "passed_low", "share_low", "failures": [(id, expected, got)]}``;
-        "low" cases are those whose expectations only involve codes < 300 or 9xx.
-    """
-    cases = load_cases(root, statuses)
-    res = {"n": 0, "passed": 0, "n_low": 0, "passed_low": 0, "failures": []}
-    for c in cases:
-        got = run_case(c, root)
-        ok = matches(c, got)
-        exp = c["expected"] if isinstance(c.get("expected"), list) else []
-        low = bool(exp) and all(e == "CRASH" or all(code < 300 or code >= 900 for code in e) for e in exp)
-        res["n"] += 1
-        res["passed"] += ok
-        res["n_low"] += low
-        res["passed_low"] += ok and low
-        if not ok:
-            res["failures"].append((case_id(c), c["expected"], got))
-    res["share"] = res["passed"] / res["n"] if res["n"] else 0.0
-    res["share_low"] = res["passed_low"] / res["n_low"] if res["n_low"] else 0.0
-    return res
-
-
-if __name__ == "__main__":  # python -m lod2energy.validate.conformance
-    s = summary()
-    print(f"val3dity conformance: {s['passed']}/{s['n']} = {s['share']:.1%} "
-          f"(codes < 300 and 9xx: {s['passed_low']}/{s['n_low']} = {s['share_low']:.1%})")
-    for cid, exp, got in s["failures"]:
-        print(f"  FAIL {cid}: expected {exp}, got {got}")

@@ -1,60 +1,37 @@
-"""Planar polygons as the writers cut them: normals, areas, a wall-aligned plane basis, triangles, convex pieces.
+"""Planar polygons as the writers cut them: areas, a wall-aligned plane basis, triangles, convex pieces.
 
 Exporter coordinates are local (a few hundred metres at most, see
 :func:`~lod2energy.energy.zones.shells.local_origin`). The normal is
 :func:`lod2energy.geometry.newell_normal` in Newell's textbook form (``centred=False``): the
-exporters' thresholds (piece area, planarity, collinearity) and their written IDF/STL bytes
-were made with that operation order. Earcut is :func:`lod2energy.geometry.earcut_rings`.
+writers' thresholds (piece area, planarity, collinearity) and their written IDF/STL bytes were
+made with that operation order.
 
-What is the writers' own: a plane basis whose ``u`` is horizontal (walls are written with
-"up" = ``v``; :func:`lod2energy.geometry.plane_basis` picks ``u`` from the x axis instead),
-putting back the collinear ring vertices earcut skips (neighbouring faces must keep sharing
-every vertex), and Hertel-Mehlhorn merging of triangles into the convex pieces EnergyPlus wants.
+What is the writers' own: a plane basis whose ``u`` is horizontal (:func:`wall_basis`: walls are
+written with "up" = ``v``), putting back the collinear ring vertices earcut skips (neighbouring
+faces must keep sharing every vertex), and Hertel-Mehlhorn merging of triangles into the convex
+pieces EnergyPlus wants.
 """
 from __future__ import annotations
 
 import math
+from functools import partial
 from typing import Sequence
 
 import numpy as np
 
-from lod2energy.geometry import earcut_rings
-from lod2energy.geometry import newell_normal as _newell
-from lod2energy.geometry.vectors import vector_length
+from lod2energy import cache
+from lod2energy.geometry.cdt import earcut_rings
+from lod2energy.geometry.vectors import newell_normal as _newell, unit, vector_length as _norm
 
 #: Largest distance of a vertex to its face plane (m) for the face to be written as one piece.
 PLANAR_TOL = 0.01
 
 
-def newell_normal(points: np.ndarray) -> np.ndarray:
-    """Area-weighted normal of a polygon (Newell's sums on the coordinates), length = 2 x area.
-
-    Parameters
-    ----------
-    points : (k, 3) float
-        Ring vertices, open, m.
-
-    Returns
-    -------
-    (3,) float, m2
-    """
-    return _newell(points, centred=False)
+#: Newell's normal on the raw coordinates (length = 2 x area, m2), the writers' operation order.
+newell_normal = partial(_newell, centred=False)
 
 
-#: Euclidean length of a 1-D float64 vector, as ``np.linalg.norm`` computes it (the same bits).
-_norm = vector_length
-
-
-def unit(v: np.ndarray) -> np.ndarray:
-    """``v`` scaled to length 1 (unchanged when it is zero)."""
-    if type(v) is np.ndarray and v.ndim == 1 and v.dtype == np.float64:
-        n = _norm(v)
-    else:
-        n = float(np.linalg.norm(v))
-    return v / n if n > 0 else v
-
-
-def plane_basis(normal: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+def wall_basis(normal: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Orthonormal (u, v) in the plane of unit ``normal`` with u x v = normal.
 
     u is horizontal (so for walls v points up), except on horizontal planes where u = +x.
@@ -122,18 +99,12 @@ def triangulate(points: np.ndarray, ring_ends: Sequence[int], normal: np.ndarray
     if normal is not None:
         return _triangulate(p, ring_ends, normal)
     key = (p.shape, p.tobytes(), tuple(map(int, ring_ends)))
-    hit = _TRI_CACHE.get(key)
-    if hit is None:
-        hit = _triangulate(p, ring_ends, newell_normal(p[: ring_ends[0]]))
-        if len(_TRI_CACHE) >= TRI_CACHE_SIZE:
-            _TRI_CACHE.clear()
-        _TRI_CACHE[key] = hit
-    return hit.copy()
+    return cache.remember("geometry.polygon-triangles", key,
+                          lambda: _triangulate(p, ring_ends, newell_normal(p[: ring_ends[0]])), KEPT_POLYGONS).copy()
 
 
-#: Most polygons :func:`triangulate` remembers (the cache is emptied when it is full).
-TRI_CACHE_SIZE = 4096
-_TRI_CACHE: dict = {}
+#: Polygons whose triangles :func:`triangulate` keeps (:mod:`lod2energy.cache`).
+KEPT_POLYGONS = 4096
 
 
 def _triangulate(p: np.ndarray, ring_ends: Sequence[int], normal: np.ndarray) -> np.ndarray:
@@ -141,7 +112,7 @@ def _triangulate(p: np.ndarray, ring_ends: Sequence[int], normal: np.ndarray) ->
     n = unit(normal)
     if not n.any():
         return np.zeros((0, 3), dtype=np.intp)
-    u, v = plane_basis(n)
+    u, v = wall_basis(n)
     d = p - np.add.reduce(p, axis=0) / len(p)  # p - p.mean(axis=0), the same bits
     xy = np.empty((len(p), 2))
     xy[:, 0] = d @ u
@@ -202,7 +173,7 @@ def _insert_dropped(tri: np.ndarray, xy: np.ndarray, missing: np.ndarray) -> np.
 STRICT_SIN = 2e-3
 
 
-def _is_convex_2d(xy: np.ndarray, eps: float = 1e-9, strict: bool = False) -> bool:
+def is_convex_2d(xy: np.ndarray, eps: float = 1e-9, strict: bool = False) -> bool:
     """Counter-clockwise polygon ``(k, 2)`` convex?
 
     Collinear corners are allowed unless ``strict`` (then every turn must have a sine of
@@ -260,7 +231,7 @@ def merge_convex(tris: np.ndarray, xy: np.ndarray, strict: bool = False) -> list
             merged = p_rot + q_rot[1:-1]   # b ... a ... (before b)
             if len(set(merged)) != len(merged):
                 continue
-            if _is_convex_2d(xy[merged], strict=strict):
+            if is_convex_2d(xy[merged], strict=strict):
                 polys[pi] = merged
                 polys[qi] = None
                 changed = True
