@@ -55,7 +55,7 @@ def cases(quick: bool) -> list[tuple[str, list[str], bool]]:
 
 
 #: Keys of JSON reports that hold a measured time (they differ run to run).
-TIMING = re.compile(r"^(seconds.*|.*_seconds|elapsed.*|timings?)$")
+TIMING = re.compile(r"^(time|seconds.*|.*_seconds|elapsed.*|timings?)$")
 
 
 def _untimed(x):
