@@ -21,6 +21,7 @@ their entries, which are valid there too: keys are contents). Tests empty them w
 from __future__ import annotations
 
 import hashlib
+import functools
 from collections import OrderedDict
 from typing import Any, Callable, Hashable, Sequence
 
@@ -116,3 +117,19 @@ def clear(name: str | None = None) -> None:
 def sizes() -> dict[str, tuple[int, int]]:
     """``{table: (entries, bound)}`` of this process."""
     return {n: (len(t), _SIZES.get(n, 0)) for n, t in _TABLES.items()}
+
+
+def memoize(name: str, size: int) -> Callable[[Callable], Callable]:
+    """Decorator: a function of hashable arguments whose results are kept in table ``name``
+    (the loaders of shipped data, schemas and the IDD: read once per process)."""
+
+    def wrap(fn: Callable) -> Callable:
+        @functools.wraps(fn)
+        def memoized(*args, **kw):
+            key = (args, tuple(sorted(kw.items()))) if kw else args
+            return remember(name, key, lambda: fn(*args, **kw), size)
+
+        memoized.cache_clear = lambda: clear(name)  # type: ignore[attr-defined]
+        return memoized
+
+    return wrap
