@@ -8,6 +8,7 @@ import io
 import json
 import os
 import sys
+from collections import Counter
 from typing import TYPE_CHECKING, Iterable, Sequence
 
 from lod2energy.config import DEFAULT, Tolerances
@@ -230,10 +231,20 @@ def print_export_summary(records: Iterable[BuildingRecord], formats: Iterable[st
     formats = [f for f in FORMATS if f in set(formats)]
     n = comp = rep = timeouts = 0
     ok = dict.fromkeys(formats, 0)
+    sources: dict[str, Counter] = {f: Counter() for f in ("year", "storeys", "use")}
+    warned: Counter = Counter()
+    maps: Counter = Counter()
     for r in records:  # one pass: ``records`` may rebuild each record as it is read
         if not (r.type == "Building" or r.assessed):
             continue
         n += 1
+        facts = r.thermal.detail.get("facts") or {}
+        for f, c in sources.items():
+            if f in facts:
+                c[facts[f].get("source", "")] += 1
+        warned.update(w.get("field", "") for w in r.thermal.detail.get("warnings") or ())
+        if r.thermal.detail.get("attribute_map"):
+            maps[r.thermal.detail["attribute_map"]] += 1
         comp += bool(r.energy.compliant)
         rep += r.repair.stage not in ("", "valid", "none", "irreparable")
         timeouts += r.outcome == "timeout"
@@ -243,6 +254,12 @@ def print_export_summary(records: Iterable[BuildingRecord], formats: Iterable[st
     cells = [f"{ok[f]}/{n}" for f in formats]
     print(f"{n:>9} {comp:>9} {rep:>8}  " + "  ".join(f"{c:>8}" for c in cells)
           + (f"  ({timeouts} timeout)" if timeouts else ""))
+    if maps:
+        print(f"attribute map: {', '.join(sorted(maps))}; " + "; ".join(
+            f"{f} from " + ", ".join(f"{k} {v}" for k, v in c.most_common()) for f, c in sources.items() if c))
+    for f, k in sorted(warned.items()):
+        print(f"warning: {k} building(s) with a sentinel or implausible {f} taken as unknown (report.json: "
+              f"thermal.warnings)")
     for t in terrain:
         print(f"terrain: {t['objects']} TINRelief object(s), {t['faces']} faces, carried into {t['path']}")
     print(f"report: {os.path.join(outdir, 'report.json')} and report.csv")
