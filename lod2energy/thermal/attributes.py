@@ -269,7 +269,10 @@ def parse_map(text: str, where: str, default_name: str, seen: tuple[str, ...] = 
     for inc in include:
         if inc in seen:
             raise ParameterError(f"{where}: profile {inc!r} includes itself")
-        other = profile(str(inc), seen + (default_name,))
+        try:
+            other = profile(str(inc), seen + (default_name,))
+        except ParameterError as e:
+            raise ParameterError(f"{where}: include: {e}") from None
         for n, fm in other.fields.items():
             fields[n] = _merge(fields[n], fm) if n in fields else fm
     return AttributeMap(str(d.get("name") or default_name), frozen_mapping(fields), user)

@@ -13,8 +13,8 @@ Sources, most specific first (the first that gives a usable value wins):
 
 Sentinels and implausible values are unknown, with a warning, and the next source is tried:
 a year <= 1000, 9999, or later than the building's ``creationDate``, else the file's
-``referenceDate``, else today; a storey count of 9999 (or < 1, > 200), or one that gives a
-storey height outside :data:`STOREY_HEIGHT_RANGE`.
+``referenceDate``, else today; a storey count of 9999 (or < 1, > 200), or an attribute's count
+that gives a storey height outside :data:`STOREY_HEIGHT_RANGE`.
 """
 from __future__ import annotations
 

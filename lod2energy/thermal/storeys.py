@@ -7,8 +7,9 @@ Order of the sources (the first that gives a count wins; :attr:`Storeys.source` 
    default CityGML ``bldg:storeysAboveGround``, the 3DBAG's ``b3_bouwlagen``, OSM-style
    ``building:levels``, ...); ``storey_heights`` (CityGML ``storeyHeightsAboveGround``, a list
    or a whitespace-separated string of heights, m) gives the heights, and the count when no
-   count is given. Sentinels (9999) are unknown, and so is a count that gives a storey height
-   outside 2-6 m (:func:`lod2energy.thermal.facts.storeys_candidates`), with a warning.
+   count is given. Sentinels (9999) are unknown, and so is an attribute's count that gives a
+   storey height outside 2-6 m (:func:`lod2energy.thermal.facts.storeys_candidates`), with a
+   warning; the user's row is taken as given.
 2. **geometry** (:func:`roof_levels`): the ground level ``z0`` (lowest point of the ground
    surfaces, else of the shell), the eave level (area-weighted median over the roof faces of
    each face's lowest point: a flat roof's own height, a pitched roof's eave) and the ridge
@@ -203,7 +204,7 @@ def storeys(b: Building, use: str = "residential", lod: str | None = None,
         below = max(1, n - (1 if attic else 0))
         if levels.eave > levels.ground:
             h = (levels.eave - levels.ground) / below
-            if not (STOREY_HEIGHT_RANGE[0] <= h <= STOREY_HEIGHT_RANGE[1]):
+            if f.source != "table" and not (STOREY_HEIGHT_RANGE[0] <= h <= STOREY_HEIGHT_RANGE[1]):
                 if warnings is not None:
                     warnings.append(("storeys", f"{n} storeys ({f.key or f.source}) taken as unknown: a storey "
                                      f"height of {h:.1f} m is outside {STOREY_HEIGHT_RANGE[0]:g}-"

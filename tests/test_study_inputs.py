@@ -1,0 +1,290 @@
+"""Study inputs: attribute maps, the --buildings table, value sources and sentinels, --ids, --run-period."""
+from __future__ import annotations
+
+import csv
+import json
+from dataclasses import replace
+from pathlib import Path
+
+import pytest
+
+from conftest import shared_path
+from factories import box, gabled_house
+from lod2energy.cli import main
+from lod2energy.errors import ParameterError
+from lod2energy.exporters.energyplus.options import parse_run_period
+from lod2energy.semantics import label_building
+from lod2energy.thermal import ThermalOptions, assign_u_values
+from lod2energy.thermal.attributes import load_attribute_map, parse_map, profile, profiles
+from lod2energy.thermal.facts import TABLE_KEY, year_fact, year_of
+from lod2energy.thermal.table import parse_buildings
+from lod2energy.thermal.use import building_use
+from spine_inputs import row_of_boxes_seq
+
+EXAMPLE = Path(__file__).resolve().parents[1] / "examples" / "delft_subset.city.jsonl"
+
+
+def _with(b=None, **attrs):
+    b = b if b is not None else box()
+    return replace(b, objects=(replace(b.root, attributes={**b.root.attributes, **attrs}),) + b.objects[1:])
+
+
+def _thermal(b, **kw) -> dict:
+    return dict(assign_u_values(label_building(b), ThermalOptions(country="NL", **kw)).provenance["thermal"])
+
+
+# ----------------------------------------------------------------------------- attribute maps
+
+def test_builtin_profiles_load_and_auto_holds_every_one():
+    names = profiles()
+    assert {"auto", "citygml", "3dbag", "alkis", "plateau", "osm"} <= set(names)
+    auto = profile("auto")
+    for n in names:
+        for field, fm in profile(n).fields.items():
+            assert set(fm.keys) <= set(auto.field(field).keys), (n, field)
+    assert not auto.user  # built-in keys are "attribute", never "map"
+
+
+@pytest.mark.parametrize("attrs,field,value", [
+    ({"oorspronkelijkbouwjaar": 1931}, "year", 1931), ({"yearOfConstruction": "1975-01-01"}, "year", 1975),
+    ({"Baujahr": 1988.0}, "year", 1988), ({"construction_year": "2001"}, "year", 2001),
+    ({"function": "31001_2460"}, "use", "other"), ({"gebruiksdoel": "kantoorfunctie"}, "use", "office"),
+    ({"usage": "411"}, "use", "residential"), ({"building": "Apartments"}, "use", "residential"),
+    ({"function": "31001_2461"}, "conditioned", False), ({"building": "garage"}, "conditioned", False),
+    ({"roofType": "1030"}, "roof_type", "gabled"),
+])
+def test_auto_profile_reads_the_producers_recognised_so_far(attrs, field, value):
+    found = profile("auto").read(_with(**attrs), field, year_of if field == "year" else None)
+    assert found is not None and found.value == value and found.key == next(iter(attrs))
+
+
+def test_a_user_map_reads_renamed_attributes_with_source_map(tmp_path):
+    p = tmp_path / "fi.toml"
+    p.write_text('name = "helsinki"\n[year]\nkeys = ["Valmistunut"]\n[storeys]\nkeys = ["Kerroksia"]\n'
+                 '[use]\nkeys = ["C_KAYTTARK"]\n[use.values]\n"011" = "residential"\n"151" = "office"\n',
+                 encoding="utf-8")
+    amap = load_attribute_map(p)
+    assert amap.name == "helsinki"
+    b = _with(box(dz=9.0), Valmistunut="1962", Kerroksia=3, C_KAYTTARK="151", yearOfConstruction=1900)
+    th = _thermal(b, attribute_map=amap)
+    f = th["facts"]
+    assert (f["year"]["value"], f["year"]["source"], f["year"]["key"]) == (1962, "map", "Valmistunut")
+    assert f["storeys"]["value"] == 3 and f["storeys"]["source"] == "map"
+    assert f["use"]["value"] == "office" and f["use"]["source"] == "map" and f["use"]["raw"] == "151"
+    assert th["attribute_map"] == "helsinki"
+    # the built-in profiles still fill what the map leaves open (include = ["auto"] by default)
+    assert _thermal(_with(box(), yearOfConstruction=1900), attribute_map=amap)["facts"]["year"]["source"] == "attribute"
+    alone = parse_map('include = []\n[year]\nkeys = ["Valmistunut"]\n', "t", "t")
+    assert _thermal(_with(box(), yearOfConstruction=1900), attribute_map=alone)["facts"]["year"]["value"] is None
+
+
+@pytest.mark.parametrize("text,why", [
+    ("[year\nkeys = 1", "not valid TOML"),
+    ("[colour]\nkeys = ['x']", "unknown entries colour"),
+    ("[use]\nkeys = ['x']\n[use.values]\na = 'palace'", "a use must be one of"),
+    ("[conditioned]\nkeys = ['x']\n[conditioned.values]\na = 'maybe'", "true or false"),
+    ("[use]\nkeys = ['x']\n[[use.rules]]\npattern = '('\nranges = []", "pattern"),
+    ("[use]\nkeys = ['x']\n[[use.rules]]\npattern = '(\\d+)'\nranges = [[1, 'office']]", "[low, high, result]"),
+    ("[year]\nkeys = 'a'\nfrom = 'b'", "unknown entries from"),
+    ("include = ['nosuch']", "no built-in attribute profile"),
+])
+def test_a_bad_map_is_one_clear_error(text, why):
+    with pytest.raises(ParameterError, match="map.toml") as e:
+        parse_map(text, "map.toml", "map")
+    assert why in str(e.value)
+
+
+def test_a_bad_map_or_table_exits_2_and_writes_nothing(tmp_path, capsys):
+    bad = tmp_path / "bad.toml"
+    bad.write_text("[use]\nkeys = ['x']\n[use.values]\na = 'palace'\n", encoding="utf-8")
+    out = tmp_path / "out"
+    assert main(["export", str(EXAMPLE), "-o", str(out), "--geojson", "-q", "--attribute-map", str(bad)]) == 2
+    assert "palace" in capsys.readouterr().err and not out.exists()
+    table = tmp_path / "b.csv"
+    table.write_text("id,year\nx,1950\ny,19x0\n", encoding="utf-8")
+    assert main(["export", str(EXAMPLE), "-o", str(out), "--geojson", "-q", "--buildings", str(table)]) == 2
+    err = capsys.readouterr().err
+    assert "line 3, column year" in err and "Traceback" not in err and not out.exists()
+
+
+# ----------------------------------------------------------------------------- the table
+
+def test_table_parses_and_names_line_and_column_of_a_bad_value():
+    t = parse_buildings("id;year;use;conditioned;u_wall;wwr\na;1950;Office;no;0.4;\nb;;;;;0.3\n", "t.csv")
+    assert dict(t["a"]) == {"year": 1950, "use": "office", "conditioned": False, "u_wall": 0.4}
+    assert dict(t["b"]) == {"wwr": 0.3}
+    for text, where in [("id,storeys\na,0\n", "line 2, column storeys"), ("id,u_roof\na,9\n", "column u_roof"),
+                        ("id,use\na,palace\n", "column use"), ("id,year\na,1950\na,1960\n", "line 3, column id"),
+                        ("id,colour\na,red\n", "unknown column"), ("year\n1950\n", "needs an 'id' column"),
+                        ("id,wwr\na,1.0\n", "column wwr")]:
+        with pytest.raises(ParameterError, match="t.csv") as e:
+            parse_buildings(text, "t.csv")
+        assert where in str(e.value), text
+
+
+def test_a_table_row_wins_and_says_so():
+    row = {"year": 1925, "storeys": 2, "use": "retail", "conditioned": False, "u_wall": 1.1, "wwr": 0.4}
+    b = _with(box(dz=6.0), oorspronkelijkbouwjaar=1990, b3_bouwlagen=3).with_provenance(**{TABLE_KEY: row})
+    th = _thermal(b, u_wall=0.3)
+    f = th["facts"]
+    for k, v in row.items():
+        assert f[k]["value"] == v and f[k]["source"] == "table", k
+    assert th["u_values"]["wall"] == 1.1 and th["wwr"] == 0.4 and th["year_of_construction"] == 1925
+    assert f["u_roof"]["source"] == "default" and th["use"] == "retail"
+    plain = _thermal(b.with_provenance(**{TABLE_KEY: None}), u_wall=0.3)["facts"]
+    assert plain["year"]["value"] == 1990 and plain["u_wall"] == {"value": 0.3, "source": "option", "key": "u_wall"}
+
+
+# ----------------------------------------------------------------------------- sentinels
+
+@pytest.mark.parametrize("value,ref,known", [
+    (2099, "2020-01-01", None), (2019, "2020-01-01", 2019), (9999, None, None), (1000, None, None),
+    (1001, None, 1001), ("0", None, None),
+])
+def test_sentinel_and_late_years_are_unknown_with_a_warning(value, ref, known):
+    warnings = []
+    f = year_fact(_with(yearOfConstruction=value), reference_date=ref, warnings=warnings)
+    assert f.value == known
+    assert (f.source == "default") == (known is None)
+    assert bool(warnings) == (known is None)
+
+
+def test_a_sentinel_falls_back_to_the_next_attribute_and_creation_date_bounds_the_year():
+    f = year_fact(_with(yearOfConstruction=9999, oorspronkelijkbouwjaar=1968))
+    assert f.value == 1968 and f.key == "oorspronkelijkbouwjaar"
+    assert year_fact(_with(yearOfConstruction=2023, creationDate="2021-05-01")).value is None
+    th = _thermal(_with(box(), yearOfConstruction=2099), reference_date="2020-06-30")
+    assert th["year_of_construction"] is None and th["construction_period"].endswith("(assumed)")
+    assert any("2099" in w["message"] and "referenceDate" in w["message"] for w in th["warnings"])
+
+
+def test_plateau_9999_storeys_are_unknown():
+    th = _thermal(_with(gabled_house(eaves=5.6, ridge=9.0), storeysAboveGround=9999, usage="411"))
+    assert th["facts"]["storeys"]["source"] == "geometry" and th["facts"]["storeys"]["value"] == 3
+    assert th["facts"]["use"]["value"] == "residential" and th["facts"]["use"]["scheme"] == "PLATEAU"
+    assert [w["field"] for w in th["warnings"]] == ["storeys"]
+
+
+# ----------------------------------------------------------------------------- a shared tile, renamed
+
+RENAMED = {"oorspronkelijkbouwjaar": "Valmistunut", "b3_bouwlagen": "Kerroksia", "b3_h_dak_70p": "korkeus",
+           "b3_h_maaiveld": "maanpinta", "b3_opp_scheidingsmuur": "yhteinen_seina"}
+MAP = """name = "renamed"
+include = []
+[year]
+keys = ["Valmistunut"]
+[storeys]
+keys = ["Kerroksia"]
+[height]
+keys = ["korkeus"]
+ground = {korkeus = "maanpinta"}
+[shared_wall]
+keys = ["yhteinen_seina"]
+[use]
+keys = ["kaytto"]
+[use.values]
+asuinrakennus = "residential"
+toimisto = "office"
+"""
+
+
+def test_a_tile_with_renamed_attributes_and_a_map_gives_the_same_study_inputs():
+    from lod2energy import io
+    from lod2energy.model import Building
+    _, feats = io.read(str(shared_path("3dbag", "delft_subset.city.jsonl")))
+    amap = parse_map(MAP, "renamed.toml", "renamed")
+    uses = ["residential", "office"]
+    n = 0
+    for i, b in enumerate(f for f in feats if isinstance(f, Building) and f.is_building):
+        use = uses[i % 2]
+        orig = _with(b, gebruiksdoel="woonfunctie" if use == "residential" else "kantoorfunctie")
+        objs = tuple(replace(o, attributes={RENAMED.get(k, k): v for k, v in o.attributes.items()})
+                     for o in b.objects)
+        ren = _with(replace(b, objects=objs), kaytto="asuinrakennus" if use == "residential" else "toimisto")
+        assert "oorspronkelijkbouwjaar" not in ren.root.attributes
+        a, r = _thermal(orig), _thermal(ren, attribute_map=amap)
+        for k in ("year_of_construction", "storeys", "typology", "construction_period", "u_values", "UA"):
+            assert a[k] == r[k], (b.id, k)
+        for k in ("year", "storeys", "use"):
+            assert a["facts"][k]["value"] == r["facts"][k]["value"], (b.id, k)
+            assert r["facts"][k]["source"] == ("map" if a["facts"][k]["source"] == "attribute"
+                                               else a["facts"][k]["source"]), (b.id, k)
+        n += a["facts"]["year"]["source"] == "attribute" and a["facts"]["storeys"]["source"] == "attribute"
+    assert n >= 3
+
+
+# ----------------------------------------------------------------------------- the CLI
+
+def _csv(path: Path) -> dict[str, dict]:
+    with open(path, newline="", encoding="utf-8") as f:
+        return {r["id"]: r for r in csv.DictReader(f)}
+
+
+def test_a_buildings_table_changes_exactly_the_buildings_and_fields_it_names(tmp_path, capsys):
+    base = tmp_path / "base"
+    assert main(["export", str(EXAMPLE), "-o", str(base), "--geojson", "-q", "-j", "1"]) in (0, 1)
+    before = _csv(base / "report.csv")
+    ids = sorted(before)
+    table = tmp_path / "buildings.csv"
+    table.write_text(f"id,year,use,storeys\n{ids[0]},1925,,\n{ids[1]},,office,2\nnot-in-the-file,1960,,\n",
+                     encoding="utf-8")
+    out = tmp_path / "out"
+    assert main(["export", str(EXAMPLE), "-o", str(out), "--geojson", "-q", "-j", "1",
+                 "--buildings", str(table)]) in (0, 1)
+    assert "--buildings: 1 of 3 ids are not buildings" in capsys.readouterr().err
+    after = _csv(out / "report.csv")
+    assert after[ids[0]]["year"] == "1925" and after[ids[0]]["year_source"] == "table"
+    assert after[ids[1]]["use"] == "office" and after[ids[1]]["use_source"] == "table"
+    assert after[ids[1]]["storeys"] == "2" and after[ids[1]]["storeys_source"] == "table"
+    changed = {(i, k) for i in ids for k in before[i] if before[i][k] != after[i][k]}
+    fields = {"year", "year_source", "use", "use_source", "storeys", "storeys_source", "typology",
+              "construction_period", "UA_W_per_K"}
+    assert {i for i, _ in changed} <= {ids[0], ids[1]}
+    assert {k for _, k in changed} <= fields
+    assert (ids[0], "year") in changed and (ids[1], "use") in changed
+
+
+def test_ids_write_only_the_selection_and_party_walls_with_others_stay_adiabatic(tmp_path, capsys):
+    src = row_of_boxes_seq(tmp_path / "row.city.jsonl", n=5)
+    full = tmp_path / "full"
+    assert main(["export", src, "-o", str(full), "--idf", "-q", "-j", "1"]) == 0
+    out = tmp_path / "sel"
+    assert main(["export", src, "-o", str(out), "--idf", "-q", "-j", "1", "--ids", "b2,b9",
+                 "--run-period", "01-01:01-31"]) == 0
+    assert "--ids: 1 of 2 ids are not buildings" in capsys.readouterr().err
+    assert sorted(p.name for p in out.glob("*.idf")) == ["b2.idf"]
+    rep = json.loads((out / "report.json").read_text())
+    assert [b["id"] for b in rep["buildings"]] == ["b2"]
+    assert list(_csv(out / "report.csv")) == ["b2"]
+    idf = (out / "b2.idf").read_text()
+    assert idf.count("Adiabatic") == (full / "b2.idf").read_text().count("Adiabatic") >= 2
+    period = idf.split("RunPeriod,")[1].split(";")[0]
+    assert "Period, " in period and "Annual" not in period and "  1, 31, ," in period
+    assert "12, 31, ," in (full / "b2.idf").read_text()
+
+
+def test_ids_from_a_file(tmp_path):
+    src = row_of_boxes_seq(tmp_path / "row.city.jsonl", n=3, touching=False)
+    ids = tmp_path / "ids.txt"
+    ids.write_text("# the study\nb0\nb2\n", encoding="utf-8")
+    out = tmp_path / "out"
+    assert main(["export", src, "-o", str(out), "--idf", "-q", "-j", "1", "--ids", f"@{ids}"]) == 0
+    assert sorted(p.name for p in out.glob("*.idf")) == ["b0.idf", "b2.idf"]
+
+
+@pytest.mark.parametrize("text,ok", [("01-01:01-31", (1, 1, 1, 31)), ("2-29:3-1", (2, 29, 3, 1)),
+                                     ("12-31:01-01", None), ("02-30:03-01", None), ("jan:feb", None)])
+def test_run_period(text, ok):
+    if ok is None:
+        with pytest.raises(ParameterError, match="--run-period"):
+            parse_run_period(text)
+    else:
+        assert parse_run_period(text) == ok
+
+
+def test_use_is_read_once_and_reused_from_the_prepared_building():
+    b = _with(box(), function="31001_2020")
+    tb = assign_u_values(label_building(b), ThermalOptions(country="DE"))
+    assert building_use(tb).type == "office" and building_use(tb).source == "attribute"
+    # the prepared building keeps the use it was given even if read with another map
+    assert building_use(tb, amap=parse_map("include = []", "t", "t")).type == "office"
