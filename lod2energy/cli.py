@@ -301,6 +301,7 @@ def export_options(a) -> "ExportOptions":
     from lod2energy.exporters.stl import StlOptions
     from lod2energy.options import FORMATS, ExportOptions, prepare_options
 
+    from lod2energy.exporters.cfd.options import region_from_args
     from lod2energy.exporters.energyplus.options import parse_run_period
 
     formats = tuple(f for f in FORMATS if getattr(a, f, False))
@@ -321,7 +322,7 @@ def export_options(a) -> "ExportOptions":
     return ExportOptions(formats, prepare_options(a, _tolerances(a)), idf,
                          StlOptions(mode=a.stl_mode, ascii=a.stl_ascii, lod=a.lod),
                          CityJsonOptions(a.cityjson_version), cfd=cfd, html=not getattr(a, "no_html", False),
-                         buildings=table, ids=parse_ids(getattr(a, "ids", None)))
+                         buildings=table, ids=parse_ids(getattr(a, "ids", None)), region=region_from_args(a))
 
 
 def parse_ids(spec: str | None) -> tuple[str, ...] | None:

@@ -84,6 +84,9 @@ class ExportOptions:
     ids : tuple of str, optional
         Only these buildings are exported and reported (``--ids``); the others within reach
         of a neighbour writer (party walls, shading) are still prepared as neighbours.
+    region : lod2energy.exporters.cfd.region.Region, optional
+        Only the buildings whose plan hull meets it (``--region``, ``--centre`` / ``--radius``),
+        as with ``ids`` (both given: the buildings of both).
     hard_timeout : float or None, s
         Limit of one building's first-pass job, enforced by the executor (CPU time of the
         worker, or ten times that of wall time; the worker is killed and replaced, the
@@ -101,6 +104,7 @@ class ExportOptions:
     html: bool = True
     buildings: Any = None
     ids: tuple[str, ...] | None = None
+    region: Any = None
 
     def writer_options(self, name: str):
         # the footprints (geojson) carry the energy model's figures: they take its options

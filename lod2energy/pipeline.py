@@ -353,11 +353,12 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
     os.makedirs(spool, exist_ok=True)
     table = options.buildings or {}
     selection = frozenset(options.ids) if options.ids is not None else None
+    selected = _selector(selection, options.region)
     # the table's rows travel with their buildings, not with every job
     job = Job(replace(options, buildings=None), out, spool, model.crs, getattr(model, "frame", None))
     chosen = writers(options.formats)
     scope = {w.name: w.scope(options.writer_options(w.name)) for w in chosen}
-    near_selected = _selection_reach(input_path, selection, chosen, scope, options)
+    near_selected = _selection_reach(input_path, selected, chosen, scope, options)
     input_ids: set[str] = set()  # every building id of the file (ids of --buildings / --ids not in it are reported)
     neighbour_boxes: dict[int, tuple] = {}  # buildings outside --ids that serve as neighbours: their boxes
     per_building = [n for n, s in scope.items() if s == "building"]
@@ -413,7 +414,7 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
                             yield from building_task(seq, _joined(item, table, input_ids))
 
                 def building_task(seq, item) -> Iterator[tuple]:
-                    if selection is not None and str(item.id) not in selection:
+                    if selected is not None and not selected(item):
                         if near_selected(item):
                             yield (seq, "neighbour", item, job)
                     elif run.resume and reusable(prev := prev_b.get(seq), item, job, per_building):
@@ -615,19 +616,36 @@ def _report_unknown_ids(input_path: str, input_ids: set, table, selection) -> No
                   f"{input_path} ({first})", file=sys.stderr)
 
 
-def _selection_reach(input_path: str, selection, chosen, scope, options: ExportOptions):
-    """``item -> bool``: whether a building outside the ``--ids`` selection can be a neighbour
-    of a selected one (its box, as read, within the writers' halo of a selected box, plus
-    :data:`REACH_MARGIN`). Without a selection or a neighbour writer: never."""
+def _selector(ids, region):
+    """``item -> bool`` of the buildings chosen by ``--ids`` and ``--region`` (None: all)."""
+    from lod2energy.exporters.cfd.region import building_hull
+    if ids is None and region is None:
+        return None
+    shape = region.shape() if region is not None else None
+
+    def chosen(item) -> bool:
+        if ids is not None and str(item.id) not in ids:
+            return False
+        if shape is None:
+            return True
+        hull = building_hull(item)
+        return hull is not None and hull.intersects(shape)
+    return chosen
+
+
+def _selection_reach(input_path: str, selected, chosen, scope, options: ExportOptions):
+    """``item -> bool``: whether a building outside the selection (``selected``) can be a
+    neighbour of a selected one (its box, as read, within the writers' halo of a selected
+    box, plus :data:`REACH_MARGIN`). Without a selection or a neighbour writer: never."""
     ctx = [w for w in chosen if scope[w.name] == "context"]
-    if selection is None or not ctx:
+    if selected is None or not ctx:
         return lambda item: False
     from lod2energy.io import read
     halo = max(w.halo(options.writer_options(w.name)) for w in ctx) + REACH_MARGIN
     boxes = []
     _, feats = read(input_path)
     for item in feats:
-        if isinstance(item, Building) and item.is_building and str(item.id) in selection:
+        if isinstance(item, Building) and item.is_building and selected(item):
             box = _raw_box(item)
             if box is not None:
                 boxes.append(box)

@@ -288,3 +288,15 @@ def test_use_is_read_once_and_reused_from_the_prepared_building():
     assert building_use(tb).type == "office" and building_use(tb).source == "attribute"
     # the prepared building keeps the use it was given even if read with another map
     assert building_use(tb, amap=parse_map("include = []", "t", "t")).type == "office"
+
+
+def test_region_selects_for_every_output(tmp_path):
+    src = row_of_boxes_seq(tmp_path / "row.city.jsonl", n=5)
+    out = tmp_path / "out"
+    # the row runs along x from 85000 in 10 m steps: this rectangle meets b1 and b2 only
+    assert main(["export", src, "-o", str(out), "--idf", "--geojson", "-q", "-j", "1",
+                 "--region", "85012,446990,85025,447020"]) == 0
+    assert sorted(p.name for p in out.glob("*.idf")) == ["b1.idf", "b2.idf"]
+    gj = json.loads(next(out.glob("*.geojson")).read_text())
+    assert sorted(f["properties"]["id"] for f in gj["features"]) == ["b1", "b2"]
+    assert all(t.count("Adiabatic") >= 2 for t in (p.read_text() for p in out.glob("*.idf")))
