@@ -472,6 +472,7 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
                     csv_rows.append(rec)
                 close_bar()
                 _report_unknown_ids(input_path, input_ids, table, selection)
+                job = replace(job, neighbours=tuple(sorted(neighbour_boxes)))  # for the one-file writers
                 # the one-file writers that need nothing of pass 2 run beside it, in a process of their own
                 unusable = bool(dataset_errors) and not any(r.outcome == "done" for r in records.values())
                 side = [w for w in chosen if scope[w.name] == "dataset" and w.name in BESIDE]
@@ -637,7 +638,7 @@ def _selection_reach(input_path: str, selected, chosen, scope, options: ExportOp
     """``item -> bool``: whether a building outside the selection (``selected``) can be a
     neighbour of a selected one (its box, as read, within the writers' halo of a selected
     box, plus :data:`REACH_MARGIN`). Without a selection or a neighbour writer: never."""
-    ctx = [w for w in chosen if scope[w.name] == "context"]
+    ctx = [w for w in chosen if scope[w.name] in ("context", "dataset") and w.halo(options.writer_options(w.name)) > 0]
     if selected is None or not ctx:
         return lambda item: False
     from lod2energy.io import read

@@ -261,6 +261,14 @@ def test_ids_write_only_the_selection_and_party_walls_with_others_stay_adiabatic
     period = idf.split("RunPeriod,")[1].split(";")[0]
     assert "Period, " in period and "Annual" not in period and "  1, 31, ," in period
     assert "12, 31, ," in (full / "b2.idf").read_text()
+    # one IDF for the selection: its party walls with the unselected neighbours stay adiabatic too
+    one = tmp_path / "dataset"
+    assert main(["export", src, "-o", str(one), "--idf", "--idf-mode", "dataset", "--cityjson", "-q", "-j", "1",
+                 "--ids", "b2"]) == 0
+    written = list(one.glob("*.idf"))
+    assert len(written) == 1 and written[0].read_text().count("Adiabatic") == idf.count("Adiabatic")
+    city = json.loads(next(one.glob("*.city.json")).read_text())
+    assert list(city["CityObjects"]) == ["b2"]
 
 
 def test_ids_from_a_file(tmp_path):
