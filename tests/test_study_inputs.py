@@ -308,3 +308,23 @@ def test_region_selects_for_every_output(tmp_path):
     gj = json.loads(next(out.glob("*.geojson")).read_text())
     assert sorted(f["properties"]["id"] for f in gj["features"]) == ["b1", "b2"]
     assert all(t.count("Adiabatic") >= 2 for t in (p.read_text() for p in out.glob("*.idf")))
+
+
+def test_plateau_tile_with_sentinels_reports_them_unknown(tmp_path, capsys):
+    doc = json.loads(shared_path("japan-plateau", "japanese.city.json").read_text(encoding="utf-8"))
+    doc.setdefault("metadata", {})["referenceDate"] = "2020-01-01"
+    ids = [k for k, o in doc["CityObjects"].items() if "storeysAboveGround" in (o.get("attributes") or {})]
+    assert len(ids) >= 2
+    doc["CityObjects"][ids[0]]["attributes"]["storeysAboveGround"] = 9999
+    doc["CityObjects"][ids[1]]["attributes"]["yearOfConstruction"] = 2099
+    src = tmp_path / "plateau.city.json"
+    src.write_text(json.dumps(doc), encoding="utf-8")
+    out = tmp_path / "out"
+    assert main(["export", str(src), "-o", str(out), "--geojson", "-j", "1"]) in (0, 1)
+    captured = capsys.readouterr()
+    assert "sentinel or implausible storeys" in captured.out and "sentinel or implausible year" in captured.out
+    rows = _csv(out / "report.csv")
+    assert rows[ids[0]]["storeys_source"] in ("geometry", "default")
+    assert rows[ids[1]]["year"] == "" and rows[ids[1]]["year_source"] == "default"
+    assert rows[ids[1]]["construction_period"].endswith("(assumed)")
+    assert rows[ids[0]]["use"] == "office" and rows[ids[0]]["use_source"] == "attribute"

@@ -346,7 +346,10 @@ def assign_u_values(b: Building, options: ThermalOptions = ThermalOptions()) -> 
         u, used = lookup(typ.country, NONRES_TYPE, typ.lookup_year, rows, nonres, builtin_rows())
     else:
         u, used = lookup(typ.country, typ.building_type, typ.lookup_year, rows, builtin_rows())
-    u_src = {e: Fact(u[e], "default", used[0].source if used else None) for e in u}
+    u_src = {}
+    for e in u:  # the row that gave each element: the user's --u-table (an option) or a shipped table
+        r = next(r for r in used if e in r.u)
+        u_src[e] = Fact(u[e], "option" if r in rows else "default", r.source)
     for e, v in options.all_overrides.items():
         u[e] = v
         u_src[e] = Fact(v, "option", f"u_{e}")
