@@ -328,3 +328,30 @@ def test_plateau_tile_with_sentinels_reports_them_unknown(tmp_path, capsys):
     assert rows[ids[1]]["year"] == "" and rows[ids[1]]["year_source"] == "default"
     assert rows[ids[1]]["construction_period"].endswith("(assumed)")
     assert rows[ids[0]]["use"] == "office" and rows[ids[0]]["use_source"] == "attribute"
+
+
+def test_renamed_tile_through_the_cli_gives_the_same_report(tmp_path):
+    lines = EXAMPLE.read_text(encoding="utf-8").splitlines()
+    out_lines = [lines[0]]
+    for ln in lines[1:]:
+        if not ln.strip():
+            continue
+        d = json.loads(ln)
+        for o in d["CityObjects"].values():
+            o["attributes"] = {RENAMED.get(k, k): v for k, v in (o.get("attributes") or {}).items()}
+        out_lines.append(json.dumps(d))
+    src = tmp_path / "renamed.city.jsonl"
+    src.write_text("\n".join(out_lines) + "\n", encoding="utf-8")
+    amap = tmp_path / "renamed.toml"
+    amap.write_text(MAP, encoding="utf-8")
+    a, b = tmp_path / "a", tmp_path / "b"
+    assert main(["export", str(EXAMPLE), "-o", str(a), "--geojson", "-q", "-j", "1"]) in (0, 1)
+    assert main(["export", str(src), "-o", str(b), "--geojson", "-q", "-j", "1", "--attribute-map", str(amap)]) in (0, 1)
+    ra, rb = _csv(a / "report.csv"), _csv(b / "report.csv")
+    assert sorted(ra) == sorted(rb) and len(ra) == 10
+    for i in ra:
+        for k in ("year", "storeys", "use", "typology", "construction_period", "UA_W_per_K"):
+            assert ra[i][k] == rb[i][k], (i, k)
+        assert ra[i]["year_source"] == "attribute" and rb[i]["year_source"] == "map"
+    assert sum(r["storeys_source"] == "map" for r in rb.values()) >= 3
+    assert json.loads((b / "report.json").read_text())["buildings"][0]["thermal"]["attribute_map"] == "renamed"

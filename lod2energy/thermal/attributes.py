@@ -299,10 +299,15 @@ def load_attribute_map(spec: str | Path | None) -> AttributeMap:
     if spec is None:
         return profile(DEFAULT_PROFILE)
     p = Path(spec)
-    if not p.suffix and not p.exists() and str(spec) in profiles():
-        return profile(str(spec))
+    if not p.suffix and not p.exists():
+        if str(spec) in profiles():
+            return profile(str(spec))
+        raise ParameterError(f"--attribute-map {spec}: no such file nor built-in profile "
+                             f"(profiles: {', '.join(profiles())})")
     try:
         text = p.read_text(encoding="utf-8-sig")
     except OSError as e:
         raise ParameterError(f"--attribute-map {spec}: cannot read: {e.strerror}") from None
+    except UnicodeDecodeError:
+        raise ParameterError(f"--attribute-map {spec}: not a UTF-8 text file") from None
     return parse_map(text, f"--attribute-map {spec}", p.stem)
