@@ -382,6 +382,7 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
     page_pool = None  # the process pool that renders report.html's pictures, kept open for it
     beside, side = None, []  # the one-file writers' process beside pass 2 (Beside), if any, and its writers
     tick, close_bar = progress(run.quiet, os.path.basename(input_path))
+    close_bar2 = close_bar  # the neighbour pass's own bar, once it runs
     timeout = options.job_timeout
     plans = None  # the plan footprints of every object as read, in input order, for report.html
     if options.html:
@@ -517,7 +518,12 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
                         from functools import partial
                         from lod2energy.viz.report import warm_page
                         tail = partial(warm_page, after=beside.proc.pid if beside is not None else None)
+                    n_ctx = len(ready) - len(neighbour_boxes)
+                    run_idf = "idf" in names and getattr(options.writer_options("idf"), "run", False)
+                    tick2, close_bar2 = progress(run.quiet, f"{', '.join(names)}{' + EnergyPlus' if run_idf else ''}",
+                                                 total=n_ctx)
                     for task, res in ex.map(_context_or_record, ctx_tasks(), timeout, tail=tail):
+                        tick2()
                         seq = task[1] if task[0] == "record" else task[0]
                         rec = records[seq]
                         if isinstance(res, (Overrun, Failure)):
@@ -530,6 +536,7 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
                                 err(er.message(rec.id))
                         records[seq] = rec
                         journal.append({"kind": "context", "seq": seq, "exports": [e.journal() for e in res]})
+                    close_bar2()
             except BaseException:
                 if own:
                     ex.close(kill=True)  # interrupted: workers stop now, not after their job
@@ -559,6 +566,7 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
         interrupted = (e.name, e.code)
     finally:
         close_bar()
+        close_bar2()
         stopped = beside is not None and beside.cancel()  # interrupted: its file is not finished
         if stopped or interrupted:
             sweep_stale(out)  # the temporaries of the processes stopped mid-write go

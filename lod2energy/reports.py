@@ -27,12 +27,13 @@ def err(msg: str) -> None:
     print(f"lod2energy: error: {msg}", file=sys.stderr)
 
 
-def progress(quiet: bool, desc: str):
-    """``(tick, close)`` of a progress bar on stderr (no-ops when ``quiet``)."""
+def progress(quiet: bool, desc: str, total: int | None = None):
+    """``(tick, close)`` of a progress bar on stderr (no-ops when ``quiet``); with ``total``
+    it shows the share done and an ETA."""
     if quiet:
         return lambda: None, lambda: None
     from tqdm import tqdm
-    bar = tqdm(desc=desc, unit=" buildings", file=sys.stderr, disable=None, leave=False)
+    bar = tqdm(desc=desc, unit=" buildings", file=sys.stderr, disable=None, leave=False, total=total)
     return (lambda: bar.update(1)), bar.close
 
 
