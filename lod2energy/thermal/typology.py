@@ -30,8 +30,6 @@ import re
 from dataclasses import dataclass
 from typing import Any, Mapping
 
-import numpy as np
-
 from lod2energy.crs import epsg_codes
 from lod2energy.model import Building
 from lod2energy.thermal.attributes import AttributeMap
