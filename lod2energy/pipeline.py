@@ -652,7 +652,8 @@ def _selection_reach(input_path: str, selected, chosen, scope, options: ExportOp
     from lod2energy.io import read
     halo = max(w.halo(options.writer_options(w.name)) for w in ctx) + REACH_MARGIN
     boxes = []
-    _, feats = read(input_path)
+    # only the selected ids are built when the selection is by id (the CityJSON readers skip the others)
+    _, feats = read(input_path, only=options.ids) if options.ids is not None else read(input_path)
     for item in feats:
         if isinstance(item, Building) and item.is_building and selected(item):
             box = _raw_box(item)
