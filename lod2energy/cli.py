@@ -9,7 +9,10 @@ Exit codes (all commands):
 from __future__ import annotations
 
 import argparse
+import csv
+import io
 import os
+import re
 import sys
 import time
 from collections import Counter
@@ -326,7 +329,8 @@ def export_options(a) -> "ExportOptions":
 
 
 def parse_ids(spec: str | None) -> tuple[str, ...] | None:
-    """The ids of ``--ids``: comma-separated, or ``@FILE`` with one id a line (or comma-separated)."""
+    """The ids of ``--ids``: comma-separated, or ``@FILE`` with one id a line (``#`` comments),
+    or a CSV whose header has an ``id`` column (a ``--buildings`` table, say)."""
     if spec is None:
         return None
     text = spec
@@ -334,8 +338,12 @@ def parse_ids(spec: str | None) -> tuple[str, ...] | None:
         try:
             with open(spec[1:], encoding="utf-8-sig") as f:
                 text = f.read()
-        except OSError as e:
-            raise _UsageError(f"--ids {spec}: cannot read: {e.strerror}") from None
+        except (OSError, UnicodeDecodeError) as e:
+            raise _UsageError(f"--ids {spec}: cannot read: {getattr(e, 'strerror', None) or 'not UTF-8 text'}") from None
+        head = [c.strip() for c in re.split(r"[,;\t]", text.split("\n", 1)[0])]
+        if "id" in head and len(head) > 1:
+            delim = next(d for d in ",;\t" if d in text.split("\n", 1)[0])
+            text = ",".join(r.get("id") or "" for r in csv.DictReader(io.StringIO(text), delimiter=delim))
     ids = tuple(dict.fromkeys(t.strip() for t in text.replace("\n", ",").replace("\r", ",").split(",")
                               if t.strip() and not t.strip().startswith("#")))
     if not ids:
