@@ -360,6 +360,7 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
     scope = {w.name: w.scope(options.writer_options(w.name)) for w in chosen}
     near_selected = _selection_reach(input_path, selected, chosen, scope, options)
     input_ids: set[str] = set()  # every building id of the file (ids of --buildings / --ids not in it are reported)
+    study = _study_entry(options)  # report.json's "study"
     neighbour_boxes: dict[int, tuple] = {}  # buildings outside --ids that serve as neighbours: their boxes
     per_building = [n for n, s in scope.items() if s == "building"]
     journal = Journal(os.path.join(out, JOURNAL_NAME), out, inputs,
@@ -472,7 +473,7 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
                     journal.append({"kind": "building", **rec.to_json()})
                     csv_rows.append(rec)
                 close_bar()
-                _report_unknown_ids(input_path, input_ids, table, selection)
+                study.update(_report_unknown_ids(input_path, input_ids, table, selection))
                 job = replace(job, neighbours=tuple(sorted(neighbour_boxes)))  # for the one-file writers
                 # the one-file writers that need nothing of pass 2 run beside it, in a process of their own
                 unusable = bool(dataset_errors) and not any(r.outcome == "done" for r in records.values())
@@ -577,7 +578,7 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
         from lod2energy.journal import records_of
         done = records_of(journal.path, journal.run_start)  # what the journal says was done: the report
         report = write_reports_from_journal(out, input_path, model, str(journal.path), journal.run_start,
-                                            dataset_errors, interrupted, inputs, done)
+                                            dataset_errors, interrupted, inputs, done, study)
         if options.html:
             mapper = None
             if page_pool is not None and not interrupted:
@@ -615,14 +616,32 @@ def _joined(b: Building, table, input_ids: set) -> Building:
     return b.with_provenance(**{TABLE_KEY: row}) if row else b
 
 
-def _report_unknown_ids(input_path: str, input_ids: set, table, selection) -> None:
-    """A warning for the ids of ``--buildings`` and ``--ids`` that are no building of the file."""
-    for what, ids in (("--buildings", table or ()), ("--ids", selection or ())):
+def _study_entry(options: ExportOptions) -> dict:
+    """report.json's ``study``: the attribute map, the table's size and the selection."""
+    from lod2energy.thermal.facts import attribute_map
+    out: dict = {"attribute_map": attribute_map(getattr(options.prepare.thermal, "attribute_map", None)).name}
+    if options.buildings is not None:
+        out["buildings_table"] = {"rows": len(options.buildings)}
+    if options.ids is not None:
+        out["ids"] = len(options.ids)
+    if options.region is not None:
+        out["region"] = options.region.as_dict()
+    return out
+
+
+def _report_unknown_ids(input_path: str, input_ids: set, table, selection) -> dict:
+    """A warning for the ids of ``--buildings`` and ``--ids`` that are no building of the file;
+    ``{"buildings_table_not_in_input" | "ids_not_in_input": [ids]}`` for the report."""
+    out = {}
+    for what, key, ids in (("--buildings", "buildings_table_not_in_input", table or ()),
+                           ("--ids", "ids_not_in_input", selection or ())):
         missing = sorted(set(ids) - input_ids)
         if missing:
             first = ", ".join(missing[:5]) + (", ..." if len(missing) > 5 else "")
             print(f"lod2energy: warning: {what}: {len(missing)} of {len(ids)} ids are not buildings of "
                   f"{input_path} ({first})", file=sys.stderr)
+            out[key] = missing[:1000]
+    return out
 
 
 def _selector(ids, region):

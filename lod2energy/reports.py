@@ -105,7 +105,7 @@ def _dump(obj) -> str:
 
 
 def write_reports(out: str, input_path: str, model, rows: Iterable[BuildingRecord], dataset_errors: list[str],
-                   interrupted, inputs, terrain: Sequence[dict] = ()) -> str:
+                   interrupted, inputs, terrain: Sequence[dict] = (), study: dict | None = None) -> str:
     """report.json and report.csv from the records, in input order (no timing in them).
 
     Both are written one building at a time: ``report.json`` is the bytes of ``json.dump(doc,
@@ -118,8 +118,13 @@ def write_reports(out: str, input_path: str, model, rows: Iterable[BuildingRecor
     terrain : sequence of dict
         The input's terrain the one-file writers carried (format, path, ok, objects, faces,
         ids): ``report.json``'s ``terrain``, left out when there is none.
+    study : dict, optional
+        The study's inputs (attribute map, ``--buildings`` table, selection): ``report.json``'s
+        ``study``.
     """
     doc = {"input_file": input_path, "output_dir": out, **frame_entry(model)}
+    if study:
+        doc["study"] = dict(study)
     if terrain:
         doc["terrain"] = [dict(t) for t in terrain]
     doc["buildings"] = _ROWS
@@ -144,14 +149,15 @@ def write_reports(out: str, input_path: str, model, rows: Iterable[BuildingRecor
 
 
 def write_reports_from_journal(out: str, input_path: str, model, journal_path: str, start: int,
-                               dataset_errors: list[str], interrupted, inputs, recs=None) -> str:
+                               dataset_errors: list[str], interrupted, inputs, recs=None,
+                               study: dict | None = None) -> str:
     """:func:`write_reports` from this run's lines of the journal (:func:`lod2energy.journal.records_of`
     from byte ``start``, or ``recs`` when given): what the journal says was done is what the
     report says."""
     from lod2energy.journal import records_of, terrain_of
     recs = recs if recs is not None else records_of(journal_path, start)
     return write_reports(out, input_path, model, recs.ordered(), dataset_errors, interrupted, inputs,
-                         terrain_of(journal_path, start))
+                         terrain_of(journal_path, start), study)
 
 
 def json_ready(doc):

@@ -232,6 +232,9 @@ def test_a_buildings_table_changes_exactly_the_buildings_and_fields_it_names(tmp
     assert main(["export", str(EXAMPLE), "-o", str(out), "--geojson", "-q", "-j", "1",
                  "--buildings", str(table)]) in (0, 1)
     assert "--buildings: 1 of 3 ids are not buildings" in capsys.readouterr().err
+    study = json.loads((out / "report.json").read_text())["study"]
+    assert study == {"attribute_map": "auto", "buildings_table": {"rows": 3},
+                     "buildings_table_not_in_input": ["not-in-the-file"]}
     after = _csv(out / "report.csv")
     assert after[ids[0]]["year"] == "1925" and after[ids[0]]["year_source"] == "table"
     assert after[ids[1]]["use"] == "office" and after[ids[1]]["use_source"] == "table"
@@ -255,6 +258,7 @@ def test_ids_write_only_the_selection_and_party_walls_with_others_stay_adiabatic
     assert sorted(p.name for p in out.glob("*.idf")) == ["b2.idf"]
     rep = json.loads((out / "report.json").read_text())
     assert [b["id"] for b in rep["buildings"]] == ["b2"]
+    assert rep["study"]["ids"] == 2 and rep["study"]["ids_not_in_input"] == ["b9"]
     assert list(_csv(out / "report.csv")) == ["b2"]
     idf = (out / "b2.idf").read_text()
     assert idf.count("Adiabatic") == (full / "b2.idf").read_text().count("Adiabatic") >= 2
