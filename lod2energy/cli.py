@@ -9,7 +9,10 @@ Exit codes (all commands):
 from __future__ import annotations
 
 import argparse
+import csv
+import io
 import os
+import re
 import sys
 import time
 from collections import Counter
@@ -176,6 +179,19 @@ def add_export_parser(sub) -> argparse.ArgumentParser:
                    help="the space under a pitched roof: heated/cooled with loads, or not (default)")
     g.add_argument("--use", choices=USE_TYPES, default=None,
                    help="use type for every building (default: from function/usage/gebruiksdoel/building attributes)")
+    g.add_argument("--run-period", metavar="MM-DD:MM-DD", default=None,
+                   help="simulate only these days with --run, e.g. 01-01:01-31 (default: the whole year)")
+    s = e.add_argument_group("study inputs")
+    s.add_argument("--attribute-map", metavar="FILE", default=None,
+                   help="TOML naming the attributes that give year, storeys, use, conditioned, roof type and "
+                   "tables for their codes, or a built-in profile: auto (default), citygml, 3dbag, alkis, "
+                   "plateau, osm")
+    s.add_argument("--buildings", metavar="FILE.csv", default=None,
+                   help="per-building table keyed by id with any of year, storeys, use, conditioned, u_wall, "
+                   "u_roof, u_ground, u_window, wwr: wins over attributes and defaults")
+    s.add_argument("--ids", metavar="ID,ID,...", default=None,
+                   help="export and report only these buildings (or @FILE, one id a line); the others still "
+                   "serve as neighbours for party walls and shading")
     from lod2energy.cfd import add_cli_arguments
     add_cli_arguments(e.add_argument_group("CFD case (OpenFOAM v1912)"))
     add_run_options(e)
@@ -288,18 +304,51 @@ def export_options(a) -> "ExportOptions":
     from lod2energy.exporters.stl import StlOptions
     from lod2energy.options import FORMATS, ExportOptions, prepare_options
 
+    from lod2energy.exporters.cfd.options import region_from_args
+    from lod2energy.exporters.energyplus.options import parse_run_period
+
     formats = tuple(f for f in FORMATS if getattr(a, f, False))
+    run_period = getattr(a, "run_period", None)
     idf = IdfOptions(**{k: v for k, v in dict(
         mode=a.idf_mode, version=a.energyplus_version, shading=a.shading, run=a.run, weather=a.weather,
         lod=a.lod, wwr=a.wwr, zoning=getattr(a, "zoning", None), attic=getattr(a, "attic", None),
-        use=getattr(a, "use", None)).items() if v is not None})
+        use=getattr(a, "use", None),
+        run_period=parse_run_period(run_period) if run_period else None).items() if v is not None})
+    table = None
+    if getattr(a, "buildings", None):
+        from lod2energy.thermal.table import load_buildings
+        table = load_buildings(a.buildings)
     cfd = None
     if getattr(a, "cfd", False):
         from lod2energy.cfd import options_from_args
         cfd = options_from_args(a)
     return ExportOptions(formats, prepare_options(a, _tolerances(a)), idf,
                          StlOptions(mode=a.stl_mode, ascii=a.stl_ascii, lod=a.lod),
-                         CityJsonOptions(a.cityjson_version), cfd=cfd, html=not getattr(a, "no_html", False))
+                         CityJsonOptions(a.cityjson_version), cfd=cfd, html=not getattr(a, "no_html", False),
+                         buildings=table, ids=parse_ids(getattr(a, "ids", None)), region=region_from_args(a))
+
+
+def parse_ids(spec: str | None) -> tuple[str, ...] | None:
+    """The ids of ``--ids``: comma-separated, or ``@FILE`` with one id a line (``#`` comments),
+    or a CSV whose header has an ``id`` column (a ``--buildings`` table, say)."""
+    if spec is None:
+        return None
+    text = spec
+    if spec.startswith("@"):
+        try:
+            with open(spec[1:], encoding="utf-8-sig") as f:
+                text = f.read()
+        except (OSError, UnicodeDecodeError) as e:
+            raise _UsageError(f"--ids {spec}: cannot read: {getattr(e, 'strerror', None) or 'not UTF-8 text'}") from None
+        head = [c.strip() for c in re.split(r"[,;\t]", text.split("\n", 1)[0])]
+        if "id" in head and len(head) > 1:
+            delim = next(d for d in ",;\t" if d in text.split("\n", 1)[0])
+            text = ",".join(r.get("id") or "" for r in csv.DictReader(io.StringIO(text), delimiter=delim))
+    ids = tuple(dict.fromkeys(t.strip() for t in text.replace("\n", ",").replace("\r", ",").split(",")
+                              if t.strip() and not t.strip().startswith("#")))
+    if not ids:
+        raise _UsageError(f"--ids {spec}: no id given")
+    return ids
 
 
 def cmd_export(a) -> int:
@@ -314,6 +363,8 @@ def cmd_export(a) -> int:
         v = getattr(a, f"u_{c}")
         if v is not None and not (v > 0 and v < 100):
             raise _UsageError(f"--u-{c} must be a positive U-value in W/(m2 K)")
+    if getattr(a, "run_period", None) and not a.idf:
+        raise _UsageError("--run-period is for the IDF (--idf, --run)")
     if a.jobs is not None and a.jobs < 0:
         raise _UsageError("--jobs must be >= 0 (0: all cores)")
     if not (a.timeout > 0) or a.timeout != a.timeout:

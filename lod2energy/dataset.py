@@ -96,8 +96,11 @@ def dataset_write(w, options: ExportOptions, job: Job, records: RecordStore, oth
             if w.name == "cfd":  # the file's terrain (TINRelief) is the case's ground
                 bs += [load_spooled(job.spool, s) for s in sorted(others)]
     kw = {"records": records.ordered(seqs)} if getattr(w, "records", False) else {}
+    if job.neighbours and w.name != "cityjson" and w.halo(wopts) > 0:  # party walls with unselected buildings
+        kw["context"] = [load_spooled(job.spool, s) for s in job.neighbours]
     try:
-        pairs = w.write(w.prepare(bs, wopts), job.outdir, wopts, crs=job.crs, model=model, stem=stem_of(input_path),
+        prepared = w.prepare(bs, wopts, kw["context"]) if "context" in kw else w.prepare(bs, wopts)
+        pairs = w.write(prepared, job.outdir, wopts, crs=job.crs, model=model, stem=stem_of(input_path),
                         tol=options.prepare.tol, frame=job.frame, **kw)
     except Exception as e:  # noqa: BLE001 - reported for every building of the file
         why = f"{type(e).__name__}: {e}"

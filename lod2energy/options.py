@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import os
 from dataclasses import asdict, dataclass, field, replace
-from typing import Any
+from typing import Any, Mapping
 
 from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.errors import ParameterError
@@ -78,6 +78,15 @@ class ExportOptions:
         The OpenFOAM case (``--cfd``).
     html : bool
         Write ``report.html`` (the method's pictures) beside ``report.json``.
+    buildings : mapping, optional
+        The ``--buildings`` table, ``{id: {column: value}}`` (:mod:`lod2energy.thermal.table`):
+        each row is joined to its building before the thermal stage.
+    ids : tuple of str, optional
+        Only these buildings are exported and reported (``--ids``); the others within reach
+        of a neighbour writer (party walls, shading) are still prepared as neighbours.
+    region : lod2energy.exporters.cfd.region.Region, optional
+        Only the buildings whose plan hull meets it (``--region``, ``--centre`` / ``--radius``),
+        as with ``ids`` (both given: the buildings of both).
     hard_timeout : float or None, s
         Limit of one building's first-pass job, enforced by the executor (CPU time of the
         worker, or ten times that of wall time; the worker is killed and replaced, the
@@ -93,6 +102,9 @@ class ExportOptions:
     hard_timeout: float | None = None
     cfd: Any = None
     html: bool = True
+    buildings: Any = None
+    ids: tuple[str, ...] | None = None
+    region: Any = None
 
     def writer_options(self, name: str):
         # the footprints (geojson) carry the energy model's figures: they take its options
@@ -107,8 +119,17 @@ class ExportOptions:
 
     def fingerprint(self) -> dict:
         """JSON-ready summary of everything that changes the outputs (the journal header)."""
-        d = asdict(self)
+        from lod2energy.cache import digest
+        th = self.prepare.thermal
+        amap = getattr(th, "attribute_map", None)
+        plain = replace(self, buildings=None, prepare=replace(self.prepare, thermal=replace(th, attribute_map=None))
+                        if amap is not None else self.prepare)
+        d = asdict(plain)
         d.pop("hard_timeout", None)
+        if amap is not None:
+            d["prepare"]["thermal"]["attribute_map"] = {"name": amap.name, "digest": digest(amap).hex()}
+        d["buildings"] = (digest(sorted((k, sorted(v.items())) for k, v in self.buildings.items())).hex()
+                          if self.buildings else None)
         return d
 
 
@@ -169,11 +190,14 @@ def ladder_budget(timeout: float | None) -> float | None:
 def prepare_options(a, tol: Tolerances = DEFAULT, crs: str | None = None) -> PrepareOptions:
     """:class:`PrepareOptions` from a namespace of CLI options (absent ones: defaults)."""
     from lod2energy.thermal import ThermalOptions
+    from lod2energy.thermal.attributes import load_attribute_map
     kw = {"crs": crs, "lod": getattr(a, "lod", None)}
     for name in ("country", "u_table", "u_wall", "u_roof", "u_ground", "u_window", "wwr", "use"):
         v = getattr(a, name, None)
         if v is not None:
             kw[name] = v
+    if getattr(a, "attribute_map", None) is not None:
+        kw["attribute_map"] = load_attribute_map(a.attribute_map)
     timeout = getattr(a, "timeout", 30.0)
     return PrepareOptions(tol, getattr(a, "lod", None), 30.0 if timeout is None else float(timeout),
                           bool(getattr(a, "merge_parts", False)), ThermalOptions(**kw))
@@ -200,6 +224,10 @@ def resolve(options: ExportOptions, model: CityModel) -> ExportOptions:
     prep = options.prepare
     if getattr(prep.thermal, "crs", None) is None and model is not None and model.crs:
         prep = replace(prep, thermal=replace(prep.thermal, crs=model.crs))
+    md = (model.metadata if model is not None else None) or {}
+    ref = md.get("referenceDate") or md.get("creationDate") if isinstance(md, Mapping) else None
+    if getattr(prep.thermal, "reference_date", None) is None and ref:
+        prep = replace(prep, thermal=replace(prep.thermal, reference_date=str(ref)))
     idf = options.idf
     if "idf" in options.formats:
         weather = idf.weather

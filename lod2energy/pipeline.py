@@ -23,6 +23,8 @@ import sys
 from dataclasses import dataclass, replace
 from typing import Iterator, Sequence
 
+import numpy as np
+
 from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.dataset import BESIDE, DatasetResult, beside_ok, dataset_apply, dataset_pass, write_beside
 from lod2energy.errors import ParameterError
@@ -146,7 +148,6 @@ def prepare_building(b: Building, options: PrepareOptions = PrepareOptions(), se
     tb = carry(tb, [(b, before), (tb, after)], tol)
     bbox = None
     if len(tb.vertices):
-        import numpy as np
         v = np.asarray(tb.vertices, dtype=float)
         fin = v[np.isfinite(v).all(axis=1)]
         if len(fin):
@@ -217,6 +218,11 @@ def first_pass(task: tuple) -> Pass1:
     seq, kind, payload, job = task
     if kind == "record":
         return Pass1(payload)
+    if kind == "neighbour":
+        pb, rec = prepare_building(payload, job.options.prepare, seq)
+        if rec.energy.geometry_ready:
+            spool_building(job, seq, pb)
+        return Pass1(rec)
     plan = plan_of(payload) if job.options.html else None
     if kind == "other":
         spool_building(job, seq, payload)
@@ -345,9 +351,17 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
     sweep_stale(out)  # temporaries of a run that was killed mid-write
     spool = os.path.join(out, ".lod2energy", "spool")
     os.makedirs(spool, exist_ok=True)
-    job = Job(options, out, spool, model.crs, getattr(model, "frame", None))
+    table = options.buildings or {}
+    selection = frozenset(options.ids) if options.ids is not None else None
+    selected = _selector(selection, options.region)
+    # the table's rows travel with their buildings, not with every job
+    job = Job(replace(options, buildings=None), out, spool, model.crs, getattr(model, "frame", None))
     chosen = writers(options.formats)
     scope = {w.name: w.scope(options.writer_options(w.name)) for w in chosen}
+    near_selected = _selection_reach(input_path, selected, chosen, scope, options)
+    input_ids: set[str] = set()  # every building id of the file (ids of --buildings / --ids not in it are reported)
+    study = _study_entry(options)  # report.json's "study"
+    neighbour_boxes: dict[int, tuple] = {}  # buildings outside --ids that serve as neighbours: their boxes
     per_building = [n for n, s in scope.items() if s == "building"]
     journal = Journal(os.path.join(out, JOURNAL_NAME), out, inputs,
                       header(input_path, options.fingerprint()), resume=run.resume)
@@ -369,6 +383,7 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
     page_pool = None  # the process pool that renders report.html's pictures, kept open for it
     beside, side = None, []  # the one-file writers' process beside pass 2 (Beside), if any, and its writers
     tick, close_bar = progress(run.quiet, os.path.basename(input_path))
+    close_bar2 = close_bar  # the neighbour pass's own bar, once it runs
     timeout = options.job_timeout
     plans = None  # the plan footprints of every object as read, in input order, for report.html
     if options.html:
@@ -397,17 +412,29 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
                             yield (seq, "record", rec, job)
                         elif not item.is_building:
                             yield (seq, "other", item, job)
-                        elif run.resume and reusable(prev := prev_b.get(seq), item, job, per_building):
-                            reused.add(seq)
-                            if plans is not None:
-                                resumed_plans[seq] = (item.id, plan_of(item))
-                            yield (seq, "record", prev, job)
                         else:
-                            yield (seq, "building", item, job)
+                            yield from building_task(seq, _joined(item, table, input_ids))
+
+                def building_task(seq, item) -> Iterator[tuple]:
+                    if selected is not None and not selected(item):
+                        if near_selected(item):
+                            yield (seq, "neighbour", item, job)
+                    elif run.resume and reusable(prev := prev_b.get(seq), item, job, per_building):
+                        reused.add(seq)
+                        if plans is not None:
+                            resumed_plans[seq] = (item.id, plan_of(item))
+                        yield (seq, "record", prev, job)
+                    else:
+                        yield (seq, "building", item, job)
 
                 for task, res in ex.map(first_pass, tasks(), timeout):
                     seq, kind, payload = task[0], task[1], task[2]
                     tick()
+                    if kind == "neighbour":  # prepared and spooled for its neighbours, not reported
+                        r = res.record if isinstance(res, Pass1) else None
+                        if r is not None and r.outcome == "done" and r.energy.geometry_ready and r.bbox is not None:
+                            neighbour_boxes[seq] = r.bbox
+                        continue
                     if isinstance(res, Pass1):
                         plan, res = res.plan, res.record
                     else:  # the job did not finish: its object as read is drawn here
@@ -446,6 +473,8 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
                     journal.append({"kind": "building", **rec.to_json()})
                     csv_rows.append(rec)
                 close_bar()
+                study.update(_report_unknown_ids(input_path, input_ids, table, selection))
+                job = replace(job, neighbours=tuple(sorted(neighbour_boxes)))  # for the one-file writers
                 # the one-file writers that need nothing of pass 2 run beside it, in a process of their own
                 unusable = bool(dataset_errors) and not any(r.outcome == "done" for r in records.values())
                 side = [w for w in chosen if scope[w.name] == "dataset" and w.name in BESIDE]
@@ -461,6 +490,9 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
                         if r.outcome == "done" and r.energy.geometry_ready and r.bbox is not None:
                             ready.append(s)
                             ready_boxes.extend(r.bbox)
+                    for s, bbox in sorted(neighbour_boxes.items()):
+                        ready.append(s)
+                        ready_boxes.extend(bbox)
                     halo = max(w.halo(options.writer_options(w.name)) for w in ctx_writers)
                     near = neighbours_within(ready, ready_boxes, halo)
                     order = spatial_order(ready_boxes)  # near buildings one after the other: the same for every executor
@@ -470,6 +502,8 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
                     def ctx_tasks():
                         for k in order.tolist():
                             s = ready[k]
+                            if s in neighbour_boxes:  # a neighbour only: nothing of its own is written
+                                continue
                             p = prev_c.get(s)
                             if run.resume and s in reused and p is not None:
                                 ers = [ExportRecord.from_journal(e) for e in p.get("exports", [])]
@@ -485,7 +519,12 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
                         from functools import partial
                         from lod2energy.viz.report import warm_page
                         tail = partial(warm_page, after=beside.proc.pid if beside is not None else None)
+                    n_ctx = len(ready) - len(neighbour_boxes)
+                    run_idf = "idf" in names and getattr(options.writer_options("idf"), "run", False)
+                    tick2, close_bar2 = progress(run.quiet, f"{', '.join(names)}{' + EnergyPlus' if run_idf else ''}",
+                                                 total=n_ctx)
                     for task, res in ex.map(_context_or_record, ctx_tasks(), timeout, tail=tail):
+                        tick2()
                         seq = task[1] if task[0] == "record" else task[0]
                         rec = records[seq]
                         if isinstance(res, (Overrun, Failure)):
@@ -498,6 +537,7 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
                                 err(er.message(rec.id))
                         records[seq] = rec
                         journal.append({"kind": "context", "seq": seq, "exports": [e.journal() for e in res]})
+                    close_bar2()
             except BaseException:
                 if own:
                     ex.close(kill=True)  # interrupted: workers stop now, not after their job
@@ -527,6 +567,7 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
         interrupted = (e.name, e.code)
     finally:
         close_bar()
+        close_bar2()
         stopped = beside is not None and beside.cancel()  # interrupted: its file is not finished
         if stopped or interrupted:
             sweep_stale(out)  # the temporaries of the processes stopped mid-write go
@@ -537,7 +578,7 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
         from lod2energy.journal import records_of
         done = records_of(journal.path, journal.run_start)  # what the journal says was done: the report
         report = write_reports_from_journal(out, input_path, model, str(journal.path), journal.run_start,
-                                            dataset_errors, interrupted, inputs, done)
+                                            dataset_errors, interrupted, inputs, done, study)
         if options.html:
             mapper = None
             if page_pool is not None and not interrupted:
@@ -564,6 +605,99 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
     if dataset_errors:
         worst = EXIT_UNUSABLE
     return ExportOutcome(worst, rows, None, report, tuple(dataset_errors), tuple(terrain))
+
+
+def _joined(b: Building, table, input_ids: set) -> Building:
+    """``b`` with its ``--buildings`` row (:data:`lod2energy.thermal.facts.TABLE_KEY`), its id noted."""
+    from lod2energy.thermal.facts import TABLE_KEY
+    bid = str(b.id)
+    input_ids.add(bid)
+    row = table.get(bid) if table else None
+    return b.with_provenance(**{TABLE_KEY: row}) if row else b
+
+
+def _study_entry(options: ExportOptions) -> dict:
+    """report.json's ``study``: the attribute map, the table's size and the selection."""
+    from lod2energy.thermal.facts import attribute_map
+    out: dict = {"attribute_map": attribute_map(getattr(options.prepare.thermal, "attribute_map", None)).name}
+    if options.buildings is not None:
+        out["buildings_table"] = {"rows": len(options.buildings)}
+    if options.ids is not None:
+        out["ids"] = len(options.ids)
+    if options.region is not None:
+        out["region"] = options.region.as_dict()
+    return out
+
+
+def _report_unknown_ids(input_path: str, input_ids: set, table, selection) -> dict:
+    """A warning for the ids of ``--buildings`` and ``--ids`` that are no building of the file;
+    ``{"buildings_table_not_in_input" | "ids_not_in_input": [ids]}`` for the report."""
+    out = {}
+    for what, key, ids in (("--buildings", "buildings_table_not_in_input", table or ()),
+                           ("--ids", "ids_not_in_input", selection or ())):
+        missing = sorted(set(ids) - input_ids)
+        if missing:
+            first = ", ".join(missing[:5]) + (", ..." if len(missing) > 5 else "")
+            print(f"lod2energy: warning: {what}: {len(missing)} of {len(ids)} ids are not buildings of "
+                  f"{input_path} ({first})", file=sys.stderr)
+            out[key] = missing[:1000]
+    return out
+
+
+def _selector(ids, region):
+    """``item -> bool`` of the buildings chosen by ``--ids`` and ``--region`` (None: all)."""
+    from lod2energy.exporters.cfd.region import building_hull
+    if ids is None and region is None:
+        return None
+    shape = region.shape() if region is not None else None
+
+    def chosen(item) -> bool:
+        if ids is not None and str(item.id) not in ids:
+            return False
+        if shape is None:
+            return True
+        hull = building_hull(item)
+        return hull is not None and hull.intersects(shape)
+    return chosen
+
+
+def _selection_reach(input_path: str, selected, chosen, scope, options: ExportOptions):
+    """``item -> bool``: whether a building outside the selection (``selected``) can be a
+    neighbour of a selected one (its box, as read, within the writers' halo of a selected
+    box, plus :data:`REACH_MARGIN`). Without a selection or a neighbour writer: never."""
+    ctx = [w for w in chosen if scope[w.name] in ("context", "dataset") and w.halo(options.writer_options(w.name)) > 0]
+    if selected is None or not ctx:
+        return lambda item: False
+    from lod2energy.io import read
+    halo = max(w.halo(options.writer_options(w.name)) for w in ctx) + REACH_MARGIN
+    boxes = []
+    # only the selected ids are built when the selection is by id (the CityJSON readers skip the others)
+    _, feats = read(input_path, only=options.ids) if options.ids is not None else read(input_path)
+    for item in feats:
+        if isinstance(item, Building) and item.is_building and selected(item):
+            box = _raw_box(item)
+            if box is not None:
+                boxes.append(box)
+    if not boxes:
+        return lambda item: False
+    sel = np.array(boxes)
+
+    def near(item) -> bool:
+        box = _raw_box(item)
+        if box is None:
+            return False
+        return bool(np.any(np.all(sel[:, :3] - halo <= box[3:], axis=1) & np.all(box[:3] <= sel[:, 3:] + halo, axis=1)))
+    return near
+
+
+#: How far (m) a building's box as read may move in its repair and still be taken as a neighbour.
+REACH_MARGIN = 1.0
+
+
+def _raw_box(b: Building):
+    v = np.asarray(b.vertices, dtype=float)
+    v = v[np.isfinite(v).all(axis=1)] if len(v) else v
+    return np.concatenate([v.min(axis=0), v.max(axis=0)]) if len(v) else None
 
 
 def _beside_results(beside, writers) -> dict:

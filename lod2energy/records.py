@@ -308,8 +308,11 @@ class ExportRecord:
 # ----------------------------------------------------------------------------- the building record
 
 #: Columns of report.csv, in order (the report's flat row; extended, never reduced).
+#: Study inputs with their source (:mod:`lod2energy.thermal.facts`), a value and a ``_source`` column each.
+FACTS = ("year", "storeys", "use", "conditioned")
+FACT_COLUMNS = tuple(c for f in FACTS for c in (f, f"{f}_source"))
 CSV_FIELDS = ["id", "type", "input_errors", "output_errors", "repair_stage", "iou", "mean_displacement_m",
-              "compliant", "status", "typology", "construction_period", "roof_m2", "wall_m2", "ground_m2",
+              "compliant", "status", "typology", "construction_period", *FACT_COLUMNS, "roof_m2", "wall_m2", "ground_m2",
               "A_env_m2", "volume_m3", "UA_W_per_K", "cityjson_ok", "idf_ok", "stl_ok", "cfd_ok", "heating_kwh",
               "cooling_kwh", "heating_kwh_m2", "cooling_kwh_m2", "heating_peak_w", "cooling_peak_w",
               "conditioned_floor_area_m2", "geojson_ok", "message", "outcome"]
@@ -383,6 +386,7 @@ class BuildingRecord:
              "mean_displacement_m": self.repair.detail.get("mean_displacement", ""),
              "compliant": self.energy.detail.get("compliant", ""), "status": self.energy.detail.get("status", ""),
              "typology": th.detail.get("typology", ""), "construction_period": th.detail.get("construction_period", ""),
+             **self.fact_columns(),
              "roof_m2": areas.get("roof", ""), "wall_m2": areas.get("wall", ""), "ground_m2": areas.get("ground", ""),
              "A_env_m2": th.detail.get("A_env", ""), "volume_m3": th.detail.get("volume", ""),
              "UA_W_per_K": th.detail.get("UA", "")}
@@ -395,6 +399,16 @@ class BuildingRecord:
         r["message"] = self.message
         r["outcome"] = self.outcome
         return r
+
+    def fact_columns(self) -> dict:
+        """``{year, year_source, storeys, ...}`` of :data:`FACTS` ("" when not assessed)."""
+        facts = self.thermal.detail.get("facts") or {}
+        out = {}
+        for f in FACTS:
+            v = facts.get(f) or {}
+            out[f] = "" if v.get("value") is None else v["value"]
+            out[f"{f}_source"] = v.get("source", "")
+        return out
 
     def report_entry(self) -> dict:
         """The building's entry of report.json."""

@@ -8,6 +8,7 @@ import io
 import json
 import os
 import sys
+from collections import Counter
 from typing import TYPE_CHECKING, Iterable, Sequence
 
 from lod2energy.config import DEFAULT, Tolerances
@@ -26,12 +27,13 @@ def err(msg: str) -> None:
     print(f"lod2energy: error: {msg}", file=sys.stderr)
 
 
-def progress(quiet: bool, desc: str):
-    """``(tick, close)`` of a progress bar on stderr (no-ops when ``quiet``)."""
+def progress(quiet: bool, desc: str, total: int | None = None):
+    """``(tick, close)`` of a progress bar on stderr (no-ops when ``quiet``); with ``total``
+    it shows the share done and an ETA."""
     if quiet:
         return lambda: None, lambda: None
     from tqdm import tqdm
-    bar = tqdm(desc=desc, unit=" buildings", file=sys.stderr, disable=None, leave=False)
+    bar = tqdm(desc=desc, unit=" buildings", file=sys.stderr, disable=None, leave=False, total=total)
     return (lambda: bar.update(1)), bar.close
 
 
@@ -103,7 +105,7 @@ def _dump(obj) -> str:
 
 
 def write_reports(out: str, input_path: str, model, rows: Iterable[BuildingRecord], dataset_errors: list[str],
-                   interrupted, inputs, terrain: Sequence[dict] = ()) -> str:
+                   interrupted, inputs, terrain: Sequence[dict] = (), study: dict | None = None) -> str:
     """report.json and report.csv from the records, in input order (no timing in them).
 
     Both are written one building at a time: ``report.json`` is the bytes of ``json.dump(doc,
@@ -116,8 +118,13 @@ def write_reports(out: str, input_path: str, model, rows: Iterable[BuildingRecor
     terrain : sequence of dict
         The input's terrain the one-file writers carried (format, path, ok, objects, faces,
         ids): ``report.json``'s ``terrain``, left out when there is none.
+    study : dict, optional
+        The study's inputs (attribute map, ``--buildings`` table, selection): ``report.json``'s
+        ``study``.
     """
     doc = {"input_file": input_path, "output_dir": out, **frame_entry(model)}
+    if study:
+        doc["study"] = dict(study)
     if terrain:
         doc["terrain"] = [dict(t) for t in terrain]
     doc["buildings"] = _ROWS
@@ -142,14 +149,15 @@ def write_reports(out: str, input_path: str, model, rows: Iterable[BuildingRecor
 
 
 def write_reports_from_journal(out: str, input_path: str, model, journal_path: str, start: int,
-                               dataset_errors: list[str], interrupted, inputs, recs=None) -> str:
+                               dataset_errors: list[str], interrupted, inputs, recs=None,
+                               study: dict | None = None) -> str:
     """:func:`write_reports` from this run's lines of the journal (:func:`lod2energy.journal.records_of`
     from byte ``start``, or ``recs`` when given): what the journal says was done is what the
     report says."""
     from lod2energy.journal import records_of, terrain_of
     recs = recs if recs is not None else records_of(journal_path, start)
     return write_reports(out, input_path, model, recs.ordered(), dataset_errors, interrupted, inputs,
-                         terrain_of(journal_path, start))
+                         terrain_of(journal_path, start), study)
 
 
 def json_ready(doc):
@@ -230,10 +238,20 @@ def print_export_summary(records: Iterable[BuildingRecord], formats: Iterable[st
     formats = [f for f in FORMATS if f in set(formats)]
     n = comp = rep = timeouts = 0
     ok = dict.fromkeys(formats, 0)
+    sources: dict[str, Counter] = {f: Counter() for f in ("year", "storeys", "use")}
+    warned: Counter = Counter()
+    maps: Counter = Counter()
     for r in records:  # one pass: ``records`` may rebuild each record as it is read
         if not (r.type == "Building" or r.assessed):
             continue
         n += 1
+        facts = r.thermal.detail.get("facts") or {}
+        for f, c in sources.items():
+            if f in facts:
+                c[facts[f].get("source", "")] += 1
+        warned.update(w.get("field", "") for w in r.thermal.detail.get("warnings") or ())
+        if r.thermal.detail.get("attribute_map"):
+            maps[r.thermal.detail["attribute_map"]] += 1
         comp += bool(r.energy.compliant)
         rep += r.repair.stage not in ("", "valid", "none", "irreparable")
         timeouts += r.outcome == "timeout"
@@ -243,6 +261,12 @@ def print_export_summary(records: Iterable[BuildingRecord], formats: Iterable[st
     cells = [f"{ok[f]}/{n}" for f in formats]
     print(f"{n:>9} {comp:>9} {rep:>8}  " + "  ".join(f"{c:>8}" for c in cells)
           + (f"  ({timeouts} timeout)" if timeouts else ""))
+    if maps:
+        print(f"attribute map: {', '.join(sorted(maps))}; " + "; ".join(
+            f"{f} from " + ", ".join(f"{k} {v}" for k, v in c.most_common()) for f, c in sources.items() if c))
+    for f, k in sorted(warned.items()):
+        print(f"warning: {k} building(s) with a sentinel or implausible {f} taken as unknown (report.json: "
+              f"thermal.warnings)")
     for t in terrain:
         print(f"terrain: {t['objects']} TINRelief object(s), {t['faces']} faces, carried into {t['path']}")
     print(f"report: {os.path.join(outdir, 'report.json')} and report.csv")

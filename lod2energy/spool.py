@@ -19,13 +19,16 @@ from lod2energy.safe_write import write_bytes
 
 @dataclass(frozen=True)
 class Job:
-    """What every worker needs besides its building: options, OUTDIR, the spool, the CRS."""
+    """What every worker needs besides its building: options, OUTDIR, the spool, the CRS, and
+    the spooled buildings outside the selection (``--ids``, ``--region``) that serve only as
+    neighbours of the one-file writers (their seqs)."""
 
     options: ExportOptions
     outdir: str
     spool: str
     crs: str | None = None
     frame: Any = None
+    neighbours: tuple[int, ...] = ()
 
 
 def spool_path(spool: str, seq: int) -> str:

@@ -37,14 +37,29 @@ def test_gabled_house_levels_and_attic():
 @pytest.mark.parametrize("key,value,n", [("storeysAboveGround", 5, 5), ("b3_bouwlagen", "4", 4),
                                          ("building:levels", 2.0, 2)])
 def test_attribute_wins(key, value, n):
-    s = storeys(_with_attrs(box(dz=6.0), **{key: value}))
-    assert s.count == n and s.source == key
-    assert s.storey_height == pytest.approx(6.0 / n)
+    s = storeys(_with_attrs(box(dz=3.2 * n), **{key: value}))
+    assert s.count == n and s.source == "attribute" and s.key == key
+    assert s.storey_height == pytest.approx(3.2)
 
 
 def test_storey_heights_attribute():
     s = storeys(_with_attrs(box(dz=7.0), storeyHeightsAboveGround="3.5 3.5"))
-    assert s.count == 2 and s.heights == (3.5, 3.5) and s.source == "storeyHeightsAboveGround"
+    assert s.count == 2 and s.heights == (3.5, 3.5) and s.source == "attribute"
+    assert s.key == "storeyHeightsAboveGround"
+
+
+@pytest.mark.parametrize("value,why", [(9999, "9999"), (5, "1.2 m"), (1, "12.0 m")])
+def test_sentinel_or_implausible_storey_height_is_unknown(value, why):
+    dz = 6.0 if value != 1 else 12.0
+    warnings = []
+    s = storeys(_with_attrs(box(dz=dz), storeysAboveGround=value), warnings=warnings)
+    assert s.source == "geometry" and s.count == round(dz / 2.8)
+    assert len(warnings) == 1 and warnings[0][0] == "storeys" and why in warnings[0][1]
+
+
+def test_next_attribute_after_a_sentinel():
+    s = storeys(_with_attrs(box(dz=6.0), storeysAboveGround=9999, b3_bouwlagen=2))
+    assert s.count == 2 and s.key == "b3_bouwlagen"
 
 
 @pytest.mark.parametrize("bad", [None, "", "abc", 0, -2, True, float("nan"), 1e6])

@@ -82,9 +82,11 @@ def add_cli_arguments(group) -> None:
     group.add_argument("--cfd", action="store_true",
                        help="write an OpenFOAM v1912 case OUTDIR/cfd/ (domain by COST 732 / AIJ guidelines)")
     group.add_argument("--region", metavar="XMIN,YMIN,XMAX,YMAX", default=None,
-                       help="CFD region rectangle in the input CRS (buildings cut by its edge are kept whole)")
-    group.add_argument("--centre", metavar="X,Y", default=None, help="CFD region circle centre (input CRS)")
-    group.add_argument("--radius", metavar="R", type=float, default=None, help="CFD region circle radius (m)")
+                       help="export only the buildings meeting this rectangle in the input CRS, for every output "
+                       "and the CFD case (buildings cut by its edge are kept whole; the others still serve as "
+                       "neighbours)")
+    group.add_argument("--centre", metavar="X,Y", default=None, help="region circle centre (input CRS)")
+    group.add_argument("--radius", metavar="R", type=float, default=None, help="region circle radius (m)")
     group.add_argument("--wind-direction", metavar="DEG", type=float, default=270.0,
                        help="wind direction in degrees, meteorological: where the wind comes FROM, clockwise "
                             "from north (default 270, westerly)")
@@ -94,6 +96,17 @@ def add_cli_arguments(group) -> None:
                        help="close gaps between buildings narrower than M metres (default: the cell size; 0: none)")
     group.add_argument("--mesh", action="store_true",
                        help="also run blockMesh, surfaceFeatureExtract, snappyHexMesh and checkMesh")
+
+
+def region_from_args(args):
+    """The :class:`~lod2energy.exporters.cfd.region.Region` of ``--region`` or ``--centre`` /
+    ``--radius``; None when neither is given (ParameterError on bad values)."""
+    from lod2energy.exporters.cfd.region import make_region
+    region, centre, radius = (getattr(args, k, None) for k in ("region", "centre", "radius"))
+    if region is None and centre is None and radius is None:
+        return None
+    return make_region(_floats(region, 4, "--region") if region is not None else None,
+                       _floats(centre, 2, "--centre") if centre is not None else None, radius)
 
 
 def options_from_args(args) -> CfdOptions:

@@ -1,7 +1,11 @@
 """Options of the EnergyPlus writer (:class:`IdfOptions`) and what every written number shares."""
 from __future__ import annotations
 
+import datetime
+import re
 from dataclasses import dataclass
+
+from lod2energy.errors import ParameterError
 
 
 #: Infiltration of an unconditioned attic (1/h): a ventilated roof space.
@@ -65,6 +69,9 @@ class IdfOptions:
         People, lights, equipment, setpoints with setbacks, infiltration and ventilation of the
         use (:func:`lod2energy.thermal.use.use_conditions`); False: ``heating_setpoint`` /
         ``cooling_setpoint`` all year, ``infiltration_ach`` and ``internal_gains`` as before.
+    run_period : tuple of 4 int
+        ``(begin month, begin day, end month, end day)`` of the IDF's RunPeriod (default the
+        whole year; :func:`parse_run_period`).
     """
 
     mode: str = "building"
@@ -92,4 +99,21 @@ class IdfOptions:
     attic: str = "unconditioned"
     use: str | None = None
     use_loads: bool = True
+    run_period: tuple[int, int, int, int] = (1, 1, 12, 31)
+
+
+def parse_run_period(text: str) -> tuple[int, int, int, int]:
+    """``"MM-DD:MM-DD"`` -> ``(begin month, begin day, end month, end day)`` (ParameterError when
+    not two real days of a year, the end not before the begin)."""
+    m = re.fullmatch(r"\s*(\d{1,2})-(\d{1,2})\s*:\s*(\d{1,2})-(\d{1,2})\s*", str(text))
+    if not m:
+        raise ParameterError(f"--run-period {text!r}: expected MM-DD:MM-DD, e.g. 01-01:03-31")
+    bm, bd, em, ed = (int(x) for x in m.groups())
+    try:  # a leap year: 02-29 is a day EnergyPlus accepts
+        begin, end = datetime.date(2024, bm, bd), datetime.date(2024, em, ed)
+    except ValueError as e:
+        raise ParameterError(f"--run-period {text!r}: {e}") from None
+    if end < begin:
+        raise ParameterError(f"--run-period {text!r}: ends before it begins (one period within a year)")
+    return bm, bd, em, ed
 

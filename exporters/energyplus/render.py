@@ -297,6 +297,7 @@ def render_idf(zones: Sequence[ZoneShell], pieces: Sequence[list[Piece]], delta:
         "solar_distribution": options.solar_distribution or (
             "FullExterior" if options.shading else "MinimalShadowing"),
         "timesteps_per_hour": int(options.timesteps_per_hour),
+        "run_period": [int(x) for x in options.run_period],
         "site": {k: (v if k == "name" else _fmt(float(v), 4)) for k, v in (site or DEFAULT_SITE).items()},
         "ground_temperatures": [_fmt(float(t), 2) for t in (ground or [10.0] * 12)],
         "heating_setpoint": _fmt(options.heating_setpoint, 2),

@@ -17,7 +17,7 @@ from lod2energy.io.gml import local_name as _local
 _INT_ATTRS = ("yearOfConstruction", "yearOfDemolition", "storeysAboveGround", "storeysBelowGround")
 _FLOAT_ATTRS = ("measuredHeight",)
 _TEXT_ATTRS = ("function", "usage", "class", "roofType", "storeyHeightsAboveGround",
-               "storeyHeightsBelowGround")
+               "storeyHeightsBelowGround", "creationDate")  # core:creationDate bounds the year of construction
 _GENERIC = {"stringAttribute": str, "intAttribute": int, "doubleAttribute": float,
             "measureAttribute": float, "dateAttribute": str, "uriAttribute": str}
 #: CityGML 3.0 generic attributes (inside ``gen:genericAttribute``; ``gen:name`` and ``gen:value``).

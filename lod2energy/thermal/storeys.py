@@ -2,10 +2,14 @@
 
 Order of the sources (the first that gives a count wins; :attr:`Storeys.source` says which):
 
-1. **attributes** of the root object, then of its parts: :data:`STOREY_KEYS`
-   (CityGML ``bldg:storeysAboveGround``, the 3DBAG's ``b3_bouwlagen``, OSM-style
-   ``building:levels``, ...); CityGML ``storeyHeightsAboveGround`` (a list or a
-   whitespace-separated string of heights, m) gives the count and the heights.
+1. the ``--buildings`` row, then the **attributes** of the root object, then of its parts,
+   through the attribute map's ``storeys`` field (:mod:`lod2energy.thermal.attributes`; by
+   default CityGML ``bldg:storeysAboveGround``, the 3DBAG's ``b3_bouwlagen``, OSM-style
+   ``building:levels``, ...); ``storey_heights`` (CityGML ``storeyHeightsAboveGround``, a list
+   or a whitespace-separated string of heights, m) gives the heights, and the count when no
+   count is given. Sentinels (9999) are unknown, and so is an attribute's count that gives a
+   storey height outside 2-6 m (:func:`lod2energy.thermal.facts.storeys_candidates`), with a
+   warning; the user's row is taken as given.
 2. **geometry** (:func:`roof_levels`): the ground level ``z0`` (lowest point of the ground
    surfaces, else of the shell), the eave level (area-weighted median over the roof faces of
    each face's lowest point: a flat roof's own height, a pitched roof's eave) and the ridge
@@ -21,18 +25,15 @@ Measured on the shared 3DBAG tiles by ``benchmarks/bench_storeys.py``.
 """
 from __future__ import annotations
 
-import re
 from dataclasses import dataclass
-from typing import Any
 
 import numpy as np
 
 from lod2energy.geometry import newell_normal
 from lod2energy.model import Building
+from lod2energy.thermal.attributes import AttributeMap
+from lod2energy.thermal.facts import STOREY_HEIGHT_RANGE, Fact, storeys_candidates
 
-STOREY_KEYS = ("storeysAboveGround", "b3_bouwlagen", "bouwlagen", "building:levels", "storeys",
-               "numberOfStoreys", "numberOfFloors", "floors", "levels")
-STOREY_HEIGHT_KEYS = ("storeyHeightsAboveGround",)
 #: Floor-to-floor height (m) by use type (indicative, see the module docstring).
 STOREY_HEIGHT = {"residential": 2.8, "office": 3.5, "retail": 4.0, "education": 3.6, "health": 3.6,
                  "hospitality": 3.2, "industry": 5.0, "other": 3.0}
@@ -76,7 +77,8 @@ class Storeys:
     count : int
         Storeys above ground, the attic storey included when :attr:`attic` is True.
     source : str
-        The attribute key used, or ``"geometry"``.
+        ``"table"``, ``"map"``, ``"attribute"``, ``"geometry"`` or ``"default"``
+        (:mod:`lod2energy.thermal.facts`).
     storey_height : float, m
         Floor-to-floor height of the storeys below the eave.
     attic : bool
@@ -92,6 +94,7 @@ class Storeys:
     attic: bool
     heights: tuple[float, ...] | None = None
     levels: RoofLevels | None = None
+    key: str | None = None
 
     @property
     def below_eave(self) -> int:
@@ -99,42 +102,11 @@ class Storeys:
         return max(1, self.count - (1 if self.attic else 0))
 
 
-def _count(v: Any) -> int | None:
-    if isinstance(v, bool) or v is None:
-        return None
-    try:
-        x = float(str(v).strip())
-    except (TypeError, ValueError):
-        return None
-    if not np.isfinite(x) or x < 1 or x > MAX_STOREYS:
-        return None
-    return int(round(x))
-
-
-def _heights(v: Any) -> tuple[float, ...] | None:
-    if v is None or isinstance(v, bool):
-        return None
-    items = v if isinstance(v, (list, tuple)) else re.split(r"[\s,;]+", str(v).strip())
-    try:
-        h = tuple(float(x) for x in items if str(x) != "")
-    except (TypeError, ValueError):
-        return None
-    return h if h and all(np.isfinite(x) and 0.5 < x < 30 for x in h) else None
-
-
-def storeys_from_attributes(b: Building) -> tuple[int | None, str | None, tuple[float, ...] | None]:
-    """``(count, attribute key, storey heights)`` from the attributes, Nones when absent."""
-    for o in b.objects:
-        for k in STOREY_HEIGHT_KEYS:
-            h = _heights(o.attributes.get(k))
-            if h:
-                n = next((_count(o.attributes.get(s)) for s in STOREY_KEYS if _count(o.attributes.get(s))), None)
-                return n or len(h), k, h
-        for k in STOREY_KEYS:
-            n = _count(o.attributes.get(k))
-            if n is not None:
-                return n, k, None
-    return None, None, None
+def storeys_from_attributes(b: Building, amap: AttributeMap | None = None
+                            ) -> tuple[int | None, str | None, tuple[float, ...] | None]:
+    """``(count, attribute key, storey heights)`` from the attributes alone, Nones when absent."""
+    f = next((f for f in storeys_candidates(b, amap) if f.source != "table"), None)
+    return (f.value, f.key, f.raw) if f is not None else (None, None, None)
 
 
 def _surfaces(b: Building, lod: str | None):
@@ -194,11 +166,12 @@ def estimate_storeys(levels: RoofLevels, use: str = "residential") -> Storeys:
 
 
 def storeys(b: Building, use: str = "residential", lod: str | None = None,
-            use_attributes: bool = True) -> Storeys:
-    """Storeys of ``b``: from the attributes when given (and ``use_attributes``), else estimated.
+            use_attributes: bool = True, amap: AttributeMap | None = None, warnings: list | None = None) -> Storeys:
+    """Storeys of ``b``: from its row or attributes when given (and ``use_attributes``), else estimated.
 
-    With an attribute count, the storey height is the eave height over the storeys under the
-    eave (the attic counts as one when the roof space is tall enough).
+    With a given count, the storey height is the eave height over the storeys under the
+    eave (the attic counts as one when the roof space is tall enough). A building prepared by
+    the thermal stage carries its count in ``provenance["thermal"]["facts"]``, which is reused.
 
     Parameters
     ----------
@@ -208,17 +181,38 @@ def storeys(b: Building, use: str = "residential", lod: str | None = None,
     lod : str, optional
     use_attributes : bool
         False: geometry only (what the benchmark measures).
+    amap : AttributeMap, optional
+        Default: the ``auto`` profile.
+    warnings : list, optional
+        ``(field, text)`` appended for each count taken as unknown.
     """
     levels = roof_levels(b, lod)
-    n, key, heights = storeys_from_attributes(b) if use_attributes else (None, None, None)
-    if n is None:
+    cands: list[Fact] = []
+    if use_attributes:
+        known = ((b.provenance.get("thermal") or {}).get("facts") or {}).get("storeys")
+        if known is None:
+            cands = storeys_candidates(b, amap, warnings)
+        elif known["source"] not in ("geometry", "default"):
+            h = known.get("raw")
+            cands = [Fact(int(known["value"]), known["source"], known.get("key"), tuple(h) if h else None)]
+    for f in cands:
+        n, heights = int(f.value), f.raw
         if levels is None:
-            return Storeys(1, "default", STOREY_HEIGHT.get(use, 3.0), False)
-        return estimate_storeys(levels, use)
+            return Storeys(n, f.source, float(np.mean(heights)) if heights else STOREY_HEIGHT.get(use, 3.0),
+                           False, heights, None, f.key)
+        attic = n >= 2 and levels.attic_height >= ATTIC_MIN_HEIGHT
+        below = max(1, n - (1 if attic else 0))
+        if levels.eave > levels.ground:
+            h = (levels.eave - levels.ground) / below
+            if f.source != "table" and not (STOREY_HEIGHT_RANGE[0] <= h <= STOREY_HEIGHT_RANGE[1]):
+                if warnings is not None:
+                    warnings.append(("storeys", f"{n} storeys ({f.key or f.source}) taken as unknown: a storey "
+                                     f"height of {h:.1f} m is outside {STOREY_HEIGHT_RANGE[0]:g}-"
+                                     f"{STOREY_HEIGHT_RANGE[1]:g} m"))
+                continue
+        else:
+            h = STOREY_HEIGHT.get(use, 3.0)
+        return Storeys(n, f.source, float(h), attic, heights, levels, f.key)
     if levels is None:
-        return Storeys(n, key, float(np.mean(heights)) if heights else STOREY_HEIGHT.get(use, 3.0),
-                       False, heights)
-    attic = n >= 2 and levels.attic_height >= ATTIC_MIN_HEIGHT
-    below = max(1, n - (1 if attic else 0))
-    h = (levels.eave - levels.ground) / below if levels.eave > levels.ground else STOREY_HEIGHT.get(use, 3.0)
-    return Storeys(n, key, float(h), attic, heights, levels)
+        return Storeys(1, "default", STOREY_HEIGHT.get(use, 3.0), False)
+    return estimate_storeys(levels, use)

@@ -2,15 +2,20 @@
 
 Fallbacks (documented, in order):
 
-- **year of construction**: the first usable value of :data:`YEAR_KEYS` on the root object,
-  then on its parts (ints, floats, or strings starting with a 4-digit year, 1000-2100);
-  unknown -> ``None`` and the table lookup uses :data:`DEFAULT_YEAR` (1970: the middle of the
-  European residential stock's age distribution); the construction period is then reported
-  with the suffix ``" (assumed)"``.
-- **storeys**: :data:`STOREY_KEYS`; else height / 3 m (height from :data:`HEIGHT_KEYS`, else the
-  geometry's vertical extent), at least 1.
-- **footprint**: area of the GroundSurfaces of the energy geometries; else ``b3_opp_grond``.
-- **attached**: a shared-wall area attribute (``b3_opp_scheidingsmuur`` > 1 m2).
+Attributes are read through the attribute map (:mod:`lod2energy.thermal.attributes`, default
+the ``auto`` profile); the ``--buildings`` row wins over them (:mod:`lod2energy.thermal.facts`).
+
+- **year of construction**: the row's, else the first plausible value of the map's ``year``
+  keys on the root object, then on its parts (sentinels and years later than the file's date
+  are unknown); unknown -> ``None`` and the table lookup uses :data:`DEFAULT_YEAR` (1970: the
+  middle of the European residential stock's age distribution); the construction period is
+  then reported with the suffix ``" (assumed)"``.
+- **storeys**: the row's or the attributes' count (as checked by
+  :func:`lod2energy.thermal.storeys.storeys`); else height / 3 m (height from the map's
+  ``height`` keys, else the geometry's vertical extent), at least 1.
+- **footprint**: area of the GroundSurfaces of the energy geometries; else the map's
+  ``footprint`` (``b3_opp_grond``).
+- **attached**: a shared-wall area attribute (the map's ``shared_wall``, > 1 m2).
 - **building type**: storeys <= 3 and footprint <= 250 m2 -> single-family, or terraced when
   attached; storeys <= 5 -> multi-family; otherwise apartment block. A function / usage
   attribute is recorded here; the U-value stage (:mod:`lod2energy.thermal.uvalues`) gives
@@ -25,21 +30,10 @@ import re
 from dataclasses import dataclass
 from typing import Any, Mapping
 
-import numpy as np
-
 from lod2energy.crs import epsg_codes
 from lod2energy.model import Building
-
-YEAR_KEYS = ("yearOfConstruction", "oorspronkelijkbouwjaar", "b3_bouwjaar", "bouwjaar",
-             "constructionYear", "construction_year", "yearBuilt", "year_built", "Baujahr",
-             "baujahr", "bouwjaar_pand", "year")
-STOREY_KEYS = ("storeysAboveGround", "b3_bouwlagen", "storeys", "numberOfStoreys", "numberOfFloors",
-               "floors", "bouwlagen")
-HEIGHT_KEYS = ("measuredHeight", "height", "b3_h_dak_70p")
-GROUND_LEVEL_KEYS = ("b3_h_maaiveld",)
-FUNCTION_KEYS = ("function", "usage", "class", "gebruiksdoel", "building_function", "buildingFunction")
-SHARED_WALL_KEYS = ("b3_opp_scheidingsmuur",)
-FOOTPRINT_KEYS = ("b3_opp_grond",)
+from lod2energy.thermal.attributes import AttributeMap
+from lod2energy.thermal.facts import Fact, attribute_map, count_of, storeys_candidates, year_fact
 
 DEFAULT_YEAR = 1970
 STOREY_HEIGHT = 3.0  # m
@@ -72,42 +66,6 @@ def country_from_crs(crs: Any) -> str | None:
     if crs and _ADV_CRS.search(str(crs)):
         return "DE"
     return None
-
-
-def parse_year(v: Any) -> int | None:
-    """A year of construction from an attribute value (None if not plausible)."""
-    if isinstance(v, bool) or v is None:
-        return None
-    if isinstance(v, (int, float, np.integer, np.floating)):
-        if not np.isfinite(v):
-            return None
-        y = int(v)
-    else:
-        m = re.match(r"\s*(\d{4})", str(v))
-        if not m:
-            return None
-        y = int(m.group(1))
-    return y if 1000 <= y <= 2100 else None
-
-
-def _number(v: Any) -> float | None:
-    if isinstance(v, bool) or v is None:
-        return None
-    try:
-        x = float(v)
-    except (TypeError, ValueError):
-        return None
-    return x if np.isfinite(x) else None
-
-
-def _first(b: Building, keys: tuple[str, ...], parse) -> tuple[Any, str | None]:
-    for o in b.objects:
-        for k in keys:
-            if k in o.attributes:
-                x = parse(o.attributes[k])
-                if x is not None:
-                    return x, k
-    return None, None
 
 
 @dataclass(frozen=True)
@@ -146,7 +104,8 @@ class Typology:
 
 
 def classify(b: Building, country: str | None = None, ground_area: float | None = None,
-             z_extent: float | None = None) -> Typology:
+             z_extent: float | None = None, amap: AttributeMap | None = None, year: Fact | None = None,
+             storeys: Fact | None = None, function: str | None = None) -> Typology:
     """Choose the typology of ``b`` from its attributes (fallbacks in the module docstring).
 
     Parameters
@@ -158,35 +117,50 @@ def classify(b: Building, country: str | None = None, ground_area: float | None 
         Footprint from the geometry (GroundSurface area).
     z_extent : float, optional, m
         Vertical extent of the energy geometry (height fallback).
+    amap : AttributeMap, optional
+        Default: the ``auto`` profile.
+    year, storeys : Fact, optional
+        Already resolved (:mod:`lod2energy.thermal.facts`); default: read here. A ``storeys``
+        fact from the geometry or the default is not used (height / 3 m is).
+    function : str, optional
+        The use attribute's value, recorded.
     """
+    amap = attribute_map(amap)
     src: dict[str, str] = {}
-    year, k = _first(b, YEAR_KEYS, parse_year)
-    src["year"] = k or "default"
-    height, k = _first(b, HEIGHT_KEYS, _number)
-    if height is not None and k == "b3_h_dak_70p":
-        ground, _ = _first(b, GROUND_LEVEL_KEYS, _number)
-        height = height - ground if ground is not None else None
-        k = k if height is not None else None
+    year = year if year is not None else year_fact(b, amap)
+    src["year"] = (year.key or year.source) if year.value is not None else "default"
+    height, k = None, None
+    hf = amap.read(b, "height", count_of)
+    if hf is not None:
+        height, k = hf.value, hf.key
+        gkey = amap.field("height").ground.get(hf.key)
+        if gkey is not None:
+            gf = next((count_of(o.attributes[gkey]) for o in b.objects if gkey in o.attributes), None)
+            height = height - gf if gf is not None else None
     if height is None or height <= 0:
         height, k = (float(z_extent), "geometry") if z_extent else (STOREY_HEIGHT, "default")
     src["height"] = k
-    st, k = _first(b, STOREY_KEYS, _number)
-    if st is None or st < 1:
+    if storeys is None:
+        storeys = next(iter(storeys_candidates(b, amap)), None)
+    if storeys is not None and storeys.source not in ("geometry", "default"):
+        st, k = float(storeys.value), storeys.key or storeys.source
+    else:
         st, k = max(1.0, round(height / STOREY_HEIGHT)), "height"
     src["storeys"] = k
-    fp, k = (ground_area, "geometry") if ground_area else _first(b, FOOTPRINT_KEYS, _number)
+    fp, k = (ground_area, "geometry") if ground_area else (None, None)
     if fp is None:
-        fp, k = 0.0, "default"
+        ff = amap.read(b, "footprint", count_of)
+        fp, k = (ff.value, ff.key) if ff is not None else (0.0, "default")
     src["footprint"] = k
-    shared, k = _first(b, SHARED_WALL_KEYS, _number)
-    attached = bool(shared is not None and shared > 1.0)
-    src["attached"] = k or "default"
-    func, k = _first(b, FUNCTION_KEYS, lambda v: None if v in (None, "") else str(v))
-    storeys = int(st)
-    if storeys <= 3 and fp <= 250.0:
+    sw = amap.read(b, "shared_wall", count_of)
+    attached = bool(sw is not None and sw.value > 1.0)
+    src["attached"] = sw.key if sw is not None else "default"
+    storeys_n = int(st)
+    if storeys_n <= 3 and fp <= 250.0:
         btype = "terraced" if attached else "single-family"
-    elif storeys <= 5:
+    elif storeys_n <= 5:
         btype = "multi-family"
     else:
         btype = "apartment-block"
-    return Typology(country or "*", btype, year, storeys, float(fp), float(height), func, attached, src)
+    return Typology(country or "*", btype, year.value, storeys_n, float(fp), float(height), function, attached,
+                    src)

@@ -1,25 +1,13 @@
 """Building use (residential, office, retail, ...) from attributes, and its use conditions.
 
-:func:`building_use` maps the first recognised attribute of :data:`USE_KEYS` (root object
-first, then its parts) to one of :data:`USE_TYPES`:
-
-- **AdV ALKIS** ``Gebäudefunktion`` codes (``31001_2020`` as German CityGML tiles give them, or
-  a bare code >= 2000): 1xxx residential; 2010-2056 retail, 2020-2040 offices, 2070-2083
-  hospitality, 2100-2200 and 2500-2700 industry; 3010-3012 offices, 3020-3024 and 3065
-  education, 3050-3052 health; other codes: other.
-- **CityGML 1.0 / SIG3D** ``BuildingFunctionType`` bare codes 1000-1299: 1000-1110
-  residential, 1120-1140 offices, 1150-1200 retail, 1210-1250 hospitality; other: other.
-- **PLATEAU** (Japan) ``usage`` codes: 401 and 421 offices, 402 and 404 retail, 403
-  hospitality, 411-415 residential, 422 education, 431 and 441 industry; other: other.
-- **BAG** ``gebruiksdoel`` (a list or a comma-separated string; the first recognised one):
-  woonfunctie, kantoorfunctie, winkelfunctie, onderwijsfunctie, gezondheidszorgfunctie,
-  logiesfunctie, industriefunctie; the others (bijeenkomst-, sport-, cel-, overige
-  gebruiksfunctie): other.
-- **OSM** ``building`` values and plain English words (house, apartments, office, retail,
-  school, hospital, hotel, industrial, warehouse, ...).
-
-Without any: residential (``source = "default"``), as the typology tables are residential.
-A ``use`` override (the CLI's ``--use``) wins over every attribute.
+:func:`building_use` reads the ``use`` field of the attribute map
+(:mod:`lod2energy.thermal.attributes`; default the ``auto`` profile, which holds the code
+tables of the producers recognised today: AdV ALKIS ``Gebaeudefunktion``, CityGML 1.0 /
+SIG3D ``BuildingFunctionType``, PLATEAU ``usage``, BAG ``gebruiksdoel``, OSM ``building``
+and plain words; see ``lod2energy/data/attribute_maps/``). Precedence: the ``--use`` option,
+the ``--buildings`` row, the attributes, else residential (``source = "default"``), as the
+typology tables are residential. A building prepared by the thermal stage carries its use in
+``provenance["thermal"]["facts"]``, which is reused.
 
 :func:`use_conditions` reads ``data/use_conditions.csv`` and ``data/use_schedules.csv``,
 derived by ``scripts/derive_use_conditions.py`` from TEASER's DIN V 18599-10 / SIA 2024 use
@@ -28,97 +16,18 @@ conditions (see ``data/SOURCES.md``).
 from __future__ import annotations
 
 import csv
-import re
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any, Mapping
+from typing import Mapping
 
 from lod2energy import cache
 from lod2energy.config import USE_TYPES
 from lod2energy.errors import ParameterError
 from lod2energy.model import Building
+from lod2energy.thermal.attributes import AttributeMap
+from lod2energy.thermal.facts import Fact, attribute_map, table_row
 
-USE_KEYS = ("function", "usage", "gebruiksdoel", "b3_gebruiksdoel", "building", "building_function",
-            "buildingFunction", "use")
 DATA = Path(__file__).resolve().parent / "data"
-
-_BAG = {"woonfunctie": "residential", "kantoorfunctie": "office", "winkelfunctie": "retail",
-        "onderwijsfunctie": "education", "gezondheidszorgfunctie": "health", "logiesfunctie": "hospitality",
-        "industriefunctie": "industry", "bijeenkomstfunctie": "other", "sportfunctie": "other",
-        "celfunctie": "other", "overige gebruiksfunctie": "other"}
-_WORDS = {
-    "residential": ("residential", "house", "apartments", "apartment", "detached", "semidetached_house",
-                    "terrace", "bungalow", "dormitory", "farm", "cabin", "houseboat", "static_caravan",
-                    "dwelling", "housing", "living", "wohnen", "wohnhaus", "wohngebäude"),
-    "office": ("office", "offices", "commercial", "government", "civic", "public", "administration"),
-    "retail": ("retail", "shop", "supermarket", "kiosk", "store", "mall", "department_store"),
-    "education": ("school", "university", "college", "kindergarten", "education", "classroom"),
-    "health": ("hospital", "clinic", "health", "healthcare", "nursing_home"),
-    "hospitality": ("hotel", "hostel", "motel", "hospitality", "restaurant", "guest_house"),
-    "industry": ("industrial", "industry", "warehouse", "factory", "manufacture", "workshop", "storage"),
-    "other": ("church", "chapel", "garage", "garages", "shed", "barn", "sports_hall", "other", "yes",
-              "train_station", "transportation", "stadium", "parking", "service", "hut", "roof"),
-}
-_WORD_USE = {w: u for u, ws in _WORDS.items() for w in ws}
-
-
-def _alkis(code: int) -> str:
-    if 1000 <= code < 2000:
-        return "residential"
-    for lo, hi, use in ((2020, 2040, "office"), (2010, 2056, "retail"), (2070, 2083, "hospitality"),
-                        (2100, 2200, "industry"), (2500, 2700, "industry"), (3010, 3012, "office"),
-                        (3020, 3024, "education"), (3065, 3065, "education"), (3050, 3052, "health")):
-        if lo <= code <= hi:
-            return use
-    return "other"
-
-
-def _sig3d(code: int) -> str:
-    for lo, hi, use in ((1000, 1110, "residential"), (1120, 1140, "office"), (1150, 1200, "retail"),
-                        (1210, 1250, "hospitality")):
-        if lo <= code <= hi:
-            return use
-    return "other"
-
-
-def _plateau(code: int) -> str:
-    return {401: "office", 421: "office", 402: "retail", 404: "retail", 403: "hospitality", 411: "residential",
-            412: "residential", 413: "residential", 414: "residential", 415: "residential", 422: "education",
-            431: "industry", 441: "industry"}.get(code, "other")
-
-
-def use_of_value(key: str, value: Any) -> tuple[str, str] | None:
-    """``(use type, scheme)`` for one attribute value, None when not recognised."""
-    if value is None or isinstance(value, bool):
-        return None
-    if isinstance(value, (list, tuple)):
-        for v in value:
-            r = use_of_value(key, v)
-            if r is not None:
-                return r
-        return None
-    s = str(value).strip()
-    if not s:
-        return None
-    low = s.lower()
-    if key in ("gebruiksdoel", "b3_gebruiksdoel") or low in _BAG:
-        for part in re.split(r"\s*[,;|]\s*", low):
-            if part in _BAG:
-                return _BAG[part], "BAG gebruiksdoel"
-    m = re.fullmatch(r"31001_(\d{4})", s)
-    if m:
-        return _alkis(int(m.group(1))), "ALKIS"
-    if re.fullmatch(r"\d{3}", s):
-        return _plateau(int(s)), "PLATEAU"
-    if re.fullmatch(r"\d{4}", s):
-        c = int(s)
-        return (_sig3d(c), "CityGML 1.0 codelist") if c < 2000 else (_alkis(c), "ALKIS")
-    w = low.replace(" ", "_").replace("-", "_")
-    if w in _WORD_USE:
-        return _WORD_USE[w], "word"
-    if w in USE_TYPES:
-        return w, "word"
-    return None
 
 
 @dataclass(frozen=True)
@@ -130,14 +39,23 @@ class Use:
     type : str
         One of :data:`USE_TYPES`.
     source : str
-        ``"attribute:<key> (<scheme>)"``, ``"option"`` or ``"default"``.
+        ``"option"``, ``"table"``, ``"map"``, ``"attribute"`` or ``"default"``.
     value : str or None
         The attribute value read.
+    key : str or None
+        The attribute (or column) read.
+    scheme : str
+        The code table that translated it ("ALKIS", "BAG gebruiksdoel", ...).
     """
 
     type: str
     source: str
     value: str | None = None
+    key: str | None = None
+    scheme: str = ""
+
+    def fact(self) -> Fact:
+        return Fact(self.type, self.source, self.key, self.value, self.scheme)
 
 
 def check_use(use: str) -> str:
@@ -148,16 +66,20 @@ def check_use(use: str) -> str:
     return u
 
 
-def building_use(b: Building, override: str | None = None) -> Use:
+def building_use(b: Building, override: str | None = None, amap: AttributeMap | None = None) -> Use:
     """The use of ``b`` (see the module docstring); ``override`` wins."""
     if override:
         return Use(check_use(override), "option")
-    for o in b.objects:
-        for k in USE_KEYS:
-            if k in o.attributes:
-                r = use_of_value(k, o.attributes[k])
-                if r is not None:
-                    return Use(r[0], f"attribute:{k} ({r[1]})", str(o.attributes[k])[:80])
+    known = ((b.provenance.get("thermal") or {}).get("facts") or {}).get("use")
+    if known:
+        return Use(known["value"], known["source"], known.get("raw"), known.get("key"), known.get("scheme", ""))
+    row = table_row(b)
+    if row.get("use"):
+        return Use(row["use"], "table", None, "use")
+    amap = attribute_map(amap)
+    f = amap.read(b, "use")
+    if f is not None:
+        return Use(f.value, amap.source(f.key), str(f.raw)[:80], f.key, f.scheme)
     return Use("residential", "default")
 
 

@@ -47,6 +47,11 @@ from lod2energy.model import Building, frozen_mapping
 from lod2energy.semantics import (
     CLOSURE, GROUND, OUTER_CEILING, OUTER_FLOOR, ROOF, WALL, envelope_objects, face_metrics, face_table,
 )
+from lod2energy.thermal.attributes import AttributeMap
+from lod2energy.thermal.facts import (
+    Fact, attribute_map, conditioned_fact, facts_json, roof_type_fact, table_row, year_fact,
+)
+from lod2energy.thermal.storeys import storeys as storey_count
 from lod2energy.thermal.typology import Typology, classify, country_from_crs
 from lod2energy.thermal.use import building_use
 from lod2energy.validate.codes import Defect
@@ -96,6 +101,11 @@ class ThermalOptions:
         LoD of the energy geometries.
     use : str, optional
         Use type for every building (the CLI's ``--use``); default: from the attributes.
+    attribute_map : AttributeMap, optional
+        Which attributes give year, storeys, use, ... (``--attribute-map``); default the
+        ``auto`` profile (:mod:`lod2energy.thermal.attributes`).
+    reference_date : str, optional
+        The file's ``referenceDate`` (ISO date): years of construction after it are unknown.
     """
 
     country: str | None = None
@@ -109,6 +119,8 @@ class ThermalOptions:
     u_ground: float | None = None
     u_window: float | None = None
     use: str | None = None
+    attribute_map: AttributeMap | None = None
+    reference_date: str | None = None
 
     @property
     def all_overrides(self) -> dict[str, float]:
@@ -321,23 +333,38 @@ def assign_u_values(b: Building, options: ThermalOptions = ThermalOptions()) -> 
     z_extent = (max(z[1] for z in zs) - min(z[0] for z in zs)) if zs else None
     country = (options.country or country_from_crs(options.crs) or "*")
     country = country.upper() if country != "*" else "*"
-    typ = classify(b, country, ground_area or None, z_extent)
+    amap = attribute_map(options.attribute_map)
+    warnings: list[tuple[str, str]] = []
+    use = building_use(b, options.use, amap)
+    year = year_fact(b, amap, options.reference_date, warnings)
+    st = storey_count(b, use.type, lod, amap=amap, warnings=warnings)
+    st_fact = Fact(st.count, st.source, st.key)
+    typ = classify(b, country, ground_area or None, z_extent, amap, year, st_fact, use.value)
     rows = tuple(load_table(options.u_table)) if options.u_table else ()
-    use = building_use(b, options.use)
     nonres = nonresidential_rows(typ.country, typ.lookup_year) if use.type != "residential" else ()
     if nonres:
         u, used = lookup(typ.country, NONRES_TYPE, typ.lookup_year, rows, nonres, builtin_rows())
     else:
         u, used = lookup(typ.country, typ.building_type, typ.lookup_year, rows, builtin_rows())
+    u_src = {}
+    for e in u:  # the row that gave each element: the user's --u-table (an option) or a shipped table
+        r = next(r for r in used if e in r.u)
+        u_src[e] = Fact(u[e], "option" if r in rows else "default", r.source)
     for e, v in options.all_overrides.items():
         u[e] = v
+        u_src[e] = Fact(v, "option", f"u_{e}")
+    row = table_row(b)
+    for e in ELEMENTS:
+        if row.get(f"u_{e}") is not None:
+            u[e] = float(row[f"u_{e}"])
+            u_src[e] = Fact(u[e], "table", f"u_{e}")
     missing = [e for e in ELEMENTS if e not in u]
     if missing:
         raise ParameterError(f"no U-value for {', '.join(missing)} (country {typ.country}); "
                              f"give them with --u-table or --u-{missing[0]}")
-    wwr = options.wwr
+    wwr, wwr_src = (float(row["wwr"]), "table") if row.get("wwr") is not None else (options.wwr, "option")
     if wwr is None:
-        wwr = next((r.wwr for r in used if r.wwr is not None), None)
+        wwr, wwr_src = next((r.wwr for r in used if r.wwr is not None), None), "default"
     if wwr is None:
         wwr = builtin_wwr().get(typ.building_type, 0.25)
 
@@ -376,7 +403,14 @@ def assign_u_values(b: Building, options: ThermalOptions = ThermalOptions()) -> 
         "storeys": typ.storeys, "footprint": round(typ.footprint, 3), "function": typ.function,
         "sources": dict(typ.sources), "table_sources": [r.source for r in used],
         "overrides": options.all_overrides,
+        "attribute_map": amap.name,
+        "facts": facts_json({
+            "year": year, "storeys": Fact(st.count, st.source, st.key, st.heights), "use": use.fact(),
+            "conditioned": conditioned_fact(b, amap), "roof_type": roof_type_fact(b, amap),
+            **{f"u_{e}": u_src[e] for e in ELEMENTS}, "wwr": Fact(wwr, wwr_src)}),
     }
+    if warnings:
+        thermal["warnings"] = [{"field": f, "message": m} for f, m in warnings]
     if use.type != "residential":
         thermal.update(use=use.type, use_source=use.source,
                        constructions=_constructions_note(use.type, typ, used))
