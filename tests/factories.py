@@ -161,3 +161,31 @@ def square(z: float = 0.0, size: float = 1.0) -> np.ndarray:
 def polygon_building(rings: Iterable[np.ndarray], type: str = "MultiSurface", id: str = "poly") -> Building:
     """A MultiSurface holding one polygon (outer ring first), for polygon-level tests."""
     return building_from_polygons([[np.asarray(r, float) for r in rings]], type, id=id)
+
+
+def stepped_tower(sizes: Sequence[float] = (40.0, 28.0, 16.0), tops: Sequence[float] = (30.0, 75.0, 120.0),
+                  semantics: bool = True, id: str = "tower") -> Building:
+    """A closed, outward tower of square blocks stacked on a common centre: block ``k`` has
+    side ``sizes[k]`` (m, decreasing) and its flat roof at ``tops[k]`` (m, increasing). Each
+    set-back is a horizontal ring-shaped roof (the lower block's square with the upper block's
+    as a hole). Volume ``sum(sizes[k]**2 * (tops[k] - tops[k - 1]))`` m3.
+    """
+    def square(s, z):
+        h = s / 2
+        return np.array([[-h, -h, z], [h, -h, z], [h, h, z], [-h, h, z]], float)
+
+    polys, sem = [[square(sizes[0], 0.0)[::-1]]], ["GroundSurface"]
+    z0 = 0.0
+    for k, (s, top) in enumerate(zip(sizes, tops)):
+        lo, hi = square(s, z0), square(s, top)
+        for i in range(4):
+            j = (i + 1) % 4
+            polys.append([np.array([lo[i], lo[j], hi[j], hi[i]])])
+            sem.append("WallSurface")
+        if k + 1 < len(sizes):
+            polys.append([hi, square(sizes[k + 1], top)[::-1]])  # the set-back: a ring
+        else:
+            polys.append([hi])
+        sem.append("RoofSurface")
+        z0 = top
+    return building_from_polygons(polys, "Solid", sem if semantics else None, id=id)
