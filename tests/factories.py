@@ -189,3 +189,35 @@ def stepped_tower(sizes: Sequence[float] = (40.0, 28.0, 16.0), tops: Sequence[fl
         sem.append("RoofSurface")
         z0 = top
     return building_from_polygons(polys, "Solid", sem if semantics else None, id=id)
+
+
+def cantilever(dx: float = 10.0, depth: float = 8.0, reach: float = 4.0, storey: float = 3.0,
+               soffit: str | None = "RoofSurface", semantics: bool = True, id: str = "cantilever") -> Building:
+    """A closed, outward block of two storeys whose upper storey cantilevers ``reach`` m past
+    the lower one (depth ``depth`` m): an L-section (y, z) extruded along x over ``dx`` m. The
+    overhang's underside (a soffit, facing down, at ``z = storey``) is labelled ``soffit``
+    (RoofSurface as some producers label it; None: unlabelled). Volume
+    ``dx * storey * (2 * depth + reach)`` m3.
+    """
+    yz = np.array([[0, 0], [depth, 0], [depth, storey], [depth + reach, storey],
+                   [depth + reach, 2 * storey], [0, 2 * storey]], float)
+    kinds = ["GroundSurface", "WallSurface", soffit, "WallSurface", "RoofSurface", "WallSurface"]
+    a = np.column_stack([np.zeros(len(yz)), yz])
+    b = np.column_stack([np.full(len(yz), dx), yz])
+    polys, sem = [[a[::-1]], [b]], ["WallSurface", "WallSurface"]  # the L-shaped end walls
+    for i in range(len(yz)):
+        j = (i + 1) % len(yz)
+        polys.append([np.array([a[i], a[j], b[j], b[i]])])
+        sem.append(kinds[i])
+    if not semantics:
+        return building_from_polygons(polys, "Solid", None, id=id)
+    keep = [k for k, t in enumerate(sem) if t is not None]
+    if len(keep) < len(sem):  # an unlabelled face: no semantic entry of its own
+        built = building_from_polygons(polys, "Solid", [t or "WallSurface" for t in sem], id=id)
+        g = built.objects[0].geometries[0]
+        from dataclasses import replace
+        faces = tuple(Surface(s.rings, s.semantic if sem[i] is not None else None)
+                      for i, s in enumerate(g.solids[0].shells[0].surfaces))
+        g = replace(g, solids=(Solid((Shell(faces),)),))
+        return replace(built, objects=(replace(built.objects[0], geometries=(g,)),))
+    return building_from_polygons(polys, "Solid", sem, id=id)
