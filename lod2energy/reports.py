@@ -13,6 +13,7 @@ from typing import TYPE_CHECKING, Iterable, Sequence
 from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.model import CityModel
 from lod2energy.options import FORMATS
+from lod2energy.energy.downgrades import KINDS
 from lod2energy.records import CSV_FIELDS, BuildingRecord
 from lod2energy.safe_write import atomic_write, check_target, json_default
 from lod2energy.spool import load_spooled, spool_path
@@ -229,6 +230,7 @@ def print_export_summary(records: Iterable[BuildingRecord], formats: Iterable[st
     input's terrain (``terrain``: :attr:`lod2energy.pipeline.ExportOutcome.terrain`)."""
     formats = [f for f in FORMATS if f in set(formats)]
     n = comp = rep = timeouts = 0
+    down: dict[str, int] = {}
     ok = dict.fromkeys(formats, 0)
     for r in records:  # one pass: ``records`` may rebuild each record as it is read
         if not (r.type == "Building" or r.assessed):
@@ -237,12 +239,17 @@ def print_export_summary(records: Iterable[BuildingRecord], formats: Iterable[st
         comp += bool(r.energy.compliant)
         rep += r.repair.stage not in ("", "valid", "none", "irreparable")
         timeouts += r.outcome == "timeout"
+        for kind in {d.kind for d in r.downgrades}:
+            down[kind] = down.get(kind, 0) + 1
         for f in formats:
             ok[f] += bool(r.export(f) and r.export(f).ok)
     print(f"{'buildings':>9} {'compliant':>9} {'repaired':>8}  " + "  ".join(f"{f} ok" for f in formats))
     cells = [f"{ok[f]}/{n}" for f in formats]
     print(f"{n:>9} {comp:>9} {rep:>8}  " + "  ".join(f"{c:>8}" for c in cells)
           + (f"  ({timeouts} timeout)" if timeouts else ""))
+    if down:
+        print("energy model downgraded: " + ", ".join(f"{k} {down[k]}" for k in KINDS if k in down)
+              + " building(s) (report.csv: downgrades)")
     for t in terrain:
         print(f"terrain: {t['objects']} TINRelief object(s), {t['faces']} faces, carried into {t['path']}")
     print(f"report: {os.path.join(outdir, 'report.json')} and report.csv")

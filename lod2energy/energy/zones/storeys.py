@@ -10,6 +10,7 @@ from typing import Sequence
 
 import numpy as np
 
+from lod2energy.energy import downgrades as dg
 from lod2energy.energy.enclosure import enclosure_defects
 from lod2energy.energy.openings import Opening
 from lod2energy.energy.pieces import Piece, _pieces_from_points
@@ -197,12 +198,15 @@ def storey_zones(zone: ZoneShell, zi: int, pieces: list[Piece], storey_height: f
 
 
 def _written_zones(blist, zones, zones_of, pieces, options, openings):
-    """Per building: the zones to write ``[(ZoneShell, pieces, ZoneInfo, source zone index)]``, notes, stats."""
-    written_of, notes, bstats = {}, {}, {}
+    """Per building: the zones to write ``[(ZoneShell, pieces, ZoneInfo, source zone index)]``, notes,
+    stats and downgrades (zones kept whole where storey zoning was asked for,
+    :func:`lod2energy.energy.downgrades.whole_zone`)."""
+    written_of, notes, bstats, downgrades = {}, {}, {}, {}
     for bi, b in enumerate(blist):
         use = building_use(b, options.use)
         st = storeys(b, use.type, options.lod)
         notes[bi] = []
+        downgrades[bi] = []
         out = []
         for zi in zones_of[bi]:
             if options.zoning == "storey":
@@ -214,6 +218,8 @@ def _written_zones(blist, zones, zones_of, pieces, options, openings):
                 sz = [(zones[zi], pieces[zi], False)]
             upper = (upper_floor_area(pieces[zi], st.storey_height, options.attic)
                      if len(sz) == 1 else 0.0)
+            if options.zoning == "storey" and note:
+                downgrades[bi].append(dg.whole_zone(zones[zi], st.storey_height, upper, note))
             for k, (z, zp, attic) in enumerate(sz):
                 info = ZoneInfo(b.id, (k + 1 if not attic else None) if len(sz) > 1 else None, attic,
                                 not attic or options.attic == "conditioned", use.type, upper)
@@ -222,4 +228,4 @@ def _written_zones(blist, zones, zones_of, pieces, options, openings):
         bstats[bi] = {"use": use.type, "use_source": use.source, "storeys": st.count,
                       "storeys_source": st.source, "storey_height_m": round(st.storey_height, 3),
                       "attic": st.attic}
-    return written_of, notes, bstats
+    return written_of, notes, bstats, downgrades
