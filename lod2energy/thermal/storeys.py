@@ -104,11 +104,11 @@ class Storeys:
 def storeys_above_eave(span: float, storey_height: float, attic: bool) -> int:
     """Storeys between the eave and the top, the attic included.
 
-    The space above the eave is one attic storey (``attic``), or part of the top storey
-    under the eave, as long as that keeps every storey zone at most two storey heights high;
-    higher (a tower on a podium: the eave, the median roof level by area, is the podium's
-    roof), it is ``round(span / storey_height)`` storeys, none lower than
-    :data:`MIN_STOREY_HEIGHT`.
+    A pitched roof space tall enough (``attic``) is one attic storey, however high. Else the
+    space above the eave is part of the top storey under the eave as long as that keeps the
+    top storey zone at most two storey heights high; higher (a tower on a podium: the eave,
+    the median roof level by area, is the podium's roof), it is ``round(span / storey_height)``
+    storeys, none lower than :data:`MIN_STOREY_HEIGHT`.
 
     Parameters
     ----------
@@ -123,9 +123,10 @@ def storeys_above_eave(span: float, storey_height: float, attic: bool) -> int:
     int
         0 when the space above the eave stays in the top storey, 1 for an attic alone.
     """
-    limit = 2 * storey_height if attic else storey_height
-    if storey_height <= 0 or not span > limit:
-        return 1 if attic else 0
+    if attic:
+        return 1
+    if storey_height <= 0 or not span > storey_height:
+        return 0
     return max(1, min(int(round(span / storey_height)), int(span / MIN_STOREY_HEIGHT)))
 
 
