@@ -21,7 +21,7 @@ from lod2energy.energy.zones import cut as zoning
 from lod2energy.exporters import energyplus
 from lod2energy.records import BuildingRecord, ExportRecord
 
-FORCED = {"lod1_block": fallback.block_zone, "2.5d": fallback.roof_zone}
+FORCED = {"lod1_block": fallback.block_zone, "2.5d": fallback.roof_zone, "cleared_zone": fallback.cleared_zone}
 
 
 def _reject_written(monkeypatch, kind):
@@ -134,3 +134,31 @@ def test_csv_geojson_and_console_show_the_downgrade(tmp_path, monkeypatch, capsy
     (feat,) = json.loads(gj.read_text())["features"]
     assert feat["properties"]["downgrades"] == f"{kind}:b1"
     assert feat["properties"]["downgrade_d_height_m"] == pytest.approx(float(row["downgrade_d_height_m"]))
+
+
+def _prism(xy, h, id="slit"):
+    """A closed, outward prism of the counter-clockwise footprint ``xy`` (k, 2), ``h`` m high."""
+    import numpy as np
+    from factories import building_from_polygons
+    xy = np.asarray(xy, float)
+    n = len(xy)
+    bot = np.column_stack([xy, np.zeros(n)])
+    top = np.column_stack([xy, np.full(n, h)])
+    polys, sem = [[bot[::-1]], [top]], ["GroundSurface", "RoofSurface"]
+    for i in range(n):
+        j = (i + 1) % n
+        polys.append([np.array([bot[i], bot[j], top[j], top[i]])])
+        sem.append("WallSurface")
+    return building_from_polygons(polys, "Solid", sem, id=id)
+
+
+def test_cleared_zone_is_recorded(tmp_path, monkeypatch):
+    """A slit from the back wall to 7 mm from the front wall: its corners lie within
+    EnergyPlus's 1.27 cm of the front wall's edges, and are moved clear of them."""
+    _reject_written(monkeypatch, "cleared_zone")
+    xy = [(0, 0), (10, 0), (10, 8), (5.01, 8), (5.01, 0.007), (4.99, 0.007), (4.99, 8), (0, 8)]
+    b = energy_ready(shifted(_prism(xy, 3.0)))
+    res = energyplus.writer.write([b], tmp_path, energyplus.options.IdfOptions(wwr=0.0), crs="EPSG:28992")[0]
+    (d,) = _downgrades(res, b.id)
+    assert d.kind == "cleared_zone" and d.d_height_m == 0.0
+    assert abs(d.d_volume_m3) < 0.01  # points moved by millimetres
