@@ -145,6 +145,13 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
         safe_write.write_text(path, text, root=out, encoding="ascii", errors="replace")
         return offset, stats, warns, kept_whole
 
+    def downgrades_of(g, kept_whole, file_dg) -> dict:
+        """Building id -> its downgrades as written (the stage's, zones kept whole, the file's
+        simpler envelopes), for the buildings of ``g`` that have any."""
+        down = {blist[j].id: [d.to_json() for d in (*model.downgrades.get(j, ()), *kept_whole.get(j, ()),
+                                                      *file_dg.get(j, ()))] for j in g}
+        return {k: v for k, v in down.items() if v}
+
     jobs = []
     for g in groups:
         stem = safe_stem(blist[g[0]].id if len(g) == 1 else "dataset", used)
@@ -187,9 +194,7 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
                     break
         notes = [w for i in g for w in merge_notes[i]]
         warns = notes + list(warns)
-        down = {blist[j].id: [d.to_json() for d in (*model.downgrades.get(j, ()), *kept_whole.get(j, ()),
-                                                      *file_dg.get(j, ()))] for j in g}
-        stats = {**stats, "downgrades": {k: v for k, v in down.items() if v}}
+        stats = {**stats, "downgrades": downgrades_of(g, kept_whole, file_dg)}
         res = ExportResult(ids, str(path), not problems, tuple(problems),
                            tuple(float(x) for x in offset), tuple(warns), stats)
         if options.run:
@@ -200,9 +205,7 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
                 offset, stats, warns, kept_whole = render(g, path, None)
                 problems = self_check(path)
                 warns = notes + list(warns) + ["party walls not split: EnergyPlus found the split zone not enclosed"]
-                down = {blist[j].id: [d.to_json() for d in (*model.downgrades.get(j, ()), *kept_whole.get(j, ()),
-                                                              *file_dg.get(j, ()))] for j in g}
-                stats = {**stats, "downgrades": {k: v for k, v in down.items() if v}}
+                stats = {**stats, "downgrades": downgrades_of(g, kept_whole, file_dg)}
                 res = ExportResult(ids, str(path), not problems, tuple(problems),
                                    tuple(float(x) for x in offset), tuple(warns), stats)
                 res = _run(res, path, weather, options)
