@@ -117,3 +117,22 @@ def test_energyplus_finds_nothing_upside_down(tmp_path):
         assert r.ok and r.severe_errors == 0, r.problems
         err = Path(r.path).with_name(Path(r.path).stem + "_eplus") / "eplusout.err"  # run._run's folder
         assert "upside down" not in err.read_text(errors="replace")
+
+
+def test_real_roofs_facing_down_are_written_as_outdoor_floors(tmp_path):
+    """Den Haag buildings whose input labels RoofSurface faces that face down (1101)."""
+    from conftest import shared_path
+    from lod2energy import io
+    from lod2energy.model import Building
+
+    _, feats = io.read(str(shared_path("denhaag", "DenHaag_01.city.json")))
+    down = [b for b in feats if isinstance(b, Building) and b.type == "Building"
+            and any(d.code == 1101 for d in check_labels(b))][:4]
+    assert down
+    for b in down:
+        lab = label_building(b)
+        assert not any(d.code == 1101 for d in check_labels(lab))
+        res = energyplus.writer.write([energy_ready(b)], tmp_path / b.id, energyplus.options.IdfOptions(),
+                                      crs="EPSG:7415")[0]
+        assert res.ok, res.problems
+        assert _downward_roofs(Path(res.path)) == []
