@@ -316,8 +316,8 @@ CSV_FIELDS = ["id", "type", "input_errors", "output_errors", "repair_stage", "io
               "compliant", "status", "typology", "construction_period", "roof_m2", "wall_m2", "ground_m2",
               "A_env_m2", "volume_m3", "UA_W_per_K", "cityjson_ok", "idf_ok", "stl_ok", "cfd_ok", "heating_kwh",
               "cooling_kwh", "heating_kwh_m2", "cooling_kwh_m2", "heating_peak_w", "cooling_peak_w",
-              "conditioned_floor_area_m2", "geojson_ok", "message", "outcome", "downgrades",
-              "downgrade_d_height_m", "downgrade_d_volume_m3", "downgrade_d_floor_area_m2"]
+              "conditioned_floor_area_m2", "geojson_ok", "downgrades", "downgrade_d_height_m",
+              "downgrade_d_volume_m3", "downgrade_d_floor_area_m2", "message", "outcome"]
 #: Per-building figures of an EnergyPlus run (the IDF export's), in report.csv and report.json.
 RUN_FIELDS = ("heating_kwh", "cooling_kwh", "heating_kwh_m2", "cooling_kwh_m2", "heating_peak_w", "cooling_peak_w",
               "conditioned_floor_area_m2")
