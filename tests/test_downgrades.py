@@ -114,7 +114,7 @@ def test_record_takes_its_own_downgrades_from_a_shared_file():
     assert BuildingRecord(1, "c", "Building").row()["downgrades"] == ""
 
 
-@pytest.mark.parametrize("kind", ["lod1_block", "whole_zone"])
+@pytest.mark.parametrize("kind", ["lod1_block", "2.5d", "whole_zone"])
 def test_csv_geojson_and_console_show_the_downgrade(tmp_path, monkeypatch, capsys, kind):
     if kind == "whole_zone":
         monkeypatch.setattr(zoning, "split_storeys", lambda *a, **k: None)
@@ -123,7 +123,9 @@ def test_csv_geojson_and_console_show_the_downgrade(tmp_path, monkeypatch, capsy
     vertices = [[x, y, z * 8.4 / 6] for x, y, z in docs.BOX_VERTICES]  # three storeys
     src = docs.write(tmp_path, docs.box_doc(vertices=vertices))
     out = tmp_path / "out"
-    assert main(["export", src, "-o", str(out), "--idf", "--geojson", "--no-html", "-j", "1"]) == 0
+    with_html = kind == "whole_zone"  # report.html once: it takes a few seconds
+    assert main(["export", src, "-o", str(out), "--idf", "--geojson", *([] if with_html else ["--no-html"]),
+                 "-j", "1"]) == 0
     printed = capsys.readouterr().out
     assert f"energy model downgraded: {kind} 1 building(s)" in printed
     (row,) = list(csv.DictReader((out / "report.csv").open()))
@@ -134,6 +136,8 @@ def test_csv_geojson_and_console_show_the_downgrade(tmp_path, monkeypatch, capsy
     (feat,) = json.loads(gj.read_text())["features"]
     assert feat["properties"]["downgrades"] == f"{kind}:b1"
     assert feat["properties"]["downgrade_d_height_m"] == pytest.approx(float(row["downgrade_d_height_m"]))
+    if with_html:
+        assert 'data-key="energy_downgraded">1<' in (out / "report.html").read_text()
 
 
 def _prism(xy, h, id="slit"):
