@@ -97,7 +97,7 @@ def main(argv=None) -> int:
     a = ap.parse_args(argv)
     work = Path(a.keep) if a.keep else Path(tempfile.mkdtemp(prefix="bench_zones_"))
     work.mkdir(parents=True, exist_ok=True)
-    print("| building | exit | wall s | idf ok | stl ok | zones | highest zone m | storey height m | "
+    print("| building | exit | wall s | idf ok | stl ok | zones | highest zone m | storeys | "
           "zone volumes m3 | shell volume m3 | downgrades |")
     print("|---|---:|---:|---|---|---:|---:|---:|---:|---:|---|")
     run("tower40", tower_doc(), work)
