@@ -6,7 +6,8 @@ the IDF with the default ``--zoning storey``) on real tiles and hands every STL 
 the IDFs are also written and, with ``--run N``, the first N IDFs of each tile are simulated
 by EnergyPlus (``--run 0``: all of them). Per IDF the check reads back:
 
-- from ``eplusout.err``: the severe / fatal errors and every zone "not fully enclosed";
+- from ``eplusout.err``: the severe / fatal errors, every zone "not fully enclosed" and the
+  surfaces it calls "upside down" (a Roof/Ceiling facing down, a Floor facing up);
 - the zones of the IDF (``Zone`` objects) and their volumes as EnergyPlus uses them (the
   ``Zone Information`` rows of ``eplusout.eio``), and each zone's volume rebuilt from its
   own ``BuildingSurface:Detailed`` vertices (divergence theorem);
@@ -180,7 +181,9 @@ def check_idf(f: Path, a, tmp: Path, out: Path, idf_ok: bool | None) -> dict:
     enclosed = max(0, len(zones) - len(not_enc - {"?"}) - n_unknown) if res.err.completed else 0
     vol_eplus = sum(eio.get(z, 0.0) for z in zones) if eio else None
     vol_geom = sum(d["volume_geometry"] for d in zones.values())
-    rec = {"id": f.stem, "zones": len(zones), "enclosed": enclosed,
+    err_file = Path(res.outdir) / "eplusout.err"
+    upside = err_file.read_text(errors="replace").count("upside down") if err_file.is_file() else 0
+    rec = {"id": f.stem, "zones": len(zones), "enclosed": enclosed, "upside_down": upside,
            "severe": len(res.err.severe), "fatal": res.err.fatal, "completed": res.err.completed,
            "first_severe": res.err.severe[0][:240] if res.err.severe else "",
            "not_enclosed": sorted(res.err.not_enclosed), "vol_eplus": vol_eplus, "vol_geometry": vol_geom,
@@ -198,6 +201,8 @@ def check_idf(f: Path, a, tmp: Path, out: Path, idf_ok: bool | None) -> dict:
             reasons.append("the self-check passed it (issue 19 item 5)")
     if res.err.not_enclosed:
         reasons.append(f"not enclosed: {', '.join(res.err.not_enclosed)[:160]}")
+    if upside:
+        reasons.append(f"{upside} surface(s) upside down")
     if not rec["vol_ok"]:
         if ref is None:
             reasons.append("no STL volume to compare")
@@ -309,6 +314,9 @@ def table(rows: list[dict], run: bool) -> tuple[str, bool]:
     lines.append(f"| **all** | {tot['b']} | | | {tot['stlp']}/{tot['stl']} | {tot['idfok']}/{tot['idf']} | "
                  f"{tot['run']} | {tot['clean']}/{tot['run']} | {tot['z']} | {tot['ze']}/{tot['z']} | "
                  f"{tot['v']}/{tot['run']} |")
+    up = [x.get("upside_down", 0) for r in rows for x in r.get("idfs", [])]
+    if up:
+        lines += ["", f"EnergyPlus 'upside down' warnings: {sum(up)} in {sum(1 for u in up if u)} of {len(up)} IDFs."]
     fails = [f"- {r['tile']}: the check itself failed: {r['error']}" for r in rows if "error" in r]
     fails += [f"- {r['tile']}: STL {x}" for r in rows for x in r["stl_fail"]]
     fails += [f"- {r['tile']}: `{x['id']}` ({x['zones']} zones): {'; '.join(x['reasons'])}"

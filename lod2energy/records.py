@@ -21,6 +21,8 @@ from collections.abc import Mapping as _Mapping, MutableMapping, Sequence
 from dataclasses import dataclass, field, replace
 from typing import Any, Mapping
 
+from lod2energy.energy.downgrades import Downgrade, summed
+
 
 # ----------------------------------------------------------------------------- pickling
 
@@ -285,12 +287,14 @@ class ExportRecord:
         return f"{fmt} export {bid} not written: {'; '.join(why) or 'no file'}"
 
     def to_json(self) -> dict:
+        """The report's block (the energy model's downgrades are the building record's own field)."""
         d = {"ok": self.ok, "path": self.path, "problems": list(self.problems)}
-        d.update(_untimed(self.values()))
+        d.update(_untimed({k: v for k, v in self.values().items() if k != "downgrades"}))
         return d
 
     def journal(self) -> dict:
-        return {"format": self.format, **self.to_json(), "files": [vars(f) for f in self.files]}
+        down = {"downgrades": _untimed(self.extra["downgrades"])} if "downgrades" in self.extra else {}
+        return {"format": self.format, **self.to_json(), **down, "files": [vars(f) for f in self.files]}
 
     @classmethod
     def from_journal(cls, d: Mapping) -> "ExportRecord":
@@ -315,7 +319,8 @@ CSV_FIELDS = ["id", "type", "input_errors", "output_errors", "repair_stage", "io
               "compliant", "status", "typology", "construction_period", *FACT_COLUMNS, "roof_m2", "wall_m2", "ground_m2",
               "A_env_m2", "volume_m3", "UA_W_per_K", "cityjson_ok", "idf_ok", "stl_ok", "cfd_ok", "heating_kwh",
               "cooling_kwh", "heating_kwh_m2", "cooling_kwh_m2", "heating_peak_w", "cooling_peak_w",
-              "conditioned_floor_area_m2", "geojson_ok", "message", "outcome"]
+              "conditioned_floor_area_m2", "geojson_ok", "downgrades", "downgrade_d_height_m",
+              "downgrade_d_volume_m3", "downgrade_d_floor_area_m2", "message", "outcome"]
 #: Per-building figures of an EnergyPlus run (the IDF export's), in report.csv and report.json.
 RUN_FIELDS = ("heating_kwh", "cooling_kwh", "heating_kwh_m2", "cooling_kwh_m2", "heating_peak_w", "cooling_peak_w",
               "conditioned_floor_area_m2")
@@ -341,6 +346,9 @@ class BuildingRecord:
     bbox : tuple of 6 float or None, m
         ``(xmin, ymin, zmin, xmax, ymax, zmax)`` of the prepared building (spatial index of
         the neighbour pass).
+    downgrades : tuple of Downgrade
+        Where its energy model (the IDF) is simpler than its repaired shell, and what that
+        cost (:mod:`lod2energy.energy.downgrades`); set from the IDF export's record.
     """
 
     seq: int
@@ -355,10 +363,21 @@ class BuildingRecord:
     exports: tuple[ExportRecord, ...] = ()
     message: str = ""
     bbox: tuple[float, ...] | None = None
+    downgrades: tuple[Downgrade, ...] = ()
 
     # -- building a record up
     def with_export(self, er: ExportRecord) -> "BuildingRecord":
-        """This record with ``er`` replacing any earlier result of the same writer."""
+        """This record with ``er`` replacing any earlier result of the same writer.
+
+        The energy model's downgrades the record of a writer carries (``extra["downgrades"]``,
+        building id -> list, for every building of its file) become this building's
+        :attr:`downgrades` (the export record keeps this building's only, for the journal).
+        """
+        if isinstance(er.extra.get("downgrades"), Mapping):
+            own = list(er.extra["downgrades"].get(self.id) or ())
+            extra = {k: v for k, v in er.extra.items() if k != "downgrades"}
+            er = replace(er, extra={**extra, "downgrades": {self.id: own}} if own else extra)
+            self = replace(self, downgrades=tuple(Downgrade.from_json(d) for d in own))
         ex = tuple(e for e in self.exports if e.format != er.format) + (er,)
         return replace(self, exports=ex)
 
@@ -398,6 +417,11 @@ class BuildingRecord:
                     r[k] = values[k]
         r["message"] = self.message
         r["outcome"] = self.outcome
+        dh, dv, da = summed(self.downgrades)
+        r["downgrades"] = " ".join(f"{d.kind}:{d.zone}" for d in self.downgrades)
+        r["downgrade_d_height_m"] = dh if self.downgrades else ""
+        r["downgrade_d_volume_m3"] = dv if self.downgrades else ""
+        r["downgrade_d_floor_area_m2"] = da if self.downgrades else ""
         return r
 
     def fact_columns(self) -> dict:
@@ -415,7 +439,8 @@ class BuildingRecord:
         exports = {e.format: e.to_json() for e in sorted(self.exports, key=lambda e: e.format)}
         zones = exports.get("idf", {}).pop("zones", None)  # per zone figures of a run: the building's own key
         return {**self.row(), **({"zones": zones} if zones is not None else {}), "repair": self.repair.to_json(),
-                "energy": self.energy.to_json(), "thermal": self.thermal.to_json(), "exports": exports}
+                "energy": self.energy.to_json(), "thermal": self.thermal.to_json(), "exports": exports,
+                "energy_downgrades": [d.to_json() for d in self.downgrades]}
 
     # -- the journal
     def to_json(self) -> dict:
@@ -424,7 +449,8 @@ class BuildingRecord:
                 "input_errors": list(self.input_errors), "output_errors": list(self.output_errors),
                 "repair": self.repair.to_json(), "energy": self.energy.to_json(),
                 "thermal": self.thermal.to_json(), "exports": [e.journal() for e in self.exports],
-                "message": self.message, "bbox": list(self.bbox) if self.bbox is not None else None}
+                "message": self.message, "bbox": list(self.bbox) if self.bbox is not None else None,
+                "downgrades": [d.to_json() for d in self.downgrades]}
 
     @classmethod
     def from_json(cls, d: Mapping) -> "BuildingRecord":
@@ -434,7 +460,8 @@ class BuildingRecord:
                    ComplianceRecord.from_block(d.get("energy") or {}) if d.get("energy") else ComplianceRecord(),
                    ThermalRecord.from_block(d.get("thermal")),
                    tuple(ExportRecord.from_journal(e) for e in d.get("exports") or ()),
-                   str(d.get("message") or ""), tuple(d["bbox"]) if d.get("bbox") is not None else None)
+                   str(d.get("message") or ""), tuple(d["bbox"]) if d.get("bbox") is not None else None,
+                   tuple(Downgrade.from_json(x) for x in d.get("downgrades") or ()))
 
 
 # ----------------------------------------------------------------------------- many records

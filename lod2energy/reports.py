@@ -14,6 +14,7 @@ from typing import TYPE_CHECKING, Iterable, Sequence
 from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.model import CityModel
 from lod2energy.options import FORMATS
+from lod2energy.energy.downgrades import KINDS
 from lod2energy.records import CSV_FIELDS, BuildingRecord
 from lod2energy.safe_write import atomic_write, check_target, json_default
 from lod2energy.spool import load_spooled, spool_path
@@ -237,6 +238,7 @@ def print_export_summary(records: Iterable[BuildingRecord], formats: Iterable[st
     input's terrain (``terrain``: :attr:`lod2energy.pipeline.ExportOutcome.terrain`)."""
     formats = [f for f in FORMATS if f in set(formats)]
     n = comp = rep = timeouts = 0
+    down: dict[str, int] = {}
     ok = dict.fromkeys(formats, 0)
     sources: dict[str, Counter] = {f: Counter() for f in ("year", "storeys", "use")}
     warned: Counter = Counter()
@@ -255,6 +257,8 @@ def print_export_summary(records: Iterable[BuildingRecord], formats: Iterable[st
         comp += bool(r.energy.compliant)
         rep += r.repair.stage not in ("", "valid", "none", "irreparable")
         timeouts += r.outcome == "timeout"
+        for kind in {d.kind for d in r.downgrades}:
+            down[kind] = down.get(kind, 0) + 1
         for f in formats:
             ok[f] += bool(r.export(f) and r.export(f).ok)
     print(f"{'buildings':>9} {'compliant':>9} {'repaired':>8}  " + "  ".join(f"{f} ok" for f in formats))
@@ -267,6 +271,9 @@ def print_export_summary(records: Iterable[BuildingRecord], formats: Iterable[st
     for f, k in sorted(warned.items()):
         print(f"warning: {k} building(s) with a sentinel or implausible {f} taken as unknown (report.json: "
               f"thermal.warnings)")
+    if down:
+        print("energy model downgraded: " + ", ".join(f"{k} {down[k]}" for k in KINDS if k in down)
+              + " building(s) (report.csv: downgrades)")
     for t in terrain:
         print(f"terrain: {t['objects']} TINRelief object(s), {t['faces']} faces, carried into {t['path']}")
     print(f"report: {os.path.join(outdir, 'report.json')} and report.csv")

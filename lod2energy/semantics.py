@@ -11,7 +11,13 @@ Rules (the method's; thresholds in :class:`LabelRules`), per energy geometry wit
 
 1. GroundSurface if ``z_c - z_min <= 0.05 m``;
 2. RoofSurface if ``n_z >= 0.70``, or ``n_z >= 0.30`` and ``h_rel >= 0.65``;
-3. WallSurface otherwise.
+3. OuterFloorSurface if ``n_z <= -0.70`` (an overhang's underside, a soffit, a floor over a
+   passage: an exterior floor);
+4. WallSurface otherwise.
+
+A surface facing down (``n_z < -0.17``, :attr:`LabelRules.check_facing_nz`) is never a roof:
+an input RoofSurface / OuterCeilingSurface facing down is labelled OuterFloorSurface (source
+``"facing"``, the input's type kept as ``"inputType"``).
 
 Where labels come from (recorded per surface as ``"labelSource"``):
 
@@ -21,7 +27,8 @@ Where labels come from (recorded per surface as ``"labelSource"``):
   input building whose normal is compatible;
 - ``"closure"``: an unlabelled face lying on a face of another part of the same building,
   with opposite normal (a virtual boundary between parts): ClosureSurface;
-- ``"rule"``: the rules above.
+- ``"rule"``: the rules above;
+- ``"facing"``: an input roof facing down, relabelled OuterFloorSurface.
 """
 from __future__ import annotations
 
@@ -62,6 +69,9 @@ class LabelRules:
         ... or ``n_z`` at or above this and ``h_rel`` at or above ``roof_hrel``.
     roof_hrel : float
         Relative height (0 at the lowest point, 1 at the highest) for ``roof_nz_high``.
+    floor_nz : float
+        A face above the ground whose unit normal has ``n_z`` at or below this is
+        OuterFloorSurface.
     transfer_normal_cos : float
         After repair, a new face takes the label of an input face only if the cosine of
         the angle between their normals is at least this (0.866 = 30 degrees).
@@ -77,7 +87,8 @@ class LabelRules:
         Smallest fraction of a face's area covered by the other part's face.
     check_facing_nz : float
         Plausibility: a RoofSurface with ``n_z`` below ``-check_facing_nz`` faces down
-        (1101); a GroundSurface / OuterFloorSurface with ``n_z`` above it faces up (1104).
+        (1101, and :func:`label_building` labels it OuterFloorSurface); a GroundSurface /
+        OuterFloorSurface with ``n_z`` above it faces up (1104).
     check_ground_hrel : float
         Plausibility: a GroundSurface whose centroid has ``h_rel`` above this, and more
         than ``check_min_height`` above the lowest point, is not at the bottom (1102).
@@ -90,6 +101,7 @@ class LabelRules:
     roof_nz: float = 0.70
     roof_nz_high: float = 0.30
     roof_hrel: float = 0.65
+    floor_nz: float = -0.70
     transfer_normal_cos: float = 0.866
     transfer_max_dist: float = math.inf
     closure_between_parts: bool = True
@@ -252,6 +264,8 @@ def rule_label(nz: float, dz: float, h_rel: float, rules: LabelRules = DEFAULT_R
         return GROUND
     if nz >= rules.roof_nz or (nz >= rules.roof_nz_high and h_rel >= rules.roof_hrel):
         return ROOF
+    if nz <= rules.floor_nz:
+        return OUTER_FLOOR
     return WALL
 
 
@@ -424,7 +438,7 @@ def label_building(b: Building, lod: str | None = None, rules: LabelRules = DEFA
     tables = [face_table(b.vertices, g) for _, _, g in energy]
     repaired = "repair" in b.provenance
     src = _SourceFaces(source, lod) if (repaired and source is not None) else None
-    counts = {"input": 0, "transfer": 0, "closure": 0, "rule": 0}
+    counts = {"input": 0, "transfer": 0, "closure": 0, "rule": 0, "facing": 0}
     out = b
     for k, (o, gi, g) in enumerate(energy):
         t = tables[k]
@@ -435,7 +449,9 @@ def label_building(b: Building, lod: str | None = None, rules: LabelRules = DEFA
         entries, sem_by_key = [], {}
         for i, (key, s) in enumerate(zip(t.keys, t.surfaces)):
             st = _known_type(g, s)
-            if st is not None:
+            if st in (ROOF, OUTER_CEILING) and t.area[i] > 0 and t.normal[i, 2] < -rules.check_facing_nz:
+                e = _entry({**g.semantic_surfaces[s.semantic], "inputType": st}, OUTER_FLOOR, "facing")
+            elif st is not None:
                 e = _entry(g.semantic_surfaces[s.semantic], st, "input")
             elif i in closure:
                 e = _entry(None, CLOSURE, "closure")

@@ -161,3 +161,63 @@ def square(z: float = 0.0, size: float = 1.0) -> np.ndarray:
 def polygon_building(rings: Iterable[np.ndarray], type: str = "MultiSurface", id: str = "poly") -> Building:
     """A MultiSurface holding one polygon (outer ring first), for polygon-level tests."""
     return building_from_polygons([[np.asarray(r, float) for r in rings]], type, id=id)
+
+
+def stepped_tower(sizes: Sequence[float] = (40.0, 28.0, 16.0), tops: Sequence[float] = (30.0, 75.0, 120.0),
+                  semantics: bool = True, id: str = "tower") -> Building:
+    """A closed, outward tower of square blocks stacked on a common centre: block ``k`` has
+    side ``sizes[k]`` (m, decreasing) and its flat roof at ``tops[k]`` (m, increasing). Each
+    set-back is a horizontal ring-shaped roof (the lower block's square with the upper block's
+    as a hole). Volume ``sum(sizes[k]**2 * (tops[k] - tops[k - 1]))`` m3.
+    """
+    def square(s, z):
+        h = s / 2
+        return np.array([[-h, -h, z], [h, -h, z], [h, h, z], [-h, h, z]], float)
+
+    polys, sem = [[square(sizes[0], 0.0)[::-1]]], ["GroundSurface"]
+    z0 = 0.0
+    for k, (s, top) in enumerate(zip(sizes, tops)):
+        lo, hi = square(s, z0), square(s, top)
+        for i in range(4):
+            j = (i + 1) % 4
+            polys.append([np.array([lo[i], lo[j], hi[j], hi[i]])])
+            sem.append("WallSurface")
+        if k + 1 < len(sizes):
+            polys.append([hi, square(sizes[k + 1], top)[::-1]])  # the set-back: a ring
+        else:
+            polys.append([hi])
+        sem.append("RoofSurface")
+        z0 = top
+    return building_from_polygons(polys, "Solid", sem if semantics else None, id=id)
+
+
+def cantilever(dx: float = 10.0, depth: float = 8.0, reach: float = 4.0, storey: float = 3.0,
+               soffit: str | None = "RoofSurface", semantics: bool = True, id: str = "cantilever") -> Building:
+    """A closed, outward block of two storeys whose upper storey cantilevers ``reach`` m past
+    the lower one (depth ``depth`` m): an L-section (y, z) extruded along x over ``dx`` m. The
+    overhang's underside (a soffit, facing down, at ``z = storey``) is labelled ``soffit``
+    (RoofSurface as some producers label it; None: unlabelled). Volume
+    ``dx * storey * (2 * depth + reach)`` m3.
+    """
+    yz = np.array([[0, 0], [depth, 0], [depth, storey], [depth + reach, storey],
+                   [depth + reach, 2 * storey], [0, 2 * storey]], float)
+    kinds = ["GroundSurface", "WallSurface", soffit, "WallSurface", "RoofSurface", "WallSurface"]
+    a = np.column_stack([np.zeros(len(yz)), yz])
+    b = np.column_stack([np.full(len(yz), dx), yz])
+    polys, sem = [[a[::-1]], [b]], ["WallSurface", "WallSurface"]  # the L-shaped end walls
+    for i in range(len(yz)):
+        j = (i + 1) % len(yz)
+        polys.append([np.array([a[i], a[j], b[j], b[i]])])
+        sem.append(kinds[i])
+    if not semantics:
+        return building_from_polygons(polys, "Solid", None, id=id)
+    keep = [k for k, t in enumerate(sem) if t is not None]
+    if len(keep) < len(sem):  # an unlabelled face: no semantic entry of its own
+        built = building_from_polygons(polys, "Solid", [t or "WallSurface" for t in sem], id=id)
+        g = built.objects[0].geometries[0]
+        from dataclasses import replace
+        faces = tuple(Surface(s.rings, s.semantic if sem[i] is not None else None)
+                      for i, s in enumerate(g.solids[0].shells[0].surfaces))
+        g = replace(g, solids=(Solid((Shell(faces),)),))
+        return replace(built, objects=(replace(built.objects[0], geometries=(g,)),))
+    return building_from_polygons(polys, "Solid", sem, id=id)

@@ -61,7 +61,9 @@ def two_part_building(semantics: bool = False) -> Building:
 @pytest.mark.parametrize("nz, dz, h_rel, expected", [
     (-1.0, 0.0, 0.0, "GroundSurface"),      # bottom face
     (0.0, 0.05, 0.01, "GroundSurface"),     # at the ground threshold exactly
-    (-1.0, 0.051, 0.01, "WallSurface"),     # just above it, facing down: not a roof
+    (-1.0, 0.051, 0.01, "OuterFloorSurface"),  # just above it, facing down: an exterior floor
+    (-0.70, 3.0, 0.5, "OuterFloorSurface"),  # the floor threshold exactly
+    (-0.699, 3.0, 0.5, "WallSurface"),       # just above it
     (0.70, 3.0, 0.1, "RoofSurface"),        # steep threshold, any height
     (0.699, 3.0, 0.64, "WallSurface"),      # just under both roof conditions
     (0.30, 5.0, 0.65, "RoofSurface"),       # the high-and-inclined rule at both thresholds

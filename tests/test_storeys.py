@@ -5,7 +5,7 @@ import pytest
 
 from factories import box, gabled_house
 from conftest import shared_path
-from lod2energy.thermal.storeys import ATTIC_MIN_HEIGHT, roof_levels, storeys
+from lod2energy.thermal.storeys import ATTIC_MIN_HEIGHT, roof_levels, storeys, storeys_above_eave
 
 
 def _with_attrs(b, **attrs):
@@ -84,3 +84,18 @@ def test_3dbag_geometry_estimate_within_one_storey():
             n += 1
             close += abs(storeys(b, use_attributes=False).count - int(b.root.attributes["b3_bouwlagen"])) <= 1
     assert n >= 3 and close / n >= 0.8
+
+
+def test_set_back_tower_counts_the_storeys_above_its_podium():
+    from factories import stepped_tower
+    t = stepped_tower(sizes=(40.0, 28.0, 16.0), tops=(30.0, 75.0, 120.0))
+    assert roof_levels(t).eave == pytest.approx(30.0)  # the podium's roof: the median roof level by area
+    s = storeys(t, use="office")
+    assert s.count == round(30 / 3.5) + round(90 / 3.5)
+    a = storeys(_with_attrs(t, storeysAboveGround=40))
+    assert a.count == 40 and a.storey_height == pytest.approx(3.0)
+
+
+def test_storeys_above_eave():
+    assert storeys_above_eave(2.5, 2.8, False) == 0 and storeys_above_eave(3.0, 2.8, True) == 1
+    assert storeys_above_eave(6.0, 2.8, False) == 2 and storeys_above_eave(8.4, 2.8, True) == 1  # an attic, however high

@@ -3,7 +3,7 @@ import numpy as np
 import pytest
 
 from export_helpers import EPW, energy_ready, eppy_idf, parts_building, real_buildings, shifted
-from factories import box, box_polygons, gabled_house
+from factories import box, box_polygons, gabled_house, stepped_tower
 from lod2energy import energy
 import lod2energy.energy.zones.storeys  # noqa: F401 - energy.zones.storeys
 import lod2energy.energy.surfaces  # noqa: F401 - energy.surfaces
@@ -27,7 +27,7 @@ def _idf(path):
 
 def test_gabled_house_cut_into_two_storeys_and_an_attic():
     z, pcs = _pieces(gabled_house(eaves=5.6, ridge=9.0))
-    out, note = energy.zones.storeys.storey_zones(z, 0, pcs, 2, 2.8, "unconditioned")
+    out, note = energy.zones.storeys.storey_zones(z, 0, pcs, 2.8, "unconditioned")
     assert note is None and [a for _, _, a in out] == [False, False, True]
     vols = [energy.pieces._pieces_volume(zp) for _, zp, _ in out]
     assert vols == pytest.approx([224.0, 224.0, 136.0], rel=1e-6)
@@ -42,7 +42,7 @@ def test_gabled_house_cut_into_two_storeys_and_an_attic():
 
 def test_low_roof_space_stays_in_the_top_storey():
     z, pcs = _pieces(gabled_house(eaves=5.6, ridge=6.6))
-    out, _ = energy.zones.storeys.storey_zones(z, 0, pcs, 2, 2.8, "unconditioned")
+    out, _ = energy.zones.storeys.storey_zones(z, 0, pcs, 2.8, "unconditioned")
     assert len(out) == 2 and not any(a for _, _, a in out)
 
 
@@ -210,3 +210,65 @@ def test_energyplus_uses_the_whole_zone_gross_floor_area(tmp_path):
     assert floor == pytest.approx(240.0)
     from lod2energy.thermal.use import use_conditions
     assert people == pytest.approx(use_conditions("residential").people_per_m2 * 240.0, rel=1e-3)
+
+
+def _zone_heights(path) -> dict[str, float]:
+    """Height (m) of each zone of an IDF: the z-range of its surfaces' vertices."""
+    lo: dict[str, float] = {}
+    hi: dict[str, float] = {}
+    for s in _idf(path).idfobjects["BUILDINGSURFACE:DETAILED"]:
+        z = [float(s[f"Vertex_{i}_Zcoordinate"]) for i in range(1, int(s.Number_of_Vertices) + 1)]
+        lo[s.Zone_Name] = min(lo.get(s.Zone_Name, np.inf), *z)
+        hi[s.Zone_Name] = max(hi.get(s.Zone_Name, -np.inf), *z)
+    return {k: hi[k] - lo[k] for k in lo}
+
+
+#: Storeys of 3 m: a podium of 10, a shaft of 15 and a top of 15 storeys (two set-backs).
+TOWER = dict(sizes=(40.0, 28.0, 16.0), tops=(30.0, 75.0, 120.0))
+TOWER_VOLUME = 40.0 ** 2 * 30 + 28.0 ** 2 * 45 + 16.0 ** 2 * 45
+
+
+@pytest.mark.parametrize("attrs", [{}, {"storeysAboveGround": 40}])
+def test_set_back_tower_is_zoned_to_the_top(tmp_path, attrs):
+    """A 40-storey tower on a podium: its eave (the median roof level by area) is the podium's
+    roof, yet every storey up to the top is a zone of at most two storeys."""
+    from dataclasses import replace
+    t = stepped_tower(**TOWER)
+    t = replace(t, objects=(replace(t.root, attributes={**t.root.attributes, **attrs}),) + t.objects[1:])
+    b = energy_ready(shifted(t))
+    res = energyplus.writer.write([b], tmp_path, energyplus.options.IdfOptions(), crs="EPSG:28992")[0]
+    assert res.ok, res.problems
+    h = res.stats["storey_height_m"]
+    heights = _zone_heights(res.path)
+    assert len(heights) == res.stats["zones"] >= 38
+    assert max(heights.values()) <= 2 * h + 1e-6
+    assert sum(res.stats["zone_volume_m3"].values()) == pytest.approx(TOWER_VOLUME, rel=1e-5)
+    assert not any("kept as one zone" in w for w in res.warnings)
+    z, pcs = _pieces(stepped_tower(**TOWER))
+    out, note = energy.zones.storeys.storey_zones(z, 0, pcs, h, "unconditioned")
+    assert note is None and len(out) == len(heights)
+    vols = [energy.pieces._pieces_volume(zp) for _, zp, _ in out]
+    assert sum(vols) == pytest.approx(TOWER_VOLUME, rel=1e-9)
+
+
+def test_tall_part_beside_a_low_wide_part_gets_its_storeys(tmp_path):
+    """The building's eave is the wide part's roof: the tall part is still zoned per storey."""
+    b = energy_ready(shifted(parts_building([box_polygons(60, 60, 9), box_polygons(20, 20, 65, (60, 0, 0))])))
+    res = energyplus.writer.write([b], tmp_path, energyplus.options.IdfOptions(wwr=0.0), crs="EPSG:28992")[0]
+    assert res.ok, res.problems
+    heights = _zone_heights(res.path)
+    assert max(heights.values()) <= 2 * res.stats["storey_height_m"] + 1e-6
+    assert sum(res.stats["zone_volume_m3"].values()) == pytest.approx(60 * 60 * 9 + 20 * 20 * 65, rel=1e-5)
+
+
+def test_whole_tower_zone_counts_the_storeys_above_the_podium(tmp_path):
+    """Kept whole, the tower's floor area is that of every storey its storey zones would have."""
+    b = energy_ready(shifted(stepped_tower(**TOWER)))
+    whole = energyplus.writer.write([b], tmp_path / "w", energyplus.options.IdfOptions(zoning="building"),
+                                    crs="EPSG:28992")[0]
+    split = energyplus.writer.write([b], tmp_path / "s", energyplus.options.IdfOptions(), crs="EPSG:28992")[0]
+    (area,) = _zone_floor_areas(whole.path).values()
+    # a storey cut that would run through a set-back's roof is moved 0.2 m below it, so that
+    # storey's floor is the larger section: a few % more for the storey zones
+    assert area == pytest.approx(sum(_zone_floor_areas(split.path).values()), rel=0.05)
+    assert area > 40.0 ** 2 * 10 + 28.0 ** 2 * 15

@@ -14,7 +14,7 @@ from typing import Iterable
 import numpy as np
 
 from lod2energy import safe_write, site as site_mod
-from lod2energy.energy import model as energy_model
+from lod2energy.energy import downgrades as dg, model as energy_model
 from lod2energy.energy.model import with_energy_model
 from lod2energy.energy.pieces import _face_frame, _pieces_from_points
 from lod2energy.energy.surfaces import zone_pieces
@@ -97,14 +97,17 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
     zones, zones_of, openings, party, pieces = model.zones, model.zones_of, model.openings, model.party, model.pieces
     merge_notes = model.notes
 
-    written_of, zone_notes, bstats = _written_zones(blist[:n_own], zones, zones_of, pieces, options, openings)
+    written_of, zone_notes, bstats, whole = _written_zones(blist[:n_own], zones, zones_of, pieces, options, openings)
 
     groups = [[bi] for bi in range(n_own)] if options.mode == "building" else [list(range(n_own))]
     bboxes = np.array([_bbox(b) for b in blist])
     used: set[str] = set()
 
     def render(g, path, split_pieces, simpler=None):
+        """Write the IDF of buildings ``g``: ``(offset, stats, warnings, whole)``, ``whole`` the
+        zones kept whole (downgrades) per building of ``g``."""
         gb = [blist[i] for i in g]
+        kept_whole = {j: whole[j] for j in g}
         offset = local_origin(gb)
         zi = [z for i in g for z in zones_of[i]]
         shading = []
@@ -122,8 +125,9 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
                     zs[i], ps[i] = simpler[i], zone_pieces(simpler[i], i, {}, False)
                 else:
                     ps[i] = zone_pieces(zones[i], i, party, False)
-            wo, _, _ = _written_zones(gb, zs, [zones_of[j] for j in g], ps, options, openings)
+            wo, _, _, wdg = _written_zones(gb, zs, [zones_of[j] for j in g], ps, options, openings)
             wl = [w for k in range(len(g)) for w in wo[k]]
+            kept_whole = {j: wdg[k] for k, j in enumerate(g)}
         else:
             wl = [w for j in g for w in written_of[j]]
         g_site, g_warn, g_stats = _group_site(gb, crs, frame, site, station)
@@ -139,7 +143,14 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
         if weather and ground is None:
             warns.append("the weather file has no GROUND TEMPERATURES: 10 C under the ground floor all year")
         safe_write.write_text(path, text, root=out, encoding="ascii", errors="replace")
-        return offset, stats, warns
+        return offset, stats, warns, kept_whole
+
+    def downgrades_of(g, kept_whole, file_dg) -> dict:
+        """Building id -> its downgrades as written (the stage's, zones kept whole, the file's
+        simpler envelopes), for the buildings of ``g`` that have any."""
+        down = {blist[j].id: [d.to_json() for d in (*model.downgrades.get(j, ()), *kept_whole.get(j, ()),
+                                                      *file_dg.get(j, ()))] for j in g}
+        return {k: v for k, v in down.items() if v}
 
     jobs = []
     for g in groups:
@@ -156,12 +167,13 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
             return ExportResult(ids, "", False, (not_written(e, "IDF"),), (0.0, 0.0, 0.0))
 
     def _finish(g, path, ids):
-        offset, stats, warns = render(g, path, pieces)
+        offset, stats, warns, kept_whole = render(g, path, pieces)
+        file_dg: dict[int, list] = {}
         problems = self_check(path)
         if (any("not fully enclosed" in p for p in problems) and options.party_split
                 and stats.get("adiabatic_surfaces")):
             # the split party walls' extra vertices fail the enclosure test: whole faces
-            offset, stats, warns = render(g, path, None)
+            offset, stats, warns, kept_whole = render(g, path, None)
             problems = self_check(path)
             warns = list(warns) + ["party walls not split: the split zone fails EnergyPlus's enclosure test"]
         if any("not fully enclosed" in p for p in problems):
@@ -171,15 +183,18 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
                 simpler = {i: make(zones[i]) for j in g for i in zones_of[j]}
                 if any(z is None for z in simpler.values()):
                     continue
-                offset, stats, warns = render(g, path, None, simpler)
+                offset, stats, warns, kept_whole = render(g, path, None, simpler)
                 problems = self_check(path)
                 if not problems:
-                    warns = list(warns) + [f"written with a simpler envelope ({energy_model._fallback_name(make)}, "
+                    name = energy_model._fallback_name(make)
+                    warns = list(warns) + [f"written with a simpler envelope ({name}, "
                                            "party walls as outdoor walls): the written zone failed EnergyPlus's "
                                            "enclosure test"]
+                    file_dg = {j: _file_downgrades(zones, zones_of[j], simpler, party, name) for j in g}
                     break
         notes = [w for i in g for w in merge_notes[i]]
         warns = notes + list(warns)
+        stats = {**stats, "downgrades": downgrades_of(g, kept_whole, file_dg)}
         res = ExportResult(ids, str(path), not problems, tuple(problems),
                            tuple(float(x) for x in offset), tuple(warns), stats)
         if options.run:
@@ -187,9 +202,10 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
             if res.not_enclosed and options.party_split and stats.get("adiabatic_surfaces"):
                 # EnergyPlus's enclosure test can reject the extra vertices of split party
                 # walls: write the building again with whole-face party walls and re-run
-                offset, stats, warns = render(g, path, None)
+                offset, stats, warns, kept_whole = render(g, path, None)
                 problems = self_check(path)
                 warns = notes + list(warns) + ["party walls not split: EnergyPlus found the split zone not enclosed"]
+                stats = {**stats, "downgrades": downgrades_of(g, kept_whole, file_dg)}
                 res = ExportResult(ids, str(path), not problems, tuple(problems),
                                    tuple(float(x) for x in offset), tuple(warns), stats)
                 res = _run(res, path, weather, options)
@@ -199,6 +215,19 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
         with ThreadPoolExecutor(options.jobs) as ex:
             return list(ex.map(finish, jobs))
     return [finish(j) for j in jobs]
+
+
+def _file_downgrades(zones, zone_ids, simpler, party, name: str) -> list:
+    """Downgrades of zones ``zone_ids`` written as the envelopes ``simpler`` (zone index -> zone)
+    because the written file failed its enclosure check."""
+    why = "the written file failed EnergyPlus's enclosure test"
+    out = []
+    for i in zone_ids:
+        out.append(dg.replaced(dg.fallback_kind(name), zones[i], simpler[i], f"{name}: {why}"))
+        walls = dg.party_area(party, i, zones[i])
+        if walls > 0:
+            out.append(dg.party_walls_dropped(zones[i].object_id, walls, f"a simpler envelope ({name})"))
+    return out
 
 
 def _shading_for(bi: int, blist, bboxes, zones, zones_of, party, radius: float) -> list[np.ndarray]:

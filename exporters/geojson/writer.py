@@ -12,8 +12,9 @@ One Feature per exported building, for the GIS where a UBEM study reads its resu
 - **properties**: ``id``, ``type``, the repair (``repair_stage``, ``input_valid``,
   ``output_errors``), the compliance (``compliant``, ``status``, ``geometry_ready``), the
   storeys and use the energy model takes (:func:`lod2energy.thermal.storeys.storeys`,
-  :func:`lod2energy.thermal.use.building_use`, with their sources), typology and period; with
-  ``--run`` also the annual ideal-loads heating and cooling need (kWh, kWh/m2a of conditioned
+  :func:`lod2energy.thermal.use.building_use`, with their sources), typology and period, the
+  energy model's downgrades (``downgrades``: ``kind:zone`` items, and the height, volume and
+  floor-area change they made, :mod:`lod2energy.energy.downgrades`); with ``--run`` also the annual ideal-loads heating and cooling need (kWh, kWh/m2a of conditioned
   floor area) and peak loads (W) from the building's IDF record.
 
 The file is written through :mod:`lod2energy.safe_write` and self-checked by re-reading it
@@ -33,6 +34,7 @@ import shapely
 from shapely.geometry import MultiPolygon, Polygon, shape
 from shapely.validation import explain_validity
 
+from lod2energy.energy.downgrades import summed
 from lod2energy.exporters.registry import register_writer
 from lod2energy.exporters.result import ExportResult
 from lod2energy.io.json_stream import Scanner
@@ -195,6 +197,11 @@ def properties(b: Building, record=None, use: str | None = None, lod: str | None
              "storeys": n_st, "storeys_source": st_src, "use": u.type, "use_source": u.source,
              "typology": thermal.get("typology") or None,
              "construction_period": thermal.get("construction_period") or None}
+    down = tuple(record.downgrades) if record is not None else ()
+    dh, dv, da = summed(down)
+    props.update(downgrades=" ".join(f"{d.kind}:{d.zone}" for d in down) or None,
+                 downgrade_d_height_m=dh if down else None, downgrade_d_volume_m3=dv if down else None,
+                 downgrade_d_floor_area_m2=da if down else None)
     if run:
         idf = record.export("idf") if record is not None else None
         extra = idf.values() if idf is not None else {}

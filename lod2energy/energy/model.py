@@ -32,6 +32,7 @@ import numpy as np
 
 from lod2energy import cache
 
+from lod2energy.energy import downgrades as dg
 from lod2energy.energy.enclosure import enclosure_defects
 from lod2energy.energy.openings import Opening, split_openings
 from lod2energy.energy.pieces import Piece
@@ -98,6 +99,9 @@ class EnergyModel:
         Building index -> what the stage changed (parts united or left out, unmatched openings).
     simpler : mapping of int to str
         Zone index -> the fallback that replaced its envelope.
+    downgrades : mapping of int to tuple of Downgrade
+        Building index -> the simpler envelopes of its zones and the party walls they dropped,
+        with what they cost (:mod:`lod2energy.energy.downgrades`).
     key : tuple
         The buildings' ids and the options the model was made for (:func:`model_of`).
     """
@@ -112,6 +116,7 @@ class EnergyModel:
     pieces: tuple[list[Piece], ...]
     notes: Mapping[int, tuple[str, ...]]
     simpler: Mapping[int, str]
+    downgrades: Mapping[int, tuple[dg.Downgrade, ...]]
     key: tuple
 
     def record(self, bi: int) -> dict:
@@ -120,7 +125,8 @@ class EnergyModel:
                 "zones": tuple(self.zones[zi].object_id for zi in self.zones_of[bi]),
                 "notes": tuple(self.notes[bi]),
                 "simpler_zones": tuple({"zone": self.zones[zi].object_id, "envelope": self.simpler[zi]}
-                                       for zi in self.zones_of[bi] if zi in self.simpler)}
+                                       for zi in self.zones_of[bi] if zi in self.simpler),
+                "downgrades": tuple(d.to_json() for d in self.downgrades.get(bi, ()))}
 
 
 def _energy_buildings(buildings: Iterable[Building], lod: str | None) -> list[Building]:
@@ -219,14 +225,23 @@ def prepare_energy_model(buildings: Iterable[Building], options, context: Iterab
     pieces = [zone_pieces(z, zi, party, options.party_split) if zi in made else []
               for zi, z in enumerate(zones)]
     simpler: dict[int, str] = {}
+    downgrades: dict[int, list[dg.Downgrade]] = {}
+    building_of = {zi: bi for bi, zl in zones_of.items() for zi in zl}
     for zi in made:
         found = enclosable(zones[zi], zi, pieces[zi])
         if found is not None:
+            why = "the repaired shell fails EnergyPlus's enclosure test"
+            down = downgrades.setdefault(building_of[zi], [])
+            down.append(dg.replaced(dg.fallback_kind(found[2]), zones[zi], found[0], f"{found[2]}: {why}"))
+            walls = dg.party_area(party, zi, zones[zi])
+            if walls > 0:
+                down.append(dg.party_walls_dropped(zones[zi].object_id, walls, f"a simpler envelope ({found[2]})"))
             zones[zi], pieces[zi], simpler[zi] = found
             party = {k: v for k, v in party.items() if k[0] != zi}
             openings[zi] = ()  # a fallback envelope: the WWR rule
     return EnergyModel(tuple(blist), len(own), origin, tuple(zones), zones_of, openings, party, tuple(pieces),
-                       {bi: tuple(n) for bi, n in notes.items()}, simpler, key)
+                       {bi: tuple(n) for bi, n in notes.items()}, simpler,
+                       {bi: tuple(d) for bi, d in downgrades.items()}, key)
 
 
 def with_energy_model(buildings: Iterable[Building], options, context: Iterable[Building] = ()) -> list[Building]:

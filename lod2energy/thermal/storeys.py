@@ -16,7 +16,9 @@ Order of the sources (the first that gives a count wins; :attr:`Storeys.source` 
    (highest roof point). Storeys below the eave: ``max(1, round((eave - z0) / h))`` with
    ``h`` the floor-to-floor height of the use (:data:`STOREY_HEIGHT`); one more storey in
    the roof space when it is at least :data:`ATTIC_MIN_HEIGHT` high (``ridge - eave``), as
-   a habitable attic counts as a storey (the 3DBAG ``b3_bouwlagen`` counts it too).
+   a habitable attic counts as a storey (the 3DBAG ``b3_bouwlagen`` counts it too); storeys
+   above the eave where the building rises more than a storey above it
+   (:func:`storeys_above_eave`: a tower on a podium, whose eave is the podium's roof).
 
 :data:`STOREY_HEIGHT` values are indicative floor-to-floor heights (clear height plus a
 0.3 m floor): residential 2.8 m (Dutch/German stock: 2.4-2.6 m clear), offices 3.5 m,
@@ -98,8 +100,37 @@ class Storeys:
 
     @property
     def below_eave(self) -> int:
-        """Storeys under the eave (the attic storey left out)."""
+        """Storeys but the attic storey."""
         return max(1, self.count - (1 if self.attic else 0))
+
+
+def storeys_above_eave(span: float, storey_height: float, attic: bool) -> int:
+    """Storeys between the eave and the top, the attic included.
+
+    A pitched roof space tall enough (``attic``) is one attic storey, however high. Else the
+    space above the eave is part of the top storey under the eave as long as that keeps the
+    top storey zone at most two storey heights high; higher (a tower on a podium: the eave,
+    the median roof level by area, is the podium's roof), it is ``round(span / storey_height)``
+    storeys, none lower than :data:`MIN_STOREY_HEIGHT`.
+
+    Parameters
+    ----------
+    span : float, m
+        ``ridge - eave``.
+    storey_height : float, m
+    attic : bool
+        The roof space is pitched and at least :data:`ATTIC_MIN_HEIGHT` high.
+
+    Returns
+    -------
+    int
+        0 when the space above the eave stays in the top storey, 1 for an attic alone.
+    """
+    if attic:
+        return 1
+    if storey_height <= 0 or not span > storey_height:
+        return 0
+    return max(1, min(int(round(span / storey_height)), int(span / MIN_STOREY_HEIGHT)))
 
 
 def storeys_from_attributes(b: Building, amap: AttributeMap | None = None
@@ -162,7 +193,8 @@ def estimate_storeys(levels: RoofLevels, use: str = "residential") -> Storeys:
     h = STOREY_HEIGHT.get(use, STOREY_HEIGHT["other"])
     below = max(1, int(round((levels.eave - levels.ground) / h)))
     attic = levels.attic_height >= ATTIC_MIN_HEIGHT
-    return Storeys(below + (1 if attic else 0), "geometry", h, attic, None, levels)
+    above = storeys_above_eave(levels.ridge - levels.eave, h, attic)
+    return Storeys(below + above, "geometry", h, attic, None, levels)
 
 
 def storeys(b: Building, use: str = "residential", lod: str | None = None,
@@ -170,8 +202,10 @@ def storeys(b: Building, use: str = "residential", lod: str | None = None,
     """Storeys of ``b``: from its row or attributes when given (and ``use_attributes``), else estimated.
 
     With a given count, the storey height is the eave height over the storeys under the
-    eave (the attic counts as one when the roof space is tall enough). A building prepared by
-    the thermal stage carries its count in ``provenance["thermal"]["facts"]``, which is reused.
+    eave (the attic counts as one when the roof space is tall enough); when that is lower
+    than :data:`MIN_STOREY_HEIGHT` the storeys reach above the eave (a set-back tower) and
+    the storey height is the ridge height over the count. A building prepared by the
+    thermal stage carries its count in ``provenance["thermal"]["facts"]``, which is reused.
 
     Parameters
     ----------
@@ -204,6 +238,8 @@ def storeys(b: Building, use: str = "residential", lod: str | None = None,
         below = max(1, n - (1 if attic else 0))
         if levels.eave > levels.ground:
             h = (levels.eave - levels.ground) / below
+            if not attic and h < MIN_STOREY_HEIGHT and levels.ridge - levels.ground >= n * MIN_STOREY_HEIGHT:
+                h = (levels.ridge - levels.ground) / n  # storeys reach above the eave: a set-back tower
             if f.source != "table" and not (STOREY_HEIGHT_RANGE[0] <= h <= STOREY_HEIGHT_RANGE[1]):
                 if warnings is not None:
                     warnings.append(("storeys", f"{n} storeys ({f.key or f.source}) taken as unknown: a storey "

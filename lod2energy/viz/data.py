@@ -17,6 +17,7 @@ from typing import Iterable, Iterator
 import numpy as np
 
 from lod2energy.validate.codes import name as code_name
+from lod2energy.energy.downgrades import KINDS as DOWNGRADE_KINDS
 
 #: Repair stages in ladder order (as :data:`lod2energy.repair.pipeline.STAGES`).
 STAGES = ("valid", "cleanup", "orientation", "holefill", "refill", "roofs", "alphashape", "footprint",
@@ -62,6 +63,8 @@ class Row:
     errors : tuple of dict
         val3dity error entries (code, description, id, info) when the report lists them.
     message : str
+    downgrades : tuple of str
+        Kinds of the energy model's downgrades (:data:`lod2energy.energy.downgrades.KINDS`).
     """
 
     id: str
@@ -78,6 +81,7 @@ class Row:
     exports: dict = field(default_factory=dict)
     errors: tuple = ()
     message: str = ""
+    downgrades: tuple[str, ...] = ()
 
     @property
     def status(self) -> str:
@@ -185,7 +189,8 @@ def iter_rows(report: dict) -> Iterator[Row]:
                   typology=th.get("typology") or None, heating_kwh_m2=heating_per_m2(b),
                   exports={k: {"ok": bool(v.get("ok")), "problems": list(v.get("problems") or [])}
                            for k, v in (b.get("exports") or {}).items()},
-                  message=b.get("message", ""))
+                  message=b.get("message", ""),
+                  downgrades=tuple(str(d.get("kind")) for d in b.get("energy_downgrades") or ()))
 
 
 # --- figure data (pure functions of the rows) ---------------------------------------------------
@@ -253,6 +258,8 @@ class Tally:
         self.displacement_sum = 0.0
         self.n_displacement = 0
         self.exports: dict[str, dict] = {}
+        self.downgraded = 0
+        self.downgrades: Counter = Counter()  # kind -> buildings
         for r in rs:
             self.add(r)
 
@@ -286,6 +293,8 @@ class Tally:
         self.local += r.stage in LOCAL
         self.global_ += r.stage in GLOBAL
         self.status[r.status] += 1
+        self.downgraded += bool(r.downgrades)
+        self.downgrades.update(set(r.downgrades))
         for fmt, e in r.exports.items():
             d = self.exports.setdefault(fmt, {"ok": 0, "failed": 0, "problems": []})
             d["ok" if e.get("ok") else "failed"] += 1
@@ -314,7 +323,9 @@ class Tally:
                 "miou": round(self.iou_sum / self.n_measured, 6) if self.n_measured else None,
                 "map_v": round(self.displacement_sum / self.n_displacement, 6) if self.n_displacement else None,
                 "n_measured": self.n_measured,
-                "status": {s: self.status[s] for s in STATUSES}}
+                "status": {s: self.status[s] for s in STATUSES},
+                "energy_downgraded": self.downgraded,
+                "energy_downgrades": {k: self.downgrades[k] for k in DOWNGRADE_KINDS if self.downgrades[k]}}
 
     def exports_table(self) -> dict:
         return {k: dict(d, problems=list(d["problems"])) for k, d in self.exports.items()}

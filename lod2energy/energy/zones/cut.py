@@ -11,7 +11,9 @@ floor (the same convex pieces, reversed): an interzone pair. Volumes add up exac
 slabs partition the shell).
 
 Cut heights (:func:`storey_cuts`): the storeys under the eave split ``eave - ground`` evenly;
-a pitched roof space of at least ``attic_min`` metres is its own zone (cut at the eave).
+a pitched roof space of at least ``attic_min`` metres is its own zone (cut at the eave); the
+storeys above the eave of a zone that rises more than a storey above it (a tower on a podium)
+split ``ridge - eave`` evenly.
 A cut that would pass within :data:`CLEARANCE` of a vertex is moved to the nearest vertex
 height within :data:`SNAP` (so that eaves and floor lines become cut lines instead of
 slivers), else shifted by up to 0.4 m (:data:`SHIFTS`), and dropped when
@@ -82,8 +84,8 @@ def _clears(c: float, z: np.ndarray, horizontal_z: Sequence[float]) -> bool:
 
 def storey_cuts(z_values: np.ndarray, ground: float, eave: float, ridge: float, n_below: int,
                 attic: bool, horizontal_z: Sequence[float] = (),
-                avoid: Sequence[tuple[float, float]] = ()) -> tuple[list[float], bool]:
-    """Cut heights (m) for ``n_below`` storeys under the eave (plus the attic when ``attic``).
+                avoid: Sequence[tuple[float, float]] = (), above: int | None = None) -> tuple[list[float], bool]:
+    """Cut heights (m) for ``n_below`` storeys under the eave and ``above`` storeys above it.
 
     Parameters
     ----------
@@ -94,6 +96,10 @@ def storey_cuts(z_values: np.ndarray, ground: float, eave: float, ridge: float, 
     avoid : sequence of (lo, hi) float, m
         Height spans no cut may pass through (the zone's real windows and doors: a storey
         floor runs above or below an opening, as in the building), with :data:`CLEARANCE`.
+    above : int, optional
+        Storeys between the eave and the ridge, the attic included (the top one when
+        ``attic``), each ``(ridge - eave) / above`` high
+        (:func:`lod2energy.thermal.storeys.storeys_above_eave`); by default 1 with an attic, else 0.
 
     Returns
     -------
@@ -104,8 +110,9 @@ def storey_cuts(z_values: np.ndarray, ground: float, eave: float, ridge: float, 
     """
     z = _heights(z_values)
     targets = [ground + k * (eave - ground) / max(n_below, 1) for k in range(1, max(n_below, 1))]
-    if attic:
-        targets.append(eave)
+    above = (1 if attic else 0) if above is None else above
+    if above:
+        targets += [eave + k * (ridge - eave) / above for k in range(above)]
     out, kept_attic = [], False
     for i, t in enumerate(targets):
         is_attic = attic and i == len(targets) - 1

@@ -181,13 +181,17 @@ def classify(semantic_type: str | None, normal: np.ndarray) -> str:
     Without a class from its type, a surface facing up by more than the labelling rules'
     facing threshold (:attr:`lod2energy.semantics.LabelRules.check_facing_nz`, the one that
     says a roof faces down or a ground faces up) is a roof, facing down by more a ground,
-    else a wall.
+    else a wall. A surface facing down by more than that threshold is never a roof, whatever
+    its type: a roof facing down (an overhang's underside labelled RoofSurface) is an outdoor
+    floor, which EnergyPlus takes as it is (a Roof facing down is "upside down" to it).
     """
-    k = SEMANTIC_CLASS.get(semantic_type or "")
-    if k is not None:
-        return k
     facing = DEFAULT_RULES.check_facing_nz
     nz = unit(normal)[2] if np.any(normal) else 0.0
+    k = SEMANTIC_CLASS.get(semantic_type or "")
+    if k == "roof" and nz < -facing:
+        return "floor"
+    if k is not None:
+        return k
     if nz > facing:
         return "roof"
     if nz < -facing:
@@ -235,7 +239,7 @@ def zone_shells(b: Building, origin: np.ndarray, lod: str | None = None,
             pts = b.vertices[used_arr] - origin
             welded, cluster = weld(pts, weld_tol)
             remap = dict(zip(used, cluster.tolist()))
-            faces = []
+            faces, face_sem = [], []
             missing_u = set()
             for fi, s in enumerate(shell.surfaces):
                 rings = []
@@ -255,23 +259,28 @@ def zone_shells(b: Building, origin: np.ndarray, lod: str | None = None,
                 normal = newell_normal(outer)
                 if polygon_area3d(outer, normal) <= MIN_PIECE_AREA:
                     continue
-                kind = classify(stype, normal)
-                u, fallback = face_u_value(sem, kind, u_table)
+                faces.append(ZoneFace(tuple(rings), classify(stype, normal), stype, 0.0, fi))
+                face_sem.append((sem, normal))
+            zs = ZoneShell(b.id, obj.id, welded, tuple(faces), 0.0, 0.0, ())
+            tris, _ = zs.triangles()
+            flip = bool(len(tris) and signed_volume(welded, tris) < 0)
+            if flip:  # classified by their outward normals
+                faces = [ZoneFace(tuple(tuple(r[::-1]) for r in f.rings), classify(f.semantic_type, -n),
+                                  f.semantic_type, 0.0, f.index) for f, (_, n) in zip(faces, face_sem)]
+            for k, (f, (sem, _)) in enumerate(zip(faces, face_sem)):
+                u, fallback = face_u_value(sem, f.kind, u_table)
                 if fallback:
-                    missing_u.add(kind)
-                faces.append(ZoneFace(tuple(rings), kind, stype, u, fi))
+                    missing_u.add(f.kind)
+                faces[k] = replace(f, u_value=u)
             if collinear_tol > 0:
                 faces = _drop_shared_collinear(faces, welded, collinear_tol)
             if missing_u:
                 warnings.append(f"{obj.id}: no uValue for {', '.join(sorted(missing_u))}; "
                                 f"fallback U-values used")
+            if flip:
+                warnings.append(f"{obj.id}: shell was inward oriented; flipped")
             zs = ZoneShell(b.id, obj.id if len(g.solids) == 1 else f"{obj.id}_s{si}", welded,
                            tuple(faces), 0.0, 0.0, ())
-            tris, _ = zs.triangles()
-            if len(tris) and signed_volume(welded, tris) < 0:
-                faces = [ZoneFace(tuple(tuple(r[::-1]) for r in f.rings), f.kind, f.semantic_type,
-                                  f.u_value, f.index) for f in faces]
-                warnings.append(f"{obj.id}: shell was inward oriented; flipped")
             u_win = window_u_value(u_table)
             w = wwr if wwr is not None else positive_number(thermal.get("wwr"))
             w = float(min(max(w or 0.0, 0.0), 0.9))

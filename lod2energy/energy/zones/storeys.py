@@ -10,6 +10,7 @@ from typing import Sequence
 
 import numpy as np
 
+from lod2energy.energy import downgrades as dg
 from lod2energy.energy.enclosure import enclosure_defects
 from lod2energy.energy.openings import Opening
 from lod2energy.energy.pieces import Piece, _pieces_from_points
@@ -17,7 +18,7 @@ from lod2energy.energy.zones import cut as zoning
 from lod2energy.energy.zones.shells import ZoneShell
 from lod2energy.geometry.polygons import newell_normal, unit
 from lod2energy.validate.closed import check_closed_outward
-from lod2energy.thermal.storeys import ATTIC_MIN_HEIGHT, MIN_STOREY_HEIGHT, storeys
+from lod2energy.thermal.storeys import ATTIC_MIN_HEIGHT, MIN_STOREY_HEIGHT, storeys, storeys_above_eave
 from lod2energy.thermal.use import building_use
 
 
@@ -79,26 +80,34 @@ class ZoneInfo:
     upper_floor_area: float = 0.0
 
 
-def _storey_plan(pieces: list[Piece], n_below: int, storey_height: float) -> tuple[float, float, float, int, bool]:
-    """``(ground, eave, ridge, storeys below the eave, attic)`` of a zone's pieces (m): the storeys
-    :func:`storey_zones` cuts it into and the ones :func:`upper_floor_area` counts."""
+def _storey_plan(pieces: list[Piece], storey_height: float) -> tuple[float, float, float, int, bool, int]:
+    """``(ground, eave, ridge, storeys below the eave, attic, storeys above the eave)`` of a
+    zone's pieces (m): the storeys :func:`storey_zones` cuts it into and the ones
+    :func:`upper_floor_area` counts. Counted from the zone's own levels and the building's
+    storey height, so that a BuildingPart taller than the building's eave gets its storeys."""
     ground, eave, ridge, pitched = zoning.zone_levels([(p.points, p.kind) for p in pieces])
     n = max(1, int(round((eave - ground) / storey_height))) if storey_height > 0 else 1
-    n = min(n, max(n_below, 1)) if n_below else n
     n = max(1, min(n, int((eave - ground) / MIN_STOREY_HEIGHT)))
     attic = pitched and ridge - eave >= ATTIC_MIN_HEIGHT
-    return ground, eave, ridge, n, attic
+    return ground, eave, ridge, n, attic, storeys_above_eave(ridge - eave, storey_height, attic)
 
 
-def upper_floor_area(pieces: list[Piece], n_below: int, storey_height: float, attic_mode: str) -> float:
+def _levels(ground: float, eave: float, ridge: float, n: int, attic: bool, above: int) -> list[float]:
+    """Floor levels (m) of the storeys above the lowest, as :func:`zoning.storey_cuts` aims at them;
+    the attic floor last when ``attic``."""
+    levels = [ground + k * (eave - ground) / n for k in range(1, n)]
+    return levels + [eave + k * (ridge - eave) / above for k in range(above)]
+
+
+def upper_floor_area(pieces: list[Piece], storey_height: float, attic_mode: str) -> float:
     """Gross floor area (m2) of the storeys above the lowest of a zone kept whole.
 
     A zone that spans ``n`` storeys (counted as :func:`storey_zones` counts them: the storeys
-    under the eave split ``eave - ground`` evenly) has, besides its floor surfaces (the lowest
-    storey's floor), the floors of storeys ``2 .. n``: each the horizontal section of its
-    closed shell at that storey's floor level ``ground + k (eave - ground) / n``
+    under the eave split ``eave - ground`` evenly, those above it ``ridge - eave``) has, besides
+    its floor surfaces (the lowest storey's floor), the floors of storeys ``2 .. n``: each the
+    horizontal section of its closed shell at that storey's floor level
     (:func:`lod2energy.energy.zones.cut.section_area`), and, with ``attic_mode == "conditioned"``, the
-    attic floor (the section at the eave) as a conditioned attic zone would have. These are
+    attic floor as a conditioned attic zone would have. These are
     the floors storey zoning would write, so a building has the same conditioned floor area
     whether it is cut into storey zones or kept whole. The sections follow the real shell
     (a set-back top storey or a lower wing counts only where it is), which footprint x storeys
@@ -108,9 +117,8 @@ def upper_floor_area(pieces: list[Piece], n_below: int, storey_height: float, at
     ----------
     pieces : list of Piece
         The zone's final pieces (closed, outward).
-    n_below : int
-        Storeys under the eave of the building (:attr:`lod2energy.thermal.storeys.Storeys.below_eave`).
     storey_height : float, m
+        The building's (:attr:`lod2energy.thermal.storeys.Storeys.storey_height`).
     attic_mode : {"unconditioned", "conditioned"}
 
     Returns
@@ -120,15 +128,15 @@ def upper_floor_area(pieces: list[Piece], n_below: int, storey_height: float, at
     """
     if not pieces:
         return 0.0
-    ground, eave, _, n, attic = _storey_plan(pieces, n_below, storey_height)
-    levels = [ground + k * (eave - ground) / n for k in range(1, n)]
-    if attic and attic_mode == "conditioned":
-        levels.append(eave)
+    ground, eave, ridge, n, attic, above = _storey_plan(pieces, storey_height)
+    levels = _levels(ground, eave, ridge, n, attic, above)
+    if attic and attic_mode != "conditioned":
+        levels = levels[:-1]
     polys = [p.points for p in pieces]
     return float(sum(zoning.section_area(polys, z) for z in levels))
 
 
-def storey_zones(zone: ZoneShell, zi: int, pieces: list[Piece], n_below: int, storey_height: float,
+def storey_zones(zone: ZoneShell, zi: int, pieces: list[Piece], storey_height: float,
                  attic_mode: str, openings: Sequence[Opening] = ()) -> tuple[list[tuple[ZoneShell, list[Piece], bool]], str | None]:
     """One zone per storey of a zone's written pieces (:func:`lod2energy.energy.zones.cut.split_storeys`).
 
@@ -139,10 +147,9 @@ def storey_zones(zone: ZoneShell, zi: int, pieces: list[Piece], n_below: int, st
         Its index (keys the interzone pairs).
     pieces : list of Piece
         Its final pieces (closed, as written).
-    n_below : int
-        Storeys under the eave of the building; this zone gets ``round(height / storey_height)``
-        when it is lower than the building (a BuildingPart).
     storey_height : float, m
+        The building's: the zone gets ``round((eave - ground) / storey_height)`` storeys under
+        its eave and :func:`~lod2energy.thermal.storeys.storeys_above_eave` above it.
     attic_mode : {"unconditioned", "conditioned"}
     openings : sequence of Opening
         The zone's real windows and doors: no storey cut passes through one.
@@ -158,11 +165,11 @@ def storey_zones(zone: ZoneShell, zi: int, pieces: list[Piece], n_below: int, st
     single = [(zone, pieces, False)]
     if not pieces:
         return single, None
-    ground, eave, ridge, n, attic = _storey_plan(pieces, n_below, storey_height)
+    ground, eave, ridge, n, attic, above = _storey_plan(pieces, storey_height)
     allz = np.concatenate([p.points[:, 2] for p in pieces])
     horiz = [float(p.points[0, 2]) for p in pieces if np.ptp(p.points[:, 2]) <= 1e-6]
     spans = [(float(o.points[:, 2].min()), float(o.points[:, 2].max())) for o in openings]
-    cuts, attic = zoning.storey_cuts(allz, ground, eave, ridge, n, attic, horiz, spans)
+    cuts, attic = zoning.storey_cuts(allz, ground, eave, ridge, n, attic, horiz, spans, above)
     if not cuts:
         return single, None
     note = None
@@ -191,23 +198,28 @@ def storey_zones(zone: ZoneShell, zi: int, pieces: list[Piece], n_below: int, st
 
 
 def _written_zones(blist, zones, zones_of, pieces, options, openings):
-    """Per building: the zones to write ``[(ZoneShell, pieces, ZoneInfo, source zone index)]``, notes, stats."""
-    written_of, notes, bstats = {}, {}, {}
+    """Per building: the zones to write ``[(ZoneShell, pieces, ZoneInfo, source zone index)]``, notes,
+    stats and downgrades (zones kept whole where storey zoning was asked for,
+    :func:`lod2energy.energy.downgrades.whole_zone`)."""
+    written_of, notes, bstats, downgrades = {}, {}, {}, {}
     for bi, b in enumerate(blist):
         use = building_use(b, options.use)
         st = storeys(b, use.type, options.lod)
         notes[bi] = []
+        downgrades[bi] = []
         out = []
         for zi in zones_of[bi]:
             if options.zoning == "storey":
-                sz, note = storey_zones(zones[zi], zi, pieces[zi], st.below_eave, st.storey_height, options.attic,
+                sz, note = storey_zones(zones[zi], zi, pieces[zi], st.storey_height, options.attic,
                                         openings.get(zi, ()))
                 if note:
                     notes[bi].append(note)
             else:
                 sz = [(zones[zi], pieces[zi], False)]
-            upper = (upper_floor_area(pieces[zi], st.below_eave, st.storey_height, options.attic)
+            upper = (upper_floor_area(pieces[zi], st.storey_height, options.attic)
                      if len(sz) == 1 else 0.0)
+            if options.zoning == "storey" and note:
+                downgrades[bi].append(dg.whole_zone(zones[zi], st.storey_height, upper, note))
             for k, (z, zp, attic) in enumerate(sz):
                 info = ZoneInfo(b.id, (k + 1 if not attic else None) if len(sz) > 1 else None, attic,
                                 not attic or options.attic == "conditioned", use.type, upper)
@@ -216,4 +228,4 @@ def _written_zones(blist, zones, zones_of, pieces, options, openings):
         bstats[bi] = {"use": use.type, "use_source": use.source, "storeys": st.count,
                       "storeys_source": st.source, "storey_height_m": round(st.storey_height, 3),
                       "attic": st.attic}
-    return written_of, notes, bstats
+    return written_of, notes, bstats, downgrades
