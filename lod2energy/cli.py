@@ -56,6 +56,12 @@ def _add_mesh_options(p: argparse.ArgumentParser) -> None:
                    help="POLY file of an inner shell (repeatable)")
 
 
+def _add_crs(p: argparse.ArgumentParser) -> None:
+    p.add_argument("--crs", default=None, metavar="CRS",
+                   help="CRS of the input's coordinates (any form pyproj reads: EPSG:28992, a URN, WKT), "
+                        "replacing the file's; needed by --idf, --run and --geojson when the file names none")
+
+
 def _tolerances(a) -> Tolerances:
     for k in ("snap_tol", "planarity_d2p_tol", "planarity_n_tol"):
         v = getattr(a, k)
@@ -93,6 +99,7 @@ def add_validate_parser(sub) -> argparse.ArgumentParser:
     v.add_argument("--html", metavar="OUT.html", default=None,
                    help="write a self-contained HTML report (summary, plots, plan view, per-building panels)")
     v.add_argument("-q", "--quiet", action="store_true", help="no progress bar and no table")
+    _add_crs(v)
     _add_tolerances(v)
     _add_mesh_options(v)
     return v
@@ -116,6 +123,7 @@ def add_repair_parser(sub) -> argparse.ArgumentParser:
     r.add_argument("-j", "--jobs", type=int, default=1, metavar="N",
                    help="worker processes (default 1: in this process; 0: all cores)")
     r.add_argument("-q", "--quiet", action="store_true")
+    _add_crs(r)
     _add_tolerances(r)
     return r
 
@@ -169,6 +177,7 @@ def add_export_parser(sub) -> argparse.ArgumentParser:
     e.add_argument("--merge-parts", action="store_true")
     e.add_argument("--no-html", action="store_true", help="do not write OUTDIR/report.html")
     e.add_argument("-q", "--quiet", action="store_true")
+    _add_crs(e)
     g = e.add_argument_group("energy model (IDF)")
     g.add_argument("--zoning", choices=("storey", "building"), default="storey",
                    help="one thermal zone per storey (default) or per Building/BuildingPart")
@@ -219,6 +228,7 @@ def _print_validate_table(rows: list[dict]) -> None:
 
 
 def cmd_validate(a) -> int:
+    from lod2energy import crs as crs_
     from lod2energy.io import read
     from lod2energy.validate.report import validate_features
 
@@ -232,11 +242,13 @@ def cmd_validate(a) -> int:
     reports, rows = [], []
     worst = EXIT_OK
     for path in a.files:
-        model, feats = read(path, primitive=a.primitive, inner_shells=a.inner_shell)
+        model, feats = read(path, primitive=a.primitive, inner_shells=a.inner_shell, crs=a.crs)
         geographic = getattr(model, "frame", None) is not None
-        if geographic:  # lod2energy.reports (records, options, spool) loads only for a geographic CRS
+        if geographic:  # lod2energy.reports (records, options, spool) loads only for a CRS not in metres
             from lod2energy.reports import frame_entry, note_frame
             note_frame(path, model)
+        elif model is not None and crs_.metres_note(path, model.crs):
+            print(crs_.metres_note(path, model.crs), file=sys.stderr)
         tick, close = _progress(a.quiet, os.path.basename(path))
         try:
             rep = validate_features(model, feats, path, tol, a.lod, tick)
@@ -299,7 +311,8 @@ def export_options(a) -> "ExportOptions":
         cfd = options_from_args(a)
     return ExportOptions(formats, prepare_options(a, _tolerances(a)), idf,
                          StlOptions(mode=a.stl_mode, ascii=a.stl_ascii, lod=a.lod),
-                         CityJsonOptions(a.cityjson_version), cfd=cfd, html=not getattr(a, "no_html", False))
+                         CityJsonOptions(a.cityjson_version), cfd=cfd, html=not getattr(a, "no_html", False),
+                         crs=getattr(a, "crs", None))
 
 
 def cmd_export(a) -> int:

@@ -15,6 +15,9 @@ from lod2energy.model import CityModel
 
 #: Writers in the order they run and appear in the options.
 FORMATS = ("cityjson", "idf", "stl", "cfd", "geojson")
+#: Writers that need the buildings' real positions (a site, latitude / longitude): refused for
+#: a file with no CRS pyproj reads unless ``--crs`` gives one; the others take metres.
+NEEDS_POSITIONS = ("idf", "geojson")
 
 
 def _thermal_default():
@@ -78,6 +81,9 @@ class ExportOptions:
         The OpenFOAM case (``--cfd``).
     html : bool
         Write ``report.html`` (the method's pictures) beside ``report.json``.
+    crs : str or None
+        The CRS of the input's coordinates (``--crs``, any form pyproj reads), replacing the
+        file's.
     hard_timeout : float or None, s
         Limit of one building's first-pass job, enforced by the executor (CPU time of the
         worker, or ten times that of wall time; the worker is killed and replaced, the
@@ -93,6 +99,7 @@ class ExportOptions:
     hard_timeout: float | None = None
     cfd: Any = None
     html: bool = True
+    crs: str | None = None
 
     def writer_options(self, name: str):
         # the footprints (geojson) carry the energy model's figures: they take its options
@@ -109,6 +116,8 @@ class ExportOptions:
         """JSON-ready summary of everything that changes the outputs (the journal header)."""
         d = asdict(self)
         d.pop("hard_timeout", None)
+        if d.get("crs") is None:  # the file's own CRS: journals of earlier versions stay resumable
+            d.pop("crs", None)
         return d
 
 

@@ -24,12 +24,13 @@ from dataclasses import dataclass, replace
 from typing import Iterator, Sequence
 
 from lod2energy.config import DEFAULT, Tolerances
+from lod2energy.crs import no_crs_reason
 from lod2energy.dataset import BESIDE, DatasetResult, beside_ok, dataset_apply, dataset_pass, write_beside
 from lod2energy.errors import ParameterError
 from lod2energy.interrupt import EXIT_INVALID, EXIT_OK, EXIT_SIGINT, EXIT_UNUSABLE, Interrupted, Signals
 from lod2energy.model import Building, CityModel, FeatureError, frozen_mapping
 from lod2energy.neighbours import neighbours_within, spatial_order
-from lod2energy.options import ExportOptions, PrepareOptions, RunOptions, ladder_budget, prepare_options, resolve
+from lod2energy.options import NEEDS_POSITIONS, ExportOptions, PrepareOptions, RunOptions, ladder_budget, prepare_options, resolve
 from lod2energy.records import (
     _untimed, BuildingRecord, ComplianceRecord, ExportRecord, RecordStore, RepairRecord, ThermalRecord,
 )
@@ -330,14 +331,20 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
     if os.path.exists(outdir) and not os.path.isdir(outdir):
         refuse_overwriting_inputs([outdir], inputs)
         raise ParameterError(f"-o {outdir}: exists and is not a folder")
-    model, feats = read(input_path)
+    model, feats = read(input_path, crs=options.crs)
     if model is None:
         msgs = []
         for fe in feats:
             err(fe.message)
             msgs.append(fe.message)
         return ExportOutcome(EXIT_UNUSABLE, dataset_errors=tuple(msgs))
-    note_frame(input_path, model)
+    placed = [f for f in options.formats if f in NEEDS_POSITIONS]
+    why = no_crs_reason(model.crs) if placed else None
+    if why:
+        what = " and ".join([f"--{f}" for f in placed] + (["--run"] if "idf" in placed and options.idf.run else []))
+        raise ParameterError(f"{input_path}: {why}: {what} needs the buildings' real positions; "
+                             "give the file's CRS with --crs (nothing written)")
+    note_frame(input_path, model, metres_note=True)
     options = resolve(options, model)
     os.makedirs(outdir, exist_ok=True)
     out = os.path.abspath(outdir)

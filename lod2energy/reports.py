@@ -36,19 +36,31 @@ def progress(quiet: bool, desc: str):
 
 
 def frame_entry(model: CityModel | None) -> dict:
-    """Report entry for a geographic input: the local metric frame its buildings were
-    validated, repaired and exported in (IDF / STL offsets are in this frame)."""
+    """Report entry for an input not in metres: the local metric frame a geographic file's
+    buildings were validated, repaired and exported in (IDF / STL offsets are in this frame),
+    or the conversion of a file in feet to metres."""
     frame = getattr(model, "frame", None)
-    return {"local_frame": frame.as_dict()} if frame is not None else {}
+    if frame is None:
+        return {}
+    return {"local_frame" if frame.geographic else "unit_conversion": frame.as_dict()}
 
 
-def note_frame(path: str, model: CityModel | None) -> None:
-    """One line on stderr when a geographic input is processed in a local metric frame."""
+def note_frame(path: str, model: CityModel | None, metres_note: bool = True) -> None:
+    """One line on stderr when an input is processed in a local metric frame (geographic CRS),
+    converted to metres (a CRS in feet) or, with ``metres_note``, taken as metres (no CRS
+    pyproj reads)."""
+    from lod2energy.crs import metres_note as note
     f = getattr(model, "frame", None)
-    if f is not None:
+    if f is not None and f.geographic:
         print(f"lod2energy: note: {path}: CRS {model.crs} is geographic (degrees); buildings are checked and "
               f"exported in a local east-north-up frame in metres at lat {f.lat0:.7f}, lon {f.lon0:.7f} "
               "(report.json: local_frame); CityJSON is written back in degrees", file=sys.stderr)
+    elif f is not None:
+        print(f"lod2energy: note: {path}: CRS {model.crs} is in {f.unit} (heights in {f.vertical_unit}); "
+              f"coordinates are converted to metres (x {f.to_metre:.10g}) for every check and export in "
+              "metres (report.json: unit_conversion); CityJSON is written back in the file's unit", file=sys.stderr)
+    elif metres_note and model is not None and note(path, model.crs):
+        print(note(path, model.crs), file=sys.stderr)
 
 
 def refuse_overwriting_inputs(outputs: Iterable[str], inputs: Iterable[str]) -> None:

@@ -2,10 +2,12 @@
 temperatures from the weather file, and the weather station's distance.
 
 - **latitude / longitude**: the centre of the building's (or dataset's) bounding box, taken
-  through its CRS to WGS84 with pyproj (the horizontal EPSG code of the CRS name, AdV names
-  included, :func:`lod2energy.crs.epsg_codes`), read as (easting, northing) unless only the
-  other order falls in the CRS's area of use; a file in a geographic CRS is read in a local
-  frame (:class:`lod2energy.geodesy.LocalFrame`) and goes back through it.
+  through its CRS to WGS84 with pyproj (the horizontal part of any CRS pyproj reads, AdV names
+  included, :func:`lod2energy.crs.crs_info`), read in the CRS's own axis order (north first
+  for the JGD plane CSs) unless only the other order falls in the CRS's area of use; a file
+  in a geographic CRS is read in a local frame (:class:`lod2energy.geodesy.LocalFrame`) and
+  goes back through it, one in feet is scaled back (:class:`lod2energy.geodesy.ScaledFrame`).
+  A file with no CRS pyproj reads has no site: nothing is assumed.
 - **elevation**: the lowest point of the geometry (m above the CRS's vertical datum: NAP,
   DHHN, TP; ellipsoidal where the file has no vertical datum), clipped to EnergyPlus's range
   -300 .. 8900 m.
@@ -18,7 +20,6 @@ temperatures from the weather file, and the weather station's distance.
 """
 from __future__ import annotations
 
-import functools
 import math
 from dataclasses import dataclass
 from pathlib import Path
@@ -26,7 +27,8 @@ from typing import Any
 
 import numpy as np
 
-from lod2energy.crs import epsg_code, epsg_codes, is_geographic, latitude_first
+from lod2energy import cache
+from lod2energy.crs import crs_info, epsg_codes, no_crs_reason
 from lod2energy.errors import Lod2EnergyError
 from lod2energy.thermal import country_from_crs
 
@@ -41,7 +43,7 @@ EARTH_KM = 6371.0088
 
 
 class SiteError(Lod2EnergyError, ValueError):
-    """The coordinates cannot be placed on the Earth (unknown CRS, not finite)."""
+    """The coordinates cannot be placed on the Earth (no CRS pyproj reads, not finite)."""
 
 
 @dataclass(frozen=True)
@@ -97,7 +99,7 @@ def _inside(t, p: np.ndarray, area) -> np.ndarray:
     only that order falls inside the CRS's area of use (German Gauss-Krueger files write
     east-north although EPSG defines north-east; the caller swaps the JGD plane CSs, which
     PLATEAU writes in the authority's north-east order and whose areas of use are too large to
-    tell the two orders apart)."""
+    tell the two orders apart: the caller gives the CRS's own order first)."""
     out = []
     for a, b in ((0, 1), (1, 0)):
         lon, lat = t.transform(p[:, a], p[:, b])
@@ -112,51 +114,47 @@ def _inside(t, p: np.ndarray, area) -> np.ndarray:
     return out[0]
 
 
-@functools.lru_cache(maxsize=32)
-def _transformer(code: int):
-    """The pyproj ``Transformer`` EPSG:``code`` -> EPSG:4326 (x/y order) and the source CRS's area
-    of use, built once per process and code (building one costs about 0.1 s CPU).
-
-    Raises
-    ------
-    SiteError
-        pyproj is missing or does not know the code (not cached: it is raised again each call).
-    """
+@cache.memoize("site_transformer", 32)
+def _transformer(horizontal: str):
+    """The pyproj ``Transformer`` from the horizontal CRS ``horizontal`` (``"EPSG:<code>"`` or
+    WKT) to EPSG:4326 (x/y order) and the source CRS's area of use, built once per process
+    (building one costs about 0.1 s CPU)."""
+    from pyproj import Transformer
+    from pyproj.exceptions import CRSError
     try:
-        from pyproj import Transformer
-        from pyproj.exceptions import CRSError
-    except ImportError as e:  # pragma: no cover - a dependency
-        raise SiteError("pyproj is not installed") from e
-    try:
-        t = Transformer.from_crs(f"EPSG:{code}", "EPSG:4326", always_xy=True)
+        t = Transformer.from_crs(horizontal, "EPSG:4326", always_xy=True)
         return t, t.source_crs.area_of_use
     except CRSError as e:
-        raise SiteError(f"pyproj does not know EPSG:{code}: {e}") from e
+        raise SiteError(f"pyproj cannot transform {horizontal} to latitude/longitude: {e}") from e
 
 
 def to_wgs84(points: np.ndarray, crs: Any = None, frame=None) -> np.ndarray:
-    """Latitude, longitude (degrees) ``(n, 2)`` of points ``(n, 3)`` in ``crs`` (or in ``frame``).
+    """Latitude, longitude (degrees) ``(n, 2)`` of points ``(n, 3)`` in ``crs`` (or in the local
+    ``frame`` of a geographic file; in metres of a ``frame`` of feet).
 
     Raises
     ------
     SiteError
-        No CRS and no frame, a CRS pyproj does not know, or non-finite results.
+        No CRS pyproj reads and no geographic frame, or non-finite results.
     """
     p = np.asarray(points, dtype=np.float64).reshape(-1, 3)
-    if frame is not None:
+    if frame is not None and getattr(frame, "geographic", True):
         g = frame.to_geodetic(p)
         ll = g[:, :2] if frame.lat_first else g[:, [1, 0]]
         src = "local frame"
     else:
-        code = epsg_code(crs)
-        if code is None:
-            raise SiteError(f"no EPSG code in CRS {crs!r}: Site:Location cannot be found from the coordinates")
-        if is_geographic(crs):
-            ll = p[:, :2] if latitude_first(crs) else p[:, [1, 0]]
+        if frame is not None:  # metres of a CRS in feet: back to the file's unit
+            p = frame.to_file(p)
+        why = no_crs_reason(crs)
+        if why:
+            raise SiteError(f"{why}: the buildings cannot be placed on the Earth")
+        info = crs_info(crs)
+        if info.geographic:
+            ll = p[:, :2] if info.lat_first else p[:, [1, 0]]
         else:
-            t, area = _transformer(code)
-            ll = _inside(t, p[:, [1, 0, 2]] if code in _JGD else p, area)
-        src = f"crs EPSG:{code}"
+            t, area = _transformer(info.horizontal)
+            ll = _inside(t, p[:, [1, 0, 2]] if info.north_first else p, area)
+        src = f"crs {info.horizontal}"
     ll = np.asarray(ll, dtype=np.float64)
     if not np.all(np.isfinite(ll)) or np.any(np.abs(ll[:, 0]) > 90) or np.any(np.abs(ll[:, 1]) > 180):
         raise SiteError(f"coordinates do not map to latitude/longitude through {src}")
@@ -173,9 +171,10 @@ def site_of(points: np.ndarray, crs: Any = None, frame=None, name: str = "Site")
     centre = (p.min(axis=0) + p.max(axis=0)) / 2
     centre[2] = p[:, 2].min()
     ll = to_wgs84(centre[None, :], crs, frame)[0]
-    elev = float(centre[2]) if frame is None else float(frame.to_geodetic(centre[None, :])[0, 2])
+    geographic = frame is not None and getattr(frame, "geographic", True)
+    elev = float(frame.to_geodetic(centre[None, :])[0, 2]) if geographic else float(centre[2])
     country = _country(crs)
-    src = "local frame" if frame is not None else f"crs {crs}"
+    src = "local frame" if geographic else f"crs {crs}"
     return Site(name, round(float(ll[0]), 6), round(float(ll[1]), 6), time_zone(float(ll[1]), country),
                 round(min(max(elev, -300.0), 8900.0), 2), src)
 

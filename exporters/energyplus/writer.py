@@ -14,6 +14,7 @@ from typing import Iterable
 import numpy as np
 
 from lod2energy import safe_write, site as site_mod
+from lod2energy.crs import no_crs_reason
 from lod2energy.energy import model as energy_model
 from lod2energy.energy.model import with_energy_model
 from lod2energy.energy.pieces import _face_frame, _pieces_from_points
@@ -31,6 +32,7 @@ from lod2energy.geometry.polygons import polygon_area3d
 from lod2energy.exporters.registry import register_writer
 from lod2energy.exporters.result import ExportResult
 from lod2energy.model import Building
+from lod2energy.site import SiteError
 from lod2energy.thermal.use import check_use
 
 
@@ -53,11 +55,12 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
     options : IdfOptions
     weather : path, optional
         EPW file (overrides ``options.weather``).
-    crs : str, optional
+    crs : str
         Written in the header comment; with ``frame``, what places the buildings on the Earth
-        for ``Site:Location`` (:func:`lod2energy.site.site_of`).
-    frame : lod2energy.geodesy.LocalFrame, optional
-        The local frame of a file in a geographic CRS (``CityModel.frame``).
+        for ``Site:Location`` (:func:`lod2energy.site.site_of`). Required (any CRS pyproj
+        reads) unless ``frame`` is a geographic file's local frame: there is no default site.
+    frame : LocalFrame or ScaledFrame, optional
+        The metric frame of a file in a geographic CRS or in feet (``CityModel.frame``).
     context : iterable of Building, optional
         Neighbours of ``buildings``: they make party walls and ``shading`` as they would in
         one call with all of them, but get no file of their own.
@@ -65,7 +68,8 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
     Returns
     -------
     list of ExportResult
-        One per file; ``ok`` is False when the self-check (or the run) failed. ``stats``
+        One per file; ``ok`` is False when the self-check (or the run) failed, or when the
+        file's buildings cannot be placed on the Earth (nothing written). ``stats``
         carries ``storeys``, ``use``, ``site`` and ``weather_distance_km`` (and, after a run,
         the per-zone results of :func:`_run`).
     """
@@ -85,7 +89,11 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
         raise ParameterError("an EnergyPlus run needs a weather file (EPW)")
     if weather and not Path(weather).is_file():
         raise ParameterError(f"weather file not found: {weather}")
-    site, ground = read_epw_header(weather) if weather else (None, None)
+    why = no_crs_reason(crs) if not getattr(frame, "geographic", False) else None
+    if why:
+        raise ParameterError(f"{why}: an IDF needs the buildings' position for its Site:Location "
+                             "(give the CRS: crs=, --crs)")
+    ground = read_epw_header(weather)[1] if weather else None
     station = site_mod.read_weather_header(weather) if weather else None
     out = Path(outdir)
     out.mkdir(parents=True, exist_ok=True)
@@ -126,7 +134,7 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
             wl = [w for k in range(len(g)) for w in wo[k]]
         else:
             wl = [w for j in g for w in written_of[j]]
-        g_site, g_warn, g_stats = _group_site(gb, crs, frame, site, station)
+        g_site, g_warn, g_stats = _group_site(gb, crs, frame, station)
         text, stats, warns = render_idf([w[0] for w in wl], [w[1] for w in wl], offset - origin, offset,
                                         options, [b.id for b in gb], shading, g_site, ground, crs,
                                         zone_info=[w[2] for w in wl],
@@ -154,6 +162,8 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
             return set_aside_failed(_finish(g, path, ids))
         except OSError as e:  # a full disk, a link planted under the name: this file only
             return ExportResult(ids, "", False, (not_written(e, "IDF"),), (0.0, 0.0, 0.0))
+        except SiteError as e:  # placed nowhere: no IDF with a site the file did not give
+            return ExportResult(ids, "", False, (f"IDF not written: {e}",), (0.0, 0.0, 0.0))
 
     def _finish(g, path, ids):
         offset, stats, warns = render(g, path, pieces)
