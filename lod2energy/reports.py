@@ -10,11 +10,13 @@ import os
 import sys
 from typing import TYPE_CHECKING, Iterable, Sequence
 
+from lod2energy import crs as crs_
 from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.model import CityModel
 from lod2energy.options import FORMATS
 from lod2energy.records import CSV_FIELDS, BuildingRecord
 from lod2energy.safe_write import atomic_write, check_target, json_default
+from lod2energy.site import MAX_WEATHER_KM
 from lod2energy.spool import load_spooled, spool_path
 
 if TYPE_CHECKING:
@@ -49,7 +51,6 @@ def note_frame(path: str, model: CityModel | None, metres_note: bool = True) -> 
     """One line on stderr when an input is processed in a local metric frame (geographic CRS),
     converted to metres (a CRS in feet) or, with ``metres_note``, taken as metres (no CRS
     pyproj reads)."""
-    from lod2energy.crs import metres_note as note
     f = getattr(model, "frame", None)
     if f is not None and f.geographic:
         print(f"lod2energy: note: {path}: CRS {model.crs} is geographic (degrees); buildings are checked and "
@@ -59,8 +60,8 @@ def note_frame(path: str, model: CityModel | None, metres_note: bool = True) -> 
         print(f"lod2energy: note: {path}: CRS {model.crs} is in {f.unit} (heights in {f.vertical_unit}); "
               f"coordinates are converted to metres (x {f.to_metre:.10g}) for every check and export in "
               "metres (report.json: unit_conversion); CityJSON is written back in the file's unit", file=sys.stderr)
-    elif metres_note and model is not None and note(path, model.crs):
-        print(note(path, model.crs), file=sys.stderr)
+    elif metres_note and model is not None and crs_.metres_note(path, model.crs):
+        print(crs_.metres_note(path, model.crs), file=sys.stderr)
 
 
 def refuse_overwriting_inputs(outputs: Iterable[str], inputs: Iterable[str]) -> None:
@@ -233,6 +234,20 @@ def write_html_report(report_path: str, input_path: str, records: JournalRecords
     except Exception as e:  # noqa: BLE001 - the page is a view of the report, not an output to check
         err(f"report.html not written: {type(e).__name__}: {e}")
         return ""
+
+
+def weather_warnings(records: Iterable[BuildingRecord]) -> list[str]:
+    """One line per weather station farther than :data:`lod2energy.site.MAX_WEATHER_KM` from
+    the buildings it serves (their IDF records' ``weather``)."""
+    far: dict[str, list[float]] = {}
+    for r in records:
+        e = r.export("idf")
+        w = (e.extra.get("weather") if e is not None else None) or {}
+        d = w.get("distance_km")
+        if d is not None and d > MAX_WEATHER_KM:
+            far.setdefault(f"{w.get('station')} ({w.get('file')})", []).append(float(d))
+    return [f"weather station {k} is {min(v):.0f}-{max(v):.0f} km from {len(v)} building(s): more than "
+            f"{MAX_WEATHER_KM:.0f} km, its climate may not be theirs" for k, v in sorted(far.items())]
 
 
 def print_export_summary(records: Iterable[BuildingRecord], formats: Iterable[str], outdir: str,

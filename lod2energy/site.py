@@ -21,6 +21,7 @@ temperatures from the weather file, and the weather station's distance.
 from __future__ import annotations
 
 import math
+import os
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -226,6 +227,38 @@ def read_weather_header(path: str | Path, depth: float = 2.0) -> WeatherHeader |
             except (ValueError, IndexError):
                 g_depth, g = None, None
     return WeatherHeader("_".join(x for x in loc[1:4] if x), lat, lon, tz, el, g_depth, g)
+
+
+@cache.memoize("weather_stations", 8)
+def _stations(folder: str, listing: tuple) -> tuple:
+    out = []
+    for name, _, _ in listing:
+        h = read_weather_header(os.path.join(folder, name))
+        if h is not None:
+            out.append((os.path.join(folder, name), h))
+    return tuple(out)
+
+
+def weather_stations(path: str | Path) -> list[tuple[str, WeatherHeader | None]]:
+    """``(EPW path, header)`` of the weather file ``path``, or of every ``*.epw`` with a
+    ``LOCATION`` line in the folder ``path`` (sorted by name; read once per process while the
+    folder is unchanged). A single file without ``LOCATION`` gives ``[(path, None)]``."""
+    p = str(path)
+    if not os.path.isdir(p):
+        return [(p, read_weather_header(p))]
+    listing = tuple(sorted((e.name, e.stat().st_mtime_ns, e.stat().st_size) for e in os.scandir(p)
+                           if e.name.lower().endswith(".epw") and e.is_file()))
+    return list(_stations(p, listing))
+
+
+def nearest_station(site: Site, stations: list[tuple[str, WeatherHeader | None]]
+                    ) -> tuple[str, WeatherHeader | None]:
+    """The station of ``stations`` nearest to ``site`` (great-circle distance); the first when
+    none has a known location."""
+    known = [s for s in stations if s[1] is not None]
+    if not known:
+        return stations[0]
+    return min(known, key=lambda s: distance_km(site.latitude, site.longitude, s[1].latitude, s[1].longitude))
 
 
 def weather_distance(site: Site, weather: WeatherHeader) -> tuple[float, str | None]:

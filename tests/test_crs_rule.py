@@ -269,3 +269,55 @@ def test_the_idf_writer_has_no_default_site(tmp_path):
     with pytest.raises(ParameterError, match="Site:Location"):
         energyplus.writer.write([energy_ready(box())], tmp_path)
     assert not list(tmp_path.glob("*.idf"))
+
+
+# ----------------------------------------------------------------------------- --weather FOLDER
+
+def _station(folder: Path, name: str, lat: float, lon: float) -> Path:
+    """A copy of the shipped EPW whose LOCATION says station ``name`` at ``lat``, ``lon``."""
+    lines = EPW.read_text(encoding="latin-1").splitlines(keepends=True)
+    loc = lines[0].split(",")
+    loc[1], loc[6], loc[7] = name, f"{lat:.4f}", f"{lon:.4f}"
+    p = folder / f"{name}.epw"
+    p.write_text(",".join(loc) + "".join(lines[1:]), encoding="latin-1")
+    return p
+
+
+EPW = Path(__file__).resolve().parents[1] / "lod2energy" / "data" / "weather" / "NLD_OV_Heino.062780_TMYx.2007-2021.epw"
+
+
+def test_weather_folder_gives_each_building_the_nearest_station(tmp_path, capsys):
+    folder = tmp_path / "epw"
+    folder.mkdir()
+    _station(folder, "Delft", 52.01, 4.36)      # the box of box_doc stands in Delft (RD 85000, 447000)
+    _station(folder, "Madrid", 40.42, -3.70)
+    (folder / "notes.txt").write_text("not a weather file")
+    out = tmp_path / "o"
+    rc, _, err = run(["export", write(tmp_path, box_doc()), "-o", str(out), "--idf", "-q", "-j", "1",
+                      "--weather", str(folder), "--no-html"], capsys)
+    assert rc == 0, err
+    idf = json.loads((out / "report.json").read_text())["buildings"][0]["exports"]["idf"]
+    assert idf["weather"]["station"].startswith("Delft") and idf["weather"]["distance_km"] < 5
+    assert "warning: weather" not in err
+
+
+def test_a_station_over_50_km_away_is_a_warning_on_the_console_and_in_report_html(tmp_path, capsys):
+    folder = tmp_path / "epw"
+    folder.mkdir()
+    _station(folder, "Madrid", 40.42, -3.70)
+    out = tmp_path / "o"
+    rc, _, err = run(["export", write(tmp_path, box_doc()), "-o", str(out), "--idf", "-q", "-j", "1",
+                      "--weather", str(folder)], capsys)
+    assert rc == 0, err
+    idf = json.loads((out / "report.json").read_text())["buildings"][0]["exports"]["idf"]
+    assert idf["weather"]["distance_km"] > 1000
+    assert err.count("warning: weather station Madrid") == 1 and "more than 50 km" in err
+    html = (out / "report.html").read_text()
+    assert 'id="weather-table"' in html and "more than 50 km" in html
+
+
+def test_a_weather_folder_without_epw_is_refused(tmp_path, capsys):
+    (tmp_path / "empty").mkdir()
+    rc, _, err = run(["export", write(tmp_path, box_doc()), "-o", str(tmp_path / "o"), "--idf", "-q",
+                      "--weather", str(tmp_path / "empty")], capsys)
+    assert rc == 2 and "no EPW" in err

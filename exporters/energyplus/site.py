@@ -25,8 +25,10 @@ def read_epw_header(path: str | Path) -> tuple[dict | None, list[float] | None]:
     return site, (list(h.ground_temperatures) if h.ground_temperatures is not None else None)
 
 
-def _group_site(gb, crs, frame, station):
-    """``Site:Location`` fields of a group of buildings, warnings and stats.
+def _group_site(gb, crs, frame, stations):
+    """``Site:Location`` fields of a group of buildings, warnings, stats and the weather file
+    (the station of ``stations`` nearest to the site, :func:`lod2energy.site.nearest_station`;
+    None without ``stations``).
 
     Raises
     ------
@@ -41,10 +43,14 @@ def _group_site(gb, crs, frame, station):
     st = site_mod.site_of(pts, crs, frame, name)
     warns, stats = [], {"site": {"latitude": st.latitude, "longitude": st.longitude, "elevation": st.elevation,
                                  "time_zone": st.time_zone}}
-    if station is not None:
-        d, w = site_mod.weather_distance(st, station)
-        stats["weather_distance_km"] = d
-        stats["weather_station"] = station.name
-        if w:
-            warns.append(w)
-    return st.as_idf(), warns, stats
+    epw = None
+    if stations:
+        epw, station = site_mod.nearest_station(st, stations)
+        stats["weather_file"] = epw
+        if station is not None:
+            d, w = site_mod.weather_distance(st, station)
+            stats["weather_distance_km"] = d
+            stats["weather_station"] = station.name
+            if w:
+                warns.append(w)
+    return st.as_idf(), warns, stats, epw

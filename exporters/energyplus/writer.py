@@ -87,14 +87,15 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
     weather = str(weather) if weather else options.weather
     if options.run and not weather:
         raise ParameterError("an EnergyPlus run needs a weather file (EPW)")
-    if weather and not Path(weather).is_file():
+    if weather and not (Path(weather).is_file() or Path(weather).is_dir()):
         raise ParameterError(f"weather file not found: {weather}")
     why = no_crs_reason(crs) if not getattr(frame, "geographic", False) else None
     if why:
         raise ParameterError(f"{why}: an IDF needs the buildings' position for its Site:Location "
                              "(give the CRS: crs=, --crs)")
-    ground = read_epw_header(weather)[1] if weather else None
-    station = site_mod.read_weather_header(weather) if weather else None
+    stations = site_mod.weather_stations(weather) if weather else []
+    if weather and not stations:
+        raise ParameterError(f"--weather {weather}: no EPW file with a LOCATION line in the folder")
     out = Path(outdir)
     out.mkdir(parents=True, exist_ok=True)
 
@@ -134,7 +135,8 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
             wl = [w for k in range(len(g)) for w in wo[k]]
         else:
             wl = [w for j in g for w in written_of[j]]
-        g_site, g_warn, g_stats = _group_site(gb, crs, frame, station)
+        g_site, g_warn, g_stats, epw = _group_site(gb, crs, frame, stations)
+        ground = read_epw_header(epw)[1] if epw else None
         text, stats, warns = render_idf([w[0] for w in wl], [w[1] for w in wl], offset - origin, offset,
                                         options, [b.id for b in gb], shading, g_site, ground, crs,
                                         zone_info=[w[2] for w in wl],
@@ -144,7 +146,7 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
         if len(g) == 1:
             stats.update(bstats[g[0]])
         warns = list(warns) + g_warn + [n for j in g for n in zone_notes[j]]
-        if weather and ground is None:
+        if epw and ground is None:
             warns.append("the weather file has no GROUND TEMPERATURES: 10 C under the ground floor all year")
         safe_write.write_text(path, text, root=out, encoding="ascii", errors="replace")
         return offset, stats, warns
@@ -190,10 +192,11 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
                     break
         notes = [w for i in g for w in merge_notes[i]]
         warns = notes + list(warns)
+        record = _weather_record(stats)
         res = ExportResult(ids, str(path), not problems, tuple(problems),
-                           tuple(float(x) for x in offset), tuple(warns), stats)
+                           tuple(float(x) for x in offset), tuple(warns), stats, record=record)
         if options.run:
-            res = _run(res, path, weather, options)
+            res = _run(res, path, stats.get("weather_file") or weather, options)
             if res.not_enclosed and options.party_split and stats.get("adiabatic_surfaces"):
                 # EnergyPlus's enclosure test can reject the extra vertices of split party
                 # walls: write the building again with whole-face party walls and re-run
@@ -201,14 +204,22 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
                 problems = self_check(path)
                 warns = notes + list(warns) + ["party walls not split: EnergyPlus found the split zone not enclosed"]
                 res = ExportResult(ids, str(path), not problems, tuple(problems),
-                                   tuple(float(x) for x in offset), tuple(warns), stats)
-                res = _run(res, path, weather, options)
+                                   tuple(float(x) for x in offset), tuple(warns), stats, record=record)
+                res = _run(res, path, stats.get("weather_file") or weather, options)
         return res
 
     if options.jobs > 1:
         with ThreadPoolExecutor(options.jobs) as ex:
             return list(ex.map(finish, jobs))
     return [finish(j) for j in jobs]
+
+
+def _weather_record(stats: dict) -> dict:
+    """The report's ``weather`` entry of an IDF: the EPW, its station and distance (km)."""
+    if not stats.get("weather_file"):
+        return {}
+    return {"weather": {"file": Path(stats["weather_file"]).name, "station": stats.get("weather_station"),
+                        "distance_km": stats.get("weather_distance_km")}}
 
 
 def _shading_for(bi: int, blist, bboxes, zones, zones_of, party, radius: float) -> list[np.ndarray]:
