@@ -108,6 +108,8 @@ def prepare_building(b: Building, options: PrepareOptions = PrepareOptions(), se
         extra["interior_left_out"] = dict(b.provenance["interior_left_out"])
     if b.provenance.get("openings_cut"):
         extra["openings_cut"] = dict(b.provenance["openings_cut"])
+    if b.provenance.get("geometry_replaced"):  # the reader's: an unusable solid gave way to thematic surfaces
+        extra["geometry_replaced"] = list(b.provenance["geometry_replaced"])
     unclipped = rb
     if not options.merge_parts and rb.is_building:  # no volume counted twice (issue 19 item 1)
         from lod2energy.repair.parts import clip_overlapping_parts
