@@ -284,7 +284,8 @@ def cmd_validate(a) -> int:
             out = reports[0] if len(reports) == 1 else {"type": "lod2energy_reports", "reports": reports}
             # the files read again for the page: the panels' buildings and every footprint only
             write_report_for_files(json_ready(out), a.html, a.files, tol=tol, input_files=a.files,
-                                   read_options={"primitive": a.primitive, "inner_shells": a.inner_shell})
+                                   read_options={"primitive": a.primitive, "inner_shells": a.inner_shell,
+                                                 "crs": a.crs})
         except Exception as e:  # noqa: BLE001 - the page is a view of the report
             _err(f"{a.html} not written: {type(e).__name__}: {e}")
     return worst

@@ -552,7 +552,8 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
             if page_pool is not None and not interrupted:
                 def mapper(fn, jobs):
                     return [res for _, res in page_pool.map(fn, jobs)]
-            write_html_report(report, input_path, done, job.spool, out, options.prepare.tol, inputs, plans, mapper)
+            write_html_report(report, input_path, done, job.spool, out, options.prepare.tol, inputs, plans, mapper,
+                              crs=options.crs)
             plans.close()
     finally:
         if page_pool is not None:

@@ -209,14 +209,15 @@ def report_lazily(path: str) -> dict:
 
 
 def write_html_report(report_path: str, input_path: str, records: JournalRecords, spool: str, out: str,
-                      tol: Tolerances = DEFAULT, inputs=(), footprints=None, mapper=None) -> str:
+                      tol: Tolerances = DEFAULT, inputs=(), footprints=None, mapper=None, crs=None) -> str:
     """``OUTDIR/report.html`` (:mod:`lod2energy.viz`) from the report, the input buildings and the
     prepared ones of the spool (``records``: the report's, :func:`lod2energy.journal.records_of`);
     a page that cannot be written costs one line, never the export.
     ``footprints``: the plan footprints of every object of the input, in input order (a
     :class:`~lod2energy.viz.footprints.FootprintSpill`; without it the input is read again);
     ``mapper``: renders the page's pictures (e.g. on the export's process pool,
-    :func:`lod2energy.viz.report.write_report_html`)."""
+    :func:`lod2energy.viz.report.write_report_html`); ``crs``: the user's ``--crs``, for the input
+    read again."""
     try:
         from lod2energy.viz.report import write_report_for_files
 
@@ -229,7 +230,8 @@ def write_html_report(report_path: str, input_path: str, records: JournalRecords
             return out_b
         path = os.path.join(out, "report.html")
         write_report_for_files(report_lazily(report_path), path, [input_path], tol=tol, outputs=outputs, root=out,
-                               input_files=list(inputs), footprints=footprints, mapper=mapper)
+                               input_files=list(inputs), footprints=footprints, mapper=mapper,
+                               read_options={"crs": crs} if crs else None)
         return path
     except Exception as e:  # noqa: BLE001 - the page is a view of the report, not an output to check
         err(f"report.html not written: {type(e).__name__}: {e}")

@@ -98,9 +98,9 @@ def _country(crs: Any) -> str | None:
 def _inside(t, p: np.ndarray, area) -> np.ndarray:
     """Latitude/longitude of ``p`` read as (easting, northing), or as (northing, easting) when
     only that order falls inside the CRS's area of use (German Gauss-Krueger files write
-    east-north although EPSG defines north-east; the caller swaps the JGD plane CSs, which
-    PLATEAU writes in the authority's north-east order and whose areas of use are too large to
-    tell the two orders apart: the caller gives the CRS's own order first)."""
+    east-north although EPSG defines north-east). The caller gives a north-first CRS's
+    points swapped, in its own order first: the JGD plane CSs, which PLATEAU writes in that
+    order, have areas of use too large to tell the two orders apart."""
     out = []
     for a, b in ((0, 1), (1, 0)):
         lon, lat = t.transform(p[:, a], p[:, b])

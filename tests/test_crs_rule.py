@@ -163,11 +163,17 @@ def test_feet_are_read_as_metres(tmp_path):
 def test_export_of_a_file_in_feet_works_in_metres_and_writes_feet_back(tmp_path, capsys):
     path = write(tmp_path, _feet_doc(h_ft=32.8), "ft.city.json")
     out = tmp_path / "o"
-    rc, _, err = run(["export", path, "-o", str(out), "--cityjson", "--stl", "-j", "1", "-q"], capsys)
+    rc, _, err = run(["export", path, "-o", str(out), "--cityjson", "--stl", "--idf", "-j", "1", "-q",
+                      "--no-html"], capsys)
     assert rc == 0, err
     rep = json.loads((out / "report.json").read_text())
     assert rep["unit_conversion"]["unit"] == "US survey foot"
     assert rep["unit_conversion"]["to_metre"] == pytest.approx(FT)
+    (b,) = rep["buildings"]
+    assert b["energy"]["volume"] == pytest.approx(60 * 40 * 32.8 * FT ** 3, rel=1e-3)
+    # Site:Location from the feet, not from metres read as feet: Midtown Manhattan
+    lat, lon = site_location(next(out.glob("*.idf")))
+    assert distance_km(lat, lon, 40.7486, -73.9901) < 1.0
     doc = json.loads(next(out.glob("*.city.json")).read_text())
     z = decoded(doc)[:, 2]
     assert float(np.ptp(z)) == pytest.approx(32.8, abs=2e-3)   # the file's unit, as read
