@@ -337,7 +337,8 @@ class Tally:
         return {"summary": self.summary(), "stages": self.stage_distribution(), "iou": self.iou.result(),
                 "displacement": self.displacement.result(), "validity_by_code": v, "code_names": code_names(v),
                 "compliance": self.compliance(), "heating_by_typology": self.heating_by_typology(),
-                "exports": self.exports_table(), "weather": self.weather_table()}
+                "exports": self.exports_table(),
+                **({"weather": self.weather_table()} if self.weather else {})}
 
 
 def code_names(codes) -> dict:
