@@ -236,7 +236,8 @@ def metres_note(path: str, crs: Any) -> str | None:
 
 def spelled(crs: Any) -> str:
     """A user's CRS (``--crs``: any form pyproj reads) as a CityJSON ``referenceSystem``: the
-    OGC URL of its EPSG code when it has one, else as given.
+    OGC URL of the EPSG (or OGC) CRS it is, or that pyproj finds equivalent to it (axis order
+    included); as given when there is none.
 
     Raises
     ------
@@ -244,14 +245,12 @@ def spelled(crs: Any) -> str:
         pyproj cannot read it.
     """
     from pyproj import CRS
-    from pyproj.exceptions import CRSError
     text = pyproj_input(crs)
     if not text or crs_info(text) is None:
         raise ParameterError(f"--crs {crs}: not a CRS pyproj can read")
-    try:
-        auth = CRS.from_user_input(text).to_authority(min_confidence=100)
-    except CRSError as e:  # pragma: no cover - read just above
-        raise ParameterError(f"--crs {crs}: {e}") from e
-    if auth and auth[0] == "EPSG":
-        return f"https://www.opengis.net/def/crs/EPSG/0/{auth[1]}"
+    c = CRS.from_user_input(text)
+    for auth in (c.to_authority(min_confidence=100), c.to_authority("EPSG", min_confidence=70),
+                 c.to_authority(min_confidence=70)):
+        if auth and auth[0] in ("EPSG", "OGC") and c.equals(CRS.from_user_input(f"{auth[0]}:{auth[1]}")):
+            return f"https://www.opengis.net/def/crs/{auth[0]}/0/{auth[1]}"
     return text

@@ -90,6 +90,9 @@ def test_a_crs_pyproj_cannot_read_counts_as_no_crs(name):
 def test_user_crs_is_spelled_for_cityjson_and_refused_when_unreadable():
     assert spelled("EPSG:2263") == "https://www.opengis.net/def/crs/EPSG/0/2263"
     assert spelled(28992) == "https://www.opengis.net/def/crs/EPSG/0/28992"
+    # a PROJ string: its EPSG or OGC equivalent, with the same axis order (lon, lat: CRS84, not 4326)
+    assert spelled("+proj=utm +zone=32 +datum=WGS84 +units=m") == "https://www.opengis.net/def/crs/EPSG/0/32632"
+    assert spelled("+proj=longlat +datum=WGS84") == "https://www.opengis.net/def/crs/OGC/0/CRS84"
     with pytest.raises(ParameterError):
         spelled("EPSG:999999")
 
