@@ -108,6 +108,9 @@ def prepare_building(b: Building, options: PrepareOptions = PrepareOptions(), se
         extra["interior_left_out"] = dict(b.provenance["interior_left_out"])
     if b.provenance.get("openings_cut"):
         extra["openings_cut"] = dict(b.provenance["openings_cut"])
+    frame = b.provenance.get("file_frame")
+    if frame is not None and not frame.geographic:  # read in feet: the factor to metres
+        extra["unit_conversion"] = frame.as_dict()
     if b.provenance.get("geometry_replaced"):  # the reader's: an unusable solid gave way to thematic surfaces
         extra["geometry_replaced"] = list(b.provenance["geometry_replaced"])
     unclipped = rb

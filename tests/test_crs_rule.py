@@ -173,6 +173,7 @@ def test_export_of_a_file_in_feet_works_in_metres_and_writes_feet_back(tmp_path,
     assert rep["unit_conversion"]["unit"] == "US survey foot"
     assert rep["unit_conversion"]["to_metre"] == pytest.approx(FT)
     (b,) = rep["buildings"]
+    assert b["repair"]["unit_conversion"]["to_metre"] == pytest.approx(FT)
     assert b["energy"]["volume"] == pytest.approx(60 * 40 * 32.8 * FT ** 3, rel=1e-3)
     # Site:Location from the feet, not from metres read as feet: Midtown Manhattan
     lat, lon = site_location(next(out.glob("*.idf")))
