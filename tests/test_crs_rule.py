@@ -331,3 +331,14 @@ def test_a_weather_folder_without_epw_is_refused(tmp_path, capsys):
     rc, _, err = run(["export", write(tmp_path, box_doc()), "-o", str(tmp_path / "o"), "--idf", "-q",
                       "--weather", str(tmp_path / "empty")], capsys)
     assert rc == 2 and "no EPW" in err
+
+
+def test_repair_of_a_file_in_feet_writes_feet_and_records_the_factor(tmp_path, capsys):
+    path = write(tmp_path, _feet_doc(h_ft=32.8), "ft.city.json")
+    rc, _, err = run(["repair", path, "-o", str(tmp_path / "r.city.json"), "--report", str(tmp_path / "r.json"),
+                      "-q"], capsys)
+    assert rc == 0, err
+    assert err.count("US survey foot") >= 1
+    z = decoded(json.loads((tmp_path / "r.city.json").read_text()))[:, 2]
+    assert float(np.ptp(z)) == pytest.approx(32.8, abs=2e-3)
+    assert json.loads((tmp_path / "r.json").read_text())["unit_conversion"]["to_metre"] == pytest.approx(FT)
