@@ -342,3 +342,19 @@ def test_repair_of_a_file_in_feet_writes_feet_and_records_the_factor(tmp_path, c
     z = decoded(json.loads((tmp_path / "r.city.json").read_text()))[:, 2]
     assert float(np.ptp(z)) == pytest.approx(32.8, abs=2e-3)
     assert json.loads((tmp_path / "r.json").read_text())["unit_conversion"]["to_metre"] == pytest.approx(FT)
+
+
+def test_a_crs_pyproj_does_not_know_follows_the_no_crs_rule(tmp_path, capsys):
+    doc = box_doc()
+    doc["metadata"]["referenceSystem"] = "https://www.opengis.net/def/crs/EPSG/0/999999"
+    path = write(tmp_path, doc)
+    rc, _, err = run(["export", path, "-o", str(tmp_path / "o"), "--idf", "-q"], capsys)
+    assert rc == 2 and "pyproj cannot read" in err and not (tmp_path / "o").exists()
+    rc, _, err = run(["validate", path, "-q"], capsys)
+    assert rc == 0 and err.count("taken as metres") == 1
+    out = tmp_path / "placed"
+    rc, _, err = run(["export", path, "-o", str(out), "--idf", "-q", "-j", "1", "--crs", "EPSG:7415",
+                      "--no-html"], capsys)
+    assert rc == 0, err
+    lat, lon = site_location(next(out.glob("*.idf")))
+    assert distance_km(lat, lon, 52.012, 4.359) < 1.0  # RD (85000, 447000): Delft
