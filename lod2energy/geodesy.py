@@ -96,6 +96,56 @@ class LocalFrame:
         g = ecef_to_geodetic(e @ self._rotation + self._origin)
         return g if self.lat_first else g[:, [1, 0, 2]]
 
+    #: The frame of a geographic CRS (degrees), not of a linear unit (:class:`ScaledFrame`).
+    geographic = True
+
+    def to_file(self, enu: np.ndarray) -> np.ndarray:
+        """The file's coordinates of points in the frame (:meth:`to_geodetic`)."""
+        return self.to_geodetic(enu)
+
     def as_dict(self) -> dict:
         return {"lat0": self.lat0, "lon0": self.lon0, "h0": self.h0, "axes": "east, north, up (m)",
                 "ellipsoid": "GRS80", "geographic_axis_order": "lat, lon, h" if self.lat_first else "lon, lat, h"}
+
+
+@dataclass(frozen=True)
+class ScaledFrame:
+    """Coordinates of a projected CRS in a linear unit other than the metre (US survey feet,
+    feet), in metres: every check and export sees metres, writers of the file's own CRS move
+    them back.
+
+    Parameters
+    ----------
+    to_metre, vertical_to_metre : float
+        Metres in one horizontal / height unit (pyproj's ``unit_conversion_factor``).
+    unit, vertical_unit : str
+        The units' names.
+
+    >>> f = ScaledFrame(0.3048006096012192, 0.3048006096012192, "US survey foot", "US survey foot")
+    >>> round(float(f.to_local(np.array([[0.0, 0.0, 342.8]]))[0, 2]), 2)
+    104.49
+    """
+
+    to_metre: float
+    vertical_to_metre: float
+    unit: str = "metre"
+    vertical_unit: str = "metre"
+    geographic = False
+
+    @property
+    def _factors(self) -> np.ndarray:
+        return np.array([self.to_metre, self.to_metre, self.vertical_to_metre])
+
+    def to_local(self, coords: np.ndarray) -> np.ndarray:
+        """Metres ``(n, 3)`` of coordinates ``(n, 3)`` in the file's units."""
+        return np.asarray(coords, dtype=np.float64).reshape(-1, 3) * self._factors
+
+    def to_file(self, metres: np.ndarray) -> np.ndarray:
+        """The file's coordinates ``(n, 3)`` of points in metres ``(n, 3)``."""
+        return np.asarray(metres, dtype=np.float64).reshape(-1, 3) / self._factors
+
+    to_geodetic = to_file
+
+    def as_dict(self) -> dict:
+        return {"unit": self.unit, "to_metre": self.to_metre, "vertical_unit": self.vertical_unit,
+                "vertical_to_metre": self.vertical_to_metre}

@@ -15,6 +15,9 @@ from lod2energy.model import CityModel
 
 #: Writers in the order they run and appear in the options.
 FORMATS = ("cityjson", "idf", "stl", "cfd", "geojson")
+#: Writers that need the buildings' real positions (a site, latitude / longitude): refused for
+#: a file with no CRS pyproj reads unless ``--crs`` gives one; the others take metres.
+NEEDS_POSITIONS = ("idf", "geojson")
 
 
 def _thermal_default():
@@ -87,6 +90,9 @@ class ExportOptions:
     region : lod2energy.exporters.cfd.region.Region, optional
         Only the buildings whose plan hull meets it (``--region``, ``--centre`` / ``--radius``),
         as with ``ids`` (both given: the buildings of both).
+    crs : str or None
+        The CRS of the input's coordinates (``--crs``, any form pyproj reads), replacing the
+        file's.
     hard_timeout : float or None, s
         Limit of one building's first-pass job, enforced by the executor (CPU time of the
         worker, or ten times that of wall time; the worker is killed and replaced, the
@@ -105,6 +111,7 @@ class ExportOptions:
     buildings: Any = None
     ids: tuple[str, ...] | None = None
     region: Any = None
+    crs: str | None = None
 
     def writer_options(self, name: str):
         # the footprints (geojson) carry the energy model's figures: they take its options
@@ -130,6 +137,8 @@ class ExportOptions:
             d["prepare"]["thermal"]["attribute_map"] = {"name": amap.name, "digest": digest(amap).hex()}
         d["buildings"] = (digest(sorted((k, sorted(v.items())) for k, v in self.buildings.items())).hex()
                           if self.buildings else None)
+        if d.get("crs") is None:  # the file's own CRS: journals of earlier versions stay resumable
+            d.pop("crs", None)
         return d
 
 
@@ -218,7 +227,8 @@ def resolve(options: ExportOptions, model: CityModel) -> ExportOptions:
     Raises
     ------
     ParameterError
-        ``--run`` without a weather file where none ships, or a missing weather file.
+        ``--run`` without a weather file where none ships, a missing weather file, or a
+        weather folder without EPW files.
     """
     from lod2energy.thermal import country_from_crs
     prep = options.prepare
@@ -236,7 +246,10 @@ def resolve(options: ExportOptions, model: CityModel) -> ExportOptions:
             if weather is None:
                 raise ParameterError("--run needs --weather EPW (a weather file ships only for the Netherlands)")
         if weather is not None and not os.path.isfile(weather):
-            raise ParameterError(f"--weather {weather}: no such file")
+            if not os.path.isdir(weather):
+                raise ParameterError(f"--weather {weather}: no such file or folder")
+            if not any(n.lower().endswith(".epw") for n in os.listdir(weather)):
+                raise ParameterError(f"--weather {weather}: no EPW file in the folder")
         if options.prepare.lod is not None and idf.lod is None:
             idf = replace(idf, lod=options.prepare.lod)
         idf = replace(idf, weather=weather)

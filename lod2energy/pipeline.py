@@ -26,12 +26,13 @@ from typing import Iterator, Sequence
 import numpy as np
 
 from lod2energy.config import DEFAULT, Tolerances
+from lod2energy.crs import no_crs_reason
 from lod2energy.dataset import BESIDE, DatasetResult, beside_ok, dataset_apply, dataset_pass, write_beside
 from lod2energy.errors import ParameterError
 from lod2energy.interrupt import EXIT_INVALID, EXIT_OK, EXIT_SIGINT, EXIT_UNUSABLE, Interrupted, Signals
 from lod2energy.model import Building, CityModel, FeatureError, frozen_mapping
 from lod2energy.neighbours import neighbours_within, spatial_order
-from lod2energy.options import ExportOptions, PrepareOptions, RunOptions, ladder_budget, prepare_options, resolve
+from lod2energy.options import NEEDS_POSITIONS, ExportOptions, PrepareOptions, RunOptions, ladder_budget, prepare_options, resolve
 from lod2energy.records import (
     _untimed, BuildingRecord, ComplianceRecord, ExportRecord, RecordStore, RepairRecord, ThermalRecord,
 )
@@ -109,6 +110,11 @@ def prepare_building(b: Building, options: PrepareOptions = PrepareOptions(), se
         extra["interior_left_out"] = dict(b.provenance["interior_left_out"])
     if b.provenance.get("openings_cut"):
         extra["openings_cut"] = dict(b.provenance["openings_cut"])
+    frame = b.provenance.get("file_frame")
+    if frame is not None and not frame.geographic:  # read in feet: the factor to metres
+        extra["unit_conversion"] = frame.as_dict()
+    if b.provenance.get("geometry_replaced"):  # the reader's: an unusable solid gave way to thematic surfaces
+        extra["geometry_replaced"] = list(b.provenance["geometry_replaced"])
     unclipped = rb
     if not options.merge_parts and rb.is_building:  # no volume counted twice (issue 19 item 1)
         from lod2energy.repair.parts import clip_overlapping_parts
@@ -336,14 +342,20 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
     if os.path.exists(outdir) and not os.path.isdir(outdir):
         refuse_overwriting_inputs([outdir], inputs)
         raise ParameterError(f"-o {outdir}: exists and is not a folder")
-    model, feats = read(input_path)
+    model, feats = read(input_path, crs=options.crs)
     if model is None:
         msgs = []
         for fe in feats:
             err(fe.message)
             msgs.append(fe.message)
         return ExportOutcome(EXIT_UNUSABLE, dataset_errors=tuple(msgs))
-    note_frame(input_path, model)
+    placed = [f for f in options.formats if f in NEEDS_POSITIONS]
+    why = no_crs_reason(model.crs) if placed else None
+    if why:
+        what = " and ".join([f"--{f}" for f in placed] + (["--run"] if "idf" in placed and options.idf.run else []))
+        raise ParameterError(f"{input_path}: {why}: {what} needs the buildings' real positions; "
+                             "give the file's CRS with --crs (nothing written)")
+    note_frame(input_path, model, metres_note=True)
     options = resolve(options, model)
     os.makedirs(outdir, exist_ok=True)
     out = os.path.abspath(outdir)
@@ -584,7 +596,8 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
             if page_pool is not None and not interrupted:
                 def mapper(fn, jobs):
                     return [res for _, res in page_pool.map(fn, jobs)]
-            write_html_report(report, input_path, done, job.spool, out, options.prepare.tol, inputs, plans, mapper)
+            write_html_report(report, input_path, done, job.spool, out, options.prepare.tol, inputs, plans, mapper,
+                              crs=options.crs)
             plans.close()
     finally:
         if page_pool is not None:

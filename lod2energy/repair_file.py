@@ -77,7 +77,7 @@ def repair_file(a, tol: Tolerances) -> int:
     refuse_overwriting_inputs([a.output, getattr(a, "report", None)], [a.input])
     if a.report and os.path.abspath(a.report) == os.path.abspath(a.output):
         raise UnsafeWriteError(f"--report {a.report} is the output file")
-    model, feats = read(a.input)
+    model, feats = read(a.input, crs=getattr(a, "crs", None))
     if model is None:
         for fe in feats:
             err(fe.message)

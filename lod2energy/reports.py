@@ -11,12 +11,14 @@ import sys
 from collections import Counter
 from typing import TYPE_CHECKING, Iterable, Sequence
 
+from lod2energy import crs as crs_
 from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.model import CityModel
 from lod2energy.options import FORMATS
 from lod2energy.energy.downgrades import KINDS
 from lod2energy.records import CSV_FIELDS, BuildingRecord
 from lod2energy.safe_write import atomic_write, check_target, json_default
+from lod2energy.site import MAX_WEATHER_KM
 from lod2energy.spool import load_spooled, spool_path
 
 if TYPE_CHECKING:
@@ -39,19 +41,30 @@ def progress(quiet: bool, desc: str, total: int | None = None):
 
 
 def frame_entry(model: CityModel | None) -> dict:
-    """Report entry for a geographic input: the local metric frame its buildings were
-    validated, repaired and exported in (IDF / STL offsets are in this frame)."""
+    """Report entry for an input not in metres: the local metric frame a geographic file's
+    buildings were validated, repaired and exported in (IDF / STL offsets are in this frame),
+    or the conversion of a file in feet to metres."""
     frame = getattr(model, "frame", None)
-    return {"local_frame": frame.as_dict()} if frame is not None else {}
+    if frame is None:
+        return {}
+    return {"local_frame" if frame.geographic else "unit_conversion": frame.as_dict()}
 
 
-def note_frame(path: str, model: CityModel | None) -> None:
-    """One line on stderr when a geographic input is processed in a local metric frame."""
+def note_frame(path: str, model: CityModel | None, metres_note: bool = True) -> None:
+    """One line on stderr when an input is processed in a local metric frame (geographic CRS),
+    converted to metres (a CRS in feet) or, with ``metres_note``, taken as metres (no CRS
+    pyproj reads)."""
     f = getattr(model, "frame", None)
-    if f is not None:
+    if f is not None and f.geographic:
         print(f"lod2energy: note: {path}: CRS {model.crs} is geographic (degrees); buildings are checked and "
               f"exported in a local east-north-up frame in metres at lat {f.lat0:.7f}, lon {f.lon0:.7f} "
               "(report.json: local_frame); CityJSON is written back in degrees", file=sys.stderr)
+    elif f is not None:
+        print(f"lod2energy: note: {path}: CRS {model.crs} is in {f.unit} (heights in {f.vertical_unit}); "
+              f"coordinates are converted to metres (x {f.to_metre:.10g}) for every check and export in "
+              "metres (report.json: unit_conversion); CityJSON is written back in the file's unit", file=sys.stderr)
+    elif metres_note and model is not None and crs_.metres_note(path, model.crs):
+        print(crs_.metres_note(path, model.crs), file=sys.stderr)
 
 
 def refuse_overwriting_inputs(outputs: Iterable[str], inputs: Iterable[str]) -> None:
@@ -205,14 +218,15 @@ def report_lazily(path: str) -> dict:
 
 
 def write_html_report(report_path: str, input_path: str, records: JournalRecords, spool: str, out: str,
-                      tol: Tolerances = DEFAULT, inputs=(), footprints=None, mapper=None) -> str:
+                      tol: Tolerances = DEFAULT, inputs=(), footprints=None, mapper=None, crs=None) -> str:
     """``OUTDIR/report.html`` (:mod:`lod2energy.viz`) from the report, the input buildings and the
     prepared ones of the spool (``records``: the report's, :func:`lod2energy.journal.records_of`);
     a page that cannot be written costs one line, never the export.
     ``footprints``: the plan footprints of every object of the input, in input order (a
     :class:`~lod2energy.viz.footprints.FootprintSpill`; without it the input is read again);
     ``mapper``: renders the page's pictures (e.g. on the export's process pool,
-    :func:`lod2energy.viz.report.write_report_html`)."""
+    :func:`lod2energy.viz.report.write_report_html`); ``crs``: the user's ``--crs``, for the input
+    read again."""
     try:
         from lod2energy.viz.report import write_report_for_files
 
@@ -225,11 +239,26 @@ def write_html_report(report_path: str, input_path: str, records: JournalRecords
             return out_b
         path = os.path.join(out, "report.html")
         write_report_for_files(report_lazily(report_path), path, [input_path], tol=tol, outputs=outputs, root=out,
-                               input_files=list(inputs), footprints=footprints, mapper=mapper)
+                               input_files=list(inputs), footprints=footprints, mapper=mapper,
+                               read_options={"crs": crs} if crs else None)
         return path
     except Exception as e:  # noqa: BLE001 - the page is a view of the report, not an output to check
         err(f"report.html not written: {type(e).__name__}: {e}")
         return ""
+
+
+def weather_warnings(records: Iterable[BuildingRecord]) -> list[str]:
+    """One line per weather station farther than :data:`lod2energy.site.MAX_WEATHER_KM` from
+    the buildings it serves (their IDF records' ``weather``)."""
+    far: dict[str, list[float]] = {}
+    for r in records:
+        e = r.export("idf")
+        w = (e.extra.get("weather") if e is not None else None) or {}
+        d = w.get("distance_km")
+        if d is not None and d > MAX_WEATHER_KM:
+            far.setdefault(f"{w.get('station')} ({w.get('file')})", []).append(float(d))
+    return [f"weather station {k} is {min(v):.0f}-{max(v):.0f} km from {len(v)} building(s): more than "
+            f"{MAX_WEATHER_KM:.0f} km, its climate may not be theirs" for k, v in sorted(far.items())]
 
 
 def print_export_summary(records: Iterable[BuildingRecord], formats: Iterable[str], outdir: str,

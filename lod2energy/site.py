@@ -2,10 +2,12 @@
 temperatures from the weather file, and the weather station's distance.
 
 - **latitude / longitude**: the centre of the building's (or dataset's) bounding box, taken
-  through its CRS to WGS84 with pyproj (the horizontal EPSG code of the CRS name, AdV names
-  included, :func:`lod2energy.crs.epsg_codes`), read as (easting, northing) unless only the
-  other order falls in the CRS's area of use; a file in a geographic CRS is read in a local
-  frame (:class:`lod2energy.geodesy.LocalFrame`) and goes back through it.
+  through its CRS to WGS84 with pyproj (the horizontal part of any CRS pyproj reads, AdV names
+  included, :func:`lod2energy.crs.crs_info`), read in the CRS's own axis order (north first
+  for the JGD plane CSs) unless only the other order falls in the CRS's area of use; a file
+  in a geographic CRS is read in a local frame (:class:`lod2energy.geodesy.LocalFrame`) and
+  goes back through it, one in feet is scaled back (:class:`lod2energy.geodesy.ScaledFrame`).
+  A file with no CRS pyproj reads has no site: nothing is assumed.
 - **elevation**: the lowest point of the geometry (m above the CRS's vertical datum: NAP,
   DHHN, TP; ellipsoidal where the file has no vertical datum), clipped to EnergyPlus's range
   -300 .. 8900 m.
@@ -18,15 +20,16 @@ temperatures from the weather file, and the weather station's distance.
 """
 from __future__ import annotations
 
-import functools
 import math
+import os
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
-from lod2energy.crs import epsg_code, epsg_codes, is_geographic, latitude_first
+from lod2energy import cache
+from lod2energy.crs import crs_info, epsg_codes, no_crs_reason
 from lod2energy.errors import Lod2EnergyError
 from lod2energy.thermal import country_from_crs
 
@@ -41,7 +44,7 @@ EARTH_KM = 6371.0088
 
 
 class SiteError(Lod2EnergyError, ValueError):
-    """The coordinates cannot be placed on the Earth (unknown CRS, not finite)."""
+    """The coordinates cannot be placed on the Earth (no CRS pyproj reads, not finite)."""
 
 
 @dataclass(frozen=True)
@@ -95,9 +98,9 @@ def _country(crs: Any) -> str | None:
 def _inside(t, p: np.ndarray, area) -> np.ndarray:
     """Latitude/longitude of ``p`` read as (easting, northing), or as (northing, easting) when
     only that order falls inside the CRS's area of use (German Gauss-Krueger files write
-    east-north although EPSG defines north-east; the caller swaps the JGD plane CSs, which
-    PLATEAU writes in the authority's north-east order and whose areas of use are too large to
-    tell the two orders apart)."""
+    east-north although EPSG defines north-east). The caller gives a north-first CRS's
+    points swapped, in its own order first: the JGD plane CSs, which PLATEAU writes in that
+    order, have areas of use too large to tell the two orders apart."""
     out = []
     for a, b in ((0, 1), (1, 0)):
         lon, lat = t.transform(p[:, a], p[:, b])
@@ -112,51 +115,47 @@ def _inside(t, p: np.ndarray, area) -> np.ndarray:
     return out[0]
 
 
-@functools.lru_cache(maxsize=32)
-def _transformer(code: int):
-    """The pyproj ``Transformer`` EPSG:``code`` -> EPSG:4326 (x/y order) and the source CRS's area
-    of use, built once per process and code (building one costs about 0.1 s CPU).
-
-    Raises
-    ------
-    SiteError
-        pyproj is missing or does not know the code (not cached: it is raised again each call).
-    """
+@cache.memoize("site_transformer", 32)
+def _transformer(horizontal: str):
+    """The pyproj ``Transformer`` from the horizontal CRS ``horizontal`` (``"EPSG:<code>"`` or
+    WKT) to EPSG:4326 (x/y order) and the source CRS's area of use, built once per process
+    (building one costs about 0.1 s CPU)."""
+    from pyproj import Transformer
+    from pyproj.exceptions import CRSError
     try:
-        from pyproj import Transformer
-        from pyproj.exceptions import CRSError
-    except ImportError as e:  # pragma: no cover - a dependency
-        raise SiteError("pyproj is not installed") from e
-    try:
-        t = Transformer.from_crs(f"EPSG:{code}", "EPSG:4326", always_xy=True)
+        t = Transformer.from_crs(horizontal, "EPSG:4326", always_xy=True)
         return t, t.source_crs.area_of_use
     except CRSError as e:
-        raise SiteError(f"pyproj does not know EPSG:{code}: {e}") from e
+        raise SiteError(f"pyproj cannot transform {horizontal} to latitude/longitude: {e}") from e
 
 
 def to_wgs84(points: np.ndarray, crs: Any = None, frame=None) -> np.ndarray:
-    """Latitude, longitude (degrees) ``(n, 2)`` of points ``(n, 3)`` in ``crs`` (or in ``frame``).
+    """Latitude, longitude (degrees) ``(n, 2)`` of points ``(n, 3)`` in ``crs`` (or in the local
+    ``frame`` of a geographic file; in metres of a ``frame`` of feet).
 
     Raises
     ------
     SiteError
-        No CRS and no frame, a CRS pyproj does not know, or non-finite results.
+        No CRS pyproj reads and no geographic frame, or non-finite results.
     """
     p = np.asarray(points, dtype=np.float64).reshape(-1, 3)
-    if frame is not None:
+    if frame is not None and getattr(frame, "geographic", True):
         g = frame.to_geodetic(p)
         ll = g[:, :2] if frame.lat_first else g[:, [1, 0]]
         src = "local frame"
     else:
-        code = epsg_code(crs)
-        if code is None:
-            raise SiteError(f"no EPSG code in CRS {crs!r}: Site:Location cannot be found from the coordinates")
-        if is_geographic(crs):
-            ll = p[:, :2] if latitude_first(crs) else p[:, [1, 0]]
+        if frame is not None:  # metres of a CRS in feet: back to the file's unit
+            p = frame.to_file(p)
+        why = no_crs_reason(crs)
+        if why:
+            raise SiteError(f"{why}: the buildings cannot be placed on the Earth")
+        info = crs_info(crs)
+        if info.geographic:
+            ll = p[:, :2] if info.lat_first else p[:, [1, 0]]
         else:
-            t, area = _transformer(code)
-            ll = _inside(t, p[:, [1, 0, 2]] if code in _JGD else p, area)
-        src = f"crs EPSG:{code}"
+            t, area = _transformer(info.horizontal)
+            ll = _inside(t, p[:, [1, 0, 2]] if info.north_first else p, area)
+        src = f"crs {info.horizontal}"
     ll = np.asarray(ll, dtype=np.float64)
     if not np.all(np.isfinite(ll)) or np.any(np.abs(ll[:, 0]) > 90) or np.any(np.abs(ll[:, 1]) > 180):
         raise SiteError(f"coordinates do not map to latitude/longitude through {src}")
@@ -173,9 +172,10 @@ def site_of(points: np.ndarray, crs: Any = None, frame=None, name: str = "Site")
     centre = (p.min(axis=0) + p.max(axis=0)) / 2
     centre[2] = p[:, 2].min()
     ll = to_wgs84(centre[None, :], crs, frame)[0]
-    elev = float(centre[2]) if frame is None else float(frame.to_geodetic(centre[None, :])[0, 2])
+    geographic = frame is not None and getattr(frame, "geographic", True)
+    elev = float(frame.to_geodetic(centre[None, :])[0, 2]) if geographic else float(centre[2])
     country = _country(crs)
-    src = "local frame" if frame is not None else f"crs {crs}"
+    src = "local frame" if geographic else f"crs {crs}"
     return Site(name, round(float(ll[0]), 6), round(float(ll[1]), 6), time_zone(float(ll[1]), country),
                 round(min(max(elev, -300.0), 8900.0), 2), src)
 
@@ -227,6 +227,38 @@ def read_weather_header(path: str | Path, depth: float = 2.0) -> WeatherHeader |
             except (ValueError, IndexError):
                 g_depth, g = None, None
     return WeatherHeader("_".join(x for x in loc[1:4] if x), lat, lon, tz, el, g_depth, g)
+
+
+@cache.memoize("weather_stations", 8)
+def _stations(folder: str, listing: tuple) -> tuple:
+    out = []
+    for name, _, _ in listing:
+        h = read_weather_header(os.path.join(folder, name))
+        if h is not None:
+            out.append((os.path.join(folder, name), h))
+    return tuple(out)
+
+
+def weather_stations(path: str | Path) -> list[tuple[str, WeatherHeader | None]]:
+    """``(EPW path, header)`` of the weather file ``path``, or of every ``*.epw`` with a
+    ``LOCATION`` line in the folder ``path`` (sorted by name; read once per process while the
+    folder is unchanged). A single file without ``LOCATION`` gives ``[(path, None)]``."""
+    p = str(path)
+    if not os.path.isdir(p):
+        return [(p, read_weather_header(p))]
+    listing = tuple(sorted((e.name, e.stat().st_mtime_ns, e.stat().st_size) for e in os.scandir(p)
+                           if e.name.lower().endswith(".epw") and e.is_file()))
+    return list(_stations(p, listing))
+
+
+def nearest_station(site: Site, stations: list[tuple[str, WeatherHeader | None]]
+                    ) -> tuple[str, WeatherHeader | None]:
+    """The station of ``stations`` nearest to ``site`` (great-circle distance); the first when
+    none has a known location."""
+    known = [s for s in stations if s[1] is not None]
+    if not known:
+        return stations[0]
+    return min(known, key=lambda s: distance_km(site.latitude, site.longitude, s[1].latitude, s[1].longitude))
 
 
 def weather_distance(site: Site, weather: WeatherHeader) -> tuple[float, str | None]:

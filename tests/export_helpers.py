@@ -28,6 +28,18 @@ DATA = REPO.parent / "shared" / "data"
 #: the weather file the package ships (lod2energy/data/weather/): Heino, NL
 EPW = Path(lod2energy.__file__).resolve().parent / "data" / "weather" / "NLD_OV_Heino.062780_TMYx.2007-2021.epw"
 
+#: The CRS the tiny test buildings are placed in (an IDF needs a site: there is no default one).
+TEST_CRS = "EPSG:28992"
+
+
+def write_idf(buildings, outdir, *args, **kw):
+    """:func:`lod2energy.exporters.energyplus.writer.write` of test buildings in :data:`TEST_CRS`
+    (unless the test gives ``crs`` or ``frame``)."""
+    if "frame" not in kw:
+        kw.setdefault("crs", TEST_CRS)
+    return energyplus.writer.write(buildings, outdir, *args, **kw)
+
+
 FALLBACK_U = {"RoofSurface": 0.3, "WallSurface": 0.4, "GroundSurface": 0.35}
 
 

@@ -10,7 +10,7 @@ import re
 import numpy as np
 import pytest
 
-from export_helpers import energy_ready, parts_with_semantics, shifted, steep_house_with_dormer
+from export_helpers import energy_ready, parts_with_semantics, shifted, steep_house_with_dormer, write_idf
 from factories import box
 
 from lod2energy import cache
@@ -52,13 +52,13 @@ def test_the_stage_records_a_united_dormer_and_keeps_the_geometry():
 
 def test_the_writer_writes_the_recorded_model(tmp_path, monkeypatch):
     b = dormer_house()
-    direct = energyplus.writer.write([b], tmp_path / "direct", OPTIONS)
+    direct = write_idf([b], tmp_path / "direct", OPTIONS)
     staged = energy_model.with_energy_model([b], OPTIONS)
 
     def no_second_model(*a, **k):
         raise AssertionError("the writer made its own energy model")
     monkeypatch.setattr(energy_model, "prepare_energy_model", no_second_model)
-    given = energyplus.writer.write(staged, tmp_path / "given", OPTIONS)
+    given = write_idf(staged, tmp_path / "given", OPTIONS)
     assert given[0].ok, given[0].problems
     assert _idf_bytes(given) == _idf_bytes(direct)
     assert _zone_names(given[0].path) == _zone_names(direct[0].path) and len(_zone_names(direct[0].path)) >= 1
@@ -72,7 +72,7 @@ def test_a_model_made_for_other_neighbours_is_refused_not_made_again(tmp_path):
     with pytest.raises(ValueError, match="other buildings, neighbours or options"):
         energy_model.model_of([staged], OPTIONS, [nb])
     with pytest.raises(ValueError):
-        energyplus.writer.write([staged], tmp_path, OPTIONS, context=[nb])
+        write_idf([staged], tmp_path, OPTIONS, context=[nb])
     assert energy_model.model_of([staged], OPTIONS) is staged.provenance["energy_model"]["model"]
 
 
@@ -93,12 +93,12 @@ def test_a_simpler_envelope_is_recorded_and_written(tmp_path, monkeypatch):
     assert simpler["zone"] == staged.provenance["energy_model"]["zones"][0] and simpler["envelope"] in names
     model = staged.provenance["energy_model"]["model"]
     assert "fails EnergyPlus's enclosure test" in model.zones[0].warnings[-1]
-    res = energyplus.writer.write([staged], tmp_path, OPTIONS)
+    res = write_idf([staged], tmp_path, OPTIONS)
     assert res[0].ok, res[0].problems
     assert any("fails EnergyPlus's enclosure test" in w for w in res[0].warnings)
     # without the stage's verdict the same building is written as it is, without that warning
     monkeypatch.setattr(energy_model, "enclosure_defects", real)
-    plain = energyplus.writer.write([b], tmp_path / "plain", OPTIONS)
+    plain = write_idf([b], tmp_path / "plain", OPTIONS)
     assert not any("fails EnergyPlus's enclosure test" in w for w in plain[0].warnings)
 
 
@@ -129,7 +129,7 @@ def test_the_frame_is_the_writers(make, tmp_path):
     b = shifted(make())
     [staged] = energy_model.with_energy_model([b], OPTIONS)
     origin = np.asarray(staged.provenance["energy_model"]["frame_origin"])
-    res = energyplus.writer.write([staged], tmp_path, OPTIONS)
+    res = write_idf([staged], tmp_path, OPTIONS)
     # building mode: the file's offset is the frame the model was made in, that of the IDF's
     # geometry (a united dormer can reach a hair below the input's lowest point)
     assert np.array_equal(origin, local_origin(staged.provenance["energy_model"]["model"].buildings))

@@ -10,7 +10,7 @@ import sqlite3
 import pytest
 
 from export_helpers import (DATA, EPW, energy_ready, parts_with_semantics, real_buildings, steep_house_with_dormer,
-                            two_part_building)
+                            two_part_building, write_idf)
 from factories import box
 
 from lod2energy import energy
@@ -32,13 +32,17 @@ def weather() -> str:
     return str(EPW)
 
 
+#: Site:Location of the hand-made zones (near the weather station)
+SITE = {"name": "Test", "latitude": 52.43, "longitude": 6.26, "time_zone": 1.0, "elevation": 4.0}
+
+
 def _opts(**kw):
     # 2 time steps per hour keeps each annual run at a few seconds
     return energyplus.options.IdfOptions(run=True, timesteps_per_hour=2, jobs=2, **kw)
 
 
 def test_box_runs_clean_and_reports_demand(tmp_path, weather):
-    res = energyplus.writer.write([energy_ready(box())], tmp_path, _opts(), weather=weather)
+    res = write_idf([energy_ready(box())], tmp_path, _opts(), weather=weather)
     r = res[0]
     assert r.ok, r.problems
     assert r.severe_errors == 0 and r.not_enclosed == ()
@@ -47,7 +51,7 @@ def test_box_runs_clean_and_reports_demand(tmp_path, weather):
 
 def test_energyplus_sees_the_input_u_values(tmp_path, weather):
     b = energy_ready(box())
-    res = energyplus.writer.write([b], tmp_path, _opts(wwr=0.0), weather=weather)
+    res = write_idf([b], tmp_path, _opts(wwr=0.0), weather=weather)
     sql = tmp_path / (res[0].path.rsplit("/", 1)[1][:-4] + "_eplus") / "eplusout.sql"
     con = sqlite3.connect(sql)
     rows = con.execute(
@@ -68,7 +72,7 @@ def test_energyplus_sees_the_input_u_values(tmp_path, weather):
 
 def test_heating_grows_with_u_value(tmp_path, weather):
     lo = energy_ready(box(id="lo"))
-    res_lo = energyplus.writer.write([lo], tmp_path / "lo", _opts(), weather=weather)[0]
+    res_lo = write_idf([lo], tmp_path / "lo", _opts(), weather=weather)[0]
 
     def scaled(b, f):
         from dataclasses import replace
@@ -78,13 +82,13 @@ def test_heating_grows_with_u_value(tmp_path, weather):
         sem = tuple(MappingProxyType({**s, "uValue": s["uValue"] * f}) for s in g.semantic_surfaces)
         return b.replace_geometry(o.id, gi, replace(g, semantic_surfaces=sem))
 
-    res_hi = energyplus.writer.write([scaled(lo, 2.0)], tmp_path / "hi", _opts(), weather=weather)[0]
+    res_hi = write_idf([scaled(lo, 2.0)], tmp_path / "hi", _opts(), weather=weather)[0]
     assert res_lo.ok and res_hi.ok
     assert res_hi.heating_kwh > 1.3 * res_lo.heating_kwh
 
 
 def test_two_parts_party_wall_runs(tmp_path, weather):
-    res = energyplus.writer.write([energy_ready(two_part_building())], tmp_path, _opts(), weather=weather)
+    res = write_idf([energy_ready(two_part_building())], tmp_path, _opts(), weather=weather)
     assert res[0].ok, res[0].problems
     assert res[0].stats["adiabatic_surfaces"] >= 2
 
@@ -99,7 +103,7 @@ def test_real_buildings_run_clean(tmp_path, weather, rel, multipart, n, step):
         pytest.skip(f"shared data not available: {rel}")
     bs = [energy_ready(b) for b in real_buildings(rel, n=n, multipart=multipart, step=step)]
     assert len(bs) == n
-    res = energyplus.writer.write(bs, tmp_path, _opts(), weather=weather)
+    res = write_idf(bs, tmp_path, _opts(), weather=weather)
     assert [(r.building_ids, r.problems) for r in res if not r.ok] == []
     for r in res:
         assert r.severe_errors == 0 and r.not_enclosed == () and r.heating_kwh > 0
@@ -110,7 +114,7 @@ def test_dataset_mode_runs(tmp_path, weather):
     if not (DATA / rel).exists():
         pytest.skip(f"shared data not available: {rel}")
     bs = [energy_ready(b) for b in real_buildings(rel, n=2, multipart=True)]
-    res = energyplus.writer.write(bs, tmp_path, _opts(mode="dataset", zoning="building"), weather=weather)
+    res = write_idf(bs, tmp_path, _opts(mode="dataset", zoning="building"), weather=weather)
     assert len(res) == 1 and res[0].ok, res[0].problems
     assert res[0].stats["zones"] == sum(len(b.energy_objects()) for b in bs)
 
@@ -144,7 +148,7 @@ def test_sliver_walls_do_not_break_energyplus_enclosure(tmp_path, weather):
     assert bs
     zs = zones.zone_shells(bs[0], zones.local_origin(bs), None, collinear_tol=zones.COLLINEAR_TOL)
     raw = [p for zi, z in enumerate(zs) for p in energy.surfaces.zone_pieces(z, zi, {}, False)]
-    res = energyplus.writer.write(bs, tmp_path, _opts(), weather=weather)
+    res = write_idf(bs, tmp_path, _opts(), weather=weather)
     r = res[0]
     assert r.severe_errors == 0, r.problems
     assert r.not_enclosed == (), r.problems
@@ -182,7 +186,7 @@ def test_thin_pieces_with_a_vertex_on_their_own_edge_run_enclosed(tmp_path, weat
         q, k = p.points, len(p.points)
         assert not any(energy.conform._on_segment(q[i], q[(i + 1) % k], q[j])
                        for i in range(k) for j in range(k) if j not in (i, (i + 1) % k))
-    res = energyplus.writer.write(bs, tmp_path, _opts(), weather=weather)
+    res = write_idf(bs, tmp_path, _opts(), weather=weather)
     r = res[0]
     assert r.severe_errors == 0, r.problems
     assert r.not_enclosed == (), r.problems
@@ -228,7 +232,7 @@ def test_enclosure_emulation_agrees_with_energyplus(tmp_path, weather, w):
     kinds = ["ground"] + ["ground"] * (len(polys) - 6) + ["roof", "wall", "wall", "wall", "wall"]
     pieces = [energy.pieces.Piece(np.asarray(p, float), k, "Ground" if k == "ground" else "Outdoors", 0.5, i)
               for i, (p, k) in enumerate(zip(polys, kinds))]
-    text, _, _ = energyplus.render.render_idf([z], [pieces], np.zeros(3), np.zeros(3), _opts(), [b.id], site=None)
+    text, _, _ = energyplus.render.render_idf([z], [pieces], np.zeros(3), np.zeros(3), _opts(), [b.id], site=SITE)
     path = tmp_path / f"sliver_{int(w * 1000)}mm.idf"
     path.write_text(text)
     rr = energyplus.run.run(path, weather, tmp_path / "out", timeout=600)
@@ -245,6 +249,6 @@ def test_dormers_without_a_floor_run_clean(tmp_path, weather):
     house, ht, dormer, dt = steep_house_with_dormer()
     second = [[(x + 4, y, z) for x, y, z in r] for r in dormer]
     b = energy_ready(parts_with_semantics([(house, ht), (dormer, dt), (second, dt)]))
-    r = energyplus.writer.write([b], tmp_path, _opts(), weather=weather)[0]
+    r = write_idf([b], tmp_path, _opts(), weather=weather)[0]
     assert r.ok, r.problems
     assert r.severe_errors == 0 and r.not_enclosed == ()

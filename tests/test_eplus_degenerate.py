@@ -16,7 +16,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from export_helpers import EPW, energy_ready
+from export_helpers import EPW, energy_ready, write_idf
 from factories import box
 from lod2energy.exporters import energyplus
 from lod2energy.energy.enclosure import eplus_degenerate
@@ -66,7 +66,7 @@ def _eplus_degenerate_names(err: str) -> set[str]:
 
 
 def test_self_check_flags_every_surface_energyplus_calls_degenerate(tmp_path):
-    base = energyplus.writer.write([energy_ready(box())], tmp_path / "base", energyplus.options.IdfOptions())[0]
+    base = write_idf([energy_ready(box())], tmp_path / "base", energyplus.options.IdfOptions())[0]
     assert base.ok, base.problems
     text = Path(base.path).read_text()
     zone = re.search(r"^Zone, ([^,]+),", text, re.M).group(1)
@@ -94,7 +94,7 @@ def test_self_check_flags_every_surface_energyplus_calls_degenerate(tmp_path):
 def test_a_sliver_triangle_8_mm_wide_is_degenerate_for_both(tmp_path):
     tri = np.array([[10, 0.008, 0.0], [10, 0, 0], [0, 0, 0]])
     assert eplus_degenerate([tri])[0]
-    base = energyplus.writer.write([energy_ready(box())], tmp_path / "base", energyplus.options.IdfOptions())[0]
+    base = write_idf([energy_ready(box())], tmp_path / "base", energyplus.options.IdfOptions())[0]
     text = Path(base.path).read_text()
     zone = re.search(r"^Zone, ([^,]+),", text, re.M).group(1)
     cons = re.search(r"(Wall_Outdoors_[A-Za-z0-9_]+),\s+!- Construction Name", text).group(1)

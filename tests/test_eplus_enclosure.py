@@ -8,7 +8,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from export_helpers import energy_ready
+from export_helpers import energy_ready, write_idf
 from factories import box, box_polygons, building_from_polygons, BOX_SEMANTICS
 
 from lod2energy import energy
@@ -111,7 +111,7 @@ def test_writer_fixes_a_sliver_zone(tmp_path):
     # the 1 cm sliver box as a building: the written IDF passes the emulated test
     b = energy_ready(building_from_polygons([[p] for p in sliver_ground_box(0.01)], "Solid",
                                             ["GroundSurface", "GroundSurface"] + BOX_SEMANTICS[1:], id="sliver"))
-    res = energyplus.writer.write([b], tmp_path, energyplus.options.IdfOptions())
+    res = write_idf([b], tmp_path, energyplus.options.IdfOptions())
     assert res[0].ok, res[0].problems
     assert energyplus.check.self_check(res[0].path) == []
 

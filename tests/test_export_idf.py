@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 from export_helpers import (DATA, energy_ready, eppy_idf, l_shaped, parts_with_semantics, real_buildings,
-                            shifted, steep_house_with_dormer, two_part_building)
+                            shifted, steep_house_with_dormer, two_part_building, write_idf)
 from factories import box, gabled_house
 
 from lod2energy import energy
@@ -50,7 +50,7 @@ def _area(pts) -> float:
 @pytest.mark.parametrize("make", [box, gabled_house, l_shaped, two_part_building], ids=lambda f: f.__name__)
 def test_canonical_buildings_pass_self_check(tmp_path, make):
     b = energy_ready(make())
-    res = energyplus.writer.write([b], tmp_path)
+    res = write_idf([b], tmp_path)
     assert len(res) == 1 and res[0].ok, res[0].problems
     assert energyplus.check.self_check(res[0].path) == []
     I, surfs, _ = _surfaces(res[0].path)
@@ -59,7 +59,7 @@ def test_canonical_buildings_pass_self_check(tmp_path, make):
 
 def test_box_surfaces_outward_ccw_upper_left_first(tmp_path):
     b = energy_ready(box(10, 8, 6))
-    res = energyplus.writer.write([b], tmp_path, energyplus.options.IdfOptions(wwr=0.0))
+    res = write_idf([b], tmp_path, energyplus.options.IdfOptions(wwr=0.0))
     _, surfs, wins = _surfaces(res[0].path)
     assert len(surfs) == 6 and len(wins) == 0
     centre = np.array([5.0, 4.0, 3.0])
@@ -79,7 +79,7 @@ def test_box_surfaces_outward_ccw_upper_left_first(tmp_path):
 
 def test_local_origin_offset_in_result_and_header(tmp_path):
     b = energy_ready(shifted(box(10, 8, 6), (85123.4, 446789.6, 2.5)))
-    res = energyplus.writer.write([b], tmp_path)
+    res = write_idf([b], tmp_path)
     off = np.asarray(res[0].offset)
     assert np.allclose(off, np.floor(b.vertices.min(axis=0)))
     _, surfs, _ = _surfaces(res[0].path)
@@ -101,7 +101,7 @@ def _boundary_areas(path) -> dict[str, dict[str, float]]:
 
 def test_party_wall_between_parts_whole_face_by_default(tmp_path):
     b = energy_ready(two_part_building())
-    res = energyplus.writer.write([b], tmp_path, energyplus.options.IdfOptions(wwr=0.0))
+    res = write_idf([b], tmp_path, energyplus.options.IdfOptions(wwr=0.0))
     assert res[0].ok, res[0].problems
     by_zone = _boundary_areas(res[0].path)
     # part 0's east wall (48 m2) is 75 % shared, part 1's west wall (72 m2) 50 %: both Adiabatic
@@ -110,7 +110,7 @@ def test_party_wall_between_parts_whole_face_by_default(tmp_path):
 
 def test_party_wall_between_parts_is_split(tmp_path):
     b = energy_ready(two_part_building())
-    res = energyplus.writer.write([b], tmp_path, energyplus.options.IdfOptions(wwr=0.0, party_split=True))
+    res = write_idf([b], tmp_path, energyplus.options.IdfOptions(wwr=0.0, party_split=True))
     assert res[0].ok, res[0].problems
     _, surfs, _ = _surfaces(res[0].path)
     by_zone: dict[str, dict[str, float]] = {}
@@ -128,7 +128,7 @@ def test_party_wall_between_parts_is_split(tmp_path):
 def test_party_wall_between_buildings_in_building_mode(tmp_path):
     a = energy_ready(box(10, 8, 6, id="left"))
     b = energy_ready(box(10, 8, 6, origin=(10, 0, 0), id="right"))
-    res = energyplus.writer.write([a, b], tmp_path, energyplus.options.IdfOptions(wwr=0.0))
+    res = write_idf([a, b], tmp_path, energyplus.options.IdfOptions(wwr=0.0))
     assert len(res) == 2 and all(r.ok for r in res)
     for r in res:
         _, surfs, _ = _surfaces(r.path)
@@ -138,7 +138,7 @@ def test_party_wall_between_buildings_in_building_mode(tmp_path):
 
 def test_dataset_mode_one_file_one_zone_per_part(tmp_path):
     bs = [energy_ready(two_part_building()), energy_ready(box(5, 5, 5, origin=(40, 0, 0), id="solo"))]
-    res = energyplus.writer.write(bs, tmp_path, energyplus.options.IdfOptions(mode="dataset"))
+    res = write_idf(bs, tmp_path, energyplus.options.IdfOptions(mode="dataset"))
     assert len(res) == 1 and res[0].ok, res[0].problems
     assert set(res[0].building_ids) == {"two_parts", "solo"}
     I, _, _ = _surfaces(res[0].path)
@@ -159,7 +159,7 @@ def test_construction_reproduces_u_value_with_films(tmp_path):
 
 def test_windows_follow_wwr_and_lie_on_their_wall(tmp_path):
     b = energy_ready(gabled_house())
-    res = energyplus.writer.write([b], tmp_path, energyplus.options.IdfOptions(wwr=0.3))
+    res = write_idf([b], tmp_path, energyplus.options.IdfOptions(wwr=0.3))
     _, surfs, wins = _surfaces(res[0].path)
     walls = {s.Name: np.asarray(s.coords, float) for s in surfs if s.Surface_Type == "Wall"}
     assert wins
@@ -182,7 +182,7 @@ def test_non_convex_and_non_planar_faces_become_planar_convex_pieces(tmp_path):
     v[top, 2] += 0.05
     from dataclasses import replace
     b = energy_ready(replace(b, vertices=v))
-    res = energyplus.writer.write([b], tmp_path)
+    res = write_idf([b], tmp_path)
     assert res[0].ok, res[0].problems
     _, surfs, _ = _surfaces(res[0].path)
     for s in surfs:
@@ -200,7 +200,7 @@ def test_non_convex_and_non_planar_faces_become_planar_convex_pieces(tmp_path):
 def test_input_strings_cannot_inject_or_escape(tmp_path, evil):
     outdir = tmp_path / "out"
     b = energy_ready(box(id=evil))
-    res = energyplus.writer.write([b], outdir)
+    res = write_idf([b], outdir)
     path = res[0].path
     assert res[0].ok, res[0].problems
     assert str(path).startswith(str(outdir.resolve()) + "/")
@@ -218,17 +218,17 @@ def test_input_strings_cannot_inject_or_escape(tmp_path, evil):
 
 def test_names_unique_case_insensitively(tmp_path):
     bs = [energy_ready(box(id="Abc")), energy_ready(box(origin=(30, 0, 0), id="abc"))]
-    res = energyplus.writer.write(bs, tmp_path, energyplus.options.IdfOptions(mode="dataset"))
+    res = write_idf(bs, tmp_path, energyplus.options.IdfOptions(mode="dataset"))
     assert res[0].ok, res[0].problems
     I, _, _ = _surfaces(res[0].path)
     names = [z.Name.lower() for z in I.idfobjects["ZONE"]]
     assert len(set(names)) == 2
-    res = energyplus.writer.write(bs, tmp_path / "b")
+    res = write_idf(bs, tmp_path / "b")
     assert len({r.path.lower() for r in res}) == 2
 
 
 def test_self_check_catches_open_zone(tmp_path):
-    res = energyplus.writer.write([energy_ready(box())], tmp_path)
+    res = write_idf([energy_ready(box())], tmp_path)
     text = open(res[0].path).read()
     # drop the roof object: the zone is open
     text = re.sub(r"BuildingSurface:Detailed,\s*\n\s*\S+Roof1,.*?;\n", "", text, flags=re.S)
@@ -242,22 +242,22 @@ def test_does_not_mutate_input(tmp_path):
     b = energy_ready(two_part_building())
     before = b.vertices.copy()
     sems = [dict(s) for _, _, g in b.energy_objects() for s in g.semantic_surfaces]
-    energyplus.writer.write([b], tmp_path)
+    write_idf([b], tmp_path)
     assert np.array_equal(before, b.vertices)
     assert sems == [dict(s) for _, _, g in b.energy_objects() for s in g.semantic_surfaces]
 
 
 def test_bad_options_are_parameter_errors(tmp_path):
     with pytest.raises(ParameterError):
-        energyplus.writer.write([energy_ready(box())], tmp_path, energyplus.options.IdfOptions(mode="city"))
+        write_idf([energy_ready(box())], tmp_path, energyplus.options.IdfOptions(mode="city"))
     with pytest.raises(ParameterError):
-        energyplus.writer.write([energy_ready(box())], tmp_path, energyplus.options.IdfOptions(run=True))
+        write_idf([energy_ready(box())], tmp_path, energyplus.options.IdfOptions(run=True))
 
 
 def test_shading_adds_neighbours(tmp_path):
     a = energy_ready(box(10, 8, 6, id="a"))
     b = energy_ready(box(10, 8, 12, origin=(20, 0, 0), id="b"))
-    res = energyplus.writer.write([a, b], tmp_path, energyplus.options.IdfOptions(shading=True))
+    res = write_idf([a, b], tmp_path, energyplus.options.IdfOptions(shading=True))
     assert all(r.ok for r in res)
     I = eppy_idf(res[0].path)
     shades = I.idfobjects["SHADING:BUILDING:DETAILED"]
@@ -275,7 +275,7 @@ def test_real_buildings_pass_self_check(tmp_path, rel, multipart, n):
         pytest.skip(f"shared data not available: {rel}")
     bs = [energy_ready(b) for b in real_buildings(rel, n=n, multipart=bool(multipart))]
     assert bs
-    res = energyplus.writer.write(bs, tmp_path)
+    res = write_idf(bs, tmp_path)
     bad = [(r.building_ids, r.problems) for r in res if not r.ok]
     assert not bad
     for r in res:
@@ -292,7 +292,7 @@ def test_a_dormer_without_a_floor_joins_the_zone_it_sits_on(tmp_path):
     assert energy_parts.floorless_parts(merged) == [] and "united with dormer_house-part0" in notes[0]
     assert [o.id for o, _, _ in merged.energy_objects()] == ["dormer_house-part0"]
     assert [o.id for o, _, _ in b.energy_objects()] == ["dormer_house-part0", "dormer_house-part1"]  # input kept
-    res = energyplus.writer.write([b], tmp_path)
+    res = write_idf([b], tmp_path)
     assert res[0].ok, res[0].problems
     text = open(res[0].path).read()
     assert text.count("\nZone,") == 1 and any("united with" in w for w in res[0].warnings)
@@ -333,11 +333,11 @@ def test_a_written_zone_failing_the_enclosure_check_is_written_with_a_simpler_en
 
     monkeypatch.setattr(writer, "self_check", flaky)
     b = energy_ready(gabled_house())
-    (res,) = writer.write([b], tmp_path)
+    (res,) = write_idf([b], tmp_path)
     assert res.ok and len(calls) >= 2, res.problems
     assert any(w.startswith("written with a simpler envelope (") for w in res.warnings), res.warnings
     assert real(res.path) == []
     # and with every check failing, the file is reported with the check's problems, not hidden
     monkeypatch.setattr(writer, "self_check", lambda path: ["zone Z: EnergyPlus would find it not fully enclosed"])
-    (bad,) = writer.write([b], tmp_path / "bad")
+    (bad,) = write_idf([b], tmp_path / "bad")
     assert not bad.ok and "not fully enclosed" in bad.problems[0]

@@ -10,7 +10,7 @@ from pathlib import Path
 
 import pytest
 
-from export_helpers import energy_ready
+from export_helpers import energy_ready, write_idf
 from factories import box
 
 from lod2energy.exporters import energyplus
@@ -32,7 +32,7 @@ BAD = ["", "abc", "nan", "-inf", "inf", "1e400", "1_000", " 2 ", "4.5", "-1", "0
 def written():
     import tempfile
     with tempfile.TemporaryDirectory() as d:
-        res = energyplus.writer.write([energy_ready(box())], d, energyplus.options.IdfOptions(wwr=0.3))
+        res = write_idf([energy_ready(box())], d, energyplus.options.IdfOptions(wwr=0.3))
         assert res[0].ok, res[0].problems
         return parse_idf(Path(res[0].path).read_text())
 

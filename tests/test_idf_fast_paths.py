@@ -184,12 +184,12 @@ def test_idd_classes_built_on_first_use_equal_the_eager_parse():
 def test_self_check_still_flags_non_planar_and_tiny_surfaces(tmp_path):
     import re
 
-    from export_helpers import energy_ready
+    from export_helpers import energy_ready, write_idf
     from factories import box
 
     from lod2energy.exporters import energyplus
 
-    res = energyplus.writer.write([energy_ready(box())], tmp_path, energyplus.options.IdfOptions(wwr=0.0))
+    res = write_idf([energy_ready(box())], tmp_path, energyplus.options.IdfOptions(wwr=0.0))
     text = open(res[0].path).read()
     assert energyplus.check.self_check(res[0].path) == []
     roof = re.search(r"BuildingSurface:Detailed,\s*\n\s*(\S+Roof1),.*?;\n", text, flags=re.S)

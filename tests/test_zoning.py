@@ -2,7 +2,7 @@
 import numpy as np
 import pytest
 
-from export_helpers import EPW, energy_ready, eppy_idf, parts_building, real_buildings, shifted
+from export_helpers import EPW, energy_ready, eppy_idf, parts_building, real_buildings, shifted, write_idf
 from factories import box, box_polygons, gabled_house, stepped_tower
 from lod2energy import energy
 import lod2energy.energy.zones.storeys  # noqa: F401 - energy.zones.storeys
@@ -59,7 +59,7 @@ def test_no_cut_next_to_a_vertex_or_through_a_flat_roof():
 @pytest.mark.parametrize("make", [lambda: box(10, 8, 8.4), lambda: gabled_house(eaves=5.6, ridge=9.0)])
 def test_storey_idf_passes_self_check_with_interzone_pairs(tmp_path, make):
     b = energy_ready(shifted(make()))
-    res = energyplus.writer.write([b], tmp_path, energyplus.options.IdfOptions(), crs="EPSG:28992")
+    res = write_idf([b], tmp_path, energyplus.options.IdfOptions(), crs="EPSG:28992")
     assert res[0].ok, res[0].problems
     I = _idf(res[0].path)
     zones = [z.Name for z in I.idfobjects["ZONE"]]
@@ -82,7 +82,7 @@ def test_storey_idf_passes_self_check_with_interzone_pairs(tmp_path, make):
 
 def test_party_walls_stay_adiabatic_per_storey(tmp_path):
     b = energy_ready(parts_building([box_polygons(5, 8, 6), box_polygons(5, 8, 6, origin=(5, 0, 0))]))
-    res = energyplus.writer.write([b], tmp_path, energyplus.options.IdfOptions(wwr=0.0))
+    res = write_idf([b], tmp_path, energyplus.options.IdfOptions(wwr=0.0))
     assert res[0].ok, res[0].problems
     I = _idf(res[0].path)
     assert len(I.idfobjects["ZONE"]) == 4
@@ -91,7 +91,7 @@ def test_party_walls_stay_adiabatic_per_storey(tmp_path):
 
 
 def test_building_zoning_keeps_one_zone(tmp_path):
-    res = energyplus.writer.write([energy_ready(gabled_house())], tmp_path, energyplus.options.IdfOptions(zoning="building"))
+    res = write_idf([energy_ready(gabled_house())], tmp_path, energyplus.options.IdfOptions(zoning="building"))
     assert res[0].ok and res[0].stats["zones"] == 1 and res[0].stats["interzone_surfaces"] == 0
 
 
@@ -99,15 +99,15 @@ def test_bad_options_are_parameter_errors(tmp_path):
     from lod2energy.errors import ParameterError
     for kw in ({"zoning": "room"}, {"attic": "maybe"}, {"use": "spaceport"}):
         with pytest.raises(ParameterError):
-            energyplus.writer.write([energy_ready(box())], tmp_path, energyplus.options.IdfOptions(**kw))
+            write_idf([energy_ready(box())], tmp_path, energyplus.options.IdfOptions(**kw))
 
 
 def test_real_buildings_storey_zones_enclosed_and_volumes_add_up(tmp_path):
     bs = [energy_ready(b) for b in real_buildings("3dbag/delft_subset.city.jsonl")]
     split = 0
     for b in bs:
-        whole = energyplus.writer.write([b], tmp_path / "w", energyplus.options.IdfOptions(zoning="building", wwr=0.0))[0]
-        res = energyplus.writer.write([b], tmp_path / "s", energyplus.options.IdfOptions(wwr=0.0))[0]
+        whole = write_idf([b], tmp_path / "w", energyplus.options.IdfOptions(zoning="building", wwr=0.0))[0]
+        res = write_idf([b], tmp_path / "s", energyplus.options.IdfOptions(wwr=0.0))[0]
         assert res.ok, res.problems
         v_whole = sum(whole.stats["zone_volume_m3"].values())
         v = sum(res.stats["zone_volume_m3"].values())
@@ -121,7 +121,7 @@ def test_energyplus_reads_heating_per_storey_zone(tmp_path):
     if energyplus.run.binary() is None:
         pytest.skip("EnergyPlus not installed")
     b = energy_ready(shifted(gabled_house(eaves=5.6, ridge=9.0), (212000.0, 490000.0, 0.0)))  # near Heino
-    res = energyplus.writer.write([b], tmp_path, energyplus.options.IdfOptions(run=True, weather=str(EPW)), crs="EPSG:28992")[0]
+    res = write_idf([b], tmp_path, energyplus.options.IdfOptions(run=True, weather=str(EPW)), crs="EPSG:28992")[0]
     assert res.ok, res.problems
     zr = res.stats["zone_results"]
     assert set(zr) == {"house_S1", "house_S2"}  # the unconditioned attic has no HVAC
@@ -156,9 +156,9 @@ def test_whole_zone_floor_area_is_the_storeys_gross_floor_area(tmp_path, make, s
     """A zone kept whole gets the floor area of all its storeys (80 m2 footprint each), as its
     storey zones would have: per-m2 loads and kWh/m2a do not change with the zoning."""
     b = energy_ready(shifted(make()))
-    whole = energyplus.writer.write([b], tmp_path / "w", energyplus.options.IdfOptions(zoning="building"),
+    whole = write_idf([b], tmp_path / "w", energyplus.options.IdfOptions(zoning="building"),
                                     crs="EPSG:28992")[0]
-    split = energyplus.writer.write([b], tmp_path / "s", energyplus.options.IdfOptions(), crs="EPSG:28992")[0]
+    split = write_idf([b], tmp_path / "s", energyplus.options.IdfOptions(), crs="EPSG:28992")[0]
     assert whole.ok and split.ok
     (area,) = _zone_floor_areas(whole.path).values()
     assert area == pytest.approx(80.0 * storeys, rel=1e-6)
@@ -174,7 +174,7 @@ def test_whole_zone_counts_the_attic_floor_only_when_the_attic_is_conditioned(tm
     b = energy_ready(shifted(gabled_house(eaves=5.6, ridge=9.0)))
     got = {}
     for attic in ("unconditioned", "conditioned"):
-        res = energyplus.writer.write([b], tmp_path / attic, energyplus.options.IdfOptions(zoning="building", attic=attic),
+        res = write_idf([b], tmp_path / attic, energyplus.options.IdfOptions(zoning="building", attic=attic),
                                       crs="EPSG:28992")[0]
         (got[attic],) = _zone_floor_areas(res.path).values()
     # the attic floor is the section just above the eave: 80 m2 less a sliver of the roof pitch
@@ -185,7 +185,7 @@ def test_storey_zoning_that_stays_whole_gets_the_storeys_area(tmp_path, monkeypa
     """The fallback of storey zoning (a cut that would not close) is a whole zone too."""
     b = energy_ready(shifted(box(10, 8, 8.4)))
     monkeypatch.setattr(zoning, "split_storeys", lambda *a, **k: None)
-    res = energyplus.writer.write([b], tmp_path, energyplus.options.IdfOptions(), crs="EPSG:28992")[0]
+    res = write_idf([b], tmp_path, energyplus.options.IdfOptions(), crs="EPSG:28992")[0]
     assert res.ok and res.stats["zones"] == 1
     assert list(_zone_floor_areas(res.path).values()) == [pytest.approx(240.0)]
     assert any("kept as one zone" in w for w in res.warnings)
@@ -198,7 +198,7 @@ def test_energyplus_uses_the_whole_zone_gross_floor_area(tmp_path):
     if energyplus.run.binary() is None:
         pytest.skip("EnergyPlus not installed")
     b = energy_ready(shifted(box(10, 8, 8.4), (212000.0, 490000.0, 0.0)))  # near Heino
-    res = energyplus.writer.write([b], tmp_path, energyplus.options.IdfOptions(zoning="building", run=True,
+    res = write_idf([b], tmp_path, energyplus.options.IdfOptions(zoning="building", run=True,
                                                                                weather=str(EPW)), crs="EPSG:28992")[0]
     assert res.ok, res.problems
     assert res.stats["conditioned_floor_area_m2"] == pytest.approx(240.0)

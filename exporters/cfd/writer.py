@@ -54,8 +54,10 @@ def export_case(buildings, model, outdir: str | Path, options: CfdOptions | None
     crs = getattr(model, "crs", None)
     source = getattr(model, "source", "") or ""
     frame = getattr(model, "frame", None)
-    frame_note = ("geographic input: coordinates are the local metric frame of report.json (local_frame)"
-                  if frame is not None else "")
+    frame_note = ("" if frame is None else
+                  "geographic input: coordinates are the local metric frame of report.json (local_frame)"
+                  if frame.geographic else
+                  f"input in {frame.unit}: coordinates converted to metres (report.json: unit_conversion)")
     tin = tin_of([b for b in blist if b.type == "TINRelief"])
     try:
         case = build_case(blist, region, options.wind_direction, options.cell_size, options.gap,

@@ -15,13 +15,12 @@ from lod2energy.energy.openings import Opening, opening_polygon, window_for
 from lod2energy.energy.pieces import Piece, WRITE_DECIMALS, _pieces_volume
 from lod2energy.energy.zones.shells import ZoneShell
 from lod2energy.energy.zones.storeys import ZoneInfo, with_floor
-from lod2energy.errors import ExportError
+from lod2energy.errors import ExportError, ParameterError
 from lod2energy.exporters.energyplus.constructions import (
     INTERZONE_SLAB, MASS, _KIND_TYPE, _construction_name, construction_layers,
 )
 from lod2energy.exporters.energyplus.names import NameRegistry, _IDF_NAME_BAD, comment_text
 from lod2energy.exporters.energyplus.options import ATTIC_ACH, IdfOptions
-from lod2energy.exporters.energyplus.site import DEFAULT_SITE
 from lod2energy.geometry.polygons import _norm, newell_normal, polygon_area3d, unit
 from lod2energy.thermal.use import use_conditions
 
@@ -156,12 +155,17 @@ def render_idf(zones: Sequence[ZoneShell], pieces: Sequence[list[Piece]], delta:
     ``openings`` (per zone, :func:`split_openings`): a zone with real windows / doors gets
     them as ``FenestrationSurface:Detailed`` on their wall pieces instead of the WWR rule.
 
+    ``site`` (``Site:Location`` fields, :meth:`lod2energy.site.Site.as_idf`) is required: there
+    is no default site.
+
     Returns
     -------
     text : str
     stats : dict
     warnings : list of str
     """
+    if site is None:
+        raise ParameterError("an IDF needs its Site:Location (the buildings' position): no site given")
     reg = NameRegistry()
     warnings: list[str] = []
     constructions: dict[str, dict] = {}
@@ -298,7 +302,7 @@ def render_idf(zones: Sequence[ZoneShell], pieces: Sequence[list[Piece]], delta:
             "FullExterior" if options.shading else "MinimalShadowing"),
         "timesteps_per_hour": int(options.timesteps_per_hour),
         "run_period": [int(x) for x in options.run_period],
-        "site": {k: (v if k == "name" else _fmt(float(v), 4)) for k, v in (site or DEFAULT_SITE).items()},
+        "site": {k: (v if k == "name" else _fmt(float(v), 4)) for k, v in site.items()},
         "ground_temperatures": [_fmt(float(t), 2) for t in (ground or [10.0] * 12)],
         "heating_setpoint": _fmt(options.heating_setpoint, 2),
         "cooling_setpoint": _fmt(options.cooling_setpoint, 2),

@@ -14,6 +14,7 @@ from typing import Iterable
 import numpy as np
 
 from lod2energy import safe_write, site as site_mod
+from lod2energy.crs import no_crs_reason
 from lod2energy.energy import downgrades as dg, model as energy_model
 from lod2energy.energy.model import with_energy_model
 from lod2energy.energy.pieces import _face_frame, _pieces_from_points
@@ -31,6 +32,7 @@ from lod2energy.geometry.polygons import polygon_area3d
 from lod2energy.exporters.registry import register_writer
 from lod2energy.exporters.result import ExportResult
 from lod2energy.model import Building
+from lod2energy.site import SiteError
 from lod2energy.thermal.use import check_use
 
 
@@ -53,11 +55,12 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
     options : IdfOptions
     weather : path, optional
         EPW file (overrides ``options.weather``).
-    crs : str, optional
+    crs : str
         Written in the header comment; with ``frame``, what places the buildings on the Earth
-        for ``Site:Location`` (:func:`lod2energy.site.site_of`).
-    frame : lod2energy.geodesy.LocalFrame, optional
-        The local frame of a file in a geographic CRS (``CityModel.frame``).
+        for ``Site:Location`` (:func:`lod2energy.site.site_of`). Required (any CRS pyproj
+        reads) unless ``frame`` is a geographic file's local frame: there is no default site.
+    frame : LocalFrame or ScaledFrame, optional
+        The metric frame of a file in a geographic CRS or in feet (``CityModel.frame``).
     context : iterable of Building, optional
         Neighbours of ``buildings``: they make party walls and ``shading`` as they would in
         one call with all of them, but get no file of their own.
@@ -65,7 +68,8 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
     Returns
     -------
     list of ExportResult
-        One per file; ``ok`` is False when the self-check (or the run) failed. ``stats``
+        One per file; ``ok`` is False when the self-check (or the run) failed, or when the
+        file's buildings cannot be placed on the Earth (nothing written). ``stats``
         carries ``storeys``, ``use``, ``site`` and ``weather_distance_km`` (and, after a run,
         the per-zone results of :func:`_run`).
     """
@@ -83,10 +87,15 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
     weather = str(weather) if weather else options.weather
     if options.run and not weather:
         raise ParameterError("an EnergyPlus run needs a weather file (EPW)")
-    if weather and not Path(weather).is_file():
+    if weather and not (Path(weather).is_file() or Path(weather).is_dir()):
         raise ParameterError(f"weather file not found: {weather}")
-    site, ground = read_epw_header(weather) if weather else (None, None)
-    station = site_mod.read_weather_header(weather) if weather else None
+    why = no_crs_reason(crs) if not getattr(frame, "geographic", False) else None
+    if why:
+        raise ParameterError(f"{why}: an IDF needs the buildings' position for its Site:Location "
+                             "(give the CRS: crs=, --crs)")
+    stations = site_mod.weather_stations(weather) if weather else []
+    if weather and not stations:
+        raise ParameterError(f"--weather {weather}: no EPW file with a LOCATION line in the folder")
     out = Path(outdir)
     out.mkdir(parents=True, exist_ok=True)
 
@@ -130,7 +139,8 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
             kept_whole = {j: wdg[k] for k, j in enumerate(g)}
         else:
             wl = [w for j in g for w in written_of[j]]
-        g_site, g_warn, g_stats = _group_site(gb, crs, frame, site, station)
+        g_site, g_warn, g_stats, epw = _group_site(gb, crs, frame, stations)
+        ground = read_epw_header(epw)[1] if epw else None
         text, stats, warns = render_idf([w[0] for w in wl], [w[1] for w in wl], offset - origin, offset,
                                         options, [b.id for b in gb], shading, g_site, ground, crs,
                                         zone_info=[w[2] for w in wl],
@@ -140,7 +150,7 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
         if len(g) == 1:
             stats.update(bstats[g[0]])
         warns = list(warns) + g_warn + [n for j in g for n in zone_notes[j]]
-        if weather and ground is None:
+        if epw and ground is None:
             warns.append("the weather file has no GROUND TEMPERATURES: 10 C under the ground floor all year")
         safe_write.write_text(path, text, root=out, encoding="ascii", errors="replace")
         return offset, stats, warns, kept_whole
@@ -165,6 +175,8 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
             return set_aside_failed(_finish(g, path, ids))
         except OSError as e:  # a full disk, a link planted under the name: this file only
             return ExportResult(ids, "", False, (not_written(e, "IDF"),), (0.0, 0.0, 0.0))
+        except SiteError as e:  # placed nowhere: no IDF with a site the file did not give
+            return ExportResult(ids, "", False, (f"IDF not written: {e}",), (0.0, 0.0, 0.0))
 
     def _finish(g, path, ids):
         offset, stats, warns, kept_whole = render(g, path, pieces)
@@ -195,10 +207,11 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
         notes = [w for i in g for w in merge_notes[i]]
         warns = notes + list(warns)
         stats = {**stats, "downgrades": downgrades_of(g, kept_whole, file_dg)}
+        record = _weather_record(stats)
         res = ExportResult(ids, str(path), not problems, tuple(problems),
-                           tuple(float(x) for x in offset), tuple(warns), stats)
+                           tuple(float(x) for x in offset), tuple(warns), stats, record=record)
         if options.run:
-            res = _run(res, path, weather, options)
+            res = _run(res, path, stats.get("weather_file") or weather, options)
             if res.not_enclosed and options.party_split and stats.get("adiabatic_surfaces"):
                 # EnergyPlus's enclosure test can reject the extra vertices of split party
                 # walls: write the building again with whole-face party walls and re-run
@@ -207,8 +220,8 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
                 warns = notes + list(warns) + ["party walls not split: EnergyPlus found the split zone not enclosed"]
                 stats = {**stats, "downgrades": downgrades_of(g, kept_whole, file_dg)}
                 res = ExportResult(ids, str(path), not problems, tuple(problems),
-                                   tuple(float(x) for x in offset), tuple(warns), stats)
-                res = _run(res, path, weather, options)
+                                   tuple(float(x) for x in offset), tuple(warns), stats, record=record)
+                res = _run(res, path, stats.get("weather_file") or weather, options)
         return res
 
     if options.jobs > 1:
@@ -228,6 +241,14 @@ def _file_downgrades(zones, zone_ids, simpler, party, name: str) -> list:
         if walls > 0:
             out.append(dg.party_walls_dropped(zones[i].object_id, walls, f"a simpler envelope ({name})"))
     return out
+
+
+def _weather_record(stats: dict) -> dict:
+    """The report's ``weather`` entry of an IDF: the EPW, its station and distance (km)."""
+    if not stats.get("weather_file"):
+        return {}
+    return {"weather": {"file": Path(stats["weather_file"]).name, "station": stats.get("weather_station"),
+                        "distance_km": stats.get("weather_distance_km")}}
 
 
 def _shading_for(bi: int, blist, bboxes, zones, zones_of, party, radius: float) -> list[np.ndarray]:

@@ -221,9 +221,9 @@ def write(buildings: Iterable[Building], path: str | os.PathLike, *, crs: Any = 
     ----------
     buildings : iterable of Building
     path : path
-    crs : CRS of the coordinates (a name pyproj knows through :func:`lod2energy.crs.epsg_code`)
-    frame : lod2energy.geodesy.LocalFrame, optional
-        The local frame of a geographic file.
+    crs : CRS of the coordinates (any CRS pyproj reads, :func:`lod2energy.crs.crs_info`)
+    frame : LocalFrame or ScaledFrame, optional
+        The metric frame of a geographic file or of one in feet.
     records : sequence of BuildingRecord, optional
         The buildings' records (matched by id).
     use, lod, run :

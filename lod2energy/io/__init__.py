@@ -10,7 +10,7 @@ import numpy as np
 
 from lod2energy import crs as crs_
 from lod2energy.errors import InputError
-from lod2energy.geodesy import LocalFrame
+from lod2energy.geodesy import LocalFrame, ScaledFrame
 from lod2energy.io.shape import check_input_file
 from lod2energy.model import Building, CityModel, FeatureError
 
@@ -40,19 +40,22 @@ def read(path: str, **options) -> "tuple[CityModel | None, Iterator[Building | F
     Options (mesh formats only): ``primitive`` ("Solid", "CompositeSurface",
     "MultiSurface"), ``inner_shells`` (list of POLY paths). Any format: ``only``, a container
     of first-level CityObject ids: only those features are given (the CityJSON readers pass
-    over the others before building them; the others build and drop them).
+    over the others before building them; the others build and drop them). ``crs``: the CRS
+    of the coordinates (any form pyproj reads, :func:`lod2energy.crs.spelled`), replacing the
+    one the file names, if any.
     """
     try:  # the input-shape check starts here: a regular file of bounded size
         check_input_file(str(path))
     except InputError as e:
         return None, iter([FeatureError(None, e.code, str(e))])
     only = options.pop("only", None)
+    crs = options.pop("crs", None)
     reader = _lookup(path, _READERS[".json"])[1]  # unknown suffix: sniff JSON
     if only is None:
-        return to_local_frame(*reader(path, **options))
+        return to_local_frame(*with_crs(*reader(path, **options), crs))
     gate = _Only(only)
-    model, feats = reader(path, only=gate, **options) if getattr(reader, "takes_only", False) else \
-        reader(path, **options)
+    model, feats = with_crs(*(reader(path, only=gate, **options) if getattr(reader, "takes_only", False) else
+                              reader(path, **options)), crs)
     if model is not None and crs_.is_geographic(model.crs) and _frame_origin(model) is None:
         gate.every = True  # the local frame is taken at the first building: build them all
     model, feats = to_local_frame(model, feats)
@@ -85,19 +88,35 @@ def _frame_origin(model: CityModel, translate: bool = False) -> "list[float] | N
     return None
 
 
+def with_crs(model: "CityModel | None", features, crs=None):
+    """``model`` with its CRS replaced by ``crs`` (any form pyproj reads; the user's ``--crs``)."""
+    if model is None or crs is None:
+        return model, features
+    md = dict(model.metadata or {})
+    md.pop("crs", None)  # CityJSON 0.x / 1.0 "crs": {"epsg": ...}
+    md["referenceSystem"] = crs_.spelled(crs)
+    return replace(model, metadata=md), features
+
+
 def to_local_frame(model: "CityModel | None", features: "Iterator[Building | FeatureError]"
                    ) -> "tuple[CityModel | None, Iterator[Building | FeatureError]]":
-    """Buildings of a file in a geographic CRS (degrees) moved into a local metric frame.
+    """Buildings in metres: those of a file in a geographic CRS (degrees) moved into a local
+    metric frame, those of a projected CRS in another linear unit (US survey feet, feet)
+    scaled to metres (:class:`lod2energy.geodesy.ScaledFrame`, its factors pyproj's).
 
     The frame (:class:`lod2energy.geodesy.LocalFrame`, east-north-up in metres) is tangent
     at the centre of the file's ``geographicalExtent`` (else at the first building's first
     vertex, else at the ``transform`` translation), and stored as ``model.frame`` so that
     writers move vertices back. Its "up" is the ellipsoid normal at that point: a building
     5 km away stands 0.045 degrees off it (its shape, areas and volume are exact). Files in
-    a projected CRS pass through unchanged.
+    a projected CRS in metres, and files with no CRS pyproj reads, pass through unchanged; a
+    CRS whose unit is not a length gives ``(None, [FeatureError 901])``.
     """
-    if model is None or not crs_.is_geographic(model.crs):
+    info = crs_.crs_info(model.crs) if model is not None else None
+    if info is None:
         return model, features
+    if not info.geographic:
+        return _scaled(model, features, info)
     features = iter(features)
     pending: list = []
     origin = _frame_origin(model)
@@ -124,6 +143,21 @@ def to_local_frame(model: "CityModel | None", features: "Iterator[Building | Fea
 
     def gen():
         for f in itertools.chain(pending, features):
+            if isinstance(f, Building) and len(f.vertices):
+                f = replace(f, vertices=frame.to_local(f.vertices)).with_provenance(file_frame=frame)
+            yield f
+    return replace(model, frame=frame), gen()
+
+
+def _scaled(model: CityModel, features, info):
+    if info.unit_problem:
+        return None, iter([FeatureError(None, 901, f"{model.source}: {info.unit_problem}")])
+    if info.metric:
+        return model, features
+    frame = ScaledFrame(info.to_metre, info.vertical_to_metre, info.unit, info.vertical_unit)
+
+    def gen():
+        for f in features:
             if isinstance(f, Building) and len(f.vertices):
                 f = replace(f, vertices=frame.to_local(f.vertices)).with_provenance(file_frame=frame)
             yield f

@@ -253,6 +253,15 @@ def _feature_or_error(el: ET.Element, ctype: str, n: int) -> Building | FeatureE
         return FeatureError(oid, 901, f"coid={oid}: geometry nested too deeply (or an xlink cycle)", ctype)
 
 
+def _faces(g: dict) -> list[tuple[ET.Element, bool]]:
+    """Every ``(polygon, reversed)`` of a raw explicit geometry (:meth:`_Feature._explicit`)."""
+    if "_faces" in g:
+        return list(g["_faces"])
+    if "_shells" in g:
+        return [f for sh in g["_shells"] for f in sh]
+    return [f for so in g["_solids"] for sh in so for f in sh]
+
+
 def _relief_lod(el: ET.Element) -> str:
     """The ``dem:lod`` of a relief component (0-4; "1" when missing or not a number)."""
     for prop in el:
@@ -313,11 +322,19 @@ class _Feature(GmlGeometry):
         objects: list[tuple[str, str, ET.Element, str | None]] = []  # id, type, element, parent
         self._collect(self.el, self.ctype, self.oid, None, objects)
         cos: dict[str, dict] = {}
-        explicit: dict[str, list[dict]] = {}
+        raw: dict[str, list[dict]] = {}
         for oid, _t, el, _p in objects:  # explicit geometries first: they claim their polygons
-            geoms = [g for g in (self._explicit(oid, prop, lod) for prop, lod in self._geometry_properties(el))
-                     if g is not None]
-            explicit[oid] = [self._finish(oid, gi, g) for gi, g in enumerate(geoms)]
+            raw[oid] = [g for g in (self._explicit(oid, prop, lod) for prop, lod in self._geometry_properties(el))
+                        if g is not None]
+        replaced = []
+        for oid, _t, el, _p in objects:  # an unusable one gives way to the thematic surfaces of its LoD
+            for g in list(raw[oid]):
+                why = self._unusable(oid, el, g)
+                if why:
+                    raw[oid].remove(g)
+                    self.used.difference_update(p for p, _ in _faces(g) if self._area(p) > 0.0)
+                    replaced.append(f"{oid}: {why}")
+        explicit = {oid: [self._finish(oid, gi, g) for gi, g in enumerate(gs)] for oid, gs in raw.items()}
         for oid, otype, el, parent in objects:
             geoms = explicit[oid] + self._thematic(oid, el, len(explicit[oid]))
             co: dict[str, Any] = {"type": otype, "geometry": geoms}
@@ -336,6 +353,8 @@ class _Feature(GmlGeometry):
         prov: dict[str, Any] = {"source_format": "CityGML"}
         if self.left_out:
             prov["interior_left_out"] = frozen_mapping(dict(sorted(self.left_out.items())))
+        if replaced:
+            prov["geometry_replaced"] = tuple(replaced)
         if errors:
             prov["input_errors"] = errors
         return b.with_provenance(**prov)
@@ -397,6 +416,47 @@ class _Feature(GmlGeometry):
             return None  # points, curves, implicit geometry: nothing to validate as a surface
         self.used.update(p for p, _ in faces)
         return out
+
+    def _area(self, poly: ET.Element) -> float:
+        """Area of a polygon's exterior ring in the file's units (0 when it has none or it
+        cannot be read)."""
+        for part in poly:
+            if _local(part.tag) in ("exterior", "outerBoundaryIs"):
+                for ring in part:
+                    try:
+                        p = np.asarray(self.points(ring, ""), dtype=np.float64)
+                    except InputError:
+                        return 0.0
+                    if len(p) < 3 or not np.all(np.isfinite(p)):
+                        return 0.0
+                    c = p - p[0]  # Newell's normal about the first point: half its length
+                    return float(np.linalg.norm(np.cross(c[:-1], c[1:]).sum(axis=0))) / 2
+        return 0.0
+
+    def _unusable(self, oid: str, el: ET.Element, g: dict) -> str | None:
+        """Why the explicit geometry ``g`` of object ``oid`` is unusable while the thematic
+        surfaces of its LoD hold a shell (at least 4 polygons with an area no geometry uses):
+        a solid with fewer than 4 polygons with an area, a surface set with none; else None."""
+        spare = [p for lod, faces in self._theme_faces_of(oid, el) if lod == g["lod"]
+                 for p, _ in faces if p not in self.used]
+        areas = [a for a in (self._area(p) for p in spare) if a > 0.0]
+        if len(areas) < 4:
+            return None
+        tiny = 1e-9 * sum(areas)
+        real = sum(self._area(p) > tiny for p, _ in _faces(g))
+        need = 4 if g["type"] in ("Solid", "MultiSolid", "CompositeSolid") else 1
+        if real >= need:
+            return None
+        return (f"lod{g['lod']} {g['type']} unusable ({len(_faces(g))} polygon(s), {real} with an area): "
+                f"the {len(areas)} polygons of its thematic LoD{g['lod']} surfaces are used instead")
+
+    def _theme_faces_of(self, oid: str, el: ET.Element):
+        for prop in el:
+            if _local(prop.tag) not in BOUNDARY_PROPERTIES:
+                continue
+            for ts in prop:
+                if _local(ts.tag) in THEMATIC and _local(ts.tag) not in INTERIOR_SURFACES:
+                    yield from self._theme_faces(ts, f"coid={oid}|{_local(ts.tag)}")
 
     def _thematic(self, oid: str, el: ET.Element, first_gi: int) -> list[dict]:
         """One MultiSurface per LoD of the thematic-surface polygons no geometry used."""

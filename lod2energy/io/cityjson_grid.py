@@ -15,11 +15,11 @@ from lod2energy.model import Building
 
 
 def file_coordinates(vertices: np.ndarray, frame=None) -> np.ndarray:
-    """Vertices in the file's CRS: moved back from the local frame of a geographic input
-    (:func:`lod2energy.io.to_local_frame`), unchanged otherwise."""
+    """Vertices in the file's CRS: moved back from the metric frame of a geographic input or of
+    one in feet (:func:`lod2energy.io.to_local_frame`), unchanged otherwise."""
     if frame is None or not len(vertices):
         return vertices
-    return frame.to_geodetic(vertices)
+    return frame.to_file(vertices)
 
 
 def quantise(vertices: np.ndarray, transform: Mapping, frame=None) -> list:
@@ -73,6 +73,6 @@ def building_grid(b: Building) -> tuple[Mapping, object]:
     if isinstance(t, Mapping) and "scale" in t and "translate" in t:
         return t, frame
     t = default_transform(file_coordinates(np.asarray(b.vertices, dtype=np.float64), frame))
-    if frame is not None:
+    if getattr(frame, "geographic", False):
         t["scale"] = list(GEOGRAPHIC_SCALE)
     return t, frame

@@ -135,7 +135,7 @@ def transform_for(model: CityModel, buildings: Iterable[Building]) -> dict:
             m = file_coordinates(np.asarray(b.vertices), model.frame).min(axis=0)
             lo = m if lo is None else np.minimum(lo, m)
     t = default_transform(lo.reshape(1, 3) if lo is not None else np.zeros((0, 3)))
-    if model.frame is not None:  # degrees: ~0.1 mm horizontally, 1 mm in height
+    if getattr(model.frame, "geographic", False):  # degrees: ~0.1 mm horizontally, 1 mm in height
         t["scale"] = list(GEOGRAPHIC_SCALE)
     return t
 

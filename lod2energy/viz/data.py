@@ -16,6 +16,7 @@ from typing import Iterable, Iterator
 
 import numpy as np
 
+from lod2energy.site import MAX_WEATHER_KM
 from lod2energy.validate.codes import name as code_name
 from lod2energy.energy.downgrades import KINDS as DOWNGRADE_KINDS
 
@@ -187,7 +188,8 @@ def iter_rows(report: dict) -> Iterator[Row]:
                   iou=_num(rep.get("iou")), displacement=_num(rep.get("mean_displacement")),
                   compliant=en.get("compliant"), conditions={k: en[k] for k in CONDITIONS if k in en},
                   typology=th.get("typology") or None, heating_kwh_m2=heating_per_m2(b),
-                  exports={k: {"ok": bool(v.get("ok")), "problems": list(v.get("problems") or [])}
+                  exports={k: {"ok": bool(v.get("ok")), "problems": list(v.get("problems") or []),
+                               **({"weather": v["weather"]} if v.get("weather") else {})}
                            for k, v in (b.get("exports") or {}).items()},
                   message=b.get("message", ""),
                   downgrades=tuple(str(d.get("kind")) for d in b.get("energy_downgrades") or ()))
@@ -260,6 +262,7 @@ class Tally:
         self.exports: dict[str, dict] = {}
         self.downgraded = 0
         self.downgrades: Counter = Counter()  # kind -> buildings
+        self.weather: dict[str, list] = {}  # station -> [buildings, farthest km]
         for r in rs:
             self.add(r)
 
@@ -296,6 +299,11 @@ class Tally:
         self.downgraded += bool(r.downgrades)
         self.downgrades.update(set(r.downgrades))
         for fmt, e in r.exports.items():
+            w = e.get("weather")
+            if w and w.get("distance_km") is not None:
+                st = self.weather.setdefault(f"{w.get('station')} ({w.get('file')})", [0, 0.0])
+                st[0] += 1
+                st[1] = max(st[1], float(w["distance_km"]))
             d = self.exports.setdefault(fmt, {"ok": 0, "failed": 0, "problems": []})
             d["ok" if e.get("ok") else "failed"] += 1
             if not e.get("ok") and len(d["problems"]) < 5:
@@ -327,6 +335,10 @@ class Tally:
                 "energy_downgraded": self.downgraded,
                 "energy_downgrades": {k: self.downgrades[k] for k in DOWNGRADE_KINDS if self.downgrades[k]}}
 
+    def weather_table(self) -> dict:
+        """Weather station -> ``[buildings, farthest distance (km), farther than 50 km]``."""
+        return {k: [v[0], round(v[1], 1), v[1] > MAX_WEATHER_KM] for k, v in sorted(self.weather.items())}
+
     def exports_table(self) -> dict:
         return {k: dict(d, problems=list(d["problems"])) for k, d in self.exports.items()}
 
@@ -336,7 +348,8 @@ class Tally:
         return {"summary": self.summary(), "stages": self.stage_distribution(), "iou": self.iou.result(),
                 "displacement": self.displacement.result(), "validity_by_code": v, "code_names": code_names(v),
                 "compliance": self.compliance(), "heating_by_typology": self.heating_by_typology(),
-                "exports": self.exports_table()}
+                "exports": self.exports_table(),
+                **({"weather": self.weather_table()} if self.weather else {})}
 
 
 def code_names(codes) -> dict:
