@@ -18,7 +18,6 @@ temperatures from the weather file, and the weather station's distance.
 """
 from __future__ import annotations
 
-import functools
 import math
 from dataclasses import dataclass
 from pathlib import Path
@@ -26,6 +25,7 @@ from typing import Any
 
 import numpy as np
 
+from lod2energy import cache
 from lod2energy.crs import epsg_code, epsg_codes, is_geographic, latitude_first
 from lod2energy.errors import Lod2EnergyError
 from lod2energy.thermal import country_from_crs
@@ -112,7 +112,7 @@ def _inside(t, p: np.ndarray, area) -> np.ndarray:
     return out[0]
 
 
-@functools.lru_cache(maxsize=32)
+@cache.memoize("site.transformers", 32)
 def _transformer(code: int):
     """The pyproj ``Transformer`` EPSG:``code`` -> EPSG:4326 (x/y order) and the source CRS's area
     of use, built once per process and code (building one costs about 0.1 s CPU).

@@ -141,3 +141,107 @@ def test_core_geometry_imports_only_itself():
 def test_module_size(rel):
     n = len((ROOT / rel).read_text(encoding="utf-8").splitlines())
     assert n <= EXEMPT_SIZE.get(rel, MAX_LINES), f"{rel}: {n} lines"
+
+
+# --- one place for caches (lod2energy/cache.py) ----------------------------------------------
+
+#: Module-level containers that change after import and are no caches, each with its reason.
+MODULE_STATE = {
+    "lod2energy.io._READERS": "the reader registry: each reader module registers itself on import",
+    "exporters.registry._WRITERS": "the writer registry: each format package registers itself on import",
+    "lod2energy.executor._CHILDREN": "run state: the budget process of each worker thread, to stop it",
+}
+_MUTABLE_CALLS = {"dict", "list", "set", "OrderedDict", "defaultdict", "deque", "Counter",
+                  "WeakKeyDictionary", "WeakValueDictionary", "WeakSet"}
+_MUTATORS = {"append", "add", "update", "setdefault", "pop", "popitem", "clear", "extend", "insert",
+             "remove", "discard", "move_to_end", "appendleft", "__setitem__"}
+
+
+def _is_mutable(value: ast.expr | None) -> bool:
+    if isinstance(value, (ast.Dict, ast.List, ast.Set, ast.DictComp, ast.ListComp, ast.SetComp)):
+        return True
+    if isinstance(value, ast.Call):
+        f = value.func
+        return (f.id if isinstance(f, ast.Name) else f.attr if isinstance(f, ast.Attribute) else "") in _MUTABLE_CALLS
+    return False
+
+
+def _containers(tree: ast.Module) -> set[str]:
+    """Names bound at module level to a mutable container."""
+    out = set()
+    for node in tree.body:
+        if isinstance(node, ast.Assign) and _is_mutable(node.value):
+            out |= {t.id for t in node.targets if isinstance(t, ast.Name)}
+        elif isinstance(node, ast.AnnAssign) and isinstance(node.target, ast.Name) and _is_mutable(node.value):
+            out.add(node.target.id)
+    return out
+
+
+def _changed_in_functions(tree: ast.Module, names: set[str]) -> set[str]:
+    """Those of ``names`` that a function changes (item set or deleted, a mutating method called),
+    and every name a function rebinds through ``global``: state that outlives the call."""
+    out = set()
+    for fn in ast.walk(tree):
+        if not isinstance(fn, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda)):
+            continue
+        for node in ast.walk(fn):
+            if isinstance(node, ast.Global):
+                out |= set(node.names)
+            elif isinstance(node, ast.Subscript) and isinstance(node.ctx, (ast.Store, ast.Del)) \
+                    and isinstance(node.value, ast.Name) and node.value.id in names:
+                out.add(node.value.id)
+            elif isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) \
+                    and node.func.attr in _MUTATORS and isinstance(node.func.value, ast.Name) \
+                    and node.func.value.id in names:
+                out.add(node.func.value.id)
+    return out
+
+
+def _functools_caches(tree: ast.Module) -> list[int]:
+    """Lines that use ``functools.lru_cache`` or ``functools.cache``."""
+    lines = []
+    for node in ast.walk(tree):
+        if isinstance(node, ast.ImportFrom) and node.module == "functools" \
+                and any(a.name in ("lru_cache", "cache") for a in node.names):
+            lines.append(node.lineno)
+        elif isinstance(node, ast.Attribute) and node.attr in ("lru_cache", "cache") \
+                and isinstance(node.value, ast.Name) and node.value.id == "functools":
+            lines.append(node.lineno)
+    return lines
+
+
+def module_caches() -> dict[str, list[str]]:
+    """Module -> what it keeps outside :mod:`lod2energy.cache` (allowed state left out)."""
+    found = {}
+    for mod, path in _modules().items():
+        if mod == "lod2energy.cache":
+            continue
+        tree = ast.parse(path.read_text(encoding="utf-8"))
+        bad = [f"functools cache at line {n}" for n in _functools_caches(tree)]
+        bad += sorted(name for name in _changed_in_functions(tree, _containers(tree))
+                      if f"{mod}.{name}" not in MODULE_STATE)
+        if bad:
+            found[mod] = bad
+    return found
+
+
+def test_caches_live_in_the_one_caching_module():
+    found = module_caches()
+    assert found == {}, found
+
+
+def test_the_cache_rule_sees_caches(tmp_path):
+    tree = ast.parse("import functools\nfrom functools import lru_cache\n_SEEN = {}\n_ALL: list = []\n"
+                     "TABLE = {k: k for k in 'ab'}\n_N = 0\n"
+                     "@functools.cache\ndef f(x):\n    _SEEN[x] = 1\n    return TABLE[x]\n"
+                     "def g():\n    global _N\n    _N += 1\n    _ALL.append(1)\n")
+    assert len(_functools_caches(tree)) == 2
+    assert _changed_in_functions(tree, _containers(tree)) == {"_SEEN", "_ALL", "_N"}
+
+
+def test_allowed_module_state_exists():
+    # a stale reason hides nothing: every allowed name is still a module-level container
+    mods = _modules()
+    for qual in MODULE_STATE:
+        mod, _, name = qual.rpartition(".")
+        assert name in _containers(ast.parse(mods[mod].read_text(encoding="utf-8"))), qual

@@ -15,7 +15,6 @@ import os
 import re
 from collections.abc import Mapping
 from dataclasses import dataclass
-from functools import lru_cache
 from importlib import resources
 from typing import Any, Callable
 
@@ -24,6 +23,7 @@ import jsonschema
 from referencing import Registry, Resource
 from referencing.jsonschema import DRAFT7
 
+from lod2energy import cache
 from lod2energy.errors import Lod2EnergyError
 
 EXTENSION_NAME = "Energy"
@@ -38,7 +38,7 @@ def _data():
     return resources.files("lod2energy") / "data"
 
 
-@lru_cache(maxsize=None)
+@cache.memoize("cityjson.extension-schemas", 8)
 def extension_schema(version: str) -> dict:
     """The shipped Energy extension for CityJSON ``version``."""
     return json.loads((_data() / "extensions" / _VDIR[version] / EXTENSION_FILE).read_text(encoding="utf-8"))
@@ -58,7 +58,7 @@ def _wrap(branch: Mapping, base: str, i: int) -> dict:
             "$id": base.rsplit("/", 1)[0] + f"/lod2energy-cityobject-{i}.json", "allOf": [dict(branch)]}
 
 
-@lru_cache(maxsize=None)
+@cache.memoize("cityjson.validators", 8)
 def _validators(version: str) -> _SchemaSet:
     """Validators for the official schema of ``version`` (bundled copy)."""
     d = _data() / "schemas" / "cityjson" / _VDIR[version]
@@ -181,7 +181,7 @@ def _merged_enum_branches(branches: Any) -> list | None:
     return [{"enum": words}] + others
 
 
-@lru_cache(maxsize=None)
+@cache.memoize("cityjson.compiled", 16)
 def _compiled_one(version: str, feature: bool) -> Any:
     """The compiled (``fastjsonschema``) validator of the document (``feature=False``) or of a
     CityJSONFeature for ``version``, built once per process and only when first asked for (a
@@ -213,19 +213,20 @@ def _compiled_one(version: str, feature: bool) -> Any:
 #: schema on some 25 CityObjects: smaller files are left to the interpreted validators unless
 #: the compiled ones are already built.
 COMPILE_MIN_OBJECTS = 25
-_COMPILED_VERSIONS: set[str] = set()
+#: The table of the versions whose compiled validators were asked for in this process.
+_COMPILED_VERSIONS = "cityjson.compiled-versions"
 
 
 def _worth_compiling(version: str, n_objects: int) -> bool:
     """Use the compiled validator: a large file, or one already built for ``version``."""
-    return n_objects >= COMPILE_MIN_OBJECTS or version in _COMPILED_VERSIONS
+    return n_objects >= COMPILE_MIN_OBJECTS or cache.recall(_COMPILED_VERSIONS, version, False)
 
 
 def _schema_valid_fast(version: str, doc: Any, feature: bool = False) -> bool:
     """True when the compiled validator accepts ``doc``. Only a shortcut for valid files:
     False (or no compiled validator) sends the document to the interpreted validators of
     :func:`_schema_errors`, which give the messages and the final verdict."""
-    _COMPILED_VERSIONS.add(version)
+    cache.keep(_COMPILED_VERSIONS, version, True, 8)
     v = _compiled_one(version, bool(feature))
     if v is None:
         return False
