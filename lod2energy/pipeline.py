@@ -63,13 +63,13 @@ _geometry_key = geometry_key
 def final_check(b: Building, defects, lod: str | None, tol: Tolerances = DEFAULT) -> str | None:
     """Why ``b`` may not be called compliant nor exported (None when it may).
 
-    The acceptance check every writer applies (:func:`lod2energy.repair.accept.export_problem`:
+    The acceptance check every writer applies (:func:`lod2energy.validate.closed.export_problem`:
     thermal data present, envelope closed, outward, labelled, with U-values, val3dity-valid at
     the energy LoD at the user's tolerances), judged on the output file's grid: the building
     as the CityJSON writer will write it. ``defects`` (of the final geometry at ``tol``) are
     reused when the grid leaves the geometry as it is.
     """
-    from lod2energy.repair.accept import export_problem
+    from lod2energy.validate.closed import export_problem
 
     return export_problem(b, lod, tol, defects=defects)
 

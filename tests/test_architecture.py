@@ -116,16 +116,11 @@ def test_no_import_circle():
     assert found == [], f"import circles: {found}"
 
 
-# the CityJSON writer's final check on the file's grid (repair.accept.export_problem) and its
-# self-check's envelope checks: to go with accept when it leaves the repair package
-REPAIR_IMPORTS_LEFT = {"exporters.cityjson.check", "exporters.cityjson.writer"}
-
-
 def test_no_writer_imports_the_repair_package():
     # what a writer is given is made by a stage before it (lod2energy.energy), not by the writer
     g = import_graph()
     found = {m for m, deps in g.items() if m.startswith("exporters") and any(d.startswith("lod2energy.repair") for d in deps)}
-    assert found <= REPAIR_IMPORTS_LEFT, sorted(found - REPAIR_IMPORTS_LEFT)
+    assert found == set(), sorted(found)
 
 
 def test_core_geometry_imports_only_itself():

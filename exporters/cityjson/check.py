@@ -45,7 +45,7 @@ from lod2energy.io import cityjson as cjio
 from lod2energy.io import shape, to_local_frame
 from lod2energy.io.json_stream import Scanner, StreamError
 from lod2energy.model import Building, FeatureError
-from lod2energy.repair.accept import TOLERATED_CODES, envelope_problems
+from lod2energy.validate.closed import TOLERATED_CODES, envelope_problems
 from lod2energy.validate.checks import validate_building
 from lod2energy.validate.codes import name
 
