@@ -1,4 +1,7 @@
-"""Command line: ``lod2energy validate | repair | export``.
+"""Command line: ``lod2energy validate | repair | export | view``.
+
+The parser is built from this module's head alone (argparse, :mod:`lod2energy.config`): each
+command imports its modules when it runs, so ``--help`` and usage errors load nothing heavy.
 
 Exit codes (all commands):
   0  everything valid / written and self-checked
@@ -15,9 +18,12 @@ import time
 from collections import Counter
 
 from lod2energy import __version__
+from lod2energy.cfd import add_cli_arguments, options_from_args
 from lod2energy.config import USE_TYPES, Tolerances
 from lod2energy.errors import Lod2EnergyError
+from lod2energy.interrupt import Interrupted, Signals
 from lod2energy.safe_write import UnsafeWriteError
+from lod2energy.threads import one_blas_thread
 
 EXIT_OK, EXIT_INVALID, EXIT_UNUSABLE = 0, 1, 2
 
@@ -176,7 +182,6 @@ def add_export_parser(sub) -> argparse.ArgumentParser:
                    help="the space under a pitched roof: heated/cooled with loads, or not (default)")
     g.add_argument("--use", choices=USE_TYPES, default=None,
                    help="use type for every building (default: from function/usage/gebruiksdoel/building attributes)")
-    from lod2energy.cfd import add_cli_arguments
     add_cli_arguments(e.add_argument_group("CFD case (OpenFOAM v1912)"))
     add_run_options(e)
     _add_tolerances(e)
@@ -199,17 +204,6 @@ def _err(msg: str) -> None:
     print(f"lod2energy: error: {msg}", file=sys.stderr)
 
 
-def _progress(quiet: bool, desc: str):
-    if quiet:
-        return None, lambda: None
-    try:
-        from tqdm import tqdm
-    except ImportError:  # pragma: no cover
-        return None, lambda: None
-    bar = tqdm(desc=desc, unit=" features", file=sys.stderr, disable=None, leave=False)
-    return (lambda _entry: bar.update(1)), bar.close
-
-
 def _print_validate_table(rows: list[dict]) -> None:
     hdr = f"{'file':<44} {'features':>8} {'valid':>6} {'invalid':>7} {'E-ready':>7}  errors"
     print(hdr)
@@ -219,31 +213,30 @@ def _print_validate_table(rows: list[dict]) -> None:
 
 
 def cmd_validate(a) -> int:
+    from lod2energy import reports as run_reports, safe_write
     from lod2energy.io import read
     from lod2energy.validate.report import validate_features
+    from lod2energy.viz.report import write_report_for_files
 
     tol = _tolerances(a)
     if a.report:
-        from lod2energy.safe_write import check_target
-        check_target(a.report, None, a.files)  # never over an input (exit 2)
+        safe_write.check_target(a.report, None, a.files)  # never over an input (exit 2)
     if getattr(a, "html", None):
-        from lod2energy.safe_write import check_target
-        check_target(a.html, None, a.files)
+        safe_write.check_target(a.html, None, a.files)
     reports, rows = [], []
     worst = EXIT_OK
     for path in a.files:
         model, feats = read(path, primitive=a.primitive, inner_shells=a.inner_shell)
         geographic = getattr(model, "frame", None) is not None
-        if geographic:  # lod2energy.reports (records, options, spool) loads only for a geographic CRS
-            from lod2energy.reports import frame_entry, note_frame
-            note_frame(path, model)
-        tick, close = _progress(a.quiet, os.path.basename(path))
+        if geographic:
+            run_reports.note_frame(path, model)
+        tick, close = run_reports.progress(a.quiet, os.path.basename(path), unit=" features")
         try:
-            rep = validate_features(model, feats, path, tol, a.lod, tick)
+            rep = validate_features(model, feats, path, tol, a.lod, None if a.quiet else (lambda _entry: tick()))
         finally:
             close()
         if geographic:
-            rep.update(frame_entry(model))
+            rep.update(run_reports.frame_entry(model))
         reports.append(rep)
         for e in rep["dataset_errors"]:
             _err(e["info"] if path in e["info"] else f"{path}: {e['info']}")
@@ -261,15 +254,12 @@ def cmd_validate(a) -> int:
         _print_validate_table(rows)
     if a.report:
         out = reports[0] if len(reports) == 1 else {"type": "lod2energy_reports", "reports": reports}
-        from lod2energy.safe_write import write_json
-        write_json(a.report, out, inputs=a.files)
+        safe_write.write_json(a.report, out, inputs=a.files)
     if getattr(a, "html", None):
-        from lod2energy.reports import json_ready
         try:
-            from lod2energy.viz.report import write_report_for_files
             out = reports[0] if len(reports) == 1 else {"type": "lod2energy_reports", "reports": reports}
             # the files read again for the page: the panels' buildings and every footprint only
-            write_report_for_files(json_ready(out), a.html, a.files, tol=tol, input_files=a.files,
+            write_report_for_files(run_reports.json_ready(out), a.html, a.files, tol=tol, input_files=a.files,
                                    read_options={"primitive": a.primitive, "inner_shells": a.inner_shell})
         except Exception as e:  # noqa: BLE001 - the page is a view of the report
             _err(f"{a.html} not written: {type(e).__name__}: {e}")
@@ -295,7 +285,6 @@ def export_options(a) -> "ExportOptions":
         use=getattr(a, "use", None)).items() if v is not None})
     cfd = None
     if getattr(a, "cfd", False):
-        from lod2energy.cfd import options_from_args
         cfd = options_from_args(a)
     return ExportOptions(formats, prepare_options(a, _tolerances(a)), idf,
                          StlOptions(mode=a.stl_mode, ascii=a.stl_ascii, lod=a.lod),
@@ -342,8 +331,6 @@ def main(argv: list[str] | None = None) -> int:
         parser.print_help(sys.stderr)
         return EXIT_UNUSABLE
     t0 = time.perf_counter()
-    from lod2energy.threads import one_blas_thread
-    from lod2energy.interrupt import Interrupted, Signals
     one_blas_thread()  # parallel across buildings, not inside one
     try:
         with Signals():  # SIGTERM ends every command as ^C does: one line, exit 143

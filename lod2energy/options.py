@@ -7,18 +7,22 @@ from __future__ import annotations
 
 import os
 from dataclasses import asdict, dataclass, field, replace
+from importlib.resources import files
 from typing import Any
 
 from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.errors import ParameterError
+from lod2energy.exporters.energyplus.options import IdfOptions
+from lod2energy.exporters.registry import CityJsonOptions
+from lod2energy.exporters.stl import StlOptions
 from lod2energy.model import CityModel
+from lod2energy.thermal import ThermalOptions, country_from_crs
 
 #: Writers in the order they run and appear in the options.
 FORMATS = ("cityjson", "idf", "stl", "cfd", "geojson")
 
 
 def _thermal_default():
-    from lod2energy.thermal import ThermalOptions
     return ThermalOptions()
 
 
@@ -48,17 +52,14 @@ class PrepareOptions:
 
 
 def _idf_default():
-    from lod2energy.exporters.energyplus.options import IdfOptions
     return IdfOptions()
 
 
 def _stl_default():
-    from lod2energy.exporters.stl import StlOptions
     return StlOptions()
 
 
 def _cityjson_default():
-    from lod2energy.exporters.registry import CityJsonOptions
     return CityJsonOptions()
 
 
@@ -168,7 +169,6 @@ def ladder_budget(timeout: float | None) -> float | None:
 
 def prepare_options(a, tol: Tolerances = DEFAULT, crs: str | None = None) -> PrepareOptions:
     """:class:`PrepareOptions` from a namespace of CLI options (absent ones: defaults)."""
-    from lod2energy.thermal import ThermalOptions
     kw = {"crs": crs, "lod": getattr(a, "lod", None)}
     for name in ("country", "u_table", "u_wall", "u_roof", "u_ground", "u_window", "wwr", "use"):
         v = getattr(a, name, None)
@@ -183,7 +183,6 @@ def default_weather(country: str | None) -> str | None:
     """The bundled EPW for ``country`` (only NL ships one), else None."""
     if (country or "").upper() != "NL":
         return None
-    from importlib.resources import files
     p = files("lod2energy") / "data" / "weather" / "NLD_OV_Heino.062780_TMYx.2007-2021.epw"
     return str(p) if p.is_file() else None
 
@@ -196,7 +195,6 @@ def resolve(options: ExportOptions, model: CityModel) -> ExportOptions:
     ParameterError
         ``--run`` without a weather file where none ships, or a missing weather file.
     """
-    from lod2energy.thermal import country_from_crs
     prep = options.prepare
     if getattr(prep.thermal, "crs", None) is None and model is not None and model.crs:
         prep = replace(prep, thermal=replace(prep.thermal, crs=model.crs))

@@ -18,27 +18,50 @@ assembled from it, in input order, so that every executor writes the same bytes.
 """
 from __future__ import annotations
 
+import importlib
 import os
 import sys
+from array import array
 from dataclasses import dataclass, replace
+from functools import partial
 from typing import Iterator, Sequence
 
+import numpy as np
+
+from lod2energy.beside import Beside
 from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.dataset import BESIDE, DatasetResult, beside_ok, dataset_apply, dataset_pass, write_beside
 from lod2energy.errors import ParameterError
+from lod2energy.executor import Failure, Overrun, ProcessPoolExecutor, make_executor
+from lod2energy.exporters.energyplus.run import idd
+from lod2energy.exporters.registry import writers
 from lod2energy.interrupt import EXIT_INVALID, EXIT_OK, EXIT_SIGINT, EXIT_UNUSABLE, Interrupted, Signals
+from lod2energy.io import read
+from lod2energy.io.interior import without_interior
+from lod2energy.io.openings import cut_openings
+from lod2energy.journal import JOURNAL_NAME, Journal, header, records_of
 from lod2energy.model import Building, CityModel, FeatureError, frozen_mapping
 from lod2energy.neighbours import neighbours_within, spatial_order
 from lod2energy.options import ExportOptions, PrepareOptions, RunOptions, ladder_budget, prepare_options, resolve
 from lod2energy.records import (
     _untimed, BuildingRecord, ComplianceRecord, ExportRecord, RecordStore, RepairRecord, ThermalRecord,
 )
+from lod2energy.repair import repair_info
+from lod2energy.repair.parts import clip_overlapping_parts, keep_input_parts
+from lod2energy.repair.pipeline import repair_building
 from lod2energy.reports import (
     CsvRows, err, note_frame, progress, refuse_overwriting_inputs, write_html_report, write_reports_from_journal,
 )
+from lod2energy.safe_write import sweep_stale
+from lod2energy.semantics import label_building
 from lod2energy.spool import Job, load_spooled, reusable, spool_building
+from lod2energy.thermal import assign_u_values
 from lod2energy.validate import checks as _checks
+from lod2energy.validate.closed import export_problem
+from lod2energy.validate.compliance import energy_compliance
 from lod2energy.validate.memo import carry, geometry_key, recall, verdict_key
+from lod2energy.viz.footprints import FootprintSpill, plan_footprint
+from lod2energy.viz.report import warm_page
 
 
 # ============================================================================ one building
@@ -52,7 +75,6 @@ def repair_one(b: Building, tol: Tolerances, timeout: float = 30.0, merge_parts:
     """Repair a building by the ladder (identity for valid input and non-buildings)."""
     if not b.is_building:
         return b
-    from lod2energy.repair.pipeline import repair_building
     return repair_building(b, tol=tol, timeout=timeout, merge_parts=merge_parts, lod=lod)
 
 
@@ -69,8 +91,6 @@ def final_check(b: Building, defects, lod: str | None, tol: Tolerances = DEFAULT
     as the CityJSON writer will write it. ``defects`` (of the final geometry at ``tol``) are
     reused when the grid leaves the geometry as it is.
     """
-    from lod2energy.validate.closed import export_problem
-
     return export_problem(b, lod, tol, defects=defects)
 
 
@@ -86,13 +106,6 @@ def prepare_building(b: Building, options: PrepareOptions = PrepareOptions(), se
     (Building, BuildingRecord)
         The labelled building with ``provenance["energy"]`` and its record.
     """
-    from lod2energy.io.interior import without_interior
-    from lod2energy.io.openings import cut_openings
-    from lod2energy.repair import repair_info
-    from lod2energy.semantics import label_building
-    from lod2energy.thermal import assign_u_values
-    from lod2energy.validate.compliance import energy_compliance
-
     tol, lod = options.tol, options.lod
     b = without_interior(b)  # LoD3/4 interior detail is not envelope (counted in the repair record)
     b = cut_openings(b)  # LoD3 openings drawn over their wall: the wall gets their hole (counted too)
@@ -109,7 +122,6 @@ def prepare_building(b: Building, options: PrepareOptions = PrepareOptions(), se
         extra["openings_cut"] = dict(b.provenance["openings_cut"])
     unclipped = rb
     if not options.merge_parts and rb.is_building:  # no volume counted twice (issue 19 item 1)
-        from lod2energy.repair.parts import clip_overlapping_parts
         # the validator's verdict of this geometry (the input's, or the repair's of its result):
         # with no defect but 601 its overlap check ran and found these
         verdict = before if rb is b else recall(verdict_key(rb, tol))
@@ -124,7 +136,6 @@ def prepare_building(b: Building, options: PrepareOptions = PrepareOptions(), se
         thermal_opts = replace(thermal_opts, lod=lod)
     tb = assign_u_values(lb, thermal_opts)
     if rb is not unclipped:  # the union writers (STL) keep the input parts: same union, no new seams
-        from lod2energy.repair.parts import keep_input_parts
         tb = keep_input_parts(tb, assign_u_values(label_building(unclipped, lod=lod, source=b), thermal_opts))
     after = before if _geometry_key(tb) == _geometry_key(b) else _checks.validate_building(tb, tol)
     block = dict(energy_compliance(tb, after, lod=lod, tol=tol, assess_labels=True, assess_u_values=True))
@@ -146,7 +157,6 @@ def prepare_building(b: Building, options: PrepareOptions = PrepareOptions(), se
     tb = carry(tb, [(b, before), (tb, after)], tol)
     bbox = None
     if len(tb.vertices):
-        import numpy as np
         v = np.asarray(tb.vertices, dtype=float)
         fin = v[np.isfinite(v).all(axis=1)]
         if len(fin):
@@ -179,7 +189,6 @@ def process_building(b: Building, options: ExportOptions, outdir: str, seq: int 
     """The whole job of one building: :func:`prepare_building`, then the chosen writers that
     need no other building (their self-checks included). Pure but for the files it writes
     into ``outdir``; picklable (a module-level function of picklable arguments)."""
-    from lod2energy.exporters.registry import writers
     pb, rec = prepare_building(b, options.prepare, seq)
     if not rec.energy.geometry_ready:
         return pb, rec
@@ -228,14 +237,12 @@ def first_pass(task: tuple) -> Pass1:
 
 def plan_of(b: Building) -> list:
     """The plan footprint of ``b`` for report.html (:func:`lod2energy.viz.footprints.plan_footprint`)."""
-    from lod2energy.viz.footprints import plan_footprint
     return plan_footprint(b)
 
 
 def context_pass(task: tuple) -> list[ExportRecord]:
     """Worker side of the neighbour pass: ``(seq, neighbour seqs, job)`` -> export records
     of the writers with "context" scope for building ``seq``."""
-    from lod2energy.exporters.registry import writers
     seq, near, job = task
     b = load_spooled(job.spool, seq)
     context = [load_spooled(job.spool, s) for s in near]
@@ -288,11 +295,9 @@ def warm(options: ExportOptions) -> None:
     IDF's self-check), before a process pool forks its workers from this process: they then
     share it instead of each loading its own (about 1.3 CPU s of imports and 1.1 s of IDD parse
     a worker). Modules that start threads (pymeshlab) are left to the workers."""
-    import importlib
     for m in _JOB_MODULES + tuple(x for f in options.formats for x in _WRITER_MODULES.get(f, ())):
         importlib.import_module(m)
     if "idf" in options.formats:
-        from lod2energy.exporters.energyplus.run import idd
         idd()
 
 
@@ -318,12 +323,6 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
         Exit code 0 (all exported and self-checked), 1 (some building not), 2 (unusable
         input), 130 / 143 (interrupted by SIGINT / SIGTERM; the report has what was done).
     """
-    from lod2energy.beside import Beside
-    from lod2energy.executor import Failure, Overrun, ProcessPoolExecutor, make_executor
-    from lod2energy.exporters.registry import writers
-    from lod2energy.io import read
-    from lod2energy.journal import JOURNAL_NAME, Journal, header
-
     inputs = (input_path,)
     refuse_overwriting_inputs([os.path.join(outdir, n) for n in ("report.json", "report.csv", "report.jsonl")],
                               inputs)
@@ -341,7 +340,6 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
     options = resolve(options, model)
     os.makedirs(outdir, exist_ok=True)
     out = os.path.abspath(outdir)
-    from lod2energy.safe_write import sweep_stale
     sweep_stale(out)  # temporaries of a run that was killed mid-write
     spool = os.path.join(out, ".lod2energy", "spool")
     os.makedirs(spool, exist_ok=True)
@@ -372,7 +370,6 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
     timeout = options.job_timeout
     plans = None  # the plan footprints of every object as read, in input order, for report.html
     if options.html:
-        from lod2energy.viz.footprints import FootprintSpill
         plans = FootprintSpill(out)
     resumed_plans: dict[int, tuple[str, list]] = {}  # of resumed objects, drawn here (no job reads them)
     try:
@@ -455,7 +452,6 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
                 # ---- pass 2: writers that need the neighbours, one building at a time
                 ctx_writers = [w for w in chosen if scope[w.name] == "context"]
                 if ctx_writers:
-                    from array import array
                     ready, ready_boxes = array("q"), array("d")  # 56 bytes a building, not a tuple of floats
                     for s, r in records.in_order():
                         if r.outcome == "done" and r.energy.geometry_ready and r.bbox is not None:
@@ -482,8 +478,6 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
                     # a worker left idle at the end loads what report.html's pictures need
                     tail = None
                     if page_pool is not None:
-                        from functools import partial
-                        from lod2energy.viz.report import warm_page
                         tail = partial(warm_page, after=beside.proc.pid if beside is not None else None)
                     for task, res in ex.map(_context_or_record, ctx_tasks(), timeout, tail=tail):
                         seq = task[1] if task[0] == "record" else task[0]
@@ -534,7 +528,6 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
     csv_rows.close()
     journal.sync()
     try:
-        from lod2energy.journal import records_of
         done = records_of(journal.path, journal.run_start)  # what the journal says was done: the report
         report = write_reports_from_journal(out, input_path, model, str(journal.path), journal.run_start,
                                             dataset_errors, interrupted, inputs, done)
@@ -571,7 +564,6 @@ def _beside_results(beside, writers) -> dict:
     (empty without one); a process that failed as a whole is a failed result for each writer."""
     if beside is None:
         return {}
-    from lod2energy.executor import Failure
     res = beside.result()
     if isinstance(res, Failure):  # every writer of the process, as dataset_write reports a failed writer
         return {w.name: DatasetResult(w.name, error=f"{w.name.upper()} export failed: {res.message}") for w in writers}

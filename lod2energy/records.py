@@ -21,6 +21,8 @@ from collections.abc import Mapping as _Mapping, MutableMapping, Sequence
 from dataclasses import dataclass, field, replace
 from typing import Any, Mapping
 
+from lod2energy.safe_write import json_default
+
 
 # ----------------------------------------------------------------------------- pickling
 
@@ -53,7 +55,6 @@ def _untimed(obj: Any) -> Any:
     if t is list or t is tuple or isinstance(obj, (list, tuple)):
         return [_untimed(v) for v in obj]
     if type(obj).__module__ == "numpy":
-        from lod2energy.safe_write import json_default
         return json_default(obj)
     return obj
 

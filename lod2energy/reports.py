@@ -10,12 +10,17 @@ import os
 import sys
 from typing import TYPE_CHECKING, Iterable, Sequence
 
+from tqdm import tqdm
+
 from lod2energy.config import DEFAULT, Tolerances
+from lod2energy.io.json_stream import Scanner
+from lod2energy.journal import records_of, terrain_of
 from lod2energy.model import CityModel
 from lod2energy.options import FORMATS
 from lod2energy.records import CSV_FIELDS, BuildingRecord
 from lod2energy.safe_write import atomic_write, check_target, json_default
 from lod2energy.spool import load_spooled, spool_path
+from lod2energy.viz.report import write_report_for_files
 
 if TYPE_CHECKING:
     from lod2energy.journal import JournalRecords
@@ -26,12 +31,11 @@ def err(msg: str) -> None:
     print(f"lod2energy: error: {msg}", file=sys.stderr)
 
 
-def progress(quiet: bool, desc: str):
+def progress(quiet: bool, desc: str, unit: str = " buildings"):
     """``(tick, close)`` of a progress bar on stderr (no-ops when ``quiet``)."""
     if quiet:
         return lambda: None, lambda: None
-    from tqdm import tqdm
-    bar = tqdm(desc=desc, unit=" buildings", file=sys.stderr, disable=None, leave=False)
+    bar = tqdm(desc=desc, unit=unit, file=sys.stderr, disable=None, leave=False)
     return (lambda: bar.update(1)), bar.close
 
 
@@ -146,7 +150,6 @@ def write_reports_from_journal(out: str, input_path: str, model, journal_path: s
     """:func:`write_reports` from this run's lines of the journal (:func:`lod2energy.journal.records_of`
     from byte ``start``, or ``recs`` when given): what the journal says was done is what the
     report says."""
-    from lod2energy.journal import records_of, terrain_of
     recs = recs if recs is not None else records_of(journal_path, start)
     return write_reports(out, input_path, model, recs.ordered(), dataset_errors, interrupted, inputs,
                          terrain_of(journal_path, start))
@@ -154,8 +157,6 @@ def write_reports_from_journal(out: str, input_path: str, model, journal_path: s
 
 def json_ready(doc):
     """``doc`` as it reads back from JSON (numpy values, tuples and mappings made plain)."""
-    import json
-    from lod2energy.safe_write import json_default
     return json.loads(json.dumps(doc, default=json_default))
 
 
@@ -167,7 +168,6 @@ class _ReportBuildings:
         self.path = path
 
     def __iter__(self):
-        from lod2energy.io.json_stream import Scanner
         with open(self.path, encoding="utf-8") as f:
             sc = Scanner(f)
             for key in sc.members():
@@ -180,7 +180,6 @@ class _ReportBuildings:
 
 def report_lazily(path: str) -> dict:
     """``report.json`` as ``json.load`` gives it, but its ``buildings`` a :class:`_ReportBuildings`."""
-    from lod2energy.io.json_stream import Scanner
     doc: dict = {}
     with open(path, encoding="utf-8") as f:
         sc = Scanner(f)
@@ -205,8 +204,6 @@ def write_html_report(report_path: str, input_path: str, records: JournalRecords
     ``mapper``: renders the page's pictures (e.g. on the export's process pool,
     :func:`lod2energy.viz.report.write_report_html`)."""
     try:
-        from lod2energy.viz.report import write_report_for_files
-
         def outputs(ids, _inputs) -> dict:  # the panels' prepared buildings, from the spool
             out_b = {}
             for s in records.seqs_of(ids):

@@ -240,3 +240,46 @@ def test_allowed_module_state_exists():
     for qual in MODULE_STATE:
         mod, _, name = qual.rpartition(".")
         assert name in _containers(ast.parse(mods[mod].read_text(encoding="utf-8"))), qual
+
+
+# --- imports at the top -----------------------------------------------------------------------
+
+#: The function-local imports left, by (module, imported package): each with its reason.
+LOCAL_IMPORTS = {
+    ("lod2energy.cli", "lod2energy"): "the CLI's lazy entry: a command imports its modules when it runs",
+    ("lod2energy.executor", "cloudpickle"): "optional (the dask extra)",
+    ("lod2energy.executor", "dask"): "optional (the dask extra)",
+    ("lod2energy.graph", "torch"): "optional (the pyg extra)",
+    ("lod2energy.graph", "torch_geometric"): "optional (the pyg extra)",
+    ("lod2energy.repair.alphashape", "pymeshlab"): "starts threads: loaded in the alpha-wrap child only",
+    ("lod2energy.safe_write", "numpy"): "safe_write is on the CLI's head; numpy only for a report's arrays",
+    ("lod2energy.site", "pyproj"): "a transformer only for outputs that need positions",
+    ("lod2energy.threads", "threadpoolctl"): "only when numpy is loaded already (the CLI's head)",
+    ("lod2energy.viz.browser", "playwright"): "optional (the test extra)",
+    ("lod2energy.viz.figures", "matplotlib"): "the report's pictures only",
+    ("lod2energy.viz.render", "matplotlib"): "the report's pictures only",
+    ("lod2energy.viz.report", "matplotlib"): "the report's pictures only",
+    ("exporters.cityjson.schema", "fastjsonschema"): "optional: the interpreted validators decide without it",
+    ("exporters.cfd.options", "lod2energy"): "the CLI's parser builds CfdOptions: the region's geometry on use",
+}
+
+
+def local_imports() -> set[tuple[str, str]]:
+    """(module, imported top-level package) of every import inside a function."""
+    out = set()
+    for mod, path in _modules().items():
+        tree = ast.parse(path.read_text(encoding="utf-8"))
+        for fn in ast.walk(tree):
+            if isinstance(fn, (ast.FunctionDef, ast.AsyncFunctionDef)):
+                for node in ast.walk(fn):
+                    if isinstance(node, ast.Import):
+                        out |= {(mod, a.name.split(".")[0]) for a in node.names}
+                    elif isinstance(node, ast.ImportFrom):
+                        out.add((mod, "lod2energy" if node.level else (node.module or "").split(".")[0]))
+    return out
+
+
+def test_imports_are_at_the_top():
+    found = local_imports()
+    assert found <= set(LOCAL_IMPORTS), sorted(found - set(LOCAL_IMPORTS))
+    assert ("lod2energy.cli", "lod2energy") in found  # the control: the rule sees them
