@@ -259,7 +259,6 @@ LOCAL_IMPORTS = {
     ("lod2energy.viz.figures", "matplotlib"): "the report's pictures only",
     ("lod2energy.viz.render", "matplotlib"): "the report's pictures only",
     ("lod2energy.viz.report", "matplotlib"): "the report's pictures only",
-    ("exporters.cityjson.schema", "fastjsonschema"): "optional: the interpreted validators decide without it",
     ("exporters.cfd.options", "lod2energy"): "the CLI's parser builds CfdOptions: the region's geometry on use",
 }
 

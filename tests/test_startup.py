@@ -19,7 +19,7 @@ import pytest
 ROOT = Path(__file__).resolve().parents[1]
 
 # packages that cost 0.1-1.5 CPU s to import and that only some commands or code paths need
-HEAVY = {"scipy", "shapely", "trimesh", "pyproj", "jsonschema", "fastjsonschema", "eppy", "manifold3d",
+HEAVY = {"scipy", "shapely", "trimesh", "pyproj", "jsonschema", "jsonschema_rs", "eppy", "manifold3d",
          "pyvista", "jinja2", "matplotlib", "tqdm", "networkx", "numpy"}
 
 
