@@ -75,6 +75,38 @@ class _UsageError(Exception):
     pass
 
 
+#: Each command: its line in the list of commands, and its description (``COMMAND --help``).
+COMMANDS = {
+    "validate": ("validate files (val3dity error codes + energy compliance)",
+                 "Validate CityJSON / CityJSONSeq / CityGML / OBJ / OFF / POLY files with val3dity's "
+                 "error codes, build each building's face-adjacency graph and assess energy compliance."),
+    "repair": ("repair buildings into closed, outward-oriented solids",
+               "Repair every building by the ladder (clean-up, orientation, hole fill, "
+               "remove-and-refill, alpha shape, footprint extrusion, convex hull) and write CityJSON "
+               "(.city.json) or CityJSONSeq (.city.jsonl) by the output suffix."),
+    "export": ("validate, repair, label, assign U-values and export",
+               "Run the whole pipeline and write the chosen formats into OUTDIR, with a "
+               "dataset report (report.json, report.csv, the journal report.jsonl). Every file is "
+               "re-read and self-checked."),
+    "view": ("write and open the report panel of one building",
+             "Validate, repair and label one building of FILE and write its "
+             "report panel (input and repaired renders, face-adjacency graph, defects) "
+             "as a self-contained HTML page; opens it when a display is present."),
+}
+
+
+def _command(sub, name: str, output: str | None = None) -> argparse.ArgumentParser:
+    """The parser of command ``name`` (:data:`COMMANDS`), the exit codes under its options; with
+    ``output`` (a metavar), its ``IN`` and ``-o OUTPUT`` arguments."""
+    help, description = COMMANDS[name]
+    c = sub.add_parser(name, help=help, description=description, epilog=EXIT_HELP,
+                       formatter_class=argparse.RawDescriptionHelpFormatter)
+    if output is not None:
+        c.add_argument("input", metavar="IN")
+        c.add_argument("-o", "--output", required=True, metavar=output)
+    return c
+
+
 def build_parser() -> argparse.ArgumentParser:
     p = _Parser(prog="lod2energy", description="LoD2 city models (CityJSON, CityGML) to simulation-ready geometry: "
                 "validate like val3dity, repair, label, assign U-values, export IDF / STL / CityJSON.",
@@ -90,10 +122,7 @@ def build_parser() -> argparse.ArgumentParser:
 
 def add_validate_parser(sub) -> argparse.ArgumentParser:
     """``lod2energy validate`` and its options."""
-    v = sub.add_parser("validate", help="validate files (val3dity error codes + energy compliance)",
-                       description="Validate CityJSON / CityJSONSeq / CityGML / OBJ / OFF / POLY files with val3dity's "
-                       "error codes, build each building's face-adjacency graph and assess energy compliance.",
-                       epilog=EXIT_HELP, formatter_class=argparse.RawDescriptionHelpFormatter)
+    v = _command(sub, "validate")
     v.add_argument("files", nargs="+", metavar="FILE")
     v.add_argument("--report", metavar="OUT.json", help="write the JSON report (val3dity's shape + energy blocks)")
     v.add_argument("--html", metavar="OUT.html", default=None,
@@ -106,13 +135,7 @@ def add_validate_parser(sub) -> argparse.ArgumentParser:
 
 def add_repair_parser(sub) -> argparse.ArgumentParser:
     """``lod2energy repair`` and its options."""
-    r = sub.add_parser("repair", help="repair buildings into closed, outward-oriented solids",
-                       description="Repair every building by the ladder (clean-up, orientation, hole fill, "
-                       "remove-and-refill, alpha shape, footprint extrusion, convex hull) and write CityJSON "
-                       "(.city.json) or CityJSONSeq (.city.jsonl) by the output suffix.",
-                       epilog=EXIT_HELP, formatter_class=argparse.RawDescriptionHelpFormatter)
-    r.add_argument("input", metavar="IN")
-    r.add_argument("-o", "--output", required=True, metavar="OUT")
+    r = _command(sub, "repair", output="OUT")
     r.add_argument("--report", metavar="R.json", help="write the per-building repair report")
     r.add_argument("--html", metavar="R.html", default=None,
                    help="write a self-contained HTML report (input and repaired buildings side by side)")
@@ -128,10 +151,7 @@ def add_repair_parser(sub) -> argparse.ArgumentParser:
 
 def add_view_parser(subparsers) -> argparse.ArgumentParser:
     """Add ``view FILE [--id ID] [-o OUTDIR] [--no-open]`` to the CLI's subparsers."""
-    v = subparsers.add_parser("view", help="write and open the report panel of one building",
-                              description="Validate, repair and label one building of FILE and write its "
-                              "report panel (input and repaired renders, face-adjacency graph, defects) "
-                              "as a self-contained HTML page; opens it when a display is present.")
+    v = _command(subparsers, "view")
     v.add_argument("input", metavar="FILE")
     v.add_argument("--id", default=None, help="building (or BuildingPart) id (default: the first building)")
     v.add_argument("-o", "--output", default=".", metavar="OUTDIR", help="folder of the page (default .)")
@@ -143,13 +163,7 @@ def add_view_parser(subparsers) -> argparse.ArgumentParser:
 
 def add_export_parser(sub) -> argparse.ArgumentParser:
     """``lod2energy export`` and its options (groups: formats, thermal, run)."""
-    e = sub.add_parser("export", help="validate, repair, label, assign U-values and export",
-                       description="Run the whole pipeline and write the chosen formats into OUTDIR, with a "
-                       "dataset report (report.json, report.csv, the journal report.jsonl). Every file is "
-                       "re-read and self-checked.",
-                       epilog=EXIT_HELP, formatter_class=argparse.RawDescriptionHelpFormatter)
-    e.add_argument("input", metavar="IN")
-    e.add_argument("-o", "--output", required=True, metavar="OUTDIR")
+    e = _command(sub, "export", output="OUTDIR")
     e.add_argument("--idf", action="store_true", help="EnergyPlus IDF thermal zones")
     e.add_argument("--stl", action="store_true", help="CFD-ready STL (one solid per semantic class)")
     e.add_argument("--cityjson", action="store_true", help="CityJSON with Energy-ADE-style attributes")

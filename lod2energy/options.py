@@ -22,10 +22,6 @@ from lod2energy.thermal import ThermalOptions, country_from_crs
 FORMATS = ("cityjson", "idf", "stl", "cfd", "geojson")
 
 
-def _thermal_default():
-    return ThermalOptions()
-
-
 @dataclass(frozen=True)
 class PrepareOptions:
     """Options of validate -> repair -> label -> U-values -> compliance.
@@ -48,19 +44,7 @@ class PrepareOptions:
     lod: str | None = None
     timeout: float = 30.0
     merge_parts: bool = False
-    thermal: Any = field(default_factory=_thermal_default)
-
-
-def _idf_default():
-    return IdfOptions()
-
-
-def _stl_default():
-    return StlOptions()
-
-
-def _cityjson_default():
-    return CityJsonOptions()
+    thermal: Any = field(default_factory=ThermalOptions)
 
 
 @dataclass(frozen=True)
@@ -88,9 +72,9 @@ class ExportOptions:
 
     formats: tuple[str, ...] = ()
     prepare: PrepareOptions = field(default_factory=PrepareOptions)
-    idf: Any = field(default_factory=_idf_default)
-    stl: Any = field(default_factory=_stl_default)
-    cityjson: Any = field(default_factory=_cityjson_default)
+    idf: Any = field(default_factory=IdfOptions)
+    stl: Any = field(default_factory=StlOptions)
+    cityjson: Any = field(default_factory=CityJsonOptions)
     hard_timeout: float | None = None
     cfd: Any = None
     html: bool = True
