@@ -1,4 +1,5 @@
-"""Architecture rules of issue 14: no import circle among lod2energy modules, no oversized module.
+"""Architecture rules: no import circle, no writer importing the repair package, caches in one
+place, imports at the top, no oversized module, and docs/architecture.md naming what exists.
 
 The module graph is built from the source with :mod:`ast`, counting function-local imports
 too: a local import that only hides a circle is still a circle.
@@ -6,6 +7,7 @@ too: a local import that only hides a circle is still a circle.
 from __future__ import annotations
 
 import ast
+import re
 from pathlib import Path
 
 import pytest
@@ -282,3 +284,21 @@ def test_imports_are_at_the_top():
     found = local_imports()
     assert found <= set(LOCAL_IMPORTS), sorted(found - set(LOCAL_IMPORTS))
     assert ("lod2energy.cli", "lod2energy") in found  # the control: the rule sees them
+
+
+# --- docs/architecture.md names what is there ---------------------------------------------------
+
+def architecture_paths() -> list[str]:
+    """Paths named in backticks in docs/architecture.md (``lod2energy/...``, ``exporters/...``,
+    and shorter ones such as ``validate/closed.py`` read inside those packages)."""
+    text = (ROOT / "docs" / "architecture.md").read_text(encoding="utf-8")
+    spans = re.findall(r"`([^`\s]+)`", text)
+    return [s for s in spans if "/" in s and re.fullmatch(r"[\w.<>/-]+", s) and "<" not in s]
+
+
+def test_architecture_names_only_paths_that_exist():
+    paths = architecture_paths()
+    assert "lod2energy/cache.py" in paths and "validate/closed.py" in paths  # the rule sees them
+    missing = [p for p in paths
+               if not any((base / p.rstrip("/")).exists() for base in (ROOT, ROOT / "lod2energy", ROOT / "exporters"))]
+    assert missing == [], missing
