@@ -226,11 +226,21 @@ def _print_validate_table(rows: list[dict]) -> None:
         print(f"{r['file'][-44:]:<44} {r['features']:>8} {r['valid']:>6} {r['invalid']:>7} {r['ready']:>7}  {r['codes']}")
 
 
+def _progress(quiet: bool, desc: str):
+    """``(tick, close)`` of a progress bar over the features of one file (``tick`` None when quiet)."""
+    if quiet:
+        return None, lambda: None
+    from tqdm import tqdm
+    bar = tqdm(desc=desc, unit=" features", file=sys.stderr, disable=None, leave=False)
+    return (lambda _entry: bar.update(1)), bar.close
+
+
 def cmd_validate(a) -> int:
-    from lod2energy import reports as run_reports, safe_write
+    # the export side (lod2energy.reports: records, options, every writer's options) loads only
+    # for what needs it: a geographic CRS, the HTML page
+    from lod2energy import safe_write
     from lod2energy.io import read
     from lod2energy.validate.report import validate_features
-    from lod2energy.viz.report import write_report_for_files
 
     tol = _tolerances(a)
     if a.report:
@@ -243,14 +253,15 @@ def cmd_validate(a) -> int:
         model, feats = read(path, primitive=a.primitive, inner_shells=a.inner_shell)
         geographic = getattr(model, "frame", None) is not None
         if geographic:
-            run_reports.note_frame(path, model)
-        tick, close = run_reports.progress(a.quiet, os.path.basename(path), unit=" features")
+            from lod2energy.reports import frame_entry, note_frame
+            note_frame(path, model)
+        tick, close = _progress(a.quiet, os.path.basename(path))
         try:
-            rep = validate_features(model, feats, path, tol, a.lod, None if a.quiet else (lambda _entry: tick()))
+            rep = validate_features(model, feats, path, tol, a.lod, tick)
         finally:
             close()
         if geographic:
-            rep.update(run_reports.frame_entry(model))
+            rep.update(frame_entry(model))
         reports.append(rep)
         for e in rep["dataset_errors"]:
             _err(e["info"] if path in e["info"] else f"{path}: {e['info']}")
@@ -270,10 +281,12 @@ def cmd_validate(a) -> int:
         out = reports[0] if len(reports) == 1 else {"type": "lod2energy_reports", "reports": reports}
         safe_write.write_json(a.report, out, inputs=a.files)
     if getattr(a, "html", None):
+        from lod2energy.reports import json_ready
+        from lod2energy.viz.report import write_report_for_files
         try:
             out = reports[0] if len(reports) == 1 else {"type": "lod2energy_reports", "reports": reports}
             # the files read again for the page: the panels' buildings and every footprint only
-            write_report_for_files(run_reports.json_ready(out), a.html, a.files, tol=tol, input_files=a.files,
+            write_report_for_files(json_ready(out), a.html, a.files, tol=tol, input_files=a.files,
                                    read_options={"primitive": a.primitive, "inner_shells": a.inner_shell})
         except Exception as e:  # noqa: BLE001 - the page is a view of the report
             _err(f"{a.html} not written: {type(e).__name__}: {e}")

@@ -12,9 +12,6 @@ from typing import Any
 
 from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.errors import ParameterError
-from lod2energy.exporters.energyplus.options import IdfOptions
-from lod2energy.exporters.registry import CityJsonOptions
-from lod2energy.exporters.stl import StlOptions
 from lod2energy.model import CityModel
 from lod2energy.thermal import ThermalOptions, country_from_crs
 
@@ -47,6 +44,23 @@ class PrepareOptions:
     thermal: Any = field(default_factory=ThermalOptions)
 
 
+# The writers' option classes come with their format packages (which import their writers):
+# loaded when an ExportOptions is made, not when this module is (validate and repair read it).
+def _idf_default():
+    from lod2energy.exporters.energyplus.options import IdfOptions
+    return IdfOptions()
+
+
+def _stl_default():
+    from lod2energy.exporters.stl import StlOptions
+    return StlOptions()
+
+
+def _cityjson_default():
+    from lod2energy.exporters.registry import CityJsonOptions
+    return CityJsonOptions()
+
+
 @dataclass(frozen=True)
 class ExportOptions:
     """What ``lod2energy export`` computes and writes (picklable: it travels to the workers).
@@ -72,9 +86,9 @@ class ExportOptions:
 
     formats: tuple[str, ...] = ()
     prepare: PrepareOptions = field(default_factory=PrepareOptions)
-    idf: Any = field(default_factory=IdfOptions)
-    stl: Any = field(default_factory=StlOptions)
-    cityjson: Any = field(default_factory=CityJsonOptions)
+    idf: Any = field(default_factory=_idf_default)
+    stl: Any = field(default_factory=_stl_default)
+    cityjson: Any = field(default_factory=_cityjson_default)
     hard_timeout: float | None = None
     cfd: Any = None
     html: bool = True

@@ -33,7 +33,6 @@ from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.dataset import BESIDE, DatasetResult, beside_ok, dataset_apply, dataset_pass, write_beside
 from lod2energy.errors import ParameterError
 from lod2energy.executor import Failure, Overrun, ProcessPoolExecutor, make_executor
-from lod2energy.exporters.energyplus.run import idd
 from lod2energy.exporters.registry import writers
 from lod2energy.interrupt import EXIT_INVALID, EXIT_OK, EXIT_SIGINT, EXIT_UNUSABLE, Interrupted, Signals
 from lod2energy.io import read
@@ -297,8 +296,8 @@ def warm(options: ExportOptions) -> None:
     a worker). Modules that start threads (pymeshlab) are left to the workers."""
     for m in _JOB_MODULES + tuple(x for f in options.formats for x in _WRITER_MODULES.get(f, ())):
         importlib.import_module(m)
-    if "idf" in options.formats:
-        idd()
+    if "idf" in options.formats:  # the writer's package, loaded by name as the others are
+        importlib.import_module("lod2energy.exporters.energyplus.run").idd()
 
 
 def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions = RunOptions(),

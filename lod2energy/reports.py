@@ -10,7 +10,6 @@ import os
 import sys
 from typing import TYPE_CHECKING, Iterable, Sequence
 
-from tqdm import tqdm
 
 from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.io.json_stream import Scanner
@@ -31,11 +30,12 @@ def err(msg: str) -> None:
     print(f"lod2energy: error: {msg}", file=sys.stderr)
 
 
-def progress(quiet: bool, desc: str, unit: str = " buildings"):
+def progress(quiet: bool, desc: str):
     """``(tick, close)`` of a progress bar on stderr (no-ops when ``quiet``)."""
     if quiet:
         return lambda: None, lambda: None
-    bar = tqdm(desc=desc, unit=unit, file=sys.stderr, disable=None, leave=False)
+    from tqdm import tqdm
+    bar = tqdm(desc=desc, unit=" buildings", file=sys.stderr, disable=None, leave=False)
     return (lambda: bar.update(1)), bar.close
 
 

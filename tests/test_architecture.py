@@ -249,6 +249,13 @@ def test_allowed_module_state_exists():
 #: The function-local imports left, by (module, imported package): each with its reason.
 LOCAL_IMPORTS = {
     ("lod2energy.cli", "lod2energy"): "the CLI's lazy entry: a command imports its modules when it runs",
+    ("lod2energy.cli", "tqdm"): "the CLI's lazy entry: validate's progress bar",
+    # scipy costs about 0.4 s to import: loaded by the paths that need it (validation mostly does not)
+    **{(m, "scipy"): "imported by the paths that need it" for m in (
+        "lod2energy.geometry.cdt", "lod2energy.geometry.snap", "lod2energy.io.gml", "lod2energy.repair.alphashape",
+        "lod2energy.repair.cleanup", "lod2energy.repair.footprint", "lod2energy.repair.parts",
+        "lod2energy.repair.plausible", "lod2energy.viz.footprints", "lod2energy.viz.render")},
+    ("lod2energy.options", "lod2energy"): "the writers' option classes load with their packages: on use",
     ("lod2energy.executor", "cloudpickle"): "optional (the dask extra)",
     ("lod2energy.executor", "dask"): "optional (the dask extra)",
     ("lod2energy.graph", "torch"): "optional (the pyg extra)",
@@ -261,6 +268,9 @@ LOCAL_IMPORTS = {
     ("lod2energy.viz.figures", "matplotlib"): "the report's pictures only",
     ("lod2energy.viz.render", "matplotlib"): "the report's pictures only",
     ("lod2energy.viz.report", "matplotlib"): "the report's pictures only",
+    ("lod2energy.viz.report", "jinja2"): "the page's template: only when a page is written (0.1 s)",
+    ("lod2energy.viz.report", "PIL"): "the plan picture of a large file only",
+    ("lod2energy.reports", "tqdm"): "a progress bar only when not quiet (0.1 s)",
     ("exporters.cfd.options", "lod2energy"): "the CLI's parser builds CfdOptions: the region's geometry on use",
 }
 

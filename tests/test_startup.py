@@ -53,6 +53,27 @@ def test_help_and_usage_errors_load_nothing_heavy(argv):
     assert loaded == set(), loaded
 
 
+@pytest.mark.parametrize("module", ["lod2energy.geometry", "lod2energy.polymesh", "lod2energy.semantics",
+                                    "lod2energy.thermal", "lod2energy.validate.report", "lod2energy.repair",
+                                    "lod2energy.pipeline", "lod2energy.geometry.snap"])
+def test_core_modules_import_scipy_on_first_use(module):
+    """scipy (0.4 s) is imported where a path needs it, which validation mostly does not (the
+    one exception to imports at the top besides optional dependencies, see test_architecture)."""
+    loaded = loaded_after(f"import {module}")
+    assert not loaded & {"scipy", "trimesh", "pyproj", "jsonschema", "eppy", "matplotlib", "pyvista"}, (module, loaded)
+
+
+def test_snapping_loads_no_scipy():
+    loaded = loaded_after("""
+        import numpy as np
+        from lod2energy.geometry import snap_map
+        from lod2energy.geometry.snap import snap_points
+        p = np.array([[0.0, 0.0, 0.0], [0.0, 0.0, 1e-4], [5.0, 0.0, 0.0]])
+        assert snap_map(p, 1e-3).tolist() == [0, 0, 2] and snap_points(p, 1e-3).tolist() == [0, 0, 2]
+    """)
+    assert "numpy" in loaded and "scipy" not in loaded, loaded
+
+
 def test_the_probe_sees_a_package_once_it_is_used():
     # the control: the constrained Delaunay triangulation uses scipy's Qhull
     loaded = loaded_after("""
@@ -132,8 +153,8 @@ def test_the_cli_head_imports_nothing_heavy():
 
 
 def test_head_imports_follow_project_modules():
-    # the control: the pipeline's head reaches numpy and scipy through the modules it imports
-    assert {"numpy", "scipy", "shapely"} <= head_imports("lod2energy.pipeline")
+    # the control: the pipeline's head reaches numpy and shapely through the modules it imports
+    assert {"numpy", "shapely"} <= head_imports("lod2energy.pipeline")
     assert "pymeshlab" not in head_imports("lod2energy.pipeline")  # only the alpha-wrap child loads it
 
 

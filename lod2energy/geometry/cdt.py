@@ -13,7 +13,6 @@ from typing import Sequence
 
 import numpy as np
 import shapely
-from scipy.spatial import Delaunay
 
 from lod2energy.geometry.vectors import cross2
 
@@ -124,6 +123,7 @@ def _delaunay_if_conforming(pts: np.ndarray, ring_ends) -> np.ndarray | None:
     n = len(pts)
     if len(set(map(tuple, pts.tolist()))) < n:
         return None  # a ring touching another at a vertex: leave it to the general path
+    from scipy.spatial import Delaunay
     try:
         tri = Delaunay(pts).simplices
     except Exception:  # Qhull refuses degenerate input

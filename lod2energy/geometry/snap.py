@@ -15,7 +15,6 @@ from __future__ import annotations
 from typing import Sequence
 
 import numpy as np
-from scipy.spatial import cKDTree
 
 from lod2energy.geometry.pairs import close_pairs_grid, connected_components
 
@@ -106,6 +105,7 @@ def weld(points: np.ndarray, tol: float) -> tuple[np.ndarray, np.ndarray]:
     p = np.asarray(points, dtype=np.float64)
     if len(p) == 0:
         return p.reshape(0, 3), np.zeros(0, dtype=np.intp)
+    from scipy.spatial import cKDTree
     pairs = cKDTree(p).query_pairs(tol, output_type="ndarray")
     if len(pairs) == 0:
         return p.copy(), np.arange(len(p))
@@ -267,6 +267,7 @@ def split_at_points(v: np.ndarray, polys: list[list[int]], tol: float, only_unma
     list of list of int
         The rings with the vertices inserted.
     """
+    from scipy.spatial import cKDTree
     tree = cKDTree(v)
     allowed = None if candidates is None else {int(c) for c in candidates}
     directed = {(poly[k], poly[(k + 1) % len(poly)]) for poly in polys for k in range(len(poly))}

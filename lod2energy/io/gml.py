@@ -20,7 +20,6 @@ import xml.etree.ElementTree as ET
 from typing import Any
 
 import numpy as np
-from scipy.spatial import Delaunay, QhullError
 
 from lod2energy.errors import InputError
 
@@ -138,6 +137,7 @@ class GmlGeometry:
         pts = list(dict.fromkeys(pts))
         if len(pts) < 3:
             raise InputError(f"{where}: gml:Tin without triangle patches and fewer than 3 control points")
+        from scipy.spatial import Delaunay, QhullError
         p = np.asarray(pts, dtype=np.float64)
         try:
             tri = Delaunay(p[:, :2]).simplices

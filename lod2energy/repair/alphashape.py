@@ -18,7 +18,6 @@ import time
 from multiprocessing.connection import Connection
 
 import numpy as np
-from scipy.spatial import ConvexHull, Delaunay, QhullError
 
 from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.polymesh import PolyMesh, face_area, merge_coplanar, signed_volume, triangles_to_mesh, triangulate_mesh
@@ -181,6 +180,7 @@ def alpha_wrap(m: PolyMesh, alpha: float, offset: float = OFFSET, target_faces: 
 
 def alpha_complex(m: PolyMesh, alpha: float) -> PolyMesh | None:
     """Boundary of the union of Delaunay tetrahedra with circumradius <= alpha (m)."""
+    from scipy.spatial import Delaunay, QhullError
     used = np.unique([i for f in m.faces for r in f.rings for i in r])
     if len(used) < 4:
         return None
@@ -223,6 +223,7 @@ def alpha_complex(m: PolyMesh, alpha: float) -> PolyMesh | None:
 
 
 def _hull_volume(m: PolyMesh) -> float:
+    from scipy.spatial import ConvexHull, QhullError
     used = np.unique([i for f in m.faces for r in f.rings for i in r])
     try:
         return float(ConvexHull(m.vertices[used]).volume)

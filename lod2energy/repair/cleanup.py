@@ -10,7 +10,6 @@ from __future__ import annotations
 from collections import defaultdict
 
 import numpy as np
-from scipy.spatial import cKDTree
 
 from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.geometry import plane_basis, snap_map
@@ -100,6 +99,7 @@ def split_t_junctions(m: PolyMesh, tol: float, min_gap: float = 0.001) -> PolyMe
     if len(used) < 3:
         return m
     P = V[used]
+    from scipy.spatial import cKDTree
     tree = cKDTree(P)
     changed = False
     faces = []

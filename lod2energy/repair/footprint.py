@@ -12,7 +12,6 @@ from __future__ import annotations
 
 import numpy as np
 import shapely
-from scipy.spatial import ConvexHull, QhullError
 from shapely.geometry import MultiPoint, Polygon
 
 from lod2energy.polymesh import Face, PolyMesh, face_area, face_normal, merge_coplanar, triangles_to_mesh
@@ -102,6 +101,7 @@ def convex_hull(m: PolyMesh) -> PolyMesh | None:
     used = np.unique([i for f in m.faces for r in f.rings for i in r])
     if len(used) < 4:
         return None
+    from scipy.spatial import ConvexHull, QhullError
     P = m.vertices[used]
     try:
         h = ConvexHull(P)

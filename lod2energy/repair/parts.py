@@ -12,7 +12,6 @@ from typing import Sequence
 
 import manifold3d as m3d
 import numpy as np
-from scipy.spatial import cKDTree
 
 from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.geometry import closest_on_triangle, collapse_short_edges
@@ -306,6 +305,7 @@ def _clip_by(m: PolyMesh, other: PolyMesh, min_edge: float = 0.0, snap_to: np.nd
     if not len(T):
         return None
     if min_edge > 0:  # corners of the neighbour a hair away: onto them (one wall, one corner)
+        from scipy.spatial import cKDTree
         P = other.vertices if snap_to is None else np.vstack([other.vertices, snap_to])
         d, j = cKDTree(P).query(V, distance_upper_bound=min_edge)
         hit = np.isfinite(d)

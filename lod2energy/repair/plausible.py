@@ -20,7 +20,6 @@ from __future__ import annotations
 from typing import Callable
 
 import numpy as np
-from scipy.spatial import ConvexHull, QhullError
 
 from lod2energy.polymesh import PolyMesh, signed_volume, topology
 
@@ -79,6 +78,7 @@ slab of thickness t has about t / 2): a small repaired volume is then no sign of
 
 def _hull(m: PolyMesh) -> tuple[float, float]:
     """Volume (m3) and area (m2) of the convex hull of the vertices ``m`` uses; (0, 0) if flat."""
+    from scipy.spatial import ConvexHull, QhullError
     used = np.unique([i for f in m.faces for r in f.rings for i in r]).astype(np.int64)
     if len(used) < 4:
         return 0.0, 0.0

@@ -8,7 +8,6 @@ import tempfile
 from typing import Iterable, Iterator
 
 import numpy as np
-from scipy.spatial import ConvexHull
 
 from lod2energy.io.seen_ids import id_key
 from lod2energy.viz.render import footprint
@@ -26,6 +25,7 @@ def n_faces(b) -> int:
 def _hull(b) -> list[np.ndarray]:
     """The plan's footprint of a building over ``MAX_PANEL_FACES`` faces: the convex hull of its
     vertices projected on the ground, ``[(k, 2) float, m]``."""
+    from scipy.spatial import ConvexHull
     pts = np.asarray(b.vertices, dtype=float)[:, :2]
     return [pts[ConvexHull(pts).vertices]]
 

@@ -16,7 +16,6 @@ import re
 
 import numpy as np
 from markupsafe import escape
-from scipy.spatial import ConvexHull
 
 from lod2energy import cache
 from lod2energy.config import DEFAULT, Tolerances
@@ -69,6 +68,7 @@ def footprint(b: Building) -> list[np.ndarray]:
         return rings
     pts = np.vstack([p for p, _ in fs])[:, :2]
     try:
+        from scipy.spatial import ConvexHull
         return [pts[ConvexHull(pts).vertices]]
     except Exception:  # noqa: BLE001 - collinear or too few points: nothing to draw
         return []

@@ -27,11 +27,9 @@ from array import array
 from pathlib import Path
 from typing import Iterable, Iterator
 
-import jinja2
 import numpy as np
-from PIL import Image, ImageDraw
 
-import lod2energy.graph
+import lod2energy.graph  # noqa: F401 - the panels' face-adjacency graphs (warm_page loads it in a worker)
 from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.io import read
 from lod2energy.io.seen_ids import id_key
@@ -178,6 +176,7 @@ def _plan_picture(page: PageRows, footprints, inputs: dict, outputs: dict) -> tu
     """The plan of a large file as PNG pictures (data URLs): ``{"status": url, "heat": url or
     None}``, and the plan's facts. ``footprints``: a :class:`FootprintSpill` or a dict of id ->
     rings; the panels' buildings (``inputs``, ``outputs``) are drawn from their geometry."""
+    from PIL import Image, ImageDraw
     given = footprints if isinstance(footprints, dict) else {}
     own = {}  # the panels' buildings not among the footprints of a dict
     for store in (inputs, outputs):
@@ -380,6 +379,7 @@ def render_report_html(report: dict, *, inputs: dict | None = None, outputs: dic
                  "buildings": [_row_json(r) for r in embedded],
                  "buildings_embedded": "all" if len(embedded) == page.n else "panels",
                  "export_seconds": report.get("seconds")}
+    import jinja2
     env = jinja2.Environment(loader=jinja2.PackageLoader("lod2energy.templates", "."),
                              autoescape=jinja2.select_autoescape(["html", "j2"]), trim_blocks=True,
                              lstrip_blocks=True)
