@@ -227,7 +227,7 @@ def test_caches_live_in_the_one_caching_module():
     assert found == {}, found
 
 
-def test_the_cache_rule_sees_caches(tmp_path):
+def test_the_cache_rule_sees_caches():
     tree = ast.parse("import functools\nfrom functools import lru_cache\n_SEEN = {}\n_ALL: list = []\n"
                      "TABLE = {k: k for k in 'ab'}\n_N = 0\n"
                      "@functools.cache\ndef f(x):\n    _SEEN[x] = 1\n    return TABLE[x]\n"
