@@ -144,7 +144,7 @@ def stage_table(tile: str) -> dict:
     for mod in (conform, storeys, energyplus.check):
         t.wrap(mod, "enclosure_defects", "idf enclosure emulation (writer + self-check)")
     t.wrap(cityjson_check, "_schema_errors", "cityjson self-check: jsonschema")
-    t.wrap(cityjson_check, "_schema_valid_fast", "cityjson self-check: compiled schema")
+    t.wrap(cityjson_check, "_schema_valid_fast", "cityjson self-check: schema (jsonschema-rs)")
     # later trees (the spine split): the IDF writer's parts and the other costs of a run
     t.wrap(energyplus.check, "check_closed_outward", "idf self-check: closed and outward shells")
     t.wrap(energyplus.writer, "render_idf", "idf writer: render_idf")

@@ -1,4 +1,7 @@
-"""Command line: ``lod2energy validate | repair | export``.
+"""Command line: ``lod2energy validate | repair | export | view``.
+
+The parser is built from this module's head alone (argparse, :mod:`lod2energy.config`): each
+command imports its modules when it runs, so ``--help`` and usage errors load nothing heavy.
 
 Exit codes (all commands):
   0  everything valid / written and self-checked
@@ -18,9 +21,12 @@ import time
 from collections import Counter
 
 from lod2energy import __version__
+from lod2energy.cfd import add_cli_arguments, options_from_args
 from lod2energy.config import USE_TYPES, Tolerances
 from lod2energy.errors import Lod2EnergyError
+from lod2energy.interrupt import Interrupted, Signals
 from lod2energy.safe_write import UnsafeWriteError
+from lod2energy.threads import one_blas_thread
 
 EXIT_OK, EXIT_INVALID, EXIT_UNUSABLE = 0, 1, 2
 
@@ -78,6 +84,38 @@ class _UsageError(Exception):
     pass
 
 
+#: Each command: its line in the list of commands, and its description (``COMMAND --help``).
+COMMANDS = {
+    "validate": ("validate files (val3dity error codes + energy compliance)",
+                 "Validate CityJSON / CityJSONSeq / CityGML / OBJ / OFF / POLY files with val3dity's "
+                 "error codes, build each building's face-adjacency graph and assess energy compliance."),
+    "repair": ("repair buildings into closed, outward-oriented solids",
+               "Repair every building by the ladder (clean-up, orientation, hole fill, "
+               "remove-and-refill, alpha shape, footprint extrusion, convex hull) and write CityJSON "
+               "(.city.json) or CityJSONSeq (.city.jsonl) by the output suffix."),
+    "export": ("validate, repair, label, assign U-values and export",
+               "Run the whole pipeline and write the chosen formats into OUTDIR, with a "
+               "dataset report (report.json, report.csv, the journal report.jsonl). Every file is "
+               "re-read and self-checked."),
+    "view": ("write and open the report panel of one building",
+             "Validate, repair and label one building of FILE and write its "
+             "report panel (input and repaired renders, face-adjacency graph, defects) "
+             "as a self-contained HTML page; opens it when a display is present."),
+}
+
+
+def _command(sub, name: str, output: str | None = None) -> argparse.ArgumentParser:
+    """The parser of command ``name`` (:data:`COMMANDS`), the exit codes under its options; with
+    ``output`` (a metavar), its ``IN`` and ``-o OUTPUT`` arguments."""
+    help, description = COMMANDS[name]
+    c = sub.add_parser(name, help=help, description=description, epilog=EXIT_HELP,
+                       formatter_class=argparse.RawDescriptionHelpFormatter)
+    if output is not None:
+        c.add_argument("input", metavar="IN")
+        c.add_argument("-o", "--output", required=True, metavar=output)
+    return c
+
+
 def build_parser() -> argparse.ArgumentParser:
     p = _Parser(prog="lod2energy", description="LoD2 city models (CityJSON, CityGML) to simulation-ready geometry: "
                 "validate like val3dity, repair, label, assign U-values, export IDF / STL / CityJSON.",
@@ -93,10 +131,7 @@ def build_parser() -> argparse.ArgumentParser:
 
 def add_validate_parser(sub) -> argparse.ArgumentParser:
     """``lod2energy validate`` and its options."""
-    v = sub.add_parser("validate", help="validate files (val3dity error codes + energy compliance)",
-                       description="Validate CityJSON / CityJSONSeq / CityGML / OBJ / OFF / POLY files with val3dity's "
-                       "error codes, build each building's face-adjacency graph and assess energy compliance.",
-                       epilog=EXIT_HELP, formatter_class=argparse.RawDescriptionHelpFormatter)
+    v = _command(sub, "validate")
     v.add_argument("files", nargs="+", metavar="FILE")
     v.add_argument("--report", metavar="OUT.json", help="write the JSON report (val3dity's shape + energy blocks)")
     v.add_argument("--html", metavar="OUT.html", default=None,
@@ -110,13 +145,7 @@ def add_validate_parser(sub) -> argparse.ArgumentParser:
 
 def add_repair_parser(sub) -> argparse.ArgumentParser:
     """``lod2energy repair`` and its options."""
-    r = sub.add_parser("repair", help="repair buildings into closed, outward-oriented solids",
-                       description="Repair every building by the ladder (clean-up, orientation, hole fill, "
-                       "remove-and-refill, alpha shape, footprint extrusion, convex hull) and write CityJSON "
-                       "(.city.json) or CityJSONSeq (.city.jsonl) by the output suffix.",
-                       epilog=EXIT_HELP, formatter_class=argparse.RawDescriptionHelpFormatter)
-    r.add_argument("input", metavar="IN")
-    r.add_argument("-o", "--output", required=True, metavar="OUT")
+    r = _command(sub, "repair", output="OUT")
     r.add_argument("--report", metavar="R.json", help="write the per-building repair report")
     r.add_argument("--html", metavar="R.html", default=None,
                    help="write a self-contained HTML report (input and repaired buildings side by side)")
@@ -133,10 +162,7 @@ def add_repair_parser(sub) -> argparse.ArgumentParser:
 
 def add_view_parser(subparsers) -> argparse.ArgumentParser:
     """Add ``view FILE [--id ID] [-o OUTDIR] [--no-open]`` to the CLI's subparsers."""
-    v = subparsers.add_parser("view", help="write and open the report panel of one building",
-                              description="Validate, repair and label one building of FILE and write its "
-                              "report panel (input and repaired renders, face-adjacency graph, defects) "
-                              "as a self-contained HTML page; opens it when a display is present.")
+    v = _command(subparsers, "view")
     v.add_argument("input", metavar="FILE")
     v.add_argument("--id", default=None, help="building (or BuildingPart) id (default: the first building)")
     v.add_argument("-o", "--output", default=".", metavar="OUTDIR", help="folder of the page (default .)")
@@ -148,13 +174,7 @@ def add_view_parser(subparsers) -> argparse.ArgumentParser:
 
 def add_export_parser(sub) -> argparse.ArgumentParser:
     """``lod2energy export`` and its options (groups: formats, thermal, run)."""
-    e = sub.add_parser("export", help="validate, repair, label, assign U-values and export",
-                       description="Run the whole pipeline and write the chosen formats into OUTDIR, with a "
-                       "dataset report (report.json, report.csv, the journal report.jsonl). Every file is "
-                       "re-read and self-checked.",
-                       epilog=EXIT_HELP, formatter_class=argparse.RawDescriptionHelpFormatter)
-    e.add_argument("input", metavar="IN")
-    e.add_argument("-o", "--output", required=True, metavar="OUTDIR")
+    e = _command(sub, "export", output="OUTDIR")
     e.add_argument("--idf", action="store_true", help="EnergyPlus IDF thermal zones")
     e.add_argument("--stl", action="store_true", help="CFD-ready STL (one solid per semantic class)")
     e.add_argument("--cityjson", action="store_true", help="CityJSON with Energy-ADE-style attributes")
@@ -203,7 +223,6 @@ def add_export_parser(sub) -> argparse.ArgumentParser:
     s.add_argument("--ids", metavar="ID,ID,...", default=None,
                    help="export and report only these buildings (or @FILE, one id a line); the others still "
                    "serve as neighbours for party walls and shading")
-    from lod2energy.cfd import add_cli_arguments
     add_cli_arguments(e.add_argument_group("CFD case (OpenFOAM v1912)"))
     add_run_options(e)
     _add_tolerances(e)
@@ -226,17 +245,6 @@ def _err(msg: str) -> None:
     print(f"lod2energy: error: {msg}", file=sys.stderr)
 
 
-def _progress(quiet: bool, desc: str):
-    if quiet:
-        return None, lambda: None
-    try:
-        from tqdm import tqdm
-    except ImportError:  # pragma: no cover
-        return None, lambda: None
-    bar = tqdm(desc=desc, unit=" features", file=sys.stderr, disable=None, leave=False)
-    return (lambda _entry: bar.update(1)), bar.close
-
-
 def _print_validate_table(rows: list[dict]) -> None:
     hdr = f"{'file':<44} {'features':>8} {'valid':>6} {'invalid':>7} {'E-ready':>7}  errors"
     print(hdr)
@@ -245,24 +253,34 @@ def _print_validate_table(rows: list[dict]) -> None:
         print(f"{r['file'][-44:]:<44} {r['features']:>8} {r['valid']:>6} {r['invalid']:>7} {r['ready']:>7}  {r['codes']}")
 
 
+def _progress(quiet: bool, desc: str):
+    """``(tick, close)`` of a progress bar over the features of one file (``tick`` None when quiet)."""
+    if quiet:
+        return None, lambda: None
+    from tqdm import tqdm
+    bar = tqdm(desc=desc, unit=" features", file=sys.stderr, disable=None, leave=False)
+    return (lambda _entry: bar.update(1)), bar.close
+
+
 def cmd_validate(a) -> int:
     from lod2energy import crs as crs_
+    # the export side (lod2energy.reports: records, options, every writer's options) loads only
+    # for what needs it: a geographic CRS, the HTML page
+    from lod2energy import safe_write
     from lod2energy.io import read
     from lod2energy.validate.report import validate_features
 
     tol = _tolerances(a)
     if a.report:
-        from lod2energy.safe_write import check_target
-        check_target(a.report, None, a.files)  # never over an input (exit 2)
+        safe_write.check_target(a.report, None, a.files)  # never over an input (exit 2)
     if getattr(a, "html", None):
-        from lod2energy.safe_write import check_target
-        check_target(a.html, None, a.files)
+        safe_write.check_target(a.html, None, a.files)
     reports, rows = [], []
     worst = EXIT_OK
     for path in a.files:
         model, feats = read(path, primitive=a.primitive, inner_shells=a.inner_shell, crs=a.crs)
         geographic = getattr(model, "frame", None) is not None
-        if geographic:  # lod2energy.reports (records, options, spool) loads only for a CRS not in metres
+        if geographic:
             from lod2energy.reports import frame_entry, note_frame
             note_frame(path, model)
         elif model is not None and crs_.metres_note(path, model.crs):
@@ -291,12 +309,11 @@ def cmd_validate(a) -> int:
         _print_validate_table(rows)
     if a.report:
         out = reports[0] if len(reports) == 1 else {"type": "lod2energy_reports", "reports": reports}
-        from lod2energy.safe_write import write_json
-        write_json(a.report, out, inputs=a.files)
+        safe_write.write_json(a.report, out, inputs=a.files)
     if getattr(a, "html", None):
         from lod2energy.reports import json_ready
+        from lod2energy.viz.report import write_report_for_files
         try:
-            from lod2energy.viz.report import write_report_for_files
             out = reports[0] if len(reports) == 1 else {"type": "lod2energy_reports", "reports": reports}
             # the files read again for the page: the panels' buildings and every footprint only
             write_report_for_files(json_ready(out), a.html, a.files, tol=tol, input_files=a.files,
@@ -335,7 +352,6 @@ def export_options(a) -> "ExportOptions":
         table = load_buildings(a.buildings)
     cfd = None
     if getattr(a, "cfd", False):
-        from lod2energy.cfd import options_from_args
         cfd = options_from_args(a)
     return ExportOptions(formats, prepare_options(a, _tolerances(a)), idf,
                          StlOptions(mode=a.stl_mode, ascii=a.stl_ascii, lod=a.lod),
@@ -412,8 +428,6 @@ def main(argv: list[str] | None = None) -> int:
         parser.print_help(sys.stderr)
         return EXIT_UNUSABLE
     t0 = time.perf_counter()
-    from lod2energy.threads import one_blas_thread
-    from lod2energy.interrupt import Interrupted, Signals
     one_blas_thread()  # parallel across buildings, not inside one
     try:
         with Signals():  # SIGTERM ends every command as ^C does: one line, exit 143

@@ -6,6 +6,7 @@ import os
 import sys
 from dataclasses import dataclass
 
+from lod2energy.exporters.run_results import with_run_results
 from lod2energy.model import CityModel
 from lod2energy.options import ExportOptions
 from lod2energy.records import NOT_COMPLIANT, ExportRecord, RecordStore
@@ -79,7 +80,6 @@ def dataset_write(w, options: ExportOptions, job: Job, records: RecordStore, oth
     wopts = options.writer_options(w.name)
     if w.name == "cityjson":
         seqs = [s for s, r in records.in_order() if r.outcome == "done" and r.assessed]
-        from lod2energy.exporters.run_results import with_run_results  # the IDF runs' figures
         energy = set(seqs)
 
         def load(b, s):

@@ -30,9 +30,12 @@ from collections import deque
 from dataclasses import dataclass
 from multiprocessing.connection import Connection, wait
 from typing import Any, Callable, Iterable, Iterator
+import importlib
+import pickle
 
 import lod2energy.records  # noqa: F401 - makes Building picklable in every process
 from lod2energy.threads import one_blas_thread
+from lod2energy.errors import ParameterError
 
 
 @dataclass(frozen=True)
@@ -336,7 +339,6 @@ def _budget_child_main(fd: int) -> None:
     except (EOFError, OSError):
         return
     sys.path[:] = path
-    import importlib
     for m in modules:
         try:
             importlib.import_module(m)
@@ -386,7 +388,6 @@ def _dumps(obj) -> bytes:
         import cloudpickle  # a dask dependency: sends functions of __main__ by value
         return cloudpickle.dumps(obj)
     except ImportError:  # pragma: no cover - cloudpickle ships with dask
-        import pickle
         return pickle.dumps(obj)
 
 
@@ -499,7 +500,6 @@ class DaskExecutor(Executor):
         try:
             from dask.distributed import Client
         except ImportError as e:  # pragma: no cover - the dask extra missing
-            from lod2energy.errors import ParameterError
             raise ParameterError("--dask needs dask.distributed: pip install 'lod2energy[dask]'") from e
         self._own = isinstance(client, str)
         self.client = Client(client) if self._own else client

@@ -10,10 +10,11 @@ from __future__ import annotations
 import ctypes
 import ctypes.util
 import gc
-from functools import lru_cache
+
+from lod2energy import cache
 
 
-@lru_cache(maxsize=1)
+@cache.memoize("heap.malloc-trim", 1)
 def _malloc_trim():
     name = ctypes.util.find_library("c")
     try:

@@ -36,6 +36,7 @@ from collections.abc import Mapping
 from pathlib import Path
 from typing import Any, Iterator
 
+from lod2energy.records import BuildingRecord, ExportRecord, RecordSequence
 from lod2energy.safe_write import atomic_write, check_target, json_default
 
 FORMAT = 1
@@ -225,7 +226,6 @@ class JournalRecords(Mapping):
         return json.loads(f.read(v & 0xFFFFFFFF))
 
     def __getitem__(self, seq: int):
-        from lod2energy.records import BuildingRecord, ExportRecord
         lines = self._lines[seq]
         with open(self.path, "rb") as f:
             rec = BuildingRecord.from_json(self._read(lines[0], f))
@@ -267,7 +267,6 @@ class JournalRecords(Mapping):
 
     def ordered(self, seqs=None):
         """The records of ``seqs`` (default: all, in input order) as a lazy sequence."""
-        from lod2energy.records import RecordSequence
         return RecordSequence(self, sorted(self._lines) if seqs is None else list(seqs))
 
 

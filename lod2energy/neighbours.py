@@ -3,6 +3,7 @@ within a halo (party walls, ``--shading``), as compressed rows that stay small a
 from __future__ import annotations
 
 import numpy as np
+import shapely
 
 
 class Neighbours:
@@ -31,7 +32,6 @@ def neighbours_within(seqs, boxes, halo: float, chunk: int | None = None) -> Nei
     """For each building (``seqs`` ascending, ``(k,)`` int; ``boxes`` its record's box, ``(k, 6)``
     float, m), the seqs of the others whose box comes within ``halo`` (m) of its own, in input
     order: a spatial index over the boxes' plan views, queried ``chunk`` buildings at a time."""
-    import shapely
     seqs = np.asarray(seqs, dtype=np.int64)
     boxes = np.asarray(boxes, dtype=np.float64).reshape(-1, 6)
     step = int(chunk or NEIGHBOUR_QUERY_CHUNK)

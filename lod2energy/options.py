@@ -7,22 +7,21 @@ from __future__ import annotations
 
 import os
 from dataclasses import asdict, dataclass, field, replace
+from importlib.resources import files
 from typing import Any, Mapping
 
+from lod2energy.cache import digest
 from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.errors import ParameterError
 from lod2energy.model import CityModel
+from lod2energy.thermal import ThermalOptions, country_from_crs
+from lod2energy.thermal.attributes import load_attribute_map
 
 #: Writers in the order they run and appear in the options.
 FORMATS = ("cityjson", "idf", "stl", "cfd", "geojson")
 #: Writers that need the buildings' real positions (a site, latitude / longitude): refused for
 #: a file with no CRS pyproj reads unless ``--crs`` gives one; the others take metres.
 NEEDS_POSITIONS = ("idf", "geojson")
-
-
-def _thermal_default():
-    from lod2energy.thermal import ThermalOptions
-    return ThermalOptions()
 
 
 @dataclass(frozen=True)
@@ -47,9 +46,11 @@ class PrepareOptions:
     lod: str | None = None
     timeout: float = 30.0
     merge_parts: bool = False
-    thermal: Any = field(default_factory=_thermal_default)
+    thermal: Any = field(default_factory=ThermalOptions)
 
 
+# The writers' option classes come with their format packages (which import their writers):
+# loaded when an ExportOptions is made, not when this module is (validate and repair read it).
 def _idf_default():
     from lod2energy.exporters.energyplus.options import IdfOptions
     return IdfOptions()
@@ -126,7 +127,6 @@ class ExportOptions:
 
     def fingerprint(self) -> dict:
         """JSON-ready summary of everything that changes the outputs (the journal header)."""
-        from lod2energy.cache import digest
         th = self.prepare.thermal
         amap = getattr(th, "attribute_map", None)
         plain = replace(self, buildings=None, prepare=replace(self.prepare, thermal=replace(th, attribute_map=None))
@@ -198,8 +198,6 @@ def ladder_budget(timeout: float | None) -> float | None:
 
 def prepare_options(a, tol: Tolerances = DEFAULT, crs: str | None = None) -> PrepareOptions:
     """:class:`PrepareOptions` from a namespace of CLI options (absent ones: defaults)."""
-    from lod2energy.thermal import ThermalOptions
-    from lod2energy.thermal.attributes import load_attribute_map
     kw = {"crs": crs, "lod": getattr(a, "lod", None)}
     for name in ("country", "u_table", "u_wall", "u_roof", "u_ground", "u_window", "wwr", "use"):
         v = getattr(a, name, None)
@@ -216,7 +214,6 @@ def default_weather(country: str | None) -> str | None:
     """The bundled EPW for ``country`` (only NL ships one), else None."""
     if (country or "").upper() != "NL":
         return None
-    from importlib.resources import files
     p = files("lod2energy") / "data" / "weather" / "NLD_OV_Heino.062780_TMYx.2007-2021.epw"
     return str(p) if p.is_file() else None
 
@@ -230,7 +227,6 @@ def resolve(options: ExportOptions, model: CityModel) -> ExportOptions:
         ``--run`` without a weather file where none ships, a missing weather file, or a
         weather folder without EPW files.
     """
-    from lod2energy.thermal import country_from_crs
     prep = options.prepare
     if getattr(prep.thermal, "crs", None) is None and model is not None and model.crs:
         prep = replace(prep, thermal=replace(prep.thermal, crs=model.crs))

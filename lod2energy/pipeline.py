@@ -18,30 +18,52 @@ assembled from it, in input order, so that every executor writes the same bytes.
 """
 from __future__ import annotations
 
+import importlib
 import os
 import sys
+from array import array
 from dataclasses import dataclass, replace
+from functools import partial
 from typing import Iterator, Sequence
 
 import numpy as np
 
+from lod2energy.beside import Beside
 from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.crs import no_crs_reason
 from lod2energy.dataset import BESIDE, DatasetResult, beside_ok, dataset_apply, dataset_pass, write_beside
 from lod2energy.errors import ParameterError
+from lod2energy.executor import Failure, Overrun, ProcessPoolExecutor, make_executor
+from lod2energy.exporters.cfd.region import building_hull
+from lod2energy.exporters.registry import writers
 from lod2energy.interrupt import EXIT_INVALID, EXIT_OK, EXIT_SIGINT, EXIT_UNUSABLE, Interrupted, Signals
+from lod2energy.io import read
+from lod2energy.io.interior import without_interior
+from lod2energy.io.openings import cut_openings
+from lod2energy.journal import JOURNAL_NAME, Journal, header, records_of
 from lod2energy.model import Building, CityModel, FeatureError, frozen_mapping
 from lod2energy.neighbours import neighbours_within, spatial_order
 from lod2energy.options import NEEDS_POSITIONS, ExportOptions, PrepareOptions, RunOptions, ladder_budget, prepare_options, resolve
 from lod2energy.records import (
     _untimed, BuildingRecord, ComplianceRecord, ExportRecord, RecordStore, RepairRecord, ThermalRecord,
 )
+from lod2energy.repair import repair_info
+from lod2energy.repair.parts import clip_overlapping_parts, keep_input_parts
+from lod2energy.repair.pipeline import repair_building
 from lod2energy.reports import (
     CsvRows, err, note_frame, progress, refuse_overwriting_inputs, write_html_report, write_reports_from_journal,
 )
+from lod2energy.safe_write import sweep_stale
+from lod2energy.semantics import label_building
 from lod2energy.spool import Job, load_spooled, reusable, spool_building
+from lod2energy.thermal import assign_u_values
+from lod2energy.thermal.facts import TABLE_KEY, attribute_map
 from lod2energy.validate import checks as _checks
+from lod2energy.validate.closed import export_problem
+from lod2energy.validate.compliance import energy_compliance
 from lod2energy.validate.memo import carry, geometry_key, recall, verdict_key
+from lod2energy.viz.footprints import FootprintSpill, plan_footprint
+from lod2energy.viz.report import warm_page
 
 
 # ============================================================================ one building
@@ -55,7 +77,6 @@ def repair_one(b: Building, tol: Tolerances, timeout: float = 30.0, merge_parts:
     """Repair a building by the ladder (identity for valid input and non-buildings)."""
     if not b.is_building:
         return b
-    from lod2energy.repair.pipeline import repair_building
     return repair_building(b, tol=tol, timeout=timeout, merge_parts=merge_parts, lod=lod)
 
 
@@ -66,14 +87,12 @@ _geometry_key = geometry_key
 def final_check(b: Building, defects, lod: str | None, tol: Tolerances = DEFAULT) -> str | None:
     """Why ``b`` may not be called compliant nor exported (None when it may).
 
-    The acceptance check every writer applies (:func:`lod2energy.repair.accept.export_problem`:
+    The acceptance check every writer applies (:func:`lod2energy.validate.closed.export_problem`:
     thermal data present, envelope closed, outward, labelled, with U-values, val3dity-valid at
     the energy LoD at the user's tolerances), judged on the output file's grid: the building
     as the CityJSON writer will write it. ``defects`` (of the final geometry at ``tol``) are
     reused when the grid leaves the geometry as it is.
     """
-    from lod2energy.repair.accept import export_problem
-
     return export_problem(b, lod, tol, defects=defects)
 
 
@@ -89,13 +108,6 @@ def prepare_building(b: Building, options: PrepareOptions = PrepareOptions(), se
     (Building, BuildingRecord)
         The labelled building with ``provenance["energy"]`` and its record.
     """
-    from lod2energy.io.interior import without_interior
-    from lod2energy.io.openings import cut_openings
-    from lod2energy.repair import repair_info
-    from lod2energy.semantics import label_building
-    from lod2energy.thermal import assign_u_values
-    from lod2energy.validate.compliance import energy_compliance
-
     tol, lod = options.tol, options.lod
     b = without_interior(b)  # LoD3/4 interior detail is not envelope (counted in the repair record)
     b = cut_openings(b)  # LoD3 openings drawn over their wall: the wall gets their hole (counted too)
@@ -117,7 +129,6 @@ def prepare_building(b: Building, options: PrepareOptions = PrepareOptions(), se
         extra["geometry_replaced"] = list(b.provenance["geometry_replaced"])
     unclipped = rb
     if not options.merge_parts and rb.is_building:  # no volume counted twice (issue 19 item 1)
-        from lod2energy.repair.parts import clip_overlapping_parts
         # the validator's verdict of this geometry (the input's, or the repair's of its result):
         # with no defect but 601 its overlap check ran and found these
         verdict = before if rb is b else recall(verdict_key(rb, tol))
@@ -132,7 +143,6 @@ def prepare_building(b: Building, options: PrepareOptions = PrepareOptions(), se
         thermal_opts = replace(thermal_opts, lod=lod)
     tb = assign_u_values(lb, thermal_opts)
     if rb is not unclipped:  # the union writers (STL) keep the input parts: same union, no new seams
-        from lod2energy.repair.parts import keep_input_parts
         tb = keep_input_parts(tb, assign_u_values(label_building(unclipped, lod=lod, source=b), thermal_opts))
     after = before if _geometry_key(tb) == _geometry_key(b) else _checks.validate_building(tb, tol)
     block = dict(energy_compliance(tb, after, lod=lod, tol=tol, assess_labels=True, assess_u_values=True))
@@ -186,7 +196,6 @@ def process_building(b: Building, options: ExportOptions, outdir: str, seq: int 
     """The whole job of one building: :func:`prepare_building`, then the chosen writers that
     need no other building (their self-checks included). Pure but for the files it writes
     into ``outdir``; picklable (a module-level function of picklable arguments)."""
-    from lod2energy.exporters.registry import writers
     pb, rec = prepare_building(b, options.prepare, seq)
     if not rec.energy.geometry_ready:
         return pb, rec
@@ -240,14 +249,12 @@ def first_pass(task: tuple) -> Pass1:
 
 def plan_of(b: Building) -> list:
     """The plan footprint of ``b`` for report.html (:func:`lod2energy.viz.footprints.plan_footprint`)."""
-    from lod2energy.viz.footprints import plan_footprint
     return plan_footprint(b)
 
 
 def context_pass(task: tuple) -> list[ExportRecord]:
     """Worker side of the neighbour pass: ``(seq, neighbour seqs, job)`` -> export records
     of the writers with "context" scope for building ``seq``."""
-    from lod2energy.exporters.registry import writers
     seq, near, job = task
     b = load_spooled(job.spool, seq)
     context = [load_spooled(job.spool, s) for s in near]
@@ -300,12 +307,10 @@ def warm(options: ExportOptions) -> None:
     IDF's self-check), before a process pool forks its workers from this process: they then
     share it instead of each loading its own (about 1.3 CPU s of imports and 1.1 s of IDD parse
     a worker). Modules that start threads (pymeshlab) are left to the workers."""
-    import importlib
     for m in _JOB_MODULES + tuple(x for f in options.formats for x in _WRITER_MODULES.get(f, ())):
         importlib.import_module(m)
-    if "idf" in options.formats:
-        from lod2energy.exporters.energyplus.run import idd
-        idd()
+    if "idf" in options.formats:  # the writer's package, loaded by name as the others are
+        importlib.import_module("lod2energy.exporters.energyplus.run").idd()
 
 
 def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions = RunOptions(),
@@ -330,12 +335,6 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
         Exit code 0 (all exported and self-checked), 1 (some building not), 2 (unusable
         input), 130 / 143 (interrupted by SIGINT / SIGTERM; the report has what was done).
     """
-    from lod2energy.beside import Beside
-    from lod2energy.executor import Failure, Overrun, ProcessPoolExecutor, make_executor
-    from lod2energy.exporters.registry import writers
-    from lod2energy.io import read
-    from lod2energy.journal import JOURNAL_NAME, Journal, header
-
     inputs = (input_path,)
     refuse_overwriting_inputs([os.path.join(outdir, n) for n in ("report.json", "report.csv", "report.jsonl")],
                               inputs)
@@ -359,7 +358,6 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
     options = resolve(options, model)
     os.makedirs(outdir, exist_ok=True)
     out = os.path.abspath(outdir)
-    from lod2energy.safe_write import sweep_stale
     sweep_stale(out)  # temporaries of a run that was killed mid-write
     spool = os.path.join(out, ".lod2energy", "spool")
     os.makedirs(spool, exist_ok=True)
@@ -399,7 +397,6 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
     timeout = options.job_timeout
     plans = None  # the plan footprints of every object as read, in input order, for report.html
     if options.html:
-        from lod2energy.viz.footprints import FootprintSpill
         plans = FootprintSpill(out)
     resumed_plans: dict[int, tuple[str, list]] = {}  # of resumed objects, drawn here (no job reads them)
     try:
@@ -496,7 +493,6 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
                 # ---- pass 2: writers that need the neighbours, one building at a time
                 ctx_writers = [w for w in chosen if scope[w.name] == "context"]
                 if ctx_writers:
-                    from array import array
                     ready, ready_boxes = array("q"), array("d")  # 56 bytes a building, not a tuple of floats
                     for s, r in records.in_order():
                         if r.outcome == "done" and r.energy.geometry_ready and r.bbox is not None:
@@ -528,8 +524,6 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
                     # a worker left idle at the end loads what report.html's pictures need
                     tail = None
                     if page_pool is not None:
-                        from functools import partial
-                        from lod2energy.viz.report import warm_page
                         tail = partial(warm_page, after=beside.proc.pid if beside is not None else None)
                     n_ctx = len(ready) - len(neighbour_boxes)
                     run_idf = "idf" in names and getattr(options.writer_options("idf"), "run", False)
@@ -587,7 +581,6 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
     csv_rows.close()
     journal.sync()
     try:
-        from lod2energy.journal import records_of
         done = records_of(journal.path, journal.run_start)  # what the journal says was done: the report
         report = write_reports_from_journal(out, input_path, model, str(journal.path), journal.run_start,
                                             dataset_errors, interrupted, inputs, done, study)
@@ -622,7 +615,6 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
 
 def _joined(b: Building, table, input_ids: set) -> Building:
     """``b`` with its ``--buildings`` row (:data:`lod2energy.thermal.facts.TABLE_KEY`), its id noted."""
-    from lod2energy.thermal.facts import TABLE_KEY
     bid = str(b.id)
     input_ids.add(bid)
     row = table.get(bid) if table else None
@@ -631,7 +623,6 @@ def _joined(b: Building, table, input_ids: set) -> Building:
 
 def _study_entry(options: ExportOptions) -> dict:
     """report.json's ``study``: the attribute map, the table's size and the selection."""
-    from lod2energy.thermal.facts import attribute_map
     out: dict = {"attribute_map": attribute_map(getattr(options.prepare.thermal, "attribute_map", None)).name}
     if options.buildings is not None:
         out["buildings_table"] = {"rows": len(options.buildings)}
@@ -659,7 +650,6 @@ def _report_unknown_ids(input_path: str, input_ids: set, table, selection) -> di
 
 def _selector(ids, region):
     """``item -> bool`` of the buildings chosen by ``--ids`` and ``--region`` (None: all)."""
-    from lod2energy.exporters.cfd.region import building_hull
     if ids is None and region is None:
         return None
     shape = region.shape() if region is not None else None
@@ -681,7 +671,6 @@ def _selection_reach(input_path: str, selected, chosen, scope, options: ExportOp
     ctx = [w for w in chosen if scope[w.name] in ("context", "dataset") and w.halo(options.writer_options(w.name)) > 0]
     if selected is None or not ctx:
         return lambda item: False
-    from lod2energy.io import read
     halo = max(w.halo(options.writer_options(w.name)) for w in ctx) + REACH_MARGIN
     boxes = []
     # only the selected ids are built when the selection is by id (the CityJSON readers skip the others)
@@ -718,7 +707,6 @@ def _beside_results(beside, writers) -> dict:
     (empty without one); a process that failed as a whole is a failed result for each writer."""
     if beside is None:
         return {}
-    from lod2energy.executor import Failure
     res = beside.result()
     if isinstance(res, Failure):  # every writer of the process, as dataset_write reports a failed writer
         return {w.name: DatasetResult(w.name, error=f"{w.name.upper()} export failed: {res.message}") for w in writers}

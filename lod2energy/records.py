@@ -22,6 +22,7 @@ from dataclasses import dataclass, field, replace
 from typing import Any, Mapping
 
 from lod2energy.energy.downgrades import Downgrade, summed
+from lod2energy.safe_write import json_default
 
 
 # ----------------------------------------------------------------------------- pickling
@@ -55,7 +56,6 @@ def _untimed(obj: Any) -> Any:
     if t is list or t is tuple or isinstance(obj, (list, tuple)):
         return [_untimed(v) for v in obj]
     if type(obj).__module__ == "numpy":
-        from lod2energy.safe_write import json_default
         return json_default(obj)
     return obj
 

@@ -6,17 +6,20 @@ import os
 from dataclasses import replace
 
 from lod2energy.config import Tolerances
+from lod2energy.executor import Failure, Overrun, make_executor
 from lod2energy.interrupt import EXIT_OK, EXIT_INVALID, EXIT_UNUSABLE
+from lod2energy.io import cityjson, read
 from lod2energy.model import Building, FeatureError, frozen_mapping
 from lod2energy.options import hard_budget
+from lod2energy.repair import dataset_table, repair_attributes, repair_features, repair_info
 from lod2energy.reports import err, frame_entry, json_ready, note_frame, progress, refuse_overwriting_inputs
 from lod2energy.safe_write import UnsafeWriteError, check_target, write_json
 from lod2energy.validate.report import error_json
+from lod2energy.viz.report import keep, write_report_html
 
 
 def with_repair_attributes(b: Building) -> Building:
     """``b`` with its repair record as flat attributes of the root CityObject."""
-    from lod2energy.repair import repair_attributes
     if not b.is_building:
         return b
     attrs = dict(b.root.attributes)
@@ -30,7 +33,6 @@ REPAIR_SUFFIXES = (".json", ".jsonl", ".cjseq")
 
 
 def _repair_job(task):
-    from lod2energy.repair import repair_features
     b, tol, timeout, merge_parts, lod = task
     return next(iter(repair_features([b], tol, timeout, merge_parts, lod)))
 
@@ -39,8 +41,6 @@ def _repaired(feats, tol: Tolerances, timeout: float, merge_parts: bool, lod, jo
     """``repair_features`` on an executor that holds each building to its time budget: a building
     still running ``max(2 s, 20 %)`` past ``timeout`` is stopped and kept as read, reported
     ``timeout`` (the ladder's own deadline is cooperative and cannot interrupt one long step)."""
-    from lod2energy.executor import Failure, Overrun, make_executor
-
     limit = hard_budget(timeout)
     with make_executor(1 if jobs is None else jobs, None) as ex:
         def tasks():
@@ -67,9 +67,6 @@ def _print_repair_summary(table: dict) -> None:
 
 def repair_file(a, tol: Tolerances) -> int:
     """``lod2energy repair IN -o OUT``: every CityObject kept, defective buildings replaced by solids."""
-    from lod2energy.io import cityjson, read
-    from lod2energy.repair import dataset_table, repair_features, repair_info
-
     if not a.output.lower().endswith(REPAIR_SUFFIXES):
         err(f"repair writes CityJSON (.json, .city.json) or CityJSONSeq (.jsonl, .city.jsonl): "
              f"cannot write {a.output!r}")
@@ -88,7 +85,6 @@ def repair_file(a, tol: Tolerances) -> int:
     lost: list[dict] = []
     html_inputs: dict = {}
     if getattr(a, "html", None):
-        from lod2energy.viz.report import keep
         check_target(a.html, None, [a.input, a.output])
         feats = keep(feats, html_inputs)
     tick, close = progress(a.quiet, os.path.basename(a.input))
@@ -125,7 +121,6 @@ def repair_file(a, tol: Tolerances) -> int:
         write_json(a.report, doc, inputs=[a.input, a.output])
     if getattr(a, "html", None):
         try:
-            from lod2energy.viz.report import write_report_html
             write_report_html(json_ready(doc), a.html, inputs=html_inputs, outputs={b.id: b for b in out_b},
                               tol=tol, input_files=[a.input, a.output])
         except Exception as e:  # noqa: BLE001 - the page is a view of the report

@@ -13,6 +13,8 @@ from typing import TYPE_CHECKING, Iterable, Sequence
 
 from lod2energy import crs as crs_
 from lod2energy.config import DEFAULT, Tolerances
+from lod2energy.io.json_stream import Scanner
+from lod2energy.journal import records_of, terrain_of
 from lod2energy.model import CityModel
 from lod2energy.options import FORMATS
 from lod2energy.energy.downgrades import KINDS
@@ -20,6 +22,7 @@ from lod2energy.records import CSV_FIELDS, BuildingRecord
 from lod2energy.safe_write import atomic_write, check_target, json_default
 from lod2energy.site import MAX_WEATHER_KM
 from lod2energy.spool import load_spooled, spool_path
+from lod2energy.viz.report import write_report_for_files
 
 if TYPE_CHECKING:
     from lod2energy.journal import JournalRecords
@@ -168,7 +171,6 @@ def write_reports_from_journal(out: str, input_path: str, model, journal_path: s
     """:func:`write_reports` from this run's lines of the journal (:func:`lod2energy.journal.records_of`
     from byte ``start``, or ``recs`` when given): what the journal says was done is what the
     report says."""
-    from lod2energy.journal import records_of, terrain_of
     recs = recs if recs is not None else records_of(journal_path, start)
     return write_reports(out, input_path, model, recs.ordered(), dataset_errors, interrupted, inputs,
                          terrain_of(journal_path, start), study)
@@ -176,8 +178,6 @@ def write_reports_from_journal(out: str, input_path: str, model, journal_path: s
 
 def json_ready(doc):
     """``doc`` as it reads back from JSON (numpy values, tuples and mappings made plain)."""
-    import json
-    from lod2energy.safe_write import json_default
     return json.loads(json.dumps(doc, default=json_default))
 
 
@@ -189,7 +189,6 @@ class _ReportBuildings:
         self.path = path
 
     def __iter__(self):
-        from lod2energy.io.json_stream import Scanner
         with open(self.path, encoding="utf-8") as f:
             sc = Scanner(f)
             for key in sc.members():
@@ -202,7 +201,6 @@ class _ReportBuildings:
 
 def report_lazily(path: str) -> dict:
     """``report.json`` as ``json.load`` gives it, but its ``buildings`` a :class:`_ReportBuildings`."""
-    from lod2energy.io.json_stream import Scanner
     doc: dict = {}
     with open(path, encoding="utf-8") as f:
         sc = Scanner(f)
@@ -228,8 +226,6 @@ def write_html_report(report_path: str, input_path: str, records: JournalRecords
     :func:`lod2energy.viz.report.write_report_html`); ``crs``: the user's ``--crs``, for the input
     read again."""
     try:
-        from lod2energy.viz.report import write_report_for_files
-
         def outputs(ids, _inputs) -> dict:  # the panels' prepared buildings, from the spool
             out_b = {}
             for s in records.seqs_of(ids):

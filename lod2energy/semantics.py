@@ -548,3 +548,15 @@ def label_confusion(b: Building, lod: str | None = None,
             if st is not None:
                 out[(st, rl[i])] = out.get((st, rl[i]), 0.0) + float(t.area[i])
     return out
+
+
+def strip_to_energy(b: Building, lod: str | None, keep_other_lods: bool = False) -> Building:
+    """``b`` with only its envelope geometries at ``lod`` (all of them when ``keep_other_lods``)."""
+    if keep_other_lods:
+        return b
+    keep = {(o.id, gi) for o, gi, _ in envelope_objects(b, lod)}
+    objs = []
+    for o in b.objects:
+        geoms = tuple(g for gi, g in enumerate(o.geometries) if (o.id, gi) in keep)
+        objs.append(replace(o, geometries=geoms))
+    return replace(b, objects=tuple(objs))

@@ -15,6 +15,7 @@ from lod2energy.model import Building
 from lod2energy.options import ExportOptions
 from lod2energy.records import BuildingRecord
 from lod2energy.safe_write import write_bytes
+from lod2energy.validate.memo import learn
 
 
 @dataclass(frozen=True)
@@ -45,7 +46,6 @@ def spool_building(job: Job, seq: int, b: Building) -> None:
 def load_spooled(spool: str, seq: int) -> Building:
     """The building spooled as object ``seq``; the validation verdicts it carries are
     remembered in this process (:func:`lod2energy.validate.memo.learn`)."""
-    from lod2energy.validate.memo import learn
     with open(spool_path(spool, seq), "rb") as f:
         b = pickle.load(f)
     if isinstance(b, Building):

@@ -1,5 +1,5 @@
 """Compliant vs written: the energy CityJSON holds every building its writer's check (the one
-final check, :func:`lod2energy.repair.accept.export_problem`) accepts, each with its compliance
+final check, :func:`lod2energy.validate.closed.export_problem`) accepts, each with its compliance
 block; a building whose val3dity-valid geometry keeps a sliver face (1003, which the repair
 could not collapse) is written with ``compliant: false`` and gets no IDF/STL. So the number of
 buildings the file calls compliant is the number the pipeline calls compliant."""

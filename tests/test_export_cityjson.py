@@ -381,9 +381,9 @@ def _random_mutation(doc, rng):
 
 
 @pytest.mark.parametrize("version", ("1.1", "2.0"))
-def test_compiled_schema_check_never_accepts_what_jsonschema_rejects(tmp_path, version):
-    """The compiled validator is only a shortcut for valid documents: whatever it accepts
-    the official schema (jsonschema) accepts too, and it does not change the document."""
+def test_fast_schema_check_never_accepts_what_jsonschema_rejects(tmp_path, version):
+    """The jsonschema-rs validator is a shortcut for valid documents: whatever it accepts the
+    official schema (jsonschema) accepts too, and it does not change the document."""
     res = X.write(str(tmp_path / "g.city.json"), model(version), two_buildings(), version)
     assert res.ok
     good = json.loads(Path(res.path).read_text())

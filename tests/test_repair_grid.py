@@ -6,7 +6,8 @@ import numpy as np
 
 from lod2energy.config import DEFAULT
 from lod2energy.model import Building, CityObject, Geometry, Shell, Solid, Surface
-from lod2energy.repair.accept import export_problem, grid_rounding, output_grid, repair_verdict
+from lod2energy.repair.accept import grid_rounding, output_grid, repair_verdict
+from lod2energy.validate.closed import export_problem
 from lod2energy.repair.convert import mesh_of_geometry
 from lod2energy.repair.pipeline import repair_building, repair_info
 from lod2energy.validate.checks import validate_building

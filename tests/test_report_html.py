@@ -186,7 +186,7 @@ def test_validation_and_repair_reports_render(tmp_path):
 
 def test_view_writes_the_panel_of_one_building(tmp_path, capsys):
     from lod2energy.cli import add_view_parser
-    from lod2energy.viz import cmd_view
+    from lod2energy.viz.view import cmd_view
     import argparse
     src = shared_path("citygml-real", "berlin", "3900_5819.gml")
     p = argparse.ArgumentParser()

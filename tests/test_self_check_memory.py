@@ -212,9 +212,7 @@ def test_what_the_check_holds_does_not_grow_with_the_document(tmp_path, monkeypa
     import tracemalloc
 
     monkeypatch.setattr(C, "Scanner", functools.partial(C.Scanner, chunk=1 << 14))
-    # the schema sees one batch of 64 CityObjects at a time (bounded); under tracemalloc its
-    # compiled validator costs minutes here, so this test leaves it out
-    monkeypatch.setattr(C, "_worth_compiling", lambda *a: True)
+    # the schema sees one batch of 64 CityObjects at a time (bounded); this test leaves it out
     monkeypatch.setattr(C, "_schema_valid_fast", lambda *a: True)
 
     def peak(n: int) -> int:

@@ -4,7 +4,7 @@ Usage (from the repository root, after ``lod2energy export TILE -o OUT/NAME --st
 
     python docs/report/screenshots.py OUT NAME [NAME ...]
 
-writes ``OUT/NAME/report.html`` by :func:`lod2energy.viz.write_report_for` (re-preparing only
+writes ``OUT/NAME/report.html`` by :func:`lod2energy.viz.view.write_report_for` (re-preparing only
 the buildings that get a panel) and ``docs/report/NAME-{first,plan,panel}.png`` from a headless
 Chromium (PNG, each < 300 KB), and prints the timings.
 """
@@ -17,7 +17,7 @@ from pathlib import Path
 from PIL import Image
 
 from lod2energy.safe_write import write_bytes
-from lod2energy.viz import write_report_for
+from lod2energy.viz.view import write_report_for
 from lod2energy.viz.browser import open_page
 
 HERE = Path(__file__).resolve().parent

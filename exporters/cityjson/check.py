@@ -38,14 +38,14 @@ import numpy as np
 from lod2energy.config import DEFAULT
 from lod2energy.errors import Lod2EnergyError
 from lod2energy.exporters.cityjson.schema import (
-    EXTENSION_NAME, MAX_PROBLEMS, _schema_errors, _schema_valid_fast, _validators, _worth_compiling,
+    EXTENSION_NAME, MAX_PROBLEMS, _schema_errors, _schema_valid_fast, _validators,
     extension_problems, extension_schema, load_extension_beside,
 )
 from lod2energy.io import cityjson as cjio
 from lod2energy.io import shape, to_local_frame
 from lod2energy.io.json_stream import Scanner, StreamError
 from lod2energy.model import Building, FeatureError
-from lod2energy.repair.accept import TOLERATED_CODES, envelope_problems
+from lod2energy.validate.closed import TOLERATED_CODES, envelope_problems
 from lod2energy.validate.checks import validate_building
 from lod2energy.validate.codes import name
 
@@ -198,7 +198,6 @@ class _Pass1:
         self.verts = _Vertices(scratch_dir)
         self.bad_vertices: list[list] = []  # chunks that are not triples of integers (for the schema)
         self.vertices_member: Any = None  # the 'vertices' value when it is not an array
-        self.n_objects = 0
 
     def vertices(self, transform):
         """The vertex array :func:`lod2energy.io.cityjson.build_feature` indexes."""
@@ -267,7 +266,6 @@ def _first_pass(path: str, scratch_dir: str | None = None) -> _Pass1:
                 if key == "vertices":
                     p.vertices_member = p.head[key]
         sc.end()
-    p.n_objects = len(hashes)
     p.ids = np.unique(np.frombuffer(hashes, dtype=np.int64)) if len(hashes) else p.ids
     p.repeated = len(p.ids) < len(hashes)
     return p
@@ -367,8 +365,7 @@ def _check(path: str, p: _Pass1, extension: Mapping | None, tol) -> list[str]:
     if "CityObjects" in skeleton:
         skeleton["CityObjects"] = {}
     problems: list[str] = []
-    fast = _worth_compiling(version, p.n_objects)
-    if not (fast and _schema_valid_fast(version, skeleton)):
+    if not _schema_valid_fast(version, skeleton):
         problems += _schema_errors(schemas, skeleton, "document")
     for chunk in p.bad_vertices:
         problems += _schema_errors(schemas, {**skeleton, "vertices": chunk}, "document (a block of vertices)")
@@ -382,7 +379,7 @@ def _check(path: str, p: _Pass1, extension: Mapping | None, tol) -> list[str]:
 
     def batch_problems(batch: dict) -> list[str]:
         doc = {**skeleton, "CityObjects": batch}
-        out = [] if (fast and _schema_valid_fast(version, doc)) else _schema_errors(schemas, doc, "document")
+        out = [] if _schema_valid_fast(version, doc) else _schema_errors(schemas, doc, "document")
         return out + (extension_problems(doc, extension, "document") if referenced else [])
 
     model = None
@@ -535,17 +532,15 @@ def self_check(path: str, extension: Mapping | None = None, tol=None) -> list[st
     except Lod2EnergyError as e:
         return [f"{path}: {e}"]
     schemas = _validators(version)
-    # a document the compiled validator accepts has no schema error: the interpreted
-    # validators (slow, with the messages) only see the documents it rejects
-    n_objects = sum(len(d.get("CityObjects") or {}) for _, d in docs if isinstance(d, Mapping))
-    fast = _worth_compiling(version, n_objects)
-    if not (fast and _schema_valid_fast(version, head)):
+    # a document jsonschema-rs accepts has no schema error: the interpreted validators (slow,
+    # with the messages) only see the documents it rejects
+    if not _schema_valid_fast(version, head):
         problems += _schema_errors(schemas, head, docs[0][0])
     for what, d in docs[1:]:
         if schemas.feature is None:
             problems.append(f"{what}: CityJSONFeature needs CityJSON 1.1 or later")
             break
-        if not (fast and _schema_valid_fast(version, d, feature=True)):
+        if not _schema_valid_fast(version, d, feature=True):
             problems += _schema_errors(schemas, d, what, feature=True)
         if len(problems) > MAX_PROBLEMS:
             break

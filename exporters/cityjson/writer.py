@@ -46,7 +46,8 @@ from lod2energy.io import cityjson as cjio
 from lod2energy.io.cityjson_grid import on_grid
 from lod2energy.io.cityjson_write import write_document
 from lod2energy.model import Building, CityModel, frozen_mapping
-from lod2energy.repair.accept import export_problem, strip_to_energy
+from lod2energy.semantics import strip_to_energy
+from lod2energy.validate.closed import export_problem
 
 from lod2energy.exporters.cityjson.check import self_check
 from lod2energy.exporters.cityjson.schema import EXTENSION_FILE, extension_schema
@@ -99,7 +100,7 @@ def _untimed(x: Any) -> Any:
 def _ready_problem(b: Building, lod: str | None, keep_other_lods: bool = False, tol=None,
                    transform=None, frame=None) -> str | None:
     """Why ``b`` cannot be exported as an energy building (None when it can): the pipeline's
-    final check (:func:`lod2energy.repair.accept.export_problem`) on the file's grid
+    final check (:func:`lod2energy.validate.closed.export_problem`) on the file's grid
     ``transform`` (default: the building's own, :func:`lod2energy.io.cityjson_grid.building_grid`)."""
     return export_problem(b, lod, tol or DEFAULT, transform=transform, frame=frame, keep_other_lods=keep_other_lods)
 

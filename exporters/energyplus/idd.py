@@ -25,7 +25,6 @@ import math
 import re
 from collections.abc import Mapping
 from dataclasses import dataclass
-from functools import lru_cache
 from pathlib import Path
 
 from lod2energy import cache
@@ -346,7 +345,7 @@ def _class_flags(idd: Idd) -> list[tuple[str, bool, bool]]:
     return [(c.name, c.unique, c.required) for c in idd.classes.values() if c.unique or c.required]
 
 
-@lru_cache(maxsize=None)
+@cache.memoize("idd.parsed", 4)
 def load_idd(path: str) -> Idd:
     """The parsed IDD at ``path``, read once per process."""
     return parse_idd(Path(path).read_text(encoding="latin-1"))

@@ -79,6 +79,7 @@ class IdfOptions:
     wwr: float | None = None
     shading: bool = False
     shading_radius: float = 50.0
+    # the simulation: its run, weather and the conditions of the zones
     run: bool = False
     weather: str | None = None
     heating_setpoint: float = 20.0
@@ -87,6 +88,7 @@ class IdfOptions:
     internal_gains: float = 0.0
     shgc: float = 0.6
     lod: str | None = None
+    # the geometry of the zones and their constructions
     party_walls: bool = True
     party_split: bool = False
     min_window_wall_area: float = 4.0

@@ -1,7 +1,6 @@
 """IDF text of zones and their pieces (the jinja2 template ``templates/building.idf.j2``)."""
 from __future__ import annotations
 
-import functools
 from dataclasses import replace
 from pathlib import Path
 from typing import Sequence
@@ -109,9 +108,9 @@ def _vertex_block(points: np.ndarray) -> dict:
 _DICT_ATTRS = frozenset(dir(dict))
 
 
-@functools.lru_cache(maxsize=1)
+@cache.memoize("idf.template", 1)
 def _template():
-
+    """The IDF template of one building (``building.idf.j2``), loaded once per process."""
 
     class _Environment(jinja2.Environment):
         """jinja2's environment whose ``{{ d.key }}`` on a plain dict reads the item directly.

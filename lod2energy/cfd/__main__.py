@@ -12,9 +12,17 @@ import json
 import os
 import sys
 import time
+from dataclasses import replace
 
+from lod2energy.config import DEFAULT
+from lod2energy.errors import Lod2EnergyError
 from lod2energy.exporters.cfd.options import add_cli_arguments, options_from_args
+from lod2energy.exporters.cfd.region import building_hull, make_region
 from lod2energy.exporters.cfd.writer import export_case
+from lod2energy.io import read
+from lod2energy.model import FeatureError
+from lod2energy.pipeline import prepare
+from lod2energy.safe_write import write_json
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -26,13 +34,6 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--nice", type=int, default=10, help="nice level of the meshing tools")
     add_cli_arguments(ap)
     a = ap.parse_args(argv)
-    from dataclasses import replace
-    from lod2energy.config import DEFAULT
-    from lod2energy.errors import Lod2EnergyError
-    from lod2energy.model import FeatureError
-    from lod2energy.io import read
-    from lod2energy.pipeline import prepare
-    from lod2energy.safe_write import write_json
 
     try:
         opts = replace(options_from_args(a), iterations=a.iterations, nice=a.nice)
@@ -88,7 +89,6 @@ def main(argv: list[str] | None = None) -> int:
 
 def _prefilter(opts: CfdOptions):
     """A cheap test of whether a raw building can meet the region (None: every building)."""
-    from lod2energy.exporters.cfd.region import building_hull, make_region
     shape = make_region(opts.region, opts.centre, opts.radius).shape()
     if shape is None:
         return None

@@ -327,20 +327,17 @@ def closest_on_triangle(p, a, b, c):
     d1, d2 = ab @ ap, ac @ ap
     if d1 <= 0 and d2 <= 0:
         return a
-    bp = p - b
+    bp, cp = p - b, p - c
     d3, d4 = ab @ bp, ac @ bp
-    if d3 >= 0 and d4 <= d3:
-        return b
-    vc = d1 * d4 - d3 * d2
-    if vc <= 0 and d1 >= 0 and d3 <= 0:
-        return a + d1 / (d1 - d3) * ab
-    cp = p - c
     d5, d6 = ab @ cp, ac @ cp
-    if d6 >= 0 and d5 <= d6:
-        return c
+    vc = d1 * d4 - d3 * d2
     vb = d5 * d2 - d1 * d6
-    if vb <= 0 and d2 >= 0 and d6 <= 0:
-        return a + d2 / (d2 - d6) * ac
+    # vertex B then edge AB, vertex C then edge AC: the same tests, the two edges' roles swapped
+    for vertex, edge, near, far, t0, t1, v in ((b, ab, d3, d4, d1, d3, vc), (c, ac, d6, d5, d2, d6, vb)):
+        if near >= 0 and far <= near:
+            return vertex
+        if v <= 0 and t0 >= 0 and t1 <= 0:
+            return a + t0 / (t0 - t1) * edge
     va = d3 * d6 - d5 * d4
     if va <= 0 and d4 - d3 >= 0 and d5 - d6 >= 0:
         return b + (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (c - b)

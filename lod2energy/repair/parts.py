@@ -460,7 +460,7 @@ def _writable(m: PolyMesh) -> bool:
 def _valid_on_grid(b: Building, part_id: str, lod, tol: Tolerances) -> bool:
     """The solid of ``part_id`` in ``b`` is still a valid, writable solid once its vertices are
     rounded to the grid ``b`` will be written on (the writers' final check,
-    :func:`lod2energy.repair.accept.export_problem`, judges it there)."""
+    :func:`lod2energy.validate.closed.export_problem`, judges it there)."""
     snapped = on_grid(b, *building_grid(b))
     mine = [m for o, _gi, _g, m in _part_meshes_all(snapped, lod) if o.id == part_id]
     return bool(mine) and is_repaired(mine[0], lod, tol) and _writable(mine[0])

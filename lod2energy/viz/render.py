@@ -15,6 +15,7 @@ import io
 import re
 
 import numpy as np
+from markupsafe import escape
 
 from lod2energy import cache
 from lod2energy.config import DEFAULT, Tolerances
@@ -22,6 +23,7 @@ from lod2energy.geometry.polygons import newell_normal
 from lod2energy.geometry.vectors import unit
 from lod2energy.graph import building_graphs
 from lod2energy.model import Building
+from lod2energy.viz.figures import new_figure
 
 #: Colours of the graph picture (the method's Figure 5 legend: valid faces, defective faces,
 #: non-manifold edges, boundary edges; adjacencies in grey).
@@ -93,7 +95,6 @@ def plan_svg(items: list[dict], width: float = 900.0) -> str:
     width : float
         Width of the picture, px.
     """
-    from markupsafe import escape
     items = [it for it in items if len(it.get("footprint") or ())]
     if not items:
         return ""
@@ -315,7 +316,6 @@ KEPT_PANELS = 2048
 
 def _panel_image(before: Building | None, after: Building | None, pic: dict) -> str:
     """:func:`panel_image` without the cache."""
-    from lod2energy.viz.figures import new_figure
     fig = new_figure(9.6, 3.0)
     fig.dpi = 72
     f_in = faces(before) if before is not None else []

@@ -18,22 +18,29 @@ has every building). Memory and page size then stay bounded however large the ci
 """
 from __future__ import annotations
 
+import base64
+import io
 import json
 import os
+import time
 from array import array
 from pathlib import Path
 from typing import Iterable, Iterator
 
 import numpy as np
 
+import lod2energy.graph  # noqa: F401 - the panels' face-adjacency graphs (warm_page loads it in a worker)
 from lod2energy.config import DEFAULT, Tolerances
+from lod2energy.io import read
 from lod2energy.io.seen_ids import id_key
 from lod2energy.model import Building
+from lod2energy.safe_write import write_text
+from lod2energy.validate.checks import validate_building
 from lod2energy.viz import data as D
-from lod2energy.viz.footprints import (MAX_PANEL_FACES, FootprintSpill, drawable as _drawable, n_faces as _n_faces,
-                                       plan_footprint)
 from lod2energy.viz import figures as F
 from lod2energy.viz import render as R
+from lod2energy.viz.footprints import (MAX_PANEL_FACES, FootprintSpill, drawable as _drawable, n_faces as _n_faces,
+                                       plan_footprint)
 
 #: Default panel cap (see the module docstring).
 DEFAULT_CAP = 16
@@ -170,9 +177,6 @@ def _plan_picture(page: PageRows, footprints, inputs: dict, outputs: dict) -> tu
     None}``, and the plan's facts. ``footprints``: a :class:`FootprintSpill` or a dict of id ->
     rings; the panels' buildings (``inputs``, ``outputs``) are drawn from their geometry."""
     from PIL import Image, ImageDraw
-    import base64
-    import io
-
     given = footprints if isinstance(footprints, dict) else {}
     own = {}  # the panels' buildings not among the footprints of a dict
     for store in (inputs, outputs):
@@ -251,7 +255,6 @@ def _plan_picture(page: PageRows, footprints, inputs: dict, outputs: dict) -> tu
 
 
 def _panel(r: D.Row, before: Building | None, after: Building | None, tol: Tolerances) -> dict:
-    from lod2energy.validate.checks import validate_building
     defects = []
     too_big = max(_n_faces(before), _n_faces(after)) > MAX_PANEL_FACES
     if too_big:
@@ -329,12 +332,8 @@ def warm_page(_=None, after: int | None = None) -> None:
                     break
         except (OSError, IndexError):
             break
-        import time
         time.sleep(0.05)
-    import io
 
-    import lod2energy.graph  # noqa: F401 - the panels' face-adjacency graphs
-    import lod2energy.validate.checks  # noqa: F401
     from matplotlib.collections import EllipseCollection, LineCollection, PolyCollection  # noqa: F401
     fig = F.new_figure(1.0, 1.0)
     fig.add_subplot().plot([0, 1], [0, 1])
@@ -353,7 +352,6 @@ def render_report_html(report: dict, *, inputs: dict | None = None, outputs: dic
                        footprints=None, page: PageRows | None = None, plan_max: int | None = None,
                        mapper=None) -> str:
     """The page as a string (see :func:`write_report_html`)."""
-    import jinja2
     inputs, outputs = dict(inputs or {}), dict(outputs or {})
     if not isinstance(footprints, FootprintSpill):
         footprints = dict(footprints or {})
@@ -381,6 +379,7 @@ def render_report_html(report: dict, *, inputs: dict | None = None, outputs: dic
                  "buildings": [_row_json(r) for r in embedded],
                  "buildings_embedded": "all" if len(embedded) == page.n else "panels",
                  "export_seconds": report.get("seconds")}
+    import jinja2
     env = jinja2.Environment(loader=jinja2.PackageLoader("lod2energy.templates", "."),
                              autoescape=jinja2.select_autoescape(["html", "j2"]), trim_blocks=True,
                              lstrip_blocks=True)
@@ -442,7 +441,6 @@ def write_report_html(report: dict, path, *, inputs: dict | None = None, outputs
     -------
     Path of the written page.
     """
-    from lod2energy.safe_write import write_text
     html = render_report_html(report, inputs=inputs, outputs=outputs, cap=cap, tol=tol, footprints=footprints,
                               page=page, plan_max=plan_max, mapper=mapper)
     root = root if root is not None else os.path.dirname(os.path.abspath(path))
@@ -484,7 +482,6 @@ def write_report_for_files(report: dict, path, files, *, tol: Tolerances = DEFAU
         for f in files:
             if f and os.path.isfile(f):
                 if given:
-                    from lod2energy.io import read
                     inputs.update((b.id, b) for b in read(f, only=set(ids), **(read_options or {}))[1])
                     continue
                 i, fp = read_for_page(f, set(ids), spill, **(read_options or {}))
@@ -519,7 +516,6 @@ def read_for_page(path: str, wanted: set[str], spill: FootprintSpill | None = No
     and the footprints, not with the file; with a ``spill`` the footprints go to it (the dict
     returned is then empty) and memory grows with the panels only. ``read_options`` go to
     :func:`lod2energy.io.read` (``primitive``, ``inner_shells``)."""
-    from lod2energy.io import read
     model, feats = read(path, **read_options)
     keep: dict[str, Building] = {}
     fps: dict[str, list] = {}
@@ -540,7 +536,6 @@ def read_for_page(path: str, wanted: set[str], spill: FootprintSpill | None = No
 
 def read_buildings(path: str) -> dict[str, Building]:
     """Buildings of a file by id (unreadable features left out)."""
-    from lod2energy.io import read
     model, feats = read(path)
     if model is None:
         return {}

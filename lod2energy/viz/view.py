@@ -9,12 +9,17 @@ from __future__ import annotations
 import os
 import sys
 import time
+import webbrowser
 from pathlib import Path
 from types import SimpleNamespace
 
 from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.errors import InputError
+from lod2energy.io import read
 from lod2energy.model import Building, FeatureError
+from lod2energy.pipeline import prepare
+from lod2energy.reports import report_lazily
+from lod2energy.viz.render import slug
 from lod2energy.viz.report import DEFAULT_CAP, write_report_for_files, write_report_html
 
 
@@ -24,7 +29,6 @@ class ViewError(InputError):
 
 def _pick(path: str, building_id: str | None):
     """``(model, building)``: the building ``building_id`` (or the first) of the file."""
-    from lod2energy.io import read
     model, feats = read(path)
     if model is None:
         msgs = [f.message for f in feats if isinstance(f, FeatureError)]
@@ -69,9 +73,6 @@ def view(path, building_id: str | None = None, outdir=".", *, tol: Tolerances = 
     -------
     Path of the page.
     """
-    from lod2energy.pipeline import prepare
-    from lod2energy.viz.render import slug
-    from lod2energy.viz.report import write_report_html
     path = os.fspath(path)
     model, b = _pick(path, building_id)
     a = options or SimpleNamespace(lod=None, timeout=30.0, merge_parts=False)
@@ -82,7 +83,6 @@ def view(path, building_id: str | None = None, outdir=".", *, tol: Tolerances = 
     out = write_report_html(report, Path(outdir) / f"view-{slug(b.id)[2:]}.html", inputs={b.id: b},
                             outputs={b.id: pb}, cap=1, tol=tol, input_files=[path])
     if open_browser and has_display():
-        import webbrowser
         webbrowser.open(out.as_uri())
     return out
 
@@ -102,9 +102,6 @@ def cmd_view(args) -> int:
 
 def prepare_outputs(ids, inputs: dict[str, Building], tol: Tolerances = DEFAULT, options=None) -> dict:
     """Repaired, labelled buildings for ``ids`` by :func:`lod2energy.pipeline.prepare`."""
-    from types import SimpleNamespace
-
-    from lod2energy.pipeline import prepare
     a = options or SimpleNamespace(lod=None, timeout=30.0, merge_parts=False)
     out = {}
     for i in ids:
@@ -127,7 +124,6 @@ def write_report_for(report_json, html_path=None, input_path: str | None = None,
     Returns the page's path and timings (s): ``read``, ``prepare``, ``html`` (wall clock) and
     ``html_cpu`` (CPU time of this process writing the page: what an export would add).
     """
-    from lod2energy.reports import report_lazily
     rep = report_lazily(str(report_json))  # its buildings read one at a time, when iterated
     src = input_path or rep.get("input_file") or ""
     html_path = html_path or Path(report_json).with_name("report.html")
