@@ -263,6 +263,7 @@ LOCAL_IMPORTS = {
     ("lod2energy.repair.alphashape", "pymeshlab"): "starts threads: loaded in the alpha-wrap child only",
     ("lod2energy.safe_write", "numpy"): "safe_write is on the CLI's head; numpy only for a report's arrays",
     ("lod2energy.site", "pyproj"): "a transformer only for outputs that need positions",
+    ("lod2energy.crs", "pyproj"): "pyproj (0.1 s) only for a file that names a CRS, not for --help",
     ("lod2energy.threads", "threadpoolctl"): "only when numpy is loaded already (the CLI's head)",
     ("lod2energy.viz.browser", "playwright"): "optional (the test extra)",
     ("lod2energy.viz.figures", "matplotlib"): "the report's pictures only",
