@@ -19,13 +19,13 @@ from __future__ import annotations
 import time
 from collections import Counter
 from dataclasses import replace
-from typing import Iterable, Iterator, Mapping, Sequence
+from typing import Iterable, Iterator, Mapping
 
 import numpy as np
 
 from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.model import (
-    BUILDING_TYPES, SURFACE_TYPES, Building, FeatureError, Geometry, frozen_mapping, lod_key,
+    BUILDING_TYPES, Building, FeatureError, Geometry, frozen_mapping,
 )
 from lod2energy.polymesh import PolyMesh, compact, face_area, topology
 from lod2energy.repair.accept import grid_rounding, is_repaired, output_grid, repair_verdict, val3dity_codes
@@ -39,11 +39,14 @@ from lod2energy.repair.holefill import fill_holes
 from lod2energy.repair.metrics import fidelity
 from lod2energy.repair.orientation import orient
 from lod2energy.repair.parts import keep_parts_apart, merge_overlapping_parts, overlapping_parts
-from lod2energy.repair.plausible import closed_volume, implausible, not_hollow
+from lod2energy.repair.plausible import closed_volume, not_hollow
+from lod2energy.repair.verdict import (
+    _bounds_volume, input_codes, refused, targets as _targets, verdicts,
+)
 from lod2energy.repair.refill import close, refill
 from lod2energy.repair.roofs import ROOF_MODEL_MAX_DISPLACEMENT, roof_model
 from lod2energy.repair.unpinch import unpinch
-from lod2energy.validate.closed import energy_codes, invalid_surfaces, shell_defects
+from lod2energy.validate.closed import shell_defects
 from lod2energy.validate.checks import validate_building, validate_geometry
 
 STAGES = ("valid", "cleanup", "orientation", "holefill", "refill", "roofs", "alphashape", "footprint",
@@ -62,37 +65,13 @@ def _valid_or_none(m: PolyMesh | None, lod, tol: Tolerances) -> PolyMesh | None:
 
 # ----------------------------------------------------------------------------- the ladder
 
-def _input_defects(V: np.ndarray, items, tol: Tolerances) -> list[list[int]]:
-    """val3dity codes of each geometry ``(g, coid, gi, m)`` of a building (vertices ``V``) and
-    the ladder's own (``shell_defects`` of ``m``, its mesh, once snapped; the shells'
-    self-intersection tests in one batch)."""
-    codes, shells = [], []
-    for g, coid, gi, m in items:
-        codes.append({d.code for d in validate_geometry(V, coid, gi, g, tol)})
-        s = snap_vertices(m, tol.snap_tol)
-        invalid = None
-        if s is m and len(g.solids) == 1 and len(g.solids[0].shells) == 1:
-            # m is this one shell as it is (renumbered in order): the validator's polygon
-            # verdict on it, just computed, is the one shell_defects asks for
-            invalid = invalid_surfaces(V, g.solids[0].shells[0], tol)
-        shells.append((s, invalid))
-    out = []
-    found = shell_defects([s for s, _ in shells], tol, invalid=[inv for _, inv in shells])
-    for (g, _, _, m), c, (s, _), sd in zip(items, codes, shells, found):
-        if g.is_volumetric:
-            c |= {x if x < 1000 else 1003 for _, x, _ in sd}
-        else:
-            c |= set(energy_codes(sd))
-        # closed only once vertices are snapped (exporters need shared vertices); when
-        # snapping left m as it is, shell_defects found no boundary edge of m
-        if not sd and s is not m and topology(m).boundary:
-            c.add(1001)
-        out.append(sorted(c))
-    return out
-
-
-def ladder(m: PolyMesh, lod, tol: Tolerances, deadline: float) -> tuple[str, PolyMesh | None, list[str]]:
+def ladder(m: PolyMesh, lod, tol: Tolerances, deadline: float,
+           keep: bool = False) -> tuple[str, PolyMesh | None, list[str]]:
     """Run the stages on one shell.
+
+    ``keep``: ``m`` is valid as it is (no val3dity code, only the project's energy codes such
+    as a sliver): only the local stages may improve it, and when none does the answer is
+    ``("valid", None, log)``, the input kept; a valid input is never replaced.
 
     Returns
     -------
@@ -170,6 +149,9 @@ def ladder(m: PolyMesh, lod, tol: Tolerances, deadline: float) -> tuple[str, Pol
     if kept is not None:
         log.append(f"{kept[1]}: ok except {kept[0]} sliver(s) (1003 kept)")
         return kept[1], kept[2], log
+    if keep:
+        log.append("valid: kept as it is (a valid input is never replaced)")
+        return "valid", None, log
     return global_stages(m0, lod, tol, deadline, log)
 
 
@@ -206,48 +188,6 @@ def global_stages(m0: PolyMesh, lod, tol: Tolerances, deadline: float,
 #: more than a corrupted neighbourhood: the global stages are tried too and the closer result
 #: is kept.
 REFILL_MIN_IOU = 0.9
-
-#: A surface-type geometry (MultiSurface, CompositeSurface) of fewer faces beside a Solid of
-#: the same object and LoD is an extra, not an envelope.
-MIN_VOLUME_FACES = 4
-
-
-def _bounds_volume(g: Geometry, siblings: Sequence[Geometry] = ()) -> bool:
-    """Is ``g`` meant to enclose a volume: LoD >= 1 (or a Solid-type geometry whose 'lod' is
-    missing or junk, 901), and not a surface set of fewer than :data:`MIN_VOLUME_FACES` faces
-    next to a Solid-type geometry of the same LoD among ``siblings`` (Euromast's lone wall
-    beside its Solid). LoD0 footprints and roof outlines are not volumes."""
-    if g.is_volumetric:
-        return g.lod is None or lod_key(g.lod) >= 1
-    if lod_key(g.lod) < 1:
-        return False
-    n = sum(len(sh.surfaces) for so in g.solids for sh in so.shells)
-    extra = any(s is not g and s.is_volumetric and s.lod == g.lod for s in siblings)
-    return not (extra and 0 < n < MIN_VOLUME_FACES)
-
-
-def _targets(b: Building, lod: str | None) -> list[tuple[int, int, Geometry]]:
-    """(object index, geometry index, geometry) of the geometries the ladder looks at."""
-    out = []
-    for oi, o in enumerate(b.objects):
-        if o.type not in BUILDING_TYPES:
-            continue
-        solid_lods = {g.lod for g in o.geometries if g.is_volumetric and g.solids}
-        for gi, g in enumerate(o.geometries):
-            if not g.is_polygonal or not g.solids:
-                continue
-            if lod is not None and g.lod != lod:
-                continue
-            if g.type in SURFACE_TYPES and g.lod in solid_lods:
-                # the object's surfaces beside its own solid of the same LoD (another encoding
-                # of that volume): made into a second solid they would overlap it (601)
-                continue
-            if lod is None and not _bounds_volume(g, o.geometries):
-                continue
-            out.append((oi, gi, g))
-    # the highest LoD first: it is the one energy models use, so it gets the time budget first
-    return sorted(out, key=lambda t: -lod_key(t[2].lod))
-
 
 def _clean_surfaces(b: Building, lod: str | None, tol: Tolerances, lookup: dict, extra: list,
                     objs: list) -> list[dict]:
@@ -328,31 +268,30 @@ def _repair_building(b: Building, tol: Tolerances, timeout: float, merge_parts: 
     defects_before: set[int] = set()
     changed = False
     meshes = [mesh_of_geometry(b.vertices, g) for _, _, g in targets]
-    whys = [implausible(m) if m.faces else None for m in meshes]
-    checked = [k for k, (m, why) in enumerate(zip(meshes, whys))
-               if not (why is not None and not np.isfinite(m.vertices).all())]
-    found = dict(zip(checked, _input_defects(
-        b.vertices, [(targets[k][2], b.objects[targets[k][0]].id, targets[k][1], meshes[k]) for k in checked], tol)))
+    # misplaced coordinates, or no volume at all (flat): refused as they are, with the reason
+    whys = [refused(m, tol) for m in meshes]
+    found = verdicts(b, targets, meshes, whys, tol)
     for k, (oi, gi, g) in enumerate(targets):
         o = b.objects[oi]
         m, why = meshes[k], whys[k]
-        if k in found:
-            codes = found[k]
-        else:
-            codes = sorted({d.code for d in validate_geometry(b.vertices, o.id, gi, g, tol)})
+        codes = found[k]
         defects_before |= set(codes)
         entry = {"object": o.id, "geometry": gi, "lod": g.lod, "type": g.type,
                  "n_faces_before": m.n_faces, "defects_before": codes}
-        if not codes and g.type == "Solid" and why is None:
+        # the ladder starts with "valid as is -> keep": no val3dity code, a Solid, believable
+        valid = g.type == "Solid" and why is None and bool(m.faces) and all(c >= 1000 for c in codes)
+        if valid and not codes:
             entry.update(stage="valid", n_faces_after=m.n_faces, iou=1.0, mean_displacement=0.0,
                          mean_displacement_back=0.0, hausdorff=0.0, closure="closed", seconds=0.0)
             per_geom.append(entry)
             continue
         t1 = time.monotonic()
-        if not m.faces:
+        if valid and time.monotonic() > deadline:
+            stage, res, log = "valid", None, ["timeout: valid as it is, kept"]
+        elif not m.faces:
             stage, res, log = "irreparable", None, ["empty geometry"]
         elif why is not None:
-            # misplaced coordinates: no stage can recover the shape, the global ones would not end
+            # misplaced coordinates or no volume: no stage can recover a shape that is not there
             stage, res, log = "irreparable", None, [why]
             entry["error"] = why
         elif time.monotonic() > deadline:
@@ -361,6 +300,8 @@ def _repair_building(b: Building, tol: Tolerances, timeout: float, merge_parts: 
             stage = "hull" if verdict is None else "irreparable"
             res = res if stage == "hull" else None
             log = ["timeout: jumped to the convex hull"] + ([f"hull: {verdict}"] if verdict else [])
+        elif valid:
+            stage, res, log = ladder(m, g.lod, tol, deadline, keep=True)
         else:
             stage, res, log = ladder(m, g.lod, tol, deadline)
             stage, res, log = not_hollow(  # a hollow result goes further up the ladder
@@ -368,7 +309,11 @@ def _repair_building(b: Building, tol: Tolerances, timeout: float, merge_parts: 
                 lambda: _valid_or_none(convex_hull(cleanup(m, tol)), g.lod, tol),
                 closed_volume(snap_vertices(m, tol.snap_tol)))
         entry["log"] = log
-        if res is None:
+        if stage == "valid":
+            entry.update(stage="valid", n_faces_after=m.n_faces, iou=1.0, mean_displacement=0.0,
+                         mean_displacement_back=0.0, hausdorff=0.0, closure="closed",
+                         defects_after=codes)
+        elif res is None:
             entry.update(stage="irreparable", n_faces_after=m.n_faces, iou=None,
                          mean_displacement=None, mean_displacement_back=None, hausdorff=None,
                          closure=None)
@@ -376,7 +321,7 @@ def _repair_building(b: Building, tol: Tolerances, timeout: float, merge_parts: 
             res = compact(res)
             input_closed, env = _envelope(m, res, stage, tol)
             fid = fidelity(m, res, input_closed, env)
-            if stage == "refill" and fid["iou"] < REFILL_MIN_IOU:
+            if stage == "refill" and fid["iou"] < REFILL_MIN_IOU and not valid:
                 # the cut took a large part of the shell with it: a global stage may keep more
                 gstage, gres, glog = global_stages(cleanup(m, tol), g.lod, tol, deadline, [])
                 if gres is not None:
@@ -400,7 +345,7 @@ def _repair_building(b: Building, tol: Tolerances, timeout: float, merge_parts: 
         per_geom.append(entry)
     surfaces_log = _clean_surfaces(b, lod, tol, lookup, extra, objs)
     changed = changed or bool(surfaces_log)
-    if not changed and all(e["stage"] == "valid" for e in per_geom):
+    if not changed and all(e["stage"] == "valid" and not e["defects_before"] for e in per_geom):
         if not merge_parts:
             return b  # untouched: the same object
         nb = merge_overlapping_parts(b, tol, lod)
@@ -563,7 +508,7 @@ def dataset_table(buildings: Iterable[Building]) -> dict:
     }
 
 
-__all__ = ["STAGES", "DEFAULT_TIMEOUT", "repair_building", "repair_features", "dataset_table",
+__all__ = ["STAGES", "DEFAULT_TIMEOUT", "repair_building", "input_codes", "repair_features", "dataset_table",
            "repair_info", "repair_attributes", "ladder", "mesh_of_geometry", "geometry_of_mesh", "is_repaired", "roof_model",
            "ROOF_MODEL_MAX_DISPLACEMENT", "merge_slivers", "fill_holes",
            "frozen_mapping"]
