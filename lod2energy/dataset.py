@@ -143,6 +143,15 @@ def dataset_apply(res: DatasetResult, records: RecordStore, quiet: bool, journal
                     refused.append((bid, es.problems[0]))
                 elif not es.ok and bad is None:
                     bad = (bid, es)
+    for s in res.seqs:  # a compliant building the file left out without a word: not written
+        rec = records[s]
+        if rec.export(name) is None and rec.energy.compliant:
+            es = ExportRecord(name, False, "", (f"{name.upper()} not written: not in the file",))
+            records[s] = rec.with_export(es)
+            if journal is not None:
+                journal.append({"kind": "dataset", "seq": s, "exports": [es.journal()]}, sync=False)
+            if bad is None:
+                bad = (rec.id, es)
     if journal is not None:
         journal.sync()
     if refused and not quiet:

@@ -148,6 +148,15 @@ class ComplianceRecord(_Detail):
         d.update(compliant=False, geometry_ready=False, reasons=reasons)
         return ComplianceRecord(False, False, self.status, tuple(reasons), d)
 
+    def unwritten(self, reason: str) -> "ComplianceRecord":
+        """This record with the building not compliant because a requested writer did not write
+        it or its file failed the writer's self-check (``reason`` says which); the geometry
+        stays ready for the other writers."""
+        d = dict(self.detail)
+        reasons = [reason] + [r for r in self.reasons if r != reason]
+        d.update(compliant=False, reasons=reasons)
+        return ComplianceRecord(False, self.geometry_ready, self.status, tuple(reasons), d)
+
     def to_json(self) -> dict:
         return dict(self.detail)
 
@@ -355,9 +364,18 @@ class BuildingRecord:
 
     # -- building a record up
     def with_export(self, er: ExportRecord) -> "BuildingRecord":
-        """This record with ``er`` replacing any earlier result of the same writer."""
+        """This record with ``er`` replacing any earlier result of the same writer.
+
+        Compliant means written: a compliant building whose writer ``er`` did not write it, or
+        whose file failed that writer's self-check, is not compliant any more; its compliance
+        reasons and its message say which writer and check.
+        """
         ex = tuple(e for e in self.exports if e.format != er.format) + (er,)
-        return replace(self, exports=ex)
+        rec = replace(self, exports=ex)
+        if er.ok or not self.energy.compliant:
+            return rec
+        why = er.message(self.id)
+        return replace(rec, energy=self.energy.unwritten(why)).with_message(f"not compliant: {why}")
 
     def with_message(self, text: str) -> "BuildingRecord":
         return replace(self, message=(self.message + " " + text).strip() if text else self.message)

@@ -117,3 +117,48 @@ def test_an_export_record_says_whether_a_file_failed_or_none_was_written():
     unwritten = ExportRecord("idf", False, "", ("IDF not written: timeout: not finished within 5 s (--timeout)",))
     assert unwritten.message("b") == "IDF export b not written: timeout: not finished within 5 s (--timeout)"
     assert ExportRecord("stl", False).message("b") == "STL export b not written: no file"
+
+
+def test_a_file_that_fails_its_self_check_makes_the_building_not_compliant(tmp_path, monkeypatch):
+    """Issue 38 item 3: compliant means written and self-checked by every requested writer; the
+    record, report.json and report.csv say which writer's check failed."""
+    import csv
+    from exporters.stl import writer as stl
+    from lod2energy.options import ExportOptions, RunOptions
+    from lod2energy.pipeline import export
+    src = tmp_path / "two.city.json"
+    src.write_text(json.dumps(_doc_of(a=_box_data(0.0), b=_box_data(30.0))), encoding="utf-8")
+    real = stl.self_check
+    monkeypatch.setattr(stl, "self_check", lambda p: ["degenerate facet 3"] if "b" in str(p).rsplit("/", 1)[-1]
+                        else real(p))
+    out = tmp_path / "o"
+    opts = ExportOptions(("cityjson", "stl"), PrepareOptions(), html=False)
+    res = export(str(src), str(out), opts, RunOptions(jobs=1))
+    rows = {r["id"]: r for r in json.loads((out / "report.json").read_text())["buildings"]}
+    assert rows["a"]["compliant"] is True and rows["a"]["exports"]["stl"]["ok"]
+    assert rows["b"]["compliant"] is False and not rows["b"]["exports"]["stl"]["ok"]
+    assert "STL" in rows["b"]["energy"]["reasons"][0] and "degenerate facet 3" in rows["b"]["message"]
+    # every writer accepts exactly the buildings called compliant: the CityJSON does not accept b
+    assert not rows["b"]["exports"]["cityjson"]["ok"]
+    with open(out / "report.csv", newline="") as f:
+        csv_rows = {r["id"]: r for r in csv.DictReader(f)}
+    assert csv_rows["b"]["compliant"] == "False" and csv_rows["b"]["stl_ok"] == "False"
+    assert "STL" in csv_rows["b"]["message"]
+    assert res.exit_code == 1
+
+
+def test_a_compliant_building_left_out_of_a_one_file_writer_is_not_compliant():
+    """A one-file writer (the CityJSON) that leaves a compliant building out without a record:
+    not written, so not compliant."""
+    from lod2energy.dataset import DatasetResult, dataset_apply
+    from lod2energy.records import BuildingRecord, ComplianceRecord, RecordStore
+    ok = ComplianceRecord.from_block({"compliant": True, "geometry_ready": True, "reasons": []})
+    store = RecordStore()
+    store[0] = BuildingRecord(0, "a", "Building", energy=ok)
+    store[1] = BuildingRecord(1, "b", "Building", energy=ok)
+    from lod2energy.records import ExportRecord
+    res = DatasetResult("cityjson", (0, 1), (((("a",), ExportRecord("cityjson", True, "/o/x.city.json")),)))
+    dataset_apply(res, store, quiet=True)
+    assert store[0].energy.compliant and store[0].export("cityjson").ok
+    assert store[1].energy.compliant is False and not store[1].export("cityjson").ok
+    assert "CITYJSON" in store[1].energy.reasons[0]

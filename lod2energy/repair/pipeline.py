@@ -356,6 +356,8 @@ def _repair_building(b: Building, tol: Tolerances, timeout: float, merge_parts: 
     V = np.vstack([b.vertices, np.asarray(extra).reshape(-1, 3)]) if extra else b.vertices
     nb = replace(b, objects=tuple(objs), vertices=V)
     nb, parts_rec = keep_parts_apart(b, nb, tol, lod)  # no BuildingPart overlap made by the repair
+    if parts_rec.get("left") and not merge_parts:
+        nb = _refuse_overlaps(b, nb, per_geom, parts_rec["left"], lod if lod is not None else nb.default_lod())
     overlaps = overlapping_parts(nb, lod)
     if merge_parts and overlaps:
         nb = merge_overlapping_parts(nb, tol, lod)
@@ -368,6 +370,33 @@ def _repair_building(b: Building, tol: Tolerances, timeout: float, merge_parts: 
         summary["error"] = "; ".join(errors)
     summary["surfaces_cleaned"] = surfaces_log
     return nb.with_provenance(repair=summary)
+
+
+def _refuse_overlaps(b: Building, nb: Building, per_geom: list[dict], left: list, lod: str | None) -> Building:
+    """``nb`` with the repair of every part refused that overlaps a neighbour (601) where the
+    input did not, or more than in the input, once :func:`keep_parts_apart` could not separate
+    them (at ``lod``): like any failed candidate. The part keeps its input geometry and its entry in
+    ``per_geom`` becomes "irreparable" with the reason (the building is then not compliant)."""
+    objs = list(nb.objects)
+    index = {o.id: i for i, o in enumerate(objs)}
+    for e in per_geom:
+        hit = [(x, y, v) for x, y, v in left if e["object"] in (x, y)]
+        if not hit or e["stage"] in ("valid", "irreparable") or e["lod"] != lod:
+            continue
+        x, y, v = hit[0]
+        other = y if x == e["object"] else x
+        why = (f"repair ({e['stage']}) makes it overlap {other} (601"
+               + (f", {v:g} m3" if v is not None else "") + "): refused")
+        i = index[e["object"]]
+        geoms = list(objs[i].geometries)
+        geoms[e["geometry"]] = b.objects[i].geometries[e["geometry"]]
+        objs[i] = replace(objs[i], geometries=tuple(geoms))
+        e.update(stage="irreparable", n_faces_after=e["n_faces_before"], iou=None, mean_displacement=None,
+                 mean_displacement_back=None, hausdorff=None, closure=None, error=why,
+                 log=list(e.get("log", ())) + [why])
+        e.pop("source_faces", None)
+        e.pop("defects_after", None)
+    return replace(nb, objects=tuple(objs))
 
 
 def _envelope(m: PolyMesh, res: PolyMesh, stage: str, tol: Tolerances) -> tuple[bool, PolyMesh | None]:
