@@ -170,3 +170,20 @@ def test_real_tile_repair_input_equals_validate(rel):
             if not codes and g.type == "Solid":
                 n += 1
     assert n > 0
+
+
+def test_report_page_valid_before_is_validates_verdict():
+    """report.html's "valid before" counts the validator's verdict of the input (report.csv's
+    input_errors); the repair's energy codes (a sliver, 1003) are no val3dity error."""
+    from lod2energy.viz.data import Tally, rows
+    report = {"buildings": [
+        {"id": "a", "input_errors": "", "repair": {"stage": "cleanup", "defects_before": [1003],
+                                                     "defects_after": []}, "energy": {"compliant": True}},
+        {"id": "b", "input_errors": "601", "repair": {"stage": "valid", "defects_before": [],
+                                                        "defects_after": [601]}, "energy": {}},
+        {"id": "c", "input_errors": "102", "repair": {"stage": "cleanup", "defects_before": [102],
+                                                        "defects_after": []}, "energy": {}},
+    ]}
+    t = Tally(rows(report))
+    assert t.summary()["valid_before"] == 2
+    assert t.validity_by_code()["1003"] == [1, 0]
