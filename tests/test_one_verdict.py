@@ -187,3 +187,10 @@ def test_report_page_valid_before_is_validates_verdict():
     t = Tally(rows(report))
     assert t.summary()["valid_before"] == 2
     assert t.validity_by_code()["1003"] == [1, 0]
+
+
+def test_a_thin_valid_solid_is_kept_not_refused():
+    """A closed, valid 10 x 10 m slab 5 mm thick encloses a volume: valid as it is, kept."""
+    b = box(10.0, 10.0, 0.005, id="slab")
+    assert not validate_building(b, DEFAULT)
+    assert repair_building(b, DEFAULT) is b

@@ -39,7 +39,7 @@ from lod2energy.repair.holefill import fill_holes
 from lod2energy.repair.metrics import fidelity
 from lod2energy.repair.orientation import orient
 from lod2energy.repair.parts import keep_parts_apart, merge_overlapping_parts, overlapping_parts
-from lod2energy.repair.plausible import closed_volume, not_hollow
+from lod2energy.repair.plausible import closed_volume, implausible, not_hollow
 from lod2energy.repair.verdict import (
     _bounds_volume, input_codes, refused, targets as _targets, verdicts,
 )
@@ -268,13 +268,13 @@ def _repair_building(b: Building, tol: Tolerances, timeout: float, merge_parts: 
     defects_before: set[int] = set()
     changed = False
     meshes = [mesh_of_geometry(b.vertices, g) for _, _, g in targets]
-    # misplaced coordinates, or no volume at all (flat): refused as they are, with the reason
-    whys = [refused(m, tol) for m in meshes]
+    whys = [implausible(m) if m.faces else None for m in meshes]
     found = verdicts(b, targets, meshes, whys, tol)
     for k, (oi, gi, g) in enumerate(targets):
         o = b.objects[oi]
-        m, why = meshes[k], whys[k]
-        codes = found[k]
+        m, codes = meshes[k], found[k]
+        # misplaced coordinates, or no volume at all (flat): refused as they are, with the reason
+        why = refused(m, tol, codes, g.type == "Solid")
         defects_before |= set(codes)
         entry = {"object": o.id, "geometry": gi, "lod": g.lod, "type": g.type,
                  "n_faces_before": m.n_faces, "defects_before": codes}

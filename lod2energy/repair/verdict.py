@@ -65,9 +65,16 @@ def targets(b: Building, lod: str | None) -> list[tuple[int, int, Geometry]]:
     return sorted(out, key=lambda t: -lod_key(t[2].lod))
 
 
-def refused(m, tol: Tolerances) -> str | None:
-    """Why the ladder leaves the shell ``m`` as it is (misplaced coordinates, no volume), or None."""
-    return (implausible(m) or flat(m, tol.planarity_d2p_tol)) if m.faces else None
+def refused(m, tol: Tolerances, codes: Sequence[int], solid: bool) -> str | None:
+    """Why the ladder leaves the shell ``m`` as it is, or None: misplaced coordinates
+    (:func:`implausible`), or no volume (:func:`flat`) - unless ``m`` is a Solid (``solid``)
+    whose input ``codes`` hold no val3dity code, which encloses a volume however thin."""
+    if not m.faces:
+        return None
+    why = implausible(m)
+    if why is None and not (solid and all(c >= 1000 for c in codes)):
+        why = flat(m, tol.planarity_d2p_tol)
+    return why
 
 
 def _input_defects(V: np.ndarray, items, tol: Tolerances) -> list[list[int]]:
@@ -111,7 +118,7 @@ def _input_defects(V: np.ndarray, items, tol: Tolerances) -> list[list[int]]:
 
 def verdicts(b: Building, todo, meshes, whys, tol: Tolerances) -> list[list[int]]:
     """Input codes of each geometry of ``todo`` (:func:`targets`, with their meshes and
-    :func:`refused` reasons): :func:`_input_defects`, or the validator's codes alone for a
+    :func:`implausible` reasons): :func:`_input_defects`, or the validator's codes alone for a
     geometry with non-finite coordinates."""
     checked = [k for k, (m, why) in enumerate(zip(meshes, whys))
                if not (why is not None and not np.isfinite(m.vertices).all())]
@@ -129,6 +136,6 @@ def input_codes(b: Building, tol: Tolerances = DEFAULT, lod: str | None = None) 
     1001-1003)."""
     todo = targets(b, lod)
     meshes = [mesh_of_geometry(b.vertices, g) for _, _, g in todo]
-    whys = [refused(m, tol) for m in meshes]
+    whys = [implausible(m) if m.faces else None for m in meshes]
     return [(b.objects[oi].id, gi, codes)
             for (oi, gi, _), codes in zip(todo, verdicts(b, todo, meshes, whys, tol))]
