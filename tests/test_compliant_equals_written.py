@@ -8,6 +8,8 @@ from __future__ import annotations
 import dataclasses
 import json
 
+import pytest
+
 from test_repair import building
 from lod2energy.config import DEFAULT
 from lod2energy.model import CityModel
@@ -162,3 +164,33 @@ def test_a_compliant_building_left_out_of_a_one_file_writer_is_not_compliant():
     assert store[0].energy.compliant and store[0].export("cityjson").ok
     assert store[1].energy.compliant is False and not store[1].export("cityjson").ok
     assert "CITYJSON" in store[1].energy.reasons[0]
+
+
+@pytest.mark.parametrize("jobs", [1, 2])
+def test_an_idf_that_fails_its_self_check_is_not_compliant_in_every_output(tmp_path, monkeypatch, jobs):
+    """The IDF is written in the neighbour pass, the CityJSON beside it (``-j 2``): a building
+    whose IDF fails its self-check is not compliant in the record, report.csv and the CityJSON."""
+    import csv
+    from exporters.energyplus import writer as idf
+    from lod2energy.options import ExportOptions, RunOptions
+    from lod2energy.pipeline import export
+    src = tmp_path / "two.city.json"
+    src.write_text(json.dumps(_doc_of(a=_box_data(0.0), b=_box_data(30.0))), encoding="utf-8")
+    real = idf.self_check
+    monkeypatch.setattr(idf, "self_check", lambda p: ["surface s3 is degenerate"]
+                        if str(p).endswith("/b.idf") else real(p))
+    out = tmp_path / "o"
+    res = export(str(src), str(out), ExportOptions(("idf", "cityjson"), PrepareOptions(), html=False),
+                 RunOptions(jobs=jobs, quiet=True))
+    rows = {r["id"]: r for r in json.loads((out / "report.json").read_text())["buildings"]}
+    assert rows["a"]["compliant"] is True and rows["a"]["exports"]["idf"]["ok"]
+    assert rows["b"]["compliant"] is False and not rows["b"]["exports"]["idf"]["ok"]
+    assert "IDF" in rows["b"]["energy"]["reasons"][0] and "degenerate" in rows["b"]["message"]
+    assert not rows["b"]["exports"]["cityjson"]["ok"]
+    doc = json.loads((out / "two.energy.city.json").read_text())
+    flags = {k: o["attributes"]["+energyCompliance"]["compliant"] for k, o in doc["CityObjects"].items()
+             if not o.get("parents")}
+    assert flags == {"a": True, "b": False}
+    with open(out / "report.csv", newline="") as f:
+        assert {r["id"]: r["compliant"] for r in csv.DictReader(f)} == {"a": "True", "b": "False"}
+    assert res.exit_code == 1
