@@ -53,7 +53,7 @@ def l_and_notch() -> Building:
 
 
 def _n601(b: Building) -> int:
-    return sum(d.code == 601 for d in parts.check_parts_overlap([b], DEFAULT)[0])
+    return sum(code == 601 for _, code, _ in parts.check_parts_overlap([b], DEFAULT)[0])
 
 
 def test_the_hull_of_a_part_would_overlap_its_neighbour():
@@ -79,7 +79,7 @@ def test_a_repair_making_an_overlap_it_cannot_undo_is_refused(monkeypatch):
     assert rec["stage"] == "irreparable" and "601" in rec["error"]
 
 
-@pytest.mark.parametrize("rel", [("3dbag", "tile5908_subset_ext.city.jsonl")])
+@pytest.mark.parametrize("rel", [("citygml-real", "nrw", "LoD2_32_280_5657_1_NW.gml")])
 def test_real_tile_no_building_gains_601(rel):
     _, feats = read(str(shared_path(*rel)))
     n = 0
