@@ -10,6 +10,11 @@ geometry far less than an alpha wrap and is tried before it. The first
 result that is a closed, outward 2-manifold without degenerate, sliver or crossing faces and
 without a val3dity-level error (601 aside) is kept.
 
+A Solid the validator finds valid (:mod:`lod2energy.repair.verdict`: the codes of
+``lod2energy validate``) is kept as it is: only the project's energy codes (a sliver) let the
+local stages touch it, and never a global one. A repaired BuildingPart that overlaps its
+neighbour (601) where the input did not, and cannot be separated from it, is refused.
+
 Every Building/BuildingPart geometry of LoD >= 1 (or of ``lod`` when given) that fails the
 criterion is replaced by a closed Solid at the same LoD; faces derived from an input face keep
 its semantic index, new faces have none. Parts stay separate solids unless ``merge_parts``.
