@@ -374,7 +374,7 @@ class BuildingRecord:
         rec = replace(self, exports=ex)
         if er.ok or not self.energy.compliant:
             return rec
-        why = er.message(self.id)
+        why = f"{er.format.upper()} export {self.id}: {er.problems[0]}" if er.refused else er.message(self.id)
         return replace(rec, energy=self.energy.unwritten(why)).with_message(f"not compliant: {why}")
 
     def with_message(self, text: str) -> "BuildingRecord":

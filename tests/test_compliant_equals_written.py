@@ -158,12 +158,17 @@ def test_a_compliant_building_left_out_of_a_one_file_writer_is_not_compliant():
     store = RecordStore()
     store[0] = BuildingRecord(0, "a", "Building", energy=ok)
     store[1] = BuildingRecord(1, "b", "Building", energy=ok)
-    from lod2energy.records import ExportRecord
-    res = DatasetResult("cityjson", (0, 1), (((("a",), ExportRecord("cityjson", True, "/o/x.city.json")),)))
+    store[2] = BuildingRecord(2, "c", "Building", energy=ok)
+    from lod2energy.records import LEFT_OUT, ExportRecord
+    left = ExportRecord("cityjson", False, "/o/x.city.json", (f"{LEFT_OUT}invalid on the output grid (102)",))
+    res = DatasetResult("cityjson", (0, 1, 2), ((("a",), ExportRecord("cityjson", True, "/o/x.city.json")),
+                                                (("c",), left)))
     dataset_apply(res, store, quiet=True)
     assert store[0].energy.compliant and store[0].export("cityjson").ok
     assert store[1].energy.compliant is False and not store[1].export("cityjson").ok
     assert "CITYJSON" in store[1].energy.reasons[0]
+    assert store[2].energy.compliant is False and "(102)" in store[2].energy.reasons[0]
+    assert "left out" in store[2].message
 
 
 @pytest.mark.parametrize("jobs", [1, 2])
