@@ -7,7 +7,7 @@ import sys
 from dataclasses import dataclass
 
 from lod2energy.exporters.run_results import with_run_results
-from lod2energy.model import CityModel
+from lod2energy.model import CityModel, frozen_mapping
 from lod2energy.options import ExportOptions
 from lod2energy.records import NOT_COMPLIANT, ExportRecord, RecordStore
 from lod2energy.repair_file import with_repair_attributes
@@ -83,7 +83,13 @@ def dataset_write(w, options: ExportOptions, job: Job, records: RecordStore, oth
         energy = set(seqs)
 
         def load(b, s):
-            return with_run_results(with_repair_attributes(b), records[s].export("idf")) if s in energy else b
+            if s not in energy:
+                return b
+            rec = records[s]
+            if rec.energy.compliant is False and (b.provenance.get("energy") or {}).get("compliant"):
+                # a writer before this one did not write it: the file says what the record says
+                b = b.with_provenance(energy=frozen_mapping(rec.energy.to_json()))
+            return with_run_results(with_repair_attributes(b), rec.export("idf"))
 
         # read from the spool one at a time as the writer streams the file
         bs = Spooled(job.spool, seqs + sorted(others), load)
@@ -146,6 +152,15 @@ def dataset_apply(res: DatasetResult, records: RecordStore, quiet: bool, journal
                     refused.append((bid, es.problems[0]))
                 elif not es.ok and bad is None:
                     bad = (bid, es)
+    for s in res.seqs:  # a compliant building the file left out without a word: not written
+        rec = records[s]
+        if rec.export(name) is None and rec.energy.compliant:
+            es = ExportRecord(name, False, "", (f"{name.upper()} not written: not in the file",))
+            records[s] = rec.with_export(es)
+            if journal is not None:
+                journal.append({"kind": "dataset", "seq": s, "exports": [es.journal()]}, sync=False)
+            if bad is None:
+                bad = (rec.id, es)
     if journal is not None:
         journal.sync()
     if refused and not quiet:

@@ -31,7 +31,7 @@ import numpy as np
 from lod2energy.beside import Beside
 from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.crs import no_crs_reason
-from lod2energy.dataset import BESIDE, DatasetResult, beside_ok, dataset_apply, dataset_pass, write_beside
+from lod2energy.dataset import BESIDE, CARRIERS, DatasetResult, beside_ok, dataset_apply, dataset_pass, write_beside
 from lod2energy.errors import ParameterError
 from lod2energy.executor import Failure, Overrun, ProcessPoolExecutor, make_executor
 from lod2energy.exporters.cfd.region import building_hull
@@ -392,6 +392,7 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
     own = executor is None
     page_pool = None  # the process pool that renders report.html's pictures, kept open for it
     beside, side = None, []  # the one-file writers' process beside pass 2 (Beside), if any, and its writers
+    demoted = 0  # buildings no longer compliant after pass 2 (a file that failed its check): carriers again
     tick, close_bar = progress(run.quiet, os.path.basename(input_path))
     close_bar2 = close_bar  # the neighbour pass's own bar, once it runs
     timeout = options.job_timeout
@@ -537,10 +538,13 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
                             msg = (res.message if isinstance(res, Failure) else
                                    f"timeout: not finished within {timeout:g} s (--timeout)")
                             res = [ExportRecord(n, False, "", (f"{n.upper()} not written: {msg}",)) for n in names]
+                        was = rec.energy.compliant
                         for er in res:
                             rec = rec.with_export(er)
                             if not er.ok:
                                 err(er.message(rec.id))
+                        if was and not rec.energy.compliant:
+                            demoted += 1  # the carriers written beside this pass say compliant
                         records[seq] = rec
                         journal.append({"kind": "context", "seq": seq, "exports": [e.journal() for e in res]})
                     close_bar2()
@@ -554,8 +558,12 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
 
             # ---- pass 3: one file for all buildings (none for a file that could not be read;
             # ``unusable`` is of pass 1, which alone sets the outcomes and the file's errors)
-            done_beside = _beside_results(beside, side)
-            for w in chosen:
+            if demoted and beside is not None and beside.cancel():
+                from lod2energy.safe_write import sweep_stale
+                sweep_stale(out)  # its half-written files go; the carriers are written again below
+            done_beside = _beside_results(beside, side) if not demoted else {}
+            # the carriers last: they carry each building's compliance, which the others' checks decide
+            for w in sorted(chosen, key=lambda w: w.name in CARRIERS):
                 if scope[w.name] != "dataset" or unusable:
                     continue
                 if w.name in done_beside:

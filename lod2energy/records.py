@@ -150,6 +150,15 @@ class ComplianceRecord(_Detail):
         d.update(compliant=False, geometry_ready=False, reasons=reasons)
         return ComplianceRecord(False, False, self.status, tuple(reasons), d)
 
+    def unwritten(self, reason: str) -> "ComplianceRecord":
+        """This record with the building not compliant because a requested writer did not write
+        it or its file failed the writer's self-check (``reason`` says which); the geometry
+        stays ready for the other writers."""
+        d = dict(self.detail)
+        reasons = [reason] + [r for r in self.reasons if r != reason]
+        d.update(compliant=False, reasons=reasons)
+        return ComplianceRecord(False, self.geometry_ready, self.status, tuple(reasons), d)
+
     def to_json(self) -> dict:
         return dict(self.detail)
 
@@ -372,6 +381,10 @@ class BuildingRecord:
         The energy model's downgrades the record of a writer carries (``extra["downgrades"]``,
         building id -> list, for every building of its file) become this building's
         :attr:`downgrades` (the export record keeps this building's only, for the journal).
+
+        Compliant means written: a compliant building whose writer ``er`` did not write it, or
+        whose file failed that writer's self-check, is not compliant any more; its compliance
+        reasons and its message say which writer and check.
         """
         if isinstance(er.extra.get("downgrades"), Mapping):
             own = list(er.extra["downgrades"].get(self.id) or ())
@@ -379,7 +392,11 @@ class BuildingRecord:
             er = replace(er, extra={**extra, "downgrades": {self.id: own}} if own else extra)
             self = replace(self, downgrades=tuple(Downgrade.from_json(d) for d in own))
         ex = tuple(e for e in self.exports if e.format != er.format) + (er,)
-        return replace(self, exports=ex)
+        rec = replace(self, exports=ex)
+        if er.ok or not self.energy.compliant:
+            return rec
+        why = f"{er.format.upper()} export {self.id}: {er.problems[0]}" if er.refused else er.message(self.id)
+        return replace(rec, energy=self.energy.unwritten(why)).with_message(f"not compliant: {why}")
 
     def with_message(self, text: str) -> "BuildingRecord":
         return replace(self, message=(self.message + " " + text).strip() if text else self.message)

@@ -8,6 +8,8 @@ from __future__ import annotations
 import dataclasses
 import json
 
+import pytest
+
 from test_repair import building
 from lod2energy.config import DEFAULT
 from lod2energy.model import CityModel
@@ -117,3 +119,83 @@ def test_an_export_record_says_whether_a_file_failed_or_none_was_written():
     unwritten = ExportRecord("idf", False, "", ("IDF not written: timeout: not finished within 5 s (--timeout)",))
     assert unwritten.message("b") == "IDF export b not written: timeout: not finished within 5 s (--timeout)"
     assert ExportRecord("stl", False).message("b") == "STL export b not written: no file"
+
+
+def test_a_file_that_fails_its_self_check_makes_the_building_not_compliant(tmp_path, monkeypatch):
+    """Issue 38 item 3: compliant means written and self-checked by every requested writer; the
+    record, report.json and report.csv say which writer's check failed."""
+    import csv
+    from exporters.stl import writer as stl
+    from lod2energy.options import ExportOptions, RunOptions
+    from lod2energy.pipeline import export
+    src = tmp_path / "two.city.json"
+    src.write_text(json.dumps(_doc_of(a=_box_data(0.0), b=_box_data(30.0))), encoding="utf-8")
+    real = stl.self_check
+    monkeypatch.setattr(stl, "self_check", lambda p: ["degenerate facet 3"] if "b" in str(p).rsplit("/", 1)[-1]
+                        else real(p))
+    out = tmp_path / "o"
+    opts = ExportOptions(("cityjson", "stl"), PrepareOptions(), html=False)
+    res = export(str(src), str(out), opts, RunOptions(jobs=1))
+    rows = {r["id"]: r for r in json.loads((out / "report.json").read_text())["buildings"]}
+    assert rows["a"]["compliant"] is True and rows["a"]["exports"]["stl"]["ok"]
+    assert rows["b"]["compliant"] is False and not rows["b"]["exports"]["stl"]["ok"]
+    assert "STL" in rows["b"]["energy"]["reasons"][0] and "degenerate facet 3" in rows["b"]["message"]
+    # every writer accepts exactly the buildings called compliant: the CityJSON does not accept b
+    assert not rows["b"]["exports"]["cityjson"]["ok"]
+    with open(out / "report.csv", newline="") as f:
+        csv_rows = {r["id"]: r for r in csv.DictReader(f)}
+    assert csv_rows["b"]["compliant"] == "False" and csv_rows["b"]["stl_ok"] == "False"
+    assert "STL" in csv_rows["b"]["message"]
+    assert res.exit_code == 1
+
+
+def test_a_compliant_building_left_out_of_a_one_file_writer_is_not_compliant():
+    """A one-file writer (the CityJSON) that leaves a compliant building out without a record:
+    not written, so not compliant."""
+    from lod2energy.dataset import DatasetResult, dataset_apply
+    from lod2energy.records import BuildingRecord, ComplianceRecord, RecordStore
+    ok = ComplianceRecord.from_block({"compliant": True, "geometry_ready": True, "reasons": []})
+    store = RecordStore()
+    store[0] = BuildingRecord(0, "a", "Building", energy=ok)
+    store[1] = BuildingRecord(1, "b", "Building", energy=ok)
+    store[2] = BuildingRecord(2, "c", "Building", energy=ok)
+    from lod2energy.records import LEFT_OUT, ExportRecord
+    left = ExportRecord("cityjson", False, "/o/x.city.json", (f"{LEFT_OUT}invalid on the output grid (102)",))
+    res = DatasetResult("cityjson", (0, 1, 2), ((("a",), ExportRecord("cityjson", True, "/o/x.city.json")),
+                                                (("c",), left)))
+    dataset_apply(res, store, quiet=True)
+    assert store[0].energy.compliant and store[0].export("cityjson").ok
+    assert store[1].energy.compliant is False and not store[1].export("cityjson").ok
+    assert "CITYJSON" in store[1].energy.reasons[0]
+    assert store[2].energy.compliant is False and "(102)" in store[2].energy.reasons[0]
+    assert "left out" in store[2].message
+
+
+@pytest.mark.parametrize("jobs", [1, 2])
+def test_an_idf_that_fails_its_self_check_is_not_compliant_in_every_output(tmp_path, monkeypatch, jobs):
+    """The IDF is written in the neighbour pass, the CityJSON beside it (``-j 2``): a building
+    whose IDF fails its self-check is not compliant in the record, report.csv and the CityJSON."""
+    import csv
+    from exporters.energyplus import writer as idf
+    from lod2energy.options import ExportOptions, RunOptions
+    from lod2energy.pipeline import export
+    src = tmp_path / "two.city.json"
+    src.write_text(json.dumps(_doc_of(a=_box_data(0.0), b=_box_data(30.0))), encoding="utf-8")
+    real = idf.self_check
+    monkeypatch.setattr(idf, "self_check", lambda p: ["surface s3 is degenerate"]
+                        if str(p).endswith("/b.idf") else real(p))
+    out = tmp_path / "o"
+    res = export(str(src), str(out), ExportOptions(("idf", "cityjson"), PrepareOptions(), html=False),
+                 RunOptions(jobs=jobs, quiet=True))
+    rows = {r["id"]: r for r in json.loads((out / "report.json").read_text())["buildings"]}
+    assert rows["a"]["compliant"] is True and rows["a"]["exports"]["idf"]["ok"]
+    assert rows["b"]["compliant"] is False and not rows["b"]["exports"]["idf"]["ok"]
+    assert "IDF" in rows["b"]["energy"]["reasons"][0] and "degenerate" in rows["b"]["message"]
+    assert not rows["b"]["exports"]["cityjson"]["ok"]
+    doc = json.loads((out / "two.energy.city.json").read_text())
+    flags = {k: o["attributes"]["+energyCompliance"]["compliant"] for k, o in doc["CityObjects"].items()
+             if not o.get("parents")}
+    assert flags == {"a": True, "b": False}
+    with open(out / "report.csv", newline="") as f:
+        assert {r["id"]: r["compliant"] for r in csv.DictReader(f)} == {"a": "True", "b": "False"}
+    assert res.exit_code == 1

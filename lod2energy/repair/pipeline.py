@@ -10,6 +10,11 @@ geometry far less than an alpha wrap and is tried before it. The first
 result that is a closed, outward 2-manifold without degenerate, sliver or crossing faces and
 without a val3dity-level error (601 aside) is kept.
 
+A Solid the validator finds valid (:mod:`lod2energy.repair.verdict`: the codes of
+``lod2energy validate``) is kept as it is: only the project's energy codes (a sliver) let the
+local stages touch it, and never a global one. A repaired BuildingPart that overlaps its
+neighbour (601) where the input did not, and cannot be separated from it, is refused.
+
 Every Building/BuildingPart geometry of LoD >= 1 (or of ``lod`` when given) that fails the
 criterion is replaced by a closed Solid at the same LoD; faces derived from an input face keep
 its semantic index, new faces have none. Parts stay separate solids unless ``merge_parts``.
@@ -19,13 +24,13 @@ from __future__ import annotations
 import time
 from collections import Counter
 from dataclasses import replace
-from typing import Iterable, Iterator, Mapping, Sequence
+from typing import Iterable, Iterator, Mapping
 
 import numpy as np
 
 from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.model import (
-    BUILDING_TYPES, SURFACE_TYPES, Building, FeatureError, Geometry, frozen_mapping, lod_key,
+    BUILDING_TYPES, Building, FeatureError, Geometry, frozen_mapping,
 )
 from lod2energy.polymesh import PolyMesh, compact, face_area, topology
 from lod2energy.repair.accept import grid_rounding, is_repaired, output_grid, repair_verdict, val3dity_codes
@@ -40,10 +45,13 @@ from lod2energy.repair.metrics import fidelity
 from lod2energy.repair.orientation import orient
 from lod2energy.repair.parts import keep_parts_apart, merge_overlapping_parts, overlapping_parts
 from lod2energy.repair.plausible import closed_volume, implausible, not_hollow
+from lod2energy.repair.verdict import (
+    _bounds_volume, input_codes, refused, targets as _targets, verdicts,
+)
 from lod2energy.repair.refill import close, refill
 from lod2energy.repair.roofs import ROOF_MODEL_MAX_DISPLACEMENT, roof_model
 from lod2energy.repair.unpinch import unpinch
-from lod2energy.validate.closed import energy_codes, invalid_surfaces, shell_defects
+from lod2energy.validate.closed import shell_defects
 from lod2energy.validate.checks import validate_building, validate_geometry
 
 STAGES = ("valid", "cleanup", "orientation", "holefill", "refill", "roofs", "alphashape", "footprint",
@@ -62,37 +70,13 @@ def _valid_or_none(m: PolyMesh | None, lod, tol: Tolerances) -> PolyMesh | None:
 
 # ----------------------------------------------------------------------------- the ladder
 
-def _input_defects(V: np.ndarray, items, tol: Tolerances) -> list[list[int]]:
-    """val3dity codes of each geometry ``(g, coid, gi, m)`` of a building (vertices ``V``) and
-    the ladder's own (``shell_defects`` of ``m``, its mesh, once snapped; the shells'
-    self-intersection tests in one batch)."""
-    codes, shells = [], []
-    for g, coid, gi, m in items:
-        codes.append({d.code for d in validate_geometry(V, coid, gi, g, tol)})
-        s = snap_vertices(m, tol.snap_tol)
-        invalid = None
-        if s is m and len(g.solids) == 1 and len(g.solids[0].shells) == 1:
-            # m is this one shell as it is (renumbered in order): the validator's polygon
-            # verdict on it, just computed, is the one shell_defects asks for
-            invalid = invalid_surfaces(V, g.solids[0].shells[0], tol)
-        shells.append((s, invalid))
-    out = []
-    found = shell_defects([s for s, _ in shells], tol, invalid=[inv for _, inv in shells])
-    for (g, _, _, m), c, (s, _), sd in zip(items, codes, shells, found):
-        if g.is_volumetric:
-            c |= {x if x < 1000 else 1003 for _, x, _ in sd}
-        else:
-            c |= set(energy_codes(sd))
-        # closed only once vertices are snapped (exporters need shared vertices); when
-        # snapping left m as it is, shell_defects found no boundary edge of m
-        if not sd and s is not m and topology(m).boundary:
-            c.add(1001)
-        out.append(sorted(c))
-    return out
-
-
-def ladder(m: PolyMesh, lod, tol: Tolerances, deadline: float) -> tuple[str, PolyMesh | None, list[str]]:
+def ladder(m: PolyMesh, lod, tol: Tolerances, deadline: float,
+           keep: bool = False) -> tuple[str, PolyMesh | None, list[str]]:
     """Run the stages on one shell.
+
+    ``keep``: ``m`` is valid as it is (no val3dity code, only the project's energy codes such
+    as a sliver): only the local stages may improve it, and when none does the answer is
+    ``("valid", None, log)``, the input kept; a valid input is never replaced.
 
     Returns
     -------
@@ -170,6 +154,9 @@ def ladder(m: PolyMesh, lod, tol: Tolerances, deadline: float) -> tuple[str, Pol
     if kept is not None:
         log.append(f"{kept[1]}: ok except {kept[0]} sliver(s) (1003 kept)")
         return kept[1], kept[2], log
+    if keep:
+        log.append("valid: kept as it is (a valid input is never replaced)")
+        return "valid", None, log
     return global_stages(m0, lod, tol, deadline, log)
 
 
@@ -206,48 +193,6 @@ def global_stages(m0: PolyMesh, lod, tol: Tolerances, deadline: float,
 #: more than a corrupted neighbourhood: the global stages are tried too and the closer result
 #: is kept.
 REFILL_MIN_IOU = 0.9
-
-#: A surface-type geometry (MultiSurface, CompositeSurface) of fewer faces beside a Solid of
-#: the same object and LoD is an extra, not an envelope.
-MIN_VOLUME_FACES = 4
-
-
-def _bounds_volume(g: Geometry, siblings: Sequence[Geometry] = ()) -> bool:
-    """Is ``g`` meant to enclose a volume: LoD >= 1 (or a Solid-type geometry whose 'lod' is
-    missing or junk, 901), and not a surface set of fewer than :data:`MIN_VOLUME_FACES` faces
-    next to a Solid-type geometry of the same LoD among ``siblings`` (Euromast's lone wall
-    beside its Solid). LoD0 footprints and roof outlines are not volumes."""
-    if g.is_volumetric:
-        return g.lod is None or lod_key(g.lod) >= 1
-    if lod_key(g.lod) < 1:
-        return False
-    n = sum(len(sh.surfaces) for so in g.solids for sh in so.shells)
-    extra = any(s is not g and s.is_volumetric and s.lod == g.lod for s in siblings)
-    return not (extra and 0 < n < MIN_VOLUME_FACES)
-
-
-def _targets(b: Building, lod: str | None) -> list[tuple[int, int, Geometry]]:
-    """(object index, geometry index, geometry) of the geometries the ladder looks at."""
-    out = []
-    for oi, o in enumerate(b.objects):
-        if o.type not in BUILDING_TYPES:
-            continue
-        solid_lods = {g.lod for g in o.geometries if g.is_volumetric and g.solids}
-        for gi, g in enumerate(o.geometries):
-            if not g.is_polygonal or not g.solids:
-                continue
-            if lod is not None and g.lod != lod:
-                continue
-            if g.type in SURFACE_TYPES and g.lod in solid_lods:
-                # the object's surfaces beside its own solid of the same LoD (another encoding
-                # of that volume): made into a second solid they would overlap it (601)
-                continue
-            if lod is None and not _bounds_volume(g, o.geometries):
-                continue
-            out.append((oi, gi, g))
-    # the highest LoD first: it is the one energy models use, so it gets the time budget first
-    return sorted(out, key=lambda t: -lod_key(t[2].lod))
-
 
 def _clean_surfaces(b: Building, lod: str | None, tol: Tolerances, lookup: dict, extra: list,
                     objs: list) -> list[dict]:
@@ -329,30 +274,29 @@ def _repair_building(b: Building, tol: Tolerances, timeout: float, merge_parts: 
     changed = False
     meshes = [mesh_of_geometry(b.vertices, g) for _, _, g in targets]
     whys = [implausible(m) if m.faces else None for m in meshes]
-    checked = [k for k, (m, why) in enumerate(zip(meshes, whys))
-               if not (why is not None and not np.isfinite(m.vertices).all())]
-    found = dict(zip(checked, _input_defects(
-        b.vertices, [(targets[k][2], b.objects[targets[k][0]].id, targets[k][1], meshes[k]) for k in checked], tol)))
+    found = verdicts(b, targets, meshes, whys, tol)
     for k, (oi, gi, g) in enumerate(targets):
         o = b.objects[oi]
-        m, why = meshes[k], whys[k]
-        if k in found:
-            codes = found[k]
-        else:
-            codes = sorted({d.code for d in validate_geometry(b.vertices, o.id, gi, g, tol)})
+        m, codes = meshes[k], found[k]
+        # misplaced coordinates, or no volume at all (flat): refused as they are, with the reason
+        why = refused(m, tol, codes, g.type == "Solid")
         defects_before |= set(codes)
         entry = {"object": o.id, "geometry": gi, "lod": g.lod, "type": g.type,
                  "n_faces_before": m.n_faces, "defects_before": codes}
-        if not codes and g.type == "Solid" and why is None:
+        # the ladder starts with "valid as is -> keep": no val3dity code, a Solid, believable
+        valid = g.type == "Solid" and why is None and bool(m.faces) and all(c >= 1000 for c in codes)
+        if valid and not codes:
             entry.update(stage="valid", n_faces_after=m.n_faces, iou=1.0, mean_displacement=0.0,
                          mean_displacement_back=0.0, hausdorff=0.0, closure="closed", seconds=0.0)
             per_geom.append(entry)
             continue
         t1 = time.monotonic()
-        if not m.faces:
+        if valid and time.monotonic() > deadline:
+            stage, res, log = "valid", None, ["timeout: valid as it is, kept"]
+        elif not m.faces:
             stage, res, log = "irreparable", None, ["empty geometry"]
         elif why is not None:
-            # misplaced coordinates: no stage can recover the shape, the global ones would not end
+            # misplaced coordinates or no volume: no stage can recover a shape that is not there
             stage, res, log = "irreparable", None, [why]
             entry["error"] = why
         elif time.monotonic() > deadline:
@@ -361,6 +305,8 @@ def _repair_building(b: Building, tol: Tolerances, timeout: float, merge_parts: 
             stage = "hull" if verdict is None else "irreparable"
             res = res if stage == "hull" else None
             log = ["timeout: jumped to the convex hull"] + ([f"hull: {verdict}"] if verdict else [])
+        elif valid:
+            stage, res, log = ladder(m, g.lod, tol, deadline, keep=True)
         else:
             stage, res, log = ladder(m, g.lod, tol, deadline)
             stage, res, log = not_hollow(  # a hollow result goes further up the ladder
@@ -368,7 +314,11 @@ def _repair_building(b: Building, tol: Tolerances, timeout: float, merge_parts: 
                 lambda: _valid_or_none(convex_hull(cleanup(m, tol)), g.lod, tol),
                 closed_volume(snap_vertices(m, tol.snap_tol)))
         entry["log"] = log
-        if res is None:
+        if stage == "valid":
+            entry.update(stage="valid", n_faces_after=m.n_faces, iou=1.0, mean_displacement=0.0,
+                         mean_displacement_back=0.0, hausdorff=0.0, closure="closed",
+                         defects_after=codes)
+        elif res is None:
             entry.update(stage="irreparable", n_faces_after=m.n_faces, iou=None,
                          mean_displacement=None, mean_displacement_back=None, hausdorff=None,
                          closure=None)
@@ -376,7 +326,7 @@ def _repair_building(b: Building, tol: Tolerances, timeout: float, merge_parts: 
             res = compact(res)
             input_closed, env = _envelope(m, res, stage, tol)
             fid = fidelity(m, res, input_closed, env)
-            if stage == "refill" and fid["iou"] < REFILL_MIN_IOU:
+            if stage == "refill" and fid["iou"] < REFILL_MIN_IOU and not valid:
                 # the cut took a large part of the shell with it: a global stage may keep more
                 gstage, gres, glog = global_stages(cleanup(m, tol), g.lod, tol, deadline, [])
                 if gres is not None:
@@ -400,7 +350,7 @@ def _repair_building(b: Building, tol: Tolerances, timeout: float, merge_parts: 
         per_geom.append(entry)
     surfaces_log = _clean_surfaces(b, lod, tol, lookup, extra, objs)
     changed = changed or bool(surfaces_log)
-    if not changed and all(e["stage"] == "valid" for e in per_geom):
+    if not changed and all(e["stage"] == "valid" and not e["defects_before"] for e in per_geom):
         if not merge_parts:
             return b  # untouched: the same object
         nb = merge_overlapping_parts(b, tol, lod)
@@ -411,6 +361,8 @@ def _repair_building(b: Building, tol: Tolerances, timeout: float, merge_parts: 
     V = np.vstack([b.vertices, np.asarray(extra).reshape(-1, 3)]) if extra else b.vertices
     nb = replace(b, objects=tuple(objs), vertices=V)
     nb, parts_rec = keep_parts_apart(b, nb, tol, lod)  # no BuildingPart overlap made by the repair
+    if parts_rec.get("left") and not merge_parts:
+        nb = _refuse_overlaps(b, nb, per_geom, parts_rec["left"], lod if lod is not None else nb.default_lod())
     overlaps = overlapping_parts(nb, lod)
     if merge_parts and overlaps:
         nb = merge_overlapping_parts(nb, tol, lod)
@@ -423,6 +375,33 @@ def _repair_building(b: Building, tol: Tolerances, timeout: float, merge_parts: 
         summary["error"] = "; ".join(errors)
     summary["surfaces_cleaned"] = surfaces_log
     return nb.with_provenance(repair=summary)
+
+
+def _refuse_overlaps(b: Building, nb: Building, per_geom: list[dict], left: list, lod: str | None) -> Building:
+    """``nb`` with the repair of every part refused that overlaps a neighbour (601) where the
+    input did not, or more than in the input, once :func:`keep_parts_apart` could not separate
+    them (at ``lod``): like any failed candidate. The part keeps its input geometry and its entry in
+    ``per_geom`` becomes "irreparable" with the reason (the building is then not compliant)."""
+    objs = list(nb.objects)
+    index = {o.id: i for i, o in enumerate(objs)}
+    for e in per_geom:
+        hit = [(x, y, v) for x, y, v in left if e["object"] in (x, y)]
+        if not hit or e["stage"] in ("valid", "irreparable") or e["lod"] != lod:
+            continue
+        x, y, v = hit[0]
+        other = y if x == e["object"] else x
+        why = (f"repair ({e['stage']}) makes it overlap {other} (601"
+               + (f", {v:g} m3" if v is not None else "") + "): refused")
+        i = index[e["object"]]
+        geoms = list(objs[i].geometries)
+        geoms[e["geometry"]] = b.objects[i].geometries[e["geometry"]]
+        objs[i] = replace(objs[i], geometries=tuple(geoms))
+        e.update(stage="irreparable", n_faces_after=e["n_faces_before"], iou=None, mean_displacement=None,
+                 mean_displacement_back=None, hausdorff=None, closure=None, error=why,
+                 log=list(e.get("log", ())) + [why])
+        e.pop("source_faces", None)
+        e.pop("defects_after", None)
+    return replace(nb, objects=tuple(objs))
 
 
 def _envelope(m: PolyMesh, res: PolyMesh, stage: str, tol: Tolerances) -> tuple[bool, PolyMesh | None]:
@@ -563,7 +542,7 @@ def dataset_table(buildings: Iterable[Building]) -> dict:
     }
 
 
-__all__ = ["STAGES", "DEFAULT_TIMEOUT", "repair_building", "repair_features", "dataset_table",
+__all__ = ["STAGES", "DEFAULT_TIMEOUT", "repair_building", "input_codes", "repair_features", "dataset_table",
            "repair_info", "repair_attributes", "ladder", "mesh_of_geometry", "geometry_of_mesh", "is_repaired", "roof_model",
            "ROOF_MODEL_MAX_DISPLACEMENT", "merge_slivers", "fill_holes",
            "frozen_mapping"]

@@ -6,7 +6,9 @@ no-data value such as ``-2**31`` in integer CityJSON coordinates, a wrong CRS or
 repair can recover the intended shape from it, and the global stages would not end: the work
 of CGAL's alpha wrap grows with the wrapped surface area (a building reaching 2,000 km down
 has some 10^8 m2 of walls), and it runs in C++ out of reach of the time budget. The ladder
-therefore leaves such a geometry as it is, stage "irreparable", with the reason.
+therefore leaves such a geometry as it is, stage "irreparable", with the reason. So it does
+with a geometry that encloses no volume (:func:`flat`: one face, coplanar faces, a face
+repeated): a wrap or an extrusion of it would invent a shape the input did not have.
 
 After the ladder, a result is *hollow* when its volume is under a quarter of the convex hull
 of the input (:data:`HOLLOW_FRACTION`) while the input is not itself thin (hull volume over
@@ -66,6 +68,41 @@ def implausible(m: PolyMesh, max_extent: float = MAX_EXTENT) -> str | None:
         return None
     return (f"geometry spans {_km(float(ext[k]))} ({'xyz'[k]} from {lo[k]:,.1f} to {hi[k]:,.1f} m, "
             f"limit {_km(max_extent)}): coordinates implausible")
+
+
+def flat(m: PolyMesh, thickness: float) -> str | None:
+    """Why ``m`` encloses no volume (every vertex it uses within ``thickness`` of one plane:
+    one face, coplanar faces, a face repeated), or None when it may.
+
+    Parameters
+    ----------
+    m : PolyMesh
+        One shell, vertices in m.
+    thickness : float, m
+        Largest distance from the best-fitting plane of a flat input (the planarity tolerance).
+
+    Returns
+    -------
+    str or None
+        A one-line message, e.g. ``"no volume: all 4 vertices within 0 m of one plane (6 faces):
+        nothing to repair into a solid"``.
+    """
+    used = np.unique([i for f in m.faces for r in f.rings for i in r]).astype(np.int64)
+    if len(used) == 0:
+        return None
+    P = np.asarray(m.vertices, dtype=np.float64)[used]
+    if not np.isfinite(P).all():
+        return None
+    P = P - P.mean(axis=0)
+    if len(P) >= 3:
+        n = np.linalg.svd(P, full_matrices=False)[2][-1]
+        d = float(np.abs(P @ n).max())
+    else:
+        d = 0.0
+    if d > thickness:
+        return None
+    return (f"no volume: all {len(used)} vertices within {d:.3g} m of one plane ({m.n_faces} faces): "
+            "nothing to repair into a solid")
 
 
 HOLLOW_FRACTION = 0.25
@@ -155,4 +192,5 @@ def closed_volume(m: PolyMesh) -> float | None:
     return abs(signed_volume(m))
 
 
-__all__ = ["HOLLOW_FRACTION", "MAX_EXTENT", "THIN", "closed_volume", "hollow", "implausible", "not_hollow"]
+__all__ = ["HOLLOW_FRACTION", "MAX_EXTENT", "THIN", "closed_volume", "flat", "hollow", "implausible",
+           "not_hollow"]

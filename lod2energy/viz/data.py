@@ -103,7 +103,22 @@ class Row:
 
     @property
     def invalid_input(self) -> bool:
-        return any(c != 601 for c in self.before)
+        """A val3dity error other than 601 in the input: ``validate``'s verdict (the project's
+        energy codes, 1001+, are no val3dity error)."""
+        return not val3dity_valid(self.before)
+
+
+def val3dity_valid(codes) -> bool:
+    """No val3dity error but 601 among ``codes`` (as ``lod2energy validate`` counts valid)."""
+    return all(c == 601 or c >= 1000 for c in codes)
+
+
+def _input_codes(b: dict, rep: dict) -> tuple[int, ...]:
+    """The input's codes of an export row: the validator's (``input_errors``, the verdict of
+    ``lod2energy validate``) and the repair's energy codes (1001+)."""
+    if "input_errors" not in b:
+        return _codes(rep.get("defects_before"))
+    return tuple(sorted(set(_codes(b["input_errors"])) | {c for c in _codes(rep.get("defects_before")) if c >= 1000}))
 
 
 def _codes(v) -> tuple[int, ...]:
@@ -183,7 +198,7 @@ def iter_rows(report: dict) -> Iterator[Row]:
                       compliant=False, message=b.get("message", ""))
             continue
         yield Row(id=str(b["id"]), type=b.get("type", "Building"), stage=rep.get("stage") or "valid",
-                  before=_codes(rep.get("defects_before", b.get("input_errors"))),
+                  before=_input_codes(b, rep),
                   after=_codes(rep.get("defects_after", b.get("output_errors"))),
                   iou=_num(rep.get("iou")), displacement=_num(rep.get("mean_displacement")),
                   compliant=en.get("compliant"), conditions={k: en[k] for k in CONDITIONS if k in en},
@@ -283,7 +298,7 @@ class Tally:
         self.before.update(set(r.before))
         self.after.update(set(r.after or ()))
         self.valid_before += not r.invalid_input
-        self.valid_after += not any(c != 601 for c in (r.after or ()))
+        self.valid_after += val3dity_valid(r.after or ())
         self.compliant += bool(r.compliant)
         for k in CONDITIONS:
             if k in r.conditions:
