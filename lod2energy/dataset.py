@@ -9,7 +9,8 @@ from dataclasses import dataclass
 from lod2energy.exporters.run_results import with_run_results
 from lod2energy.model import CityModel, frozen_mapping
 from lod2energy.options import ExportOptions
-from lod2energy.records import NOT_COMPLIANT, ExportRecord, RecordStore
+from lod2energy.record_store import RecordStore
+from lod2energy.records import NOT_COMPLIANT, ExportRecord
 from lod2energy.repair_file import with_repair_attributes
 from lod2energy.reports import err
 from lod2energy.spool import Job, Spooled, load_spooled

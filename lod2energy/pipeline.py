@@ -26,161 +26,33 @@ from dataclasses import dataclass, replace
 from functools import partial
 from typing import Iterator, Sequence
 
-import numpy as np
 
 from lod2energy.beside import Beside
-from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.crs import no_crs_reason
 from lod2energy.dataset import BESIDE, CARRIERS, DatasetResult, beside_ok, dataset_apply, dataset_pass, write_beside
 from lod2energy.errors import ParameterError
 from lod2energy.executor import Failure, Overrun, ProcessPoolExecutor, make_executor
-from lod2energy.exporters.cfd.region import building_hull
 from lod2energy.exporters.registry import writers
 from lod2energy.interrupt import EXIT_INVALID, EXIT_OK, EXIT_SIGINT, EXIT_UNUSABLE, Interrupted, Signals
 from lod2energy.io import read
-from lod2energy.io.interior import without_interior
-from lod2energy.io.openings import cut_openings
 from lod2energy.journal import JOURNAL_NAME, Journal, header, records_of
-from lod2energy.model import Building, CityModel, FeatureError, frozen_mapping
+from lod2energy.model import Building, FeatureError
 from lod2energy.neighbours import neighbours_within, spatial_order
-from lod2energy.options import NEEDS_POSITIONS, ExportOptions, PrepareOptions, RunOptions, ladder_budget, prepare_options, resolve
-from lod2energy.records import (
-    _untimed, BuildingRecord, ComplianceRecord, ExportRecord, RecordStore, RepairRecord, ThermalRecord,
-)
-from lod2energy.repair import repair_info
-from lod2energy.repair.parts import clip_overlapping_parts, keep_input_parts
-from lod2energy.repair.pipeline import repair_building
+from lod2energy.options import NEEDS_POSITIONS, ExportOptions, RunOptions, resolve
+from lod2energy.record_store import RecordStore
+from lod2energy.records import BuildingRecord, ExportRecord
+from lod2energy.prepare import prepare_building
 from lod2energy.reports import (
     CsvRows, err, note_frame, progress, refuse_overwriting_inputs, write_html_report, write_reports_from_journal,
 )
 from lod2energy.safe_write import sweep_stale
-from lod2energy.semantics import label_building
+from lod2energy.study import joined, report_unknown_ids, selection_reach, selector, study_entry
 from lod2energy.spool import Job, load_spooled, reusable, spool_building
-from lod2energy.thermal import assign_u_values
-from lod2energy.thermal.facts import TABLE_KEY, attribute_map
-from lod2energy.validate import checks as _checks
-from lod2energy.validate.closed import export_problem
-from lod2energy.validate.compliance import energy_compliance
-from lod2energy.validate.memo import carry, geometry_key, recall, verdict_key
 from lod2energy.viz.footprints import FootprintSpill, plan_footprint
 from lod2energy.viz.report import warm_page
 
 
 # ============================================================================ one building
-
-def _codes(defects) -> list[int]:
-    return sorted({d.code for d in defects})
-
-
-def repair_one(b: Building, tol: Tolerances, timeout: float = 30.0, merge_parts: bool = False,
-               lod: str | None = None) -> Building:
-    """Repair a building by the ladder (identity for valid input and non-buildings)."""
-    if not b.is_building:
-        return b
-    return repair_building(b, tol=tol, timeout=timeout, merge_parts=merge_parts, lod=lod)
-
-
-#: The digest of a geometry state (its one home is :mod:`lod2energy.validate.memo`).
-_geometry_key = geometry_key
-
-
-def final_check(b: Building, defects, lod: str | None, tol: Tolerances = DEFAULT) -> str | None:
-    """Why ``b`` may not be called compliant nor exported (None when it may).
-
-    The acceptance check every writer applies (:func:`lod2energy.validate.closed.export_problem`:
-    thermal data present, envelope closed, outward, labelled, with U-values, val3dity-valid at
-    the energy LoD at the user's tolerances), judged on the output file's grid: the building
-    as the CityJSON writer will write it. ``defects`` (of the final geometry at ``tol``) are
-    reused when the grid leaves the geometry as it is.
-    """
-    return export_problem(b, lod, tol, defects=defects)
-
-
-def prepare_building(b: Building, options: PrepareOptions = PrepareOptions(), seq: int = 0
-                     ) -> tuple[Building, BuildingRecord]:
-    """validate -> repair -> label -> U-values -> compliance and the final check, for one building.
-
-    Each geometry state is validated once: the input, the ladder's result (inside the
-    repair), and the labelled result only when its geometry differs from the input's.
-
-    Returns
-    -------
-    (Building, BuildingRecord)
-        The labelled building with ``provenance["energy"]`` and its record.
-    """
-    tol, lod = options.tol, options.lod
-    b = without_interior(b)  # LoD3/4 interior detail is not envelope (counted in the repair record)
-    b = cut_openings(b)  # LoD3 openings drawn over their wall: the wall gets their hole (counted too)
-    before = _checks.validate_building(b, tol)
-    # the ladder escalates before the job's budget ends, so its fallbacks can finish in it
-    rb = repair_one(b, tol, ladder_budget(options.timeout), options.merge_parts, lod)
-    if rb.provenance.get("repair") is not None:
-        # the ladder's timings would make the files (``+energyRepair``) differ run to run
-        rb = rb.with_provenance(repair=frozen_mapping(_untimed(rb.provenance["repair"])))
-    extra = {}
-    if b.provenance.get("interior_left_out"):
-        extra["interior_left_out"] = dict(b.provenance["interior_left_out"])
-    if b.provenance.get("openings_cut"):
-        extra["openings_cut"] = dict(b.provenance["openings_cut"])
-    frame = b.provenance.get("file_frame")
-    if frame is not None and not frame.geographic:  # read in feet: the factor to metres
-        extra["unit_conversion"] = frame.as_dict()
-    if b.provenance.get("geometry_replaced"):  # the reader's: an unusable solid gave way to thematic surfaces
-        extra["geometry_replaced"] = list(b.provenance["geometry_replaced"])
-    unclipped = rb
-    if not options.merge_parts and rb.is_building:  # no volume counted twice (issue 19 item 1)
-        # the validator's verdict of this geometry (the input's, or the repair's of its result):
-        # with no defect but 601 its overlap check ran and found these
-        verdict = before if rb is b else recall(verdict_key(rb, tol))
-        known = None if verdict is None or any(d.code != 601 for d in verdict) else [d.location for d in verdict]
-        rb, parts_energy = clip_overlapping_parts(rb, tol, lod, overlaps=known)
-        if parts_energy:
-            extra["parts_energy"] = parts_energy
-    repair = RepairRecord.from_info({**repair_info(rb), **extra})
-    lb = label_building(rb, lod=lod, source=b)
-    thermal_opts = options.thermal
-    if lod is not None and getattr(thermal_opts, "lod", None) is None:
-        thermal_opts = replace(thermal_opts, lod=lod)
-    tb = assign_u_values(lb, thermal_opts)
-    if rb is not unclipped:  # the union writers (STL) keep the input parts: same union, no new seams
-        tb = keep_input_parts(tb, assign_u_values(label_building(unclipped, lod=lod, source=b), thermal_opts))
-    after = before if _geometry_key(tb) == _geometry_key(b) else _checks.validate_building(tb, tol)
-    block = dict(energy_compliance(tb, after, lod=lod, tol=tol, assess_labels=True, assess_u_values=True))
-    if repair.error:  # e.g. implausible coordinates: kept in the output, not simulated
-        block.update(compliant=False, geometry_ready=False,
-                     reasons=[f"repair: {repair.error}"] + list(block.get("reasons", [])))
-    energy = ComplianceRecord.from_block(block)
-    if energy.geometry_ready or energy.compliant:
-        blod = lod if lod is not None else (tb.provenance.get("thermal") or {}).get("lod")
-        why = final_check(tb, after, blod, tol)
-        if why is not None:
-            energy = energy.rejected(f"final check: {why}")
-    # areas, volume and UA of implausible geometry (e.g. a vertex 2,000 km away) would only
-    # pollute sums over the report's columns
-    thermal = ThermalRecord() if repair.error else ThermalRecord.from_block(tb.provenance.get("thermal"))
-    tb = tb.with_provenance(energy=frozen_mapping(energy.to_json()))
-    # the verdicts of the input and the final geometry travel with the building (the spool):
-    # the one-file writers and the report page read them instead of validating again
-    tb = carry(tb, [(b, before), (tb, after)], tol)
-    bbox = None
-    if len(tb.vertices):
-        v = np.asarray(tb.vertices, dtype=float)
-        fin = v[np.isfinite(v).all(axis=1)]
-        if len(fin):
-            bbox = tuple(float(x) for x in np.concatenate([fin.min(axis=0), fin.max(axis=0)]))
-    rec = BuildingRecord(seq, str(b.id), b.type, "done", tuple(_codes(before)), tuple(_codes(after)),
-                         repair, energy, thermal, (), "", bbox)
-    if not energy.geometry_ready:
-        rec = rec.with_message("not exported: " + "; ".join(energy.reasons))
-    return tb, rec
-
-
-def prepare(b: Building, tol: Tolerances, a=None, source_model: CityModel | None = None
-            ) -> tuple[Building, BuildingRecord]:
-    """:func:`prepare_building` with options from an argparse namespace (``lod``, ``timeout``,
-    ``merge_parts``, thermal flags; missing ones take their defaults)."""
-    return prepare_building(b, prepare_options(a, tol, getattr(source_model, "crs", None)))
-
 
 def _attach(rec: BuildingRecord, fmt: str, pairs) -> BuildingRecord:
     for ids, er in pairs:
@@ -283,7 +155,7 @@ class ExportOutcome:
     """What :func:`export` did: exit code, records in input order, the interruption if any."""
 
     exit_code: int
-    #: In input order; a lazy sequence (:class:`~lod2energy.records.RecordSequence`) of an export.
+    #: In input order; a lazy sequence (:class:`~lod2energy.record_store.RecordSequence`) of an export.
     records: Sequence[BuildingRecord] = ()
     interrupted: str | None = None
     report: str = ""
@@ -363,14 +235,14 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
     os.makedirs(spool, exist_ok=True)
     table = options.buildings or {}
     selection = frozenset(options.ids) if options.ids is not None else None
-    selected = _selector(selection, options.region)
+    selected = selector(selection, options.region)
     # the table's rows travel with their buildings, not with every job
     job = Job(replace(options, buildings=None), out, spool, model.crs, getattr(model, "frame", None))
     chosen = writers(options.formats)
     scope = {w.name: w.scope(options.writer_options(w.name)) for w in chosen}
-    near_selected = _selection_reach(input_path, selected, chosen, scope, options)
+    near_selected = selection_reach(input_path, selected, chosen, scope, options)
     input_ids: set[str] = set()  # every building id of the file (ids of --buildings / --ids not in it are reported)
-    study = _study_entry(options)  # report.json's "study"
+    study = study_entry(options)  # report.json's "study"
     neighbour_boxes: dict[int, tuple] = {}  # buildings outside --ids that serve as neighbours: their boxes
     per_building = [n for n, s in scope.items() if s == "building"]
     journal = Journal(os.path.join(out, JOURNAL_NAME), out, inputs,
@@ -423,7 +295,7 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
                         elif not item.is_building:
                             yield (seq, "other", item, job)
                         else:
-                            yield from building_task(seq, _joined(item, table, input_ids))
+                            yield from building_task(seq, joined(item, table, input_ids))
 
                 def building_task(seq, item) -> Iterator[tuple]:
                     if selected is not None and not selected(item):
@@ -483,7 +355,7 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
                     journal.append({"kind": "building", **rec.to_json()})
                     csv_rows.append(rec)
                 close_bar()
-                study.update(_report_unknown_ids(input_path, input_ids, table, selection))
+                study.update(report_unknown_ids(input_path, input_ids, table, selection))
                 job = replace(job, neighbours=tuple(sorted(neighbour_boxes)))  # for the one-file writers
                 # the one-file writers that need nothing of pass 2 run beside it, in a process of their own
                 unusable = bool(dataset_errors) and not any(r.outcome == "done" for r in records.values())
@@ -559,7 +431,6 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
             # ---- pass 3: one file for all buildings (none for a file that could not be read;
             # ``unusable`` is of pass 1, which alone sets the outcomes and the file's errors)
             if demoted and beside is not None and beside.cancel():
-                from lod2energy.safe_write import sweep_stale
                 sweep_stale(out)  # its half-written files go; the carriers are written again below
             done_beside = _beside_results(beside, side) if not demoted else {}
             # the carriers last: they carry each building's compliance, which the others' checks decide
@@ -619,95 +490,6 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
     if dataset_errors:
         worst = EXIT_UNUSABLE
     return ExportOutcome(worst, rows, None, report, tuple(dataset_errors), tuple(terrain))
-
-
-def _joined(b: Building, table, input_ids: set) -> Building:
-    """``b`` with its ``--buildings`` row (:data:`lod2energy.thermal.facts.TABLE_KEY`), its id noted."""
-    bid = str(b.id)
-    input_ids.add(bid)
-    row = table.get(bid) if table else None
-    return b.with_provenance(**{TABLE_KEY: row}) if row else b
-
-
-def _study_entry(options: ExportOptions) -> dict:
-    """report.json's ``study``: the attribute map, the table's size and the selection."""
-    out: dict = {"attribute_map": attribute_map(getattr(options.prepare.thermal, "attribute_map", None)).name}
-    if options.buildings is not None:
-        out["buildings_table"] = {"rows": len(options.buildings)}
-    if options.ids is not None:
-        out["ids"] = len(options.ids)
-    if options.region is not None:
-        out["region"] = options.region.as_dict()
-    return out
-
-
-def _report_unknown_ids(input_path: str, input_ids: set, table, selection) -> dict:
-    """A warning for the ids of ``--buildings`` and ``--ids`` that are no building of the file;
-    ``{"buildings_table_not_in_input" | "ids_not_in_input": [ids]}`` for the report."""
-    out = {}
-    for what, key, ids in (("--buildings", "buildings_table_not_in_input", table or ()),
-                           ("--ids", "ids_not_in_input", selection or ())):
-        missing = sorted(set(ids) - input_ids)
-        if missing:
-            first = ", ".join(missing[:5]) + (", ..." if len(missing) > 5 else "")
-            print(f"lod2energy: warning: {what}: {len(missing)} of {len(ids)} ids are not buildings of "
-                  f"{input_path} ({first})", file=sys.stderr)
-            out[key] = missing[:1000]
-    return out
-
-
-def _selector(ids, region):
-    """``item -> bool`` of the buildings chosen by ``--ids`` and ``--region`` (None: all)."""
-    if ids is None and region is None:
-        return None
-    shape = region.shape() if region is not None else None
-
-    def chosen(item) -> bool:
-        if ids is not None and str(item.id) not in ids:
-            return False
-        if shape is None:
-            return True
-        hull = building_hull(item)
-        return hull is not None and hull.intersects(shape)
-    return chosen
-
-
-def _selection_reach(input_path: str, selected, chosen, scope, options: ExportOptions):
-    """``item -> bool``: whether a building outside the selection (``selected``) can be a
-    neighbour of a selected one (its box, as read, within the writers' halo of a selected
-    box, plus :data:`REACH_MARGIN`). Without a selection or a neighbour writer: never."""
-    ctx = [w for w in chosen if scope[w.name] in ("context", "dataset") and w.halo(options.writer_options(w.name)) > 0]
-    if selected is None or not ctx:
-        return lambda item: False
-    halo = max(w.halo(options.writer_options(w.name)) for w in ctx) + REACH_MARGIN
-    boxes = []
-    # only the selected ids are built when the selection is by id (the CityJSON readers skip the others)
-    _, feats = read(input_path, only=options.ids) if options.ids is not None else read(input_path)
-    for item in feats:
-        if isinstance(item, Building) and item.is_building and selected(item):
-            box = _raw_box(item)
-            if box is not None:
-                boxes.append(box)
-    if not boxes:
-        return lambda item: False
-    sel = np.array(boxes)
-
-    def near(item) -> bool:
-        box = _raw_box(item)
-        if box is None:
-            return False
-        return bool(np.any(np.all(sel[:, :3] - halo <= box[3:], axis=1) & np.all(box[:3] <= sel[:, 3:] + halo, axis=1)))
-    return near
-
-
-#: How far (m) a building's box as read may move in its repair and still be taken as a neighbour.
-REACH_MARGIN = 1.0
-
-
-def _raw_box(b: Building):
-    v = np.asarray(b.vertices, dtype=float)
-    v = v[np.isfinite(v).all(axis=1)] if len(v) else v
-    return np.concatenate([v.min(axis=0), v.max(axis=0)]) if len(v) else None
 
 
 def _beside_results(beside, writers) -> dict:

@@ -14,7 +14,7 @@ from test_repair import building
 from lod2energy.config import DEFAULT
 from lod2energy.model import CityModel
 from lod2energy.options import PrepareOptions
-from lod2energy.pipeline import final_check, prepare_building
+from lod2energy.prepare import final_check, prepare_building
 from lod2energy.validate.checks import validate_building
 
 #: The user's sliver tolerance: faces up to 0.3 m2 are slivers (val3dity does not mind them).
@@ -153,7 +153,8 @@ def test_a_compliant_building_left_out_of_a_one_file_writer_is_not_compliant():
     """A one-file writer (the CityJSON) that leaves a compliant building out without a record:
     not written, so not compliant."""
     from lod2energy.dataset import DatasetResult, dataset_apply
-    from lod2energy.records import BuildingRecord, ComplianceRecord, RecordStore
+    from lod2energy.record_store import RecordStore
+    from lod2energy.records import BuildingRecord, ComplianceRecord
     ok = ComplianceRecord.from_block({"compliant": True, "geometry_ready": True, "reasons": []})
     store = RecordStore()
     store[0] = BuildingRecord(0, "a", "Building", energy=ok)

@@ -170,7 +170,7 @@ def test_thin_pieces_with_a_vertex_on_their_own_edge_run_enclosed(tmp_path, weat
     from lod2energy.config import DEFAULT
     from lod2energy.io import read
     from lod2energy.model import Building as _B
-    from lod2energy.pipeline import prepare
+    from lod2energy.prepare import prepare
 
     src = DATA / "3dbag" / "tile901_trimmed.city.jsonl"
     if not src.exists():

@@ -323,7 +323,7 @@ def test_berlin_tile_stls_are_closed(tmp_path):
     # real LoD2 CityGML: ground outlines with collinear runs shared with walls (see above)
     from lod2energy.config import Tolerances
     from lod2energy.io import read
-    from lod2energy.pipeline import repair_one
+    from lod2energy.prepare import repair_one
     _, feats = read(str(DATA / "citygml-real" / "berlin" / "3920_5818.gml"))
     bs = [energy_ready(repair_one(b, Tolerances())) for b in feats if hasattr(b, "vertices")]
     res = stl.write(bs, tmp_path)

@@ -17,7 +17,7 @@ from factories import box, building_from_polygons, square
 from lod2energy.cli import main
 from lod2energy.config import DEFAULT
 from lod2energy.model import Building
-from lod2energy.pipeline import prepare
+from lod2energy.prepare import prepare
 from lod2energy.validate.checks import validate_building
 from lod2energy.validate.compliance import energy_compliance
 

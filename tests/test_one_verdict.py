@@ -145,7 +145,7 @@ def test_no_volume_input_refused(b, type_):
 
 def test_no_volume_input_not_compliant():
     from lod2energy.options import PrepareOptions
-    from lod2energy.pipeline import prepare_building
+    from lod2energy.prepare import prepare_building
     _, rec = prepare_building(_flat_faces(6), PrepareOptions())
     assert not rec.energy.compliant and not rec.energy.geometry_ready
     assert any("no volume" in r for r in rec.energy.reasons)

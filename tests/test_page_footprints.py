@@ -87,7 +87,7 @@ def _export_page(src, out, monkeypatch, reread: bool, plan_max: int | None = Non
         monkeypatch.setattr(VR, "PLAN_SVG_MAX", plan_max)
     if reread:
         real = P.write_html_report
-        monkeypatch.setattr(P, "write_html_report", lambda *a: real(*a[:7], None))
+        monkeypatch.setattr(P, "write_html_report", lambda *a, **k: real(*a[:7], None, **k))
     assert main(["export", str(src), "-o", str(out), "--stl", "-j", "1", "-q"]) == 0
     monkeypatch.undo()
     return (out / "report.html").read_bytes()

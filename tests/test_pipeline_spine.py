@@ -11,7 +11,8 @@ import pytest
 from lod2energy.cli import main
 from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.options import ExportOptions, PrepareOptions
-from lod2energy.pipeline import prepare_building, process_building
+from lod2energy.pipeline import process_building
+from lod2energy.prepare import prepare_building
 from lod2energy.records import BuildingRecord
 from lod2energy.validate import checks
 
@@ -48,7 +49,7 @@ def validate_calls(monkeypatch):
 
 def test_process_building_is_pure_picklable_and_returns_a_typed_record(tmp_path):
     from lod2energy.exporters.registry import CityJsonOptions  # noqa: F401 - registry loads
-    from lod2energy.pipeline import _geometry_key
+    from lod2energy.prepare import _geometry_key
     b = box(id="bx")
     before = (_geometry_key(b), dict(b.provenance), [dict(o.attributes) for o in b.objects],
               [g.semantic_surfaces for o in b.objects for g in o.geometries])
@@ -132,7 +133,7 @@ def test_compliant_means_every_writer_accepts_it_at_the_users_tolerances(tmp_pat
 
 
 def test_final_check_rejects_what_the_writers_would(tmp_path):
-    from lod2energy.pipeline import final_check
+    from lod2energy.prepare import final_check
     from lod2energy.validate.codes import Defect
     pb, rec = prepare_building(box(id="fc"), PrepareOptions())
     assert final_check(pb, [], None) is None

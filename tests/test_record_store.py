@@ -1,4 +1,4 @@
-"""The parent's compact records (records.RecordStore) and the pool's warm start (pipeline.warm)."""
+"""The parent's compact records (record_store.RecordStore) and the pool's warm start (pipeline.warm)."""
 from __future__ import annotations
 
 import pickle
@@ -6,7 +6,8 @@ import sys
 
 import pytest
 
-from lod2energy.records import BuildingRecord, ComplianceRecord, ExportRecord, RecordStore, RepairRecord
+from lod2energy.record_store import RecordStore
+from lod2energy.records import BuildingRecord, ComplianceRecord, ExportRecord, RepairRecord
 
 
 def _record(seq: int) -> BuildingRecord:

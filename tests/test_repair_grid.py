@@ -70,7 +70,7 @@ def test_a_repair_the_grid_spoils_goes_up_the_ladder_and_says_why():
 
 def test_the_pipeline_calls_the_later_result_compliant_and_the_final_check_agrees():
     from lod2energy.options import PrepareOptions
-    from lod2energy.pipeline import final_check, prepare_building
+    from lod2energy.prepare import final_check, prepare_building
     out, rec = prepare_building(shed(), PrepareOptions())
     assert rec.repair.stage not in ("orientation", "irreparable")
     assert rec.energy.compliant and rec.energy.geometry_ready, rec.energy.reasons

@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 from lod2energy.config import DEFAULT
-from lod2energy.pipeline import prepare
+from lod2energy.prepare import prepare
 from lod2energy.validate.checks import validate_building
 from lod2energy.viz import data as D
 from lod2energy.viz import render as R

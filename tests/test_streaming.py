@@ -193,7 +193,7 @@ def test_one_file_writers_hold_one_building_at_a_time(delft_export, monkeypatch)
     a = build_parser().parse_args(["export", str(DELFT), "-o", str(out), "--stl", "--cityjson", "--geojson"])
     opts = resolve(export_options(a), model)
     job = Job(opts, str(out), str(out / ".lod2energy" / "spool"), model.crs)
-    from lod2energy.records import RecordStore
+    from lod2energy.record_store import RecordStore
     records = RecordStore({r.seq: r for r in res.records})
     before = {n: (out / n).read_bytes() for n in ("delft_subset.energy.city.json", "delft_subset.footprints.geojson")}
     for name in ("cityjson", "geojson"):

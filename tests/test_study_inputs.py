@@ -369,7 +369,7 @@ def test_only_buildings_in_reach_of_the_selection_are_prepared_as_neighbours(tmp
     from lod2energy import io
     from lod2energy.exporters.registry import writers
     from lod2energy.options import ExportOptions
-    from lod2energy.pipeline import _selection_reach, _selector
+    from lod2energy.study import selection_reach, selector
     src = row_of_boxes_seq(tmp_path / "row.city.jsonl", n=5)  # touching boxes, 10 m apart
     _, feats = io.read(src)
     bs = {b.id: b for b in feats}
@@ -377,11 +377,11 @@ def test_only_buildings_in_reach_of_the_selection_are_prepared_as_neighbours(tmp
     for opts, near_ids in ((ExportOptions(formats=("idf",), ids=("b0",)), {"b1"}),
                            (ExportOptions(formats=("idf",), ids=("b2",)), {"b1", "b3"})):
         scope = {w.name: w.scope(opts.writer_options(w.name)) for w in chosen}
-        near = _selection_reach(src, _selector(frozenset(opts.ids), None), chosen, scope, opts)
+        near = selection_reach(src, selector(frozenset(opts.ids), None), chosen, scope, opts)
         assert {i for i, b in bs.items() if i not in opts.ids and near(b)} == near_ids
     # no neighbour writer (STL): nothing outside the selection is prepared
     stl = writers(("stl",))
     opts = ExportOptions(formats=("stl",), ids=("b2",))
-    near = _selection_reach(src, _selector(frozenset(opts.ids), None), stl,
+    near = selection_reach(src, selector(frozenset(opts.ids), None), stl,
                             {w.name: w.scope(opts.writer_options(w.name)) for w in stl}, opts)
     assert not any(near(b) for b in bs.values())

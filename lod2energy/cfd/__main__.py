@@ -1,6 +1,6 @@
 """``python -m lod2energy.cfd IN -o OUTDIR [options]``: read, prepare and write an OpenFOAM case.
 
-Buildings are validated, repaired and labelled by :func:`lod2energy.pipeline.prepare` (as
+Buildings are validated, repaired and labelled by :func:`lod2energy.prepare.prepare` (as
 ``lod2energy export`` does); the case goes to ``OUTDIR/cfd`` and a summary to
 ``OUTDIR/cfd_report.json``. Exit status 0 when the case (and the mesh, with ``--mesh``) passed
 its checks, 1 when it was written with problems, 2 when nothing could be written.
@@ -21,7 +21,7 @@ from lod2energy.exporters.cfd.region import building_hull, make_region
 from lod2energy.exporters.cfd.writer import export_case
 from lod2energy.io import read
 from lod2energy.model import FeatureError
-from lod2energy.pipeline import prepare
+from lod2energy.prepare import prepare
 from lod2energy.safe_write import write_json
 
 

@@ -1,7 +1,7 @@
 """``lod2energy view FILE [--id ID]``: the report panel of one building, written and opened.
 
 The building is validated, repaired, labelled and given U-values by
-:func:`lod2energy.pipeline.prepare`, as ``export`` does; the page has the same panel as
+:func:`lod2energy.prepare.prepare`, as ``export`` does; the page has the same panel as
 ``report.html`` (input and repaired renders, face-adjacency graph, defects and stages).
 """
 from __future__ import annotations
@@ -17,7 +17,7 @@ from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.errors import InputError
 from lod2energy.io import read
 from lod2energy.model import Building, FeatureError
-from lod2energy.pipeline import prepare
+from lod2energy.prepare import prepare
 from lod2energy.reports import report_lazily
 from lod2energy.viz.render import slug
 from lod2energy.viz.report import DEFAULT_CAP, write_report_for_files, write_report_html
@@ -66,7 +66,7 @@ def view(path, building_id: str | None = None, outdir=".", *, tol: Tolerances = 
     outdir : path-like
         Folder of the page (created).
     options : object, optional
-        Pipeline options as :func:`lod2energy.pipeline.prepare` takes them (``lod``,
+        Pipeline options as :func:`lod2energy.prepare.prepare` takes them (``lod``,
         ``timeout``, ``merge_parts``, U-value overrides).
 
     Returns
@@ -101,7 +101,7 @@ def cmd_view(args) -> int:
 
 
 def prepare_outputs(ids, inputs: dict[str, Building], tol: Tolerances = DEFAULT, options=None) -> dict:
-    """Repaired, labelled buildings for ``ids`` by :func:`lod2energy.pipeline.prepare`."""
+    """Repaired, labelled buildings for ``ids`` by :func:`lod2energy.prepare.prepare`."""
     a = options or SimpleNamespace(lod=None, timeout=30.0, merge_parts=False)
     out = {}
     for i in ids:
