@@ -23,7 +23,7 @@ import shapely  # noqa: E402
 import shapely.geometry as sg  # noqa: E402
 
 import test_fast_paths_equivalence as T  # noqa: E402
-from exporters.energyplus import render  # noqa: E402
+from lod2energy.exporters.energyplus import render  # noqa: E402
 from lod2energy.energy import conform
 from lod2energy.energy.openings import window_for  # noqa: E402
 from lod2energy.energy.pieces import Piece, _pieces_volume  # noqa: E402

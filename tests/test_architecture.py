@@ -313,3 +313,13 @@ def test_architecture_names_only_paths_that_exist():
     missing = [p for p in paths
                if not any((base / p.rstrip("/")).exists() for base in (ROOT, ROOT / "lod2energy", ROOT / "exporters"))]
     assert missing == [], missing
+
+
+def test_no_test_imports_the_writers_under_a_second_name():
+    # exporters/ is installed as lod2energy.exporters; imported as the top-level ``exporters`` too
+    # (the repository root is on sys.path under pytest) its writers would register themselves a
+    # second time, and a test patching lod2energy.exporters.X would no longer reach the writer
+    second = re.compile(r"^\s*(from exporters[. ]|import exporters\b)", re.M)
+    found = [p.name for d in ("tests", "benchmarks") for p in sorted((ROOT / d).rglob("*.py"))
+             if second.search(p.read_text(encoding="utf-8"))]
+    assert not found, found

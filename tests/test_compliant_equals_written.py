@@ -125,7 +125,7 @@ def test_a_file_that_fails_its_self_check_makes_the_building_not_compliant(tmp_p
     """Issue 38 item 3: compliant means written and self-checked by every requested writer; the
     record, report.json and report.csv say which writer's check failed."""
     import csv
-    from exporters.stl import writer as stl
+    from lod2energy.exporters.stl import writer as stl
     from lod2energy.options import ExportOptions, RunOptions
     from lod2energy.pipeline import export
     src = tmp_path / "two.city.json"
@@ -177,7 +177,7 @@ def test_an_idf_that_fails_its_self_check_is_not_compliant_in_every_output(tmp_p
     """The IDF is written in the neighbour pass, the CityJSON beside it (``-j 2``): a building
     whose IDF fails its self-check is not compliant in the record, report.csv and the CityJSON."""
     import csv
-    from exporters.energyplus import writer as idf
+    from lod2energy.exporters.energyplus import writer as idf
     from lod2energy.options import ExportOptions, RunOptions
     from lod2energy.pipeline import export
     src = tmp_path / "two.city.json"

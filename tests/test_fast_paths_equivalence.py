@@ -224,7 +224,7 @@ def _ref_upper_left_first(points):
 
 
 def test_upper_left_first_and_vertex_lines_same_as_before():
-    from exporters.energyplus import render
+    from lod2energy.exporters.energyplus import render
 
     rng = np.random.default_rng(9)
     rings = _rings(rng)[:-1]  # the 2-vertex ring has no plane

@@ -11,7 +11,7 @@ import pytest
 from scipy.spatial import cKDTree
 
 from lod2energy.exporters.stl import writer as stl
-from exporters.stl.rows import row_keys, same_position, unique_rows
+from lod2energy.exporters.stl.rows import row_keys, same_position, unique_rows
 from lod2energy.energy.zones.shells import local_origin, zone_shells
 from factories import box, building_from_polygons, gabled_house
 
