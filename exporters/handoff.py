@@ -9,10 +9,11 @@ the energy model uses rather than from an extrusion of the footprint:
   envelope's projections), its area and perimeter;
 - **height**: ridge minus ground of the envelope (:class:`lod2energy.thermal.storeys.RoofLevels`);
 - **volume**: the thermal stage's (``provenance["thermal"]["volume"]``);
-- **floor area**: the gross floor area of the storeys, each the horizontal section of the real
-  envelope at the storey's floor level (:func:`lod2energy.energy.zones.cut.section_area`), so a
-  set-back top storey or a lower wing counts only where it is; the attic floor only when the
-  attic is conditioned (``--attic conditioned``), as in the IDF;
+- **floor area**: the gross floor area of the storeys as the IDF's storey zoning counts them,
+  per Building/BuildingPart: its section at its own ground level plus the floors of its upper
+  storeys (:func:`lod2energy.energy.zones.storeys.upper_floor_area`: each the horizontal
+  section of the real envelope at the storey's floor level, so a set-back top storey or a
+  lower wing counts only where it is; the attic floor only with ``--attic conditioned``);
 - **use** and **year**: :func:`lod2energy.thermal.use.building_use` and the thermal stage's year.
 """
 from __future__ import annotations
@@ -22,8 +23,12 @@ from typing import Any
 
 import numpy as np
 
+from lod2energy.energy.pieces import Piece
 from lod2energy.energy.zones.cut import section_area
+from lod2energy.energy.zones.shells import classify
+from lod2energy.energy.zones.storeys import upper_floor_area
 from lod2energy.exporters.geojson.writer import footprint
+from lod2energy.geometry import newell_normal
 from lod2energy.model import Building
 from lod2energy.thermal.storeys import storeys
 from lod2energy.thermal.use import building_use
@@ -90,26 +95,34 @@ class HandoffFacts:
         return self.height
 
 
-def envelope_polygons(b: Building, lod: str | None = None) -> list[np.ndarray]:
-    """Outer rings ``(k, 3) float`` (m) of the exterior shells' faces of ``b``'s envelope."""
+def part_pieces(b: Building, lod: str | None = None) -> list[list[Piece]]:
+    """The faces of each envelope object's exterior shells as :class:`Piece` s (outer rings,
+    m, kinds by :func:`lod2energy.energy.zones.shells.classify`), one list per object."""
     v = np.asarray(b.vertices, dtype=np.float64)
     out = []
     for _, _, g in b.envelope(lod):
-        for _, hi, _, s in g.iter_surfaces():
-            if hi == 0 and len(s.rings[0]) >= 3:
-                out.append(v[np.asarray(s.rings[0], dtype=np.intp)])
+        pieces = []
+        for _, hi, fi, s in g.iter_surfaces():
+            if hi > 0 or len(s.rings[0]) < 3:
+                continue
+            pts = v[np.asarray(s.rings[0], dtype=np.intp)]
+            if np.all(np.isfinite(pts)):
+                pieces.append(Piece(pts, classify(g.semantic_type(s), newell_normal(pts)), "Outdoors", 0.0, fi))
+        if pieces:
+            out.append(pieces)
     return out
 
 
-def floor_levels(ground: float, eave: float, count: int, storey_height: float, attic: bool,
-                 attic_floor: bool) -> list[float]:
-    """Floor levels (m) of a building's storeys: one every ``storey_height`` from ``ground``
-    for the storeys below the attic, then the attic floor at the eave when ``attic_floor``."""
-    below = max(1, count - (1 if attic else 0))
-    levels = [ground + k * storey_height for k in range(below)]
-    if attic and attic_floor:
-        levels.append(max(eave, levels[-1] + storey_height))
-    return levels
+def floor_area(parts: list[list[Piece]], storey_height: float, attic_mode: str = "unconditioned") -> float:
+    """Gross floor area (m2) of the storeys of envelope objects ``parts`` (:func:`part_pieces`):
+    each object's section at its ground level plus its upper floors as the IDF's storey zoning
+    counts them (:func:`lod2energy.energy.zones.storeys.upper_floor_area`)."""
+    total = 0.0
+    for pieces in parts:
+        polys = [p.points for p in pieces]
+        ground = float(min(p[:, 2].min() for p in polys))
+        total += section_area(polys, ground) + upper_floor_area(pieces, storey_height, attic_mode)
+    return float(total)
 
 
 def facts(b: Building, use: str | None = None, lod: str | None = None,
@@ -131,15 +144,13 @@ def facts(b: Building, use: str | None = None, lod: str | None = None,
         return None
     u = building_use(b, use)
     st = storeys(b, u.type, lod)
-    polys = envelope_polygons(b, lod)
-    allz = np.concatenate([p[:, 2] for p in polys]) if polys else np.zeros(1)
-    allz = allz[np.isfinite(allz)]
+    parts = part_pieces(b, lod)
+    if not parts:
+        return None
+    allz = np.concatenate([p.points[:, 2] for ps in parts for p in ps])
     ground = st.levels.ground if st.levels is not None else float(allz.min())
     ridge = st.levels.ridge if st.levels is not None else float(allz.max())
-    eave = st.levels.eave if st.levels is not None else ridge
-    levels = floor_levels(ground, eave, int(st.count), float(st.storey_height), bool(st.attic),
-                          attic_mode == "conditioned")
-    floor = float(sum(section_area(polys, z) for z in levels if z < ridge))
+    floor = floor_area(parts, float(st.storey_height), attic_mode)
     thermal = b.provenance.get("thermal") or {}
     vol = thermal.get("volume")
     year_fact = ((thermal.get("facts") or {}).get("year") or {})
