@@ -41,7 +41,6 @@ import pyogrio.raw
 import shapely
 from pyproj import CRS, Transformer
 from shapely.geometry import shape
-from shapely.ops import transform
 
 from lod2energy.exporters.geojson.writer import footprint_geometry
 from lod2energy.exporters.handoff import facts
@@ -160,8 +159,9 @@ def write(buildings: Iterable[Building], path: str | os.PathLike, *, crs: Any = 
         r["use_type1"] = r["use_type1"] or fallback
     centre = shapely.centroid(shapely.MultiPoint([p.centroid for p in polys]))
     utm = utm_crs(centre.x, centre.y)
-    to_utm = Transformer.from_crs("EPSG:4326", utm, always_xy=True).transform
-    wkb = np.array([shapely.to_wkb(transform(to_utm, p)) for p in polys], dtype=object)
+    to_utm = Transformer.from_crs("EPSG:4326", utm, always_xy=True)
+    projected = shapely.transform(polys, lambda xy: np.column_stack(to_utm.transform(xy[:, 0], xy[:, 1])))
+    wkb = np.asarray(shapely.to_wkb(projected), dtype=object)
     fields = {k: np.array([r[k] for r in rows], dtype=t) for k, t in FIELDS.items()}
     problems = _write_shapefile(path, wkb, fields, utm, root)
     if not problems:
