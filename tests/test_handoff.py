@@ -225,3 +225,11 @@ def test_cea_zone_table_reads_back_with_ceas_columns_one_row_per_building(export
         e = b.get("exports", {}).get("cea")
         if e is not None and not e["ok"]:
             assert e["problems"]
+
+
+def test_cea_leaves_out_an_id_no_shapefile_field_holds(tmp_path):
+    long_id = "é" * 200  # 400 bytes in UTF-8
+    bs = [shifted(box(id=long_id)), shifted(box(id="short"), (85030.0, 446000.0, 0.0))]
+    res = cea.write(bs, cea.scenario_path(tmp_path, "t"), crs=TEST_CRS)
+    assert res.ok and res.building_ids == ("short",) and "254 bytes" in dict(res.skipped)[long_id]
+    assert read_zone(Path(res.path))[1]["reference"] == ["short"]

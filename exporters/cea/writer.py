@@ -69,6 +69,8 @@ USE_TYPE = {"residential": "MULTI_RES", "office": "OFFICE", "retail": "RETAIL", 
 #: never the first match and is left out.
 CONST_TYPES = (("STANDARD1", 1000, 1920), ("STANDARD2", 1921, 1970), ("STANDARD3", 1971, 1980),
                ("STANDARD4", 1981, 2000), ("STANDARD5", 2000, 2040))
+#: The longest text a shapefile (dBASE) field holds, bytes.
+MAX_TEXT = 254
 #: CEA refuses lower buildings (``schemas.yml``: ``height_ag`` min 2.0 m; at least 1 m a floor).
 MIN_HEIGHT = 2.0
 
@@ -119,6 +121,9 @@ def write(buildings: Iterable[Building], path: str | os.PathLike, *, crs: Any = 
         if not b.is_building:
             continue
         seen.append(str(b.id))
+        if len(str(b.id).encode("utf-8")) > MAX_TEXT:
+            left_out[str(b.id)] = f"CEA: the id is longer than a shapefile field holds ({MAX_TEXT} bytes)"
+            continue
         try:
             geom = footprint_geometry(b, crs, frame, lod)
         except SiteError as e:
@@ -165,7 +170,7 @@ def write(buildings: Iterable[Building], path: str | os.PathLike, *, crs: Any = 
     fields = {k: np.array([r[k] for r in rows], dtype=t) for k, t in FIELDS.items()}
     problems = _write_shapefile(path, wkb, fields, utm, root)
     if not problems:
-        problems = self_check(str(path), n_rows=len(rows))
+        problems = self_check(str(path), n_rows=len(rows), ids=ids)
     if problems and path.exists():
         _set_aside(path)
         problems.append(f"failed its self-check: kept as {path.name}.invalid")
@@ -206,11 +211,11 @@ def _set_aside(path: Path) -> None:
             os.replace(p, p.with_name(p.name + ".invalid"))
 
 
-def self_check(path: str, n_rows: int | None = None) -> list[str]:
+def self_check(path: str, n_rows: int | None = None, ids: tuple[str, ...] | None = None) -> list[str]:
     """Problems of a written zone table (empty: good), read back through pyogrio: the columns of
     :data:`FIELDS`, ``n_rows`` Polygons in a projected CRS, unique names starting with a
     letter, no empty value, at least one floor and :data:`MIN_HEIGHT` (and 1 m a floor) above
-    ground."""
+    ground, and the ``reference`` column ``ids`` when given."""
     try:
         meta, _, wkb, values = pyogrio.raw.read(path)
     except Exception as e:  # noqa: BLE001 - GDAL's errors: the file is not a readable table
@@ -224,6 +229,8 @@ def self_check(path: str, n_rows: int | None = None) -> list[str]:
         problems.append(f"{path}: {len(wkb)} rows, {n_rows} written")
     if not meta.get("crs") or not CRS.from_user_input(meta["crs"]).is_projected:
         problems.append(f"{path}: not in a projected CRS")
+    if ids is not None and [str(r) for r in cols["reference"]] != list(ids):
+        problems.append(f"{path}: the reference column is not the ids written")
     geoms = shapely.from_wkb(wkb)
     if any(g is None or g.geom_type != "Polygon" or not g.is_valid or g.area <= 0 for g in geoms):
         problems.append(f"{path}: a footprint is not a valid Polygon")
