@@ -187,6 +187,9 @@ def add_export_parser(sub) -> argparse.ArgumentParser:
     e.add_argument("--cea", action="store_true",
                    help="City Energy Analyst zone.shp (footprints, floors, heights, year, construction and use "
                    "types) in a scenario folder OUTDIR/<input>.cea/")
+    e.add_argument("--hbjson", action="store_true",
+                   help="honeybee Model JSON per building (Ladybug Tools): a Room per IDF zone, typed faces, "
+                   "boundary conditions, windows from the WWR, constructions from the U-values")
     e.add_argument("--idf-mode", choices=("building", "dataset"), default="building")
     e.add_argument("--stl-mode", choices=("building", "dataset"), default="building")
     e.add_argument("--stl-ascii", action="store_true", help="ASCII STL (default binary)")

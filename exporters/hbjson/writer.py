@@ -1,0 +1,236 @@
+"""Honeybee Model JSON (HBJSON) per building: the energy model's zones as Ladybug Tools reads them
+(``--hbjson``).
+
+Written as plain JSON by this module (honeybee is AGPL-3 and no part of it is imported here);
+the tests load every file with honeybee-energy's ``Model.from_dict`` and run ``check_all()``.
+One ``Model`` per building, in the IDF's local frame (metres; map coordinate = file coordinate
++ the record's offset), from the zones the IDF writer writes (the energy model,
+:func:`lod2energy.energy.model.model_of`, cut into storeys by
+:func:`lod2energy.energy.zones.storeys._written_zones`):
+
+- one ``Room`` per thermal zone, its ``Face`` s the zone's written pieces (planar, convex),
+  typed ``Wall``, ``RoofCeiling`` (roofs, ceilings) or ``Floor`` (ground, floors);
+- boundary conditions as in the IDF: ``Outdoors``, ``Ground``, ``Adiabatic`` for party walls,
+  ``Surface`` for the floors and ceilings between storeys (each naming its partner);
+- ``Aperture`` s on the outdoor walls from the window-to-wall ratio, placed as the IDF places
+  its windows (:func:`lod2energy.energy.openings.window_for`);
+- constructions from our U-values: one no-mass layer giving the U-value with films
+  (:func:`lod2energy.exporters.energyplus.constructions.construction_layers` without the mass
+  layer), windows a simple glazing system (U, the IDF's SHGC). Programs and HVAC are left to
+  honeybee's defaults; the room's use is in its ``user_data``.
+"""
+from __future__ import annotations
+
+import json
+import os
+from typing import Iterable
+
+import numpy as np
+
+from lod2energy.energy.model import model_of, with_energy_model
+from lod2energy.energy.openings import window_for
+from lod2energy.energy.zones.storeys import _written_zones
+from lod2energy.exporters.energyplus.constructions import construction_layers
+from lod2energy.exporters.paths import output_path, safe_stem, set_aside_failed
+from lod2energy.exporters.registry import register_writer
+from lod2energy.exporters.result import ExportResult
+from lod2energy.geometry.polygons import polygon_area3d
+from lod2energy.model import Building
+from lod2energy.safe_write import write_text
+
+SUFFIX = ".hbjson"
+#: Our piece kinds -> honeybee face types.
+FACE_TYPE = {"wall": "Wall", "roof": "RoofCeiling", "ceiling": "RoofCeiling", "ground": "Floor", "floor": "Floor"}
+#: Honeybee's tolerances of the written models (m, degrees).
+TOLERANCE, ANGLE_TOLERANCE = 0.001, 1.0
+
+
+def _bc(boundary: str, partner: tuple[str, str] | None = None) -> dict:
+    if boundary == "Outdoors":
+        return {"type": "Outdoors", "sun_exposure": True, "wind_exposure": True,
+                "view_factor": {"type": "Autocalculate"}}
+    if boundary == "Surface":
+        return {"type": "Surface", "boundary_condition_objects": list(partner)}
+    return {"type": boundary}
+
+
+def without_collinear(points: np.ndarray, tol: float = TOLERANCE) -> np.ndarray:
+    """``points`` ``(k, 3)`` without the vertices closer than ``tol`` (m) to the segment of their
+    neighbours: the two sides of an interzone floor keep the same vertices, as honeybee asks of
+    adjacent faces (each side may carry a vertex the other's walls put there)."""
+    pts = np.asarray(points, dtype=np.float64)
+    changed = True
+    while changed and len(pts) > 3:
+        changed = False
+        for i in range(len(pts)):
+            a, b, c = pts[i - 1], pts[i], pts[(i + 1) % len(pts)]
+            ac = c - a
+            t = float(np.clip(np.dot(b - a, ac) / max(float(np.dot(ac, ac)), 1e-18), 0.0, 1.0))
+            if np.linalg.norm(a + t * ac - b) < tol:
+                pts = np.delete(pts, i, axis=0)
+                changed = True
+                break
+    return pts
+
+
+def _face3d(points: np.ndarray) -> dict:
+    return {"type": "Face3D", "boundary": [[round(float(c), 6) for c in p] for p in points]}
+
+
+def model_dict(b: Building, zones: list, options, name: str) -> tuple[dict, dict]:
+    """The Model dict of building ``b`` and ``{room id: zone volume m3}``.
+
+    Parameters
+    ----------
+    zones : list of (ZoneShell, pieces, ZoneInfo, source zone index)
+        The building's written zones (local frame).
+    options : IdfOptions
+    name : str
+        The model's identifier (a file-name stem).
+    """
+    rooms, materials, constructions, volumes = [], {}, {}, {}
+    links: dict[str, tuple[str, str]] = {}  # interzone key + side -> (face id, room id)
+    faces_of = []
+    for k, (z, pieces, info, _) in enumerate(zones):
+        rid = f"{name[:60]}_Z{k}"  # honeybee identifiers: at most 100 characters
+        faces = []
+        for j, p in enumerate(pieces):
+            fid = f"{rid}_F{j}"
+            if p.boundary == "Surface" and p.link:
+                links[p.link] = (fid, rid)
+            faces.append((fid, p))
+        faces_of.append((rid, z, info, faces))
+    for rid, z, info, faces in faces_of:
+        out, vol = [], 0.0
+        walls = [polygon_area3d(p.points) if p.kind == "wall" and p.boundary == "Outdoors" else None for _, p in faces]
+        eligible = sum(a for a in walls if a is not None and a >= options.min_window_wall_area)
+        total = sum(a for a in walls if a is not None)
+        ratio = min(z.wwr * total / eligible, 0.85) if eligible > 0 else 0.0
+        for (fid, p), a in zip(faces, walls):
+            pts = np.asarray(p.points, dtype=np.float64)
+            if p.boundary == "Surface":
+                pts = without_collinear(pts)
+            vol += float(np.dot(pts[0], np.cross(pts[1:-1] - pts[0], pts[2:] - pts[0]).sum(axis=0))) / 6.0 \
+                if len(pts) >= 3 else 0.0
+            face = {"type": "Face", "identifier": fid, "face_type": FACE_TYPE[p.kind], "geometry": _face3d(pts)}
+            partner = None
+            if p.boundary == "Surface":
+                key, side = p.link.rsplit(":", 1)
+                partner = links.get(f"{key}:{'f' if side == 'c' else 'c'}")
+            face["boundary_condition"] = _bc(p.boundary if (p.boundary != "Surface" or partner) else "Adiabatic",
+                                             partner)
+            energy = {"type": "FaceEnergyPropertiesAbridged"}
+            if p.boundary != "Surface" and p.u_value > 0:
+                cid = f"{FACE_TYPE[p.kind]}_{p.boundary}_U{p.u_value:.4f}".replace(".", "p")
+                if cid not in constructions:
+                    r, _, _ = construction_layers(p.kind, p.boundary, p.u_value, False)
+                    materials[cid + "_layer"] = {"type": "EnergyMaterialNoMass", "identifier": cid + "_layer",
+                                                 "r_value": round(float(r), 5), "roughness": "MediumRough",
+                                                 "thermal_absorptance": 0.9, "solar_absorptance": 0.7,
+                                                 "visible_absorptance": 0.7}
+                    constructions[cid] = {"type": "OpaqueConstructionAbridged", "identifier": cid,
+                                          "materials": [cid + "_layer"]}
+                energy["construction"] = cid
+            face["properties"] = {"type": "FacePropertiesAbridged", "energy": energy}
+            if a is not None and ratio > 0 and a >= options.min_window_wall_area:
+                w = window_for(pts, ratio)
+                if w is not None and polygon_area3d(w) > 0.01:
+                    wid = f"Window_U{z.u_window:.3f}_G{options.shgc:.2f}".replace(".", "p")
+                    if wid not in constructions:
+                        materials[wid + "_glazing"] = {"type": "EnergyWindowMaterialSimpleGlazSys",
+                                                       "identifier": wid + "_glazing",
+                                                       "u_factor": round(min(float(z.u_window), 7.0), 4),
+                                                       "shgc": float(options.shgc), "vt": float(options.shgc)}
+                        constructions[wid] = {"type": "WindowConstructionAbridged", "identifier": wid,
+                                              "materials": [wid + "_glazing"]}
+                    face["apertures"] = [{"type": "Aperture", "identifier": f"{fid}_Win", "geometry": _face3d(w),
+                                          "is_operable": False, "boundary_condition": _bc("Outdoors"),
+                                          "properties": {"type": "AperturePropertiesAbridged",
+                                                         "energy": {"type": "ApertureEnergyPropertiesAbridged",
+                                                                    "construction": wid}}}]
+            out.append(face)
+        volumes[rid] = vol
+        rooms.append({"type": "Room", "identifier": rid, "display_name": str(z.object_id), "faces": out,
+                      "properties": {"type": "RoomPropertiesAbridged",
+                                     "energy": {"type": "RoomEnergyPropertiesAbridged"}},
+                      "user_data": {"building": str(b.id), "use": info.use, "conditioned": bool(info.conditioned),
+                                    "storey": info.storey, "attic": bool(info.attic)}})
+    model = {"type": "Model", "identifier": name, "display_name": str(b.id), "units": "Meters",
+             "tolerance": TOLERANCE, "angle_tolerance": ANGLE_TOLERANCE, "rooms": rooms,
+             "properties": {"type": "ModelProperties", "energy": {
+                 "type": "ModelEnergyProperties", "materials": list(materials.values()),
+                 "constructions": list(constructions.values())}}}
+    return model, volumes
+
+
+def write(buildings: Iterable[Building], outdir: str | os.PathLike, options, *, context: Iterable[Building] = (),
+          root: str | os.PathLike | None = None) -> list[ExportResult]:
+    """One ``<id>.hbjson`` per building of ``buildings`` (energy-ready, with their neighbours
+    ``context`` for the party walls), each self-checked (:func:`self_check`)."""
+    model = model_of(buildings, options, context)
+    if model is None:
+        return []
+    n_own = model.n_own
+    written_of, _, _, _ = _written_zones(list(model.buildings[:n_own]), model.zones, model.zones_of, model.pieces,
+                                         options, model.openings)
+    out, used = [], set()
+    for bi in range(n_own):
+        b = model.buildings[bi]
+        stem = safe_stem(str(b.id), used)
+        path = output_path(outdir, stem, SUFFIX)
+        doc, volumes = model_dict(b, written_of[bi], options, stem)
+        doc["user_data"] = {"building": str(b.id), "offset_m": [float(x) for x in model.origin]}
+        write_text(path, json.dumps(doc, separators=(",", ":"), allow_nan=False), root=root or outdir)
+        problems = self_check(str(path), len(written_of[bi]))
+        res = ExportResult((str(b.id),), str(path), not problems, tuple(problems),
+                           tuple(float(x) for x in model.origin),
+                           stats={"zones": len(volumes), "zone_volumes_m3": volumes})
+        out.append(set_aside_failed(res))
+    return out
+
+
+def self_check(path: str, n_rooms: int | None = None) -> list[str]:
+    """Problems of a written HBJSON (empty: good): a Model of ``n_rooms`` Rooms, each closed
+    (its faces' signed volume positive), every face planar-sized (3+ vertices, finite), every
+    ``Surface`` boundary naming a face of the file."""
+    try:
+        with open(path, encoding="utf-8") as f:
+            doc = json.load(f)
+    except (OSError, ValueError) as e:
+        return [f"{path}: not readable as JSON: {e}"]
+    if not isinstance(doc, dict) or doc.get("type") != "Model":
+        return [f"{path}: not a honeybee Model"]
+    rooms = doc.get("rooms") or []
+    problems = []
+    if n_rooms is not None and len(rooms) != n_rooms:
+        problems.append(f"{path}: {len(rooms)} rooms, {n_rooms} written")
+    ids = {f["identifier"] for r in rooms for f in r.get("faces", [])}
+    for r in rooms:
+        vol = 0.0
+        for f in r.get("faces", []):
+            pts = np.asarray(f["geometry"]["boundary"], dtype=np.float64)
+            if pts.ndim != 2 or len(pts) < 3 or not np.all(np.isfinite(pts)):
+                problems.append(f"{path}: face {f['identifier']}: not a polygon")
+                continue
+            vol += float(np.dot(pts[0], np.cross(pts[1:-1] - pts[0], pts[2:] - pts[0]).sum(axis=0))) / 6.0
+            bc = f.get("boundary_condition") or {}
+            if bc.get("type") == "Surface" and bc["boundary_condition_objects"][0] not in ids:
+                problems.append(f"{path}: face {f['identifier']}: its Surface partner is not in the file")
+        if not vol > 0:
+            problems.append(f"{path}: room {r['identifier']}: no positive volume")
+    return problems[:20]
+
+
+def _scope(options) -> str:
+    return "context"
+
+
+def _halo(options) -> float:
+    return 1.0  # party walls: faces within a few cm of each other
+
+
+def _write(buildings, outdir, options, *, context=(), **_):
+    return write(buildings, outdir, options, context=context, root=outdir)
+
+
+register_writer("hbjson", _write, self_check, scope=_scope, halo=_halo, prepare=with_energy_model)
