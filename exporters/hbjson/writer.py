@@ -189,10 +189,28 @@ def write(buildings: Iterable[Building], outdir: str | os.PathLike, options, *, 
     return out
 
 
+def face_problem(points: np.ndarray, tol: float = TOLERANCE) -> str | None:
+    """Why honeybee's ``check_all`` would refuse a face of these vertices (m), or None: fewer
+    than 3, not finite, an area (collinear vertices dropped) of at most ``tol`` (its
+    "degenerate", 000103), or a vertex farther than ``tol`` from the face's plane (000101)."""
+    pts = np.asarray(points, dtype=np.float64)
+    if pts.ndim != 2 or len(pts) < 3 or not np.all(np.isfinite(pts)):
+        return "not a polygon"
+    q = without_collinear(pts, tol)
+    n = np.cross(q[1:-1] - q[0], q[2:] - q[0]).sum(axis=0) if len(q) >= 3 else np.zeros(3)
+    area = 0.5 * float(np.linalg.norm(n))
+    if area <= tol:
+        return f"degenerate ({area:.2g} m2)"
+    dev = float(np.abs((pts - pts.mean(axis=0)) @ (n / (2 * area))).max())
+    if dev > 0.5 * tol:  # honeybee measures from its own plane: half the tolerance to spare
+        return f"not planar ({dev * 1000:.1f} mm off its plane)"
+    return None
+
+
 def self_check(path: str, n_rooms: int | None = None) -> list[str]:
     """Problems of a written HBJSON (empty: good): a Model of ``n_rooms`` Rooms, each closed
-    (its faces' signed volume positive), every face planar-sized (3+ vertices, finite), every
-    ``Surface`` boundary naming a face of the file."""
+    (its faces' signed volume positive), no face honeybee would refuse (:func:`face_problem`),
+    every ``Surface`` boundary naming a face of the file."""
     try:
         with open(path, encoding="utf-8") as f:
             doc = json.load(f)
@@ -209,9 +227,11 @@ def self_check(path: str, n_rooms: int | None = None) -> list[str]:
         vol = 0.0
         for f in r.get("faces", []):
             pts = np.asarray(f["geometry"]["boundary"], dtype=np.float64)
-            if pts.ndim != 2 or len(pts) < 3 or not np.all(np.isfinite(pts)):
-                problems.append(f"{path}: face {f['identifier']}: not a polygon")
-                continue
+            why = face_problem(pts, float(doc.get("tolerance") or TOLERANCE))
+            if why:
+                problems.append(f"{path}: face {f['identifier']}: {why}")
+                if why == "not a polygon":
+                    continue
             vol += float(np.dot(pts[0], np.cross(pts[1:-1] - pts[0], pts[2:] - pts[0]).sum(axis=0))) / 6.0
             bc = f.get("boundary_condition") or {}
             if bc.get("type") == "Surface" and bc["boundary_condition_objects"][0] not in ids:
