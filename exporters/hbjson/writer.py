@@ -9,7 +9,10 @@ One ``Model`` per building, in the IDF's local frame (metres; map coordinate = f
 :func:`lod2energy.energy.zones.storeys._written_zones`):
 
 - one ``Room`` per thermal zone, its ``Face`` s the zone's written pieces (planar, convex),
-  typed ``Wall``, ``RoofCeiling`` (roofs, ceilings) or ``Floor`` (ground, floors);
+  typed ``Wall``, ``RoofCeiling`` (roofs, ceilings) or ``Floor`` (ground, floors), a floor
+  facing up or a roof facing down by its normal;
+- the model's tolerance the geometry's own precision (:func:`model_tolerance`: 1 mm, or more
+  where the input's faces are less flat);
 - boundary conditions as in the IDF: ``Outdoors``, ``Ground``, ``Adiabatic`` for party walls,
   ``Surface`` for the floors and ceilings between storeys (each naming its partner);
 - ``Aperture`` s on the outdoor walls from the window-to-wall ratio, placed as the IDF places
@@ -43,6 +46,11 @@ SUFFIX = ".hbjson"
 FACE_TYPE = {"wall": "Wall", "roof": "RoofCeiling", "ceiling": "RoofCeiling", "ground": "Floor", "floor": "Floor"}
 #: Honeybee's tolerances of the written models (m, degrees).
 TOLERANCE, ANGLE_TOLERANCE = 0.001, 1.0
+#: The tolerances a model may declare (m): the first that its faces' flatness allows
+#: (:func:`model_tolerance`).
+TOLERANCES = (0.001, 0.002, 0.005, 0.01)
+#: Normals closer to vertical than this (|nz|, about 1 degree) make a face "up" or "down".
+_VERTICAL = 0.0175
 
 
 def _bc(boundary: str, partner: tuple[str, str] | None = None) -> dict:
@@ -73,6 +81,34 @@ def without_collinear(points: np.ndarray, tol: float = TOLERANCE) -> np.ndarray:
     return pts
 
 
+def _deviation(points: np.ndarray) -> float:
+    """Largest distance (m) of ``points`` from their Newell plane through their mean."""
+    n = np.cross(points[1:-1] - points[0], points[2:] - points[0]).sum(axis=0)
+    norm = float(np.linalg.norm(n))
+    return float(np.abs((points - points.mean(axis=0)) @ (n / norm)).max()) if norm > 0 else 0.0
+
+
+def model_tolerance(polygons: Iterable[np.ndarray]) -> float:
+    """The model's tolerance (m): the first of :data:`TOLERANCES` at least twice the largest
+    deviation of a face from its plane (the geometry's own precision: honeybee calls a face
+    farther from flat than the tolerance not planar), the last when none is."""
+    dev = max((_deviation(np.asarray(p, dtype=np.float64)) for p in polygons if len(p) >= 3), default=0.0)
+    return next((t for t in TOLERANCES if t >= 2 * dev), TOLERANCES[-1])
+
+
+def face_type(kind: str, points: np.ndarray) -> str:
+    """Honeybee face type of a piece: by its kind (:data:`FACE_TYPE`), but a floor never faces
+    up nor a roof or ceiling down (honeybee's upside-down check): those go by their normal."""
+    t = FACE_TYPE[kind]
+    n = np.cross(points[1:-1] - points[0], points[2:] - points[0]).sum(axis=0)
+    nz = float(n[2] / (np.linalg.norm(n) or 1.0))
+    if t == "Floor" and nz > _VERTICAL:
+        return "RoofCeiling"
+    if t == "RoofCeiling" and nz < -_VERTICAL:
+        return "Floor"
+    return t
+
+
 def _face3d(points: np.ndarray) -> dict:
     return {"type": "Face3D", "boundary": [[round(float(c), 6) for c in p] for p in points]}
 
@@ -89,6 +125,7 @@ def model_dict(b: Building, zones: list, options, name: str) -> tuple[dict, dict
         The model's identifier (a file-name stem).
     """
     rooms, materials, constructions, volumes = [], {}, {}, {}
+    tol = model_tolerance(p.points for _, pieces, _, _ in zones for p in pieces)
     links: dict[str, tuple[str, str]] = {}  # interzone key + side -> (face id, room id)
     faces_of = []
     for k, (z, pieces, info, _) in enumerate(zones):
@@ -109,10 +146,10 @@ def model_dict(b: Building, zones: list, options, name: str) -> tuple[dict, dict
         for (fid, p), a in zip(faces, walls):
             pts = np.asarray(p.points, dtype=np.float64)
             if p.boundary == "Surface":
-                pts = without_collinear(pts)
+                pts = without_collinear(pts, tol)
             vol += float(np.dot(pts[0], np.cross(pts[1:-1] - pts[0], pts[2:] - pts[0]).sum(axis=0))) / 6.0 \
                 if len(pts) >= 3 else 0.0
-            face = {"type": "Face", "identifier": fid, "face_type": FACE_TYPE[p.kind], "geometry": _face3d(pts)}
+            face = {"type": "Face", "identifier": fid, "face_type": face_type(p.kind, pts), "geometry": _face3d(pts)}
             partner = None
             if p.boundary == "Surface":
                 key, side = p.link.rsplit(":", 1)
@@ -156,7 +193,7 @@ def model_dict(b: Building, zones: list, options, name: str) -> tuple[dict, dict
                       "user_data": {"building": str(b.id), "use": info.use, "conditioned": bool(info.conditioned),
                                     "storey": info.storey, "attic": bool(info.attic)}})
     model = {"type": "Model", "identifier": name, "display_name": str(b.id), "units": "Meters",
-             "tolerance": TOLERANCE, "angle_tolerance": ANGLE_TOLERANCE, "rooms": rooms,
+             "tolerance": tol, "angle_tolerance": ANGLE_TOLERANCE, "rooms": rooms,
              "properties": {"type": "ModelProperties", "energy": {
                  "type": "ModelEnergyProperties", "materials": list(materials.values()),
                  "constructions": list(constructions.values())}}}
