@@ -40,6 +40,7 @@ from lod2energy.exporters.result import ExportResult
 from lod2energy.geometry.polygons import polygon_area3d
 from lod2energy.model import Building
 from lod2energy.safe_write import write_text
+from lod2energy.validate.closed import check_closed_outward
 
 SUFFIX = ".hbjson"
 #: Our piece kinds -> honeybee face types.
@@ -245,9 +246,10 @@ def face_problem(points: np.ndarray, tol: float = TOLERANCE) -> str | None:
 
 
 def self_check(path: str, n_rooms: int | None = None) -> list[str]:
-    """Problems of a written HBJSON (empty: good): a Model of ``n_rooms`` Rooms, each closed
-    (its faces' signed volume positive), no face honeybee would refuse (:func:`face_problem`),
-    every ``Surface`` boundary naming a face of the file."""
+    """Problems of a written HBJSON (empty: good): a Model of ``n_rooms`` Rooms, each a closed,
+    outward shell (:func:`lod2energy.validate.closed.check_closed_outward`, as the IDF's zones),
+    no face honeybee would refuse (:func:`face_problem`), every ``Surface`` boundary naming a
+    face of the file."""
     try:
         with open(path, encoding="utf-8") as f:
             doc = json.load(f)
@@ -261,7 +263,7 @@ def self_check(path: str, n_rooms: int | None = None) -> list[str]:
         problems.append(f"{path}: {len(rooms)} rooms, {n_rooms} written")
     ids = {f["identifier"] for r in rooms for f in r.get("faces", [])}
     for r in rooms:
-        vol = 0.0
+        vol, polys = 0.0, []
         for f in r.get("faces", []):
             pts = np.asarray(f["geometry"]["boundary"], dtype=np.float64)
             why = face_problem(pts, float(doc.get("tolerance") or TOLERANCE))
@@ -269,12 +271,15 @@ def self_check(path: str, n_rooms: int | None = None) -> list[str]:
                 problems.append(f"{path}: face {f['identifier']}: {why}")
                 if why == "not a polygon":
                     continue
+            polys.append(pts)
             vol += float(np.dot(pts[0], np.cross(pts[1:-1] - pts[0], pts[2:] - pts[0]).sum(axis=0))) / 6.0
             bc = f.get("boundary_condition") or {}
             if bc.get("type") == "Surface" and bc["boundary_condition_objects"][0] not in ids:
                 problems.append(f"{path}: face {f['identifier']}: its Surface partner is not in the file")
-        if not vol > 0:
-            problems.append(f"{path}: room {r['identifier']}: no positive volume")
+        shell = check_closed_outward(polys) if polys else ["no faces"]
+        if shell or not vol > 0:
+            problems.append(f"{path}: room {r['identifier']}: not a closed, outward shell"
+                            + (f" ({shell[0]})" if shell else ""))
     return problems[:20]
 
 
