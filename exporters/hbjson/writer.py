@@ -128,6 +128,7 @@ def model_dict(b: Building, zones: list, options, name: str) -> tuple[dict, dict
     rooms, materials, constructions, volumes = [], {}, {}, {}
     tol = model_tolerance(p.points for _, pieces, _, _ in zones for p in pieces)
     links: dict[str, tuple[str, str]] = {}  # interzone key + side -> (face id, room id)
+    sides: dict[str, np.ndarray] = {}  # interzone key + side -> its vertices
     faces_of = []
     for k, (z, pieces, info, _) in enumerate(zones):
         rid = f"{name[:60]}_Z{k}"  # honeybee identifiers: at most 100 characters
@@ -136,6 +137,7 @@ def model_dict(b: Building, zones: list, options, name: str) -> tuple[dict, dict
             fid = f"{rid}_F{j}"
             if p.boundary == "Surface" and p.link:
                 links[p.link] = (fid, rid)
+                sides[p.link] = without_collinear(p.points, tol)
             faces.append((fid, p))
         faces_of.append((rid, z, info, faces))
     for rid, z, info, faces in faces_of:
@@ -146,8 +148,13 @@ def model_dict(b: Building, zones: list, options, name: str) -> tuple[dict, dict
         ratio = min(z.wwr * total / eligible, 0.85) if eligible > 0 else 0.0
         for (fid, p), a in zip(faces, walls):
             pts = np.asarray(p.points, dtype=np.float64)
-            if p.boundary == "Surface":
-                pts = without_collinear(pts, tol)
+            if p.boundary == "Surface" and p.link in sides:
+                # both sides of an interzone floor get the same vertices (honeybee compares them):
+                # the side with more (a wall's vertex on the other's edge) for both
+                key, side = p.link.rsplit(":", 1)
+                pts, other = sides[p.link], sides.get(f"{key}:{'f' if side == 'c' else 'c'}")
+                if other is not None and len(other) > len(pts):
+                    pts = other[::-1]
             vol += float(np.dot(pts[0], np.cross(pts[1:-1] - pts[0], pts[2:] - pts[0]).sum(axis=0))) / 6.0 \
                 if len(pts) >= 3 else 0.0
             face = {"type": "Face", "identifier": fid, "face_type": face_type(p.kind, pts), "geometry": _face3d(pts)}
