@@ -68,9 +68,10 @@ def test_the_self_check_refuses_what_check_all_refuses(tmp_path):
     assert load(bad).check_all(raise_exception=False, detailed=True)
 
 
-@pytest.mark.parametrize("src", ["example", "delft"])
+@pytest.mark.parametrize("src", ["example", "delft", "berlin"])
 def test_every_hbjson_of_a_tile_passes_check_all_with_our_volumes(tmp_path, src):
-    path = EXAMPLE if src == "example" else shared_path("3dbag", "delft_subset.city.jsonl")
+    path = {"example": lambda: EXAMPLE, "delft": lambda: shared_path("3dbag", "delft_subset.city.jsonl"),
+            "berlin": lambda: shared_path("citygml-real", "berlin", "3920_5820.gml")}[src]()
     out = tmp_path / "out"
     assert main(["export", str(path), "-o", str(out), "--hbjson", "--no-html", "-q", "-j", "1"]) in (0, 1)
     report = json.loads((out / "report.json").read_text())
