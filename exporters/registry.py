@@ -1,7 +1,8 @@
 """Writer registry: every export format the pipeline can write, found by its name.
 
 As the reader registry of :mod:`lod2energy.io` maps suffixes to readers, this maps a format
-name ("idf", "stl", "cityjson", "cfd", "geojson") to its writer. Each format is a package of
+name ("idf", "stl", "cityjson", "cfd", "geojson", "urbanopt", "cea", "hbjson") to its
+writer. Each format is a package of
 :mod:`lod2energy.exporters` whose ``writer`` module registers its writer when it is imported
 (meshio's way); :func:`writers` imports the modules of :data:`FORMATS`.
 
@@ -28,10 +29,11 @@ from lod2energy.exporters.run_results import record_results
 from lod2energy.records import LEFT_OUT, ExportRecord, FileRecord
 
 #: The modules that register a writer when imported.
-FORMATS = tuple(f"lod2energy.exporters.{m}.writer" for m in ("energyplus", "stl", "cityjson", "cfd", "geojson"))
+FORMATS = tuple(f"lod2energy.exporters.{m}.writer" for m in ("energyplus", "stl", "cityjson", "cfd", "geojson",
+                                                                         "urbanopt", "cea", "hbjson"))
 #: The order the writers run in: the CityJSON and the footprints carry the results of the IDF's
 #: EnergyPlus runs.
-_ORDER = ("idf", "stl", "cityjson", "cfd", "geojson")
+_ORDER = ("idf", "stl", "cityjson", "cfd", "geojson", "urbanopt", "cea", "hbjson")
 
 
 @dataclass(frozen=True)

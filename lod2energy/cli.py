@@ -68,7 +68,7 @@ def _add_mesh_options(p: argparse.ArgumentParser) -> None:
 def _add_crs(p: argparse.ArgumentParser) -> None:
     p.add_argument("--crs", default=None, metavar="CRS",
                    help="CRS of the input's coordinates (any form pyproj reads: EPSG:28992, a URN, WKT), "
-                        "replacing the file's; needed by --idf, --run and --geojson when the file names none")
+                        "replacing the file's; needed by --idf, --run, --geojson, --urbanopt and --cea when the file names none")
 
 
 def _tolerances(a) -> Tolerances:
@@ -181,6 +181,15 @@ def add_export_parser(sub) -> argparse.ArgumentParser:
     e.add_argument("--geojson", action="store_true",
                    help="GeoJSON of the building footprints in WGS84 with repair, compliance, storeys, use "
                    "and (with --run) the heating/cooling figures")
+    e.add_argument("--urbanopt", action="store_true",
+                   help="URBANopt FeatureFile (GeoJSON): one Building per building with its storeys, floor area, "
+                   "roof height and year, in URBANopt's schema and units (ft, ft2)")
+    e.add_argument("--cea", action="store_true",
+                   help="City Energy Analyst zone.shp (footprints, floors, heights, year, construction and use "
+                   "types) in a scenario folder OUTDIR/<input>.cea/")
+    e.add_argument("--hbjson", action="store_true",
+                   help="honeybee Model JSON per building (Ladybug Tools): a Room per IDF zone, typed faces, "
+                   "boundary conditions, windows from the WWR, constructions from the U-values")
     e.add_argument("--idf-mode", choices=("building", "dataset"), default="building")
     e.add_argument("--stl-mode", choices=("building", "dataset"), default="building")
     e.add_argument("--stl-ascii", action="store_true", help="ASCII STL (default binary)")
@@ -387,8 +396,9 @@ def cmd_export(a) -> int:
     from lod2energy.options import RunOptions
     from lod2energy.pipeline import export
     from lod2energy.reports import print_export_summary, weather_warnings
-    if not (a.idf or a.stl or a.cityjson or getattr(a, "cfd", False) or getattr(a, "geojson", False)):
-        raise _UsageError("choose at least one of --idf, --stl, --cityjson, --cfd, --geojson")
+    from lod2energy.options import FORMATS
+    if not any(getattr(a, f, False) for f in FORMATS):
+        raise _UsageError("choose at least one of " + ", ".join(f"--{f}" for f in FORMATS))
     if a.wwr is not None and not (0.0 <= a.wwr < 1.0):
         raise _UsageError("--wwr must be in [0, 1)")
     for c in ("wall", "roof", "ground", "window"):

@@ -17,7 +17,7 @@ from lod2energy.spool import Job, Spooled, load_spooled
 
 #: The one-file writers that take the buildings one at a time (a :class:`~lod2energy.spool.Spooled`
 #: sequence); the others get a list.
-STREAMED = ("cityjson", "geojson")
+STREAMED = ("cityjson", "geojson", "urbanopt", "cea")
 #: The one-file writers that carry a building whatever its compliance (the city model, the GIS
 #: layer, each with the building's compliance status): a building in their file that is not
 #: energy-compliant is not *accepted* as an energy model, so that every writer accepts exactly

@@ -171,7 +171,9 @@ _JOB_MODULES = ("lod2energy.repair.pipeline", "lod2energy.repair.accept", "lod2e
                 "lod2energy.polymesh", "scipy.spatial")
 _WRITER_MODULES = {"idf": ("lod2energy.exporters.energyplus.writer", "lod2energy.exporters.energyplus.check"),
                    "stl": ("lod2energy.exporters.stl", "lod2energy.repair.parts"),
-                   "cityjson": ("lod2energy.exporters.cityjson",), "geojson": ("lod2energy.exporters.geojson",)}
+                   "cityjson": ("lod2energy.exporters.cityjson",), "geojson": ("lod2energy.exporters.geojson",),
+                   "urbanopt": ("lod2energy.exporters.urbanopt",), "cea": ("lod2energy.exporters.cea",),
+                   "hbjson": ("lod2energy.exporters.hbjson",)}
 
 
 def warm(options: ExportOptions) -> None:
