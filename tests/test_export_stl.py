@@ -102,9 +102,9 @@ def test_file_names_stay_in_outdir(tmp_path, evil):
     out = tmp_path / "out"
     res = stl.write([energy_ready(box(id=evil))], out)
     p = Path(res[0].path)
-    assert p.parent == out.resolve() and p.with_suffix(".json").parent == out.resolve()
+    assert p.parent == out.resolve() and p.with_suffix(".stl.json").parent == out.resolve()
     assert sorted(x.name for x in tmp_path.iterdir()) == ["out"]
-    assert json.loads(p.with_suffix(".json").read_text())["building_ids"] == [evil]
+    assert json.loads(p.with_suffix(".stl.json").read_text())["building_ids"] == [evil]
 
 
 def test_self_check_catches_open_and_inverted(tmp_path):
