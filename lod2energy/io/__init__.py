@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import itertools
+import os
 import re
 from dataclasses import replace
 from typing import Callable, Iterator
@@ -44,6 +45,10 @@ def read(path: str, **options) -> "tuple[CityModel | None, Iterator[Building | F
     of the coordinates (any form pyproj reads, :func:`lod2energy.crs.spelled`), replacing the
     one the file names, if any.
     """
+    if not isinstance(path, (str, os.PathLike)):  # a document, not a path: one line, not the document
+        return None, iter([FeatureError(None, 903, f"lod2energy.io.read takes a path, not a {type(path).__name__}: "
+                                                   "lod2energy.read takes a CityJSON dict or a file object")])
+    path = os.fspath(path)
     try:  # the input-shape check starts here: a regular file of bounded size
         check_input_file(str(path))
     except InputError as e:
