@@ -69,8 +69,8 @@ def _add_mesh_options(p: argparse.ArgumentParser) -> None:
 
 def _add_verbosity(p: argparse.ArgumentParser) -> None:
     p.add_argument("-q", "--quiet", action="store_true",
-                   help="no progress bar, no table, no notes: warnings and errors only")
-    p.add_argument("-v", "--verbose", action="store_true", help="also debug messages")
+                   help="no progress bar, table or summary (notes, warnings and errors stay)")
+    p.add_argument("-v", "--verbose", action="store_true", help="also the debug messages of the lod2energy logger")
 
 
 def _add_crs(p: argparse.ArgumentParser) -> None:
@@ -484,7 +484,7 @@ def main(argv: list[str] | None = None) -> int:
     if not a.command:
         parser.print_help(sys.stderr)
         return EXIT_UNUSABLE
-    console(getattr(a, "quiet", False), getattr(a, "verbose", False))
+    console(getattr(a, "verbose", False))
     t0 = time.perf_counter()
     one_blas_thread()  # parallel across buildings, not inside one
     try:

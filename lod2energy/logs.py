@@ -3,7 +3,7 @@
 Library code logs errors, warnings and notes (INFO) to this logger; a caller who configures
 nothing sees warnings and errors on stderr (logging's last resort). The CLI installs
 :func:`console`, which writes each record as one ``lod2energy: <kind>: <message>`` line on
-stderr at the level ``-q`` / ``-v`` choose.
+stderr at INFO, or DEBUG with ``-v``.
 """
 from __future__ import annotations
 
@@ -28,10 +28,10 @@ class _Console(logging.Handler):
             self.handleError(record)
 
 
-def console(quiet: bool = False, verbose: bool = False) -> None:
+def console(verbose: bool = False) -> None:
     """Install the CLI's console handler (once) and set the level: INFO (notes, warnings,
-    errors), WARNING with ``quiet``, DEBUG with ``verbose``."""
+    errors: what the CLI printed before it logged, ``-q`` included), DEBUG with ``verbose``."""
     if not any(isinstance(h, _Console) for h in log.handlers):
         log.addHandler(_Console())
     log.propagate = False  # the console line is the one line; a root handler would repeat it
-    log.setLevel(logging.DEBUG if verbose else logging.WARNING if quiet else logging.INFO)
+    log.setLevel(logging.DEBUG if verbose else logging.INFO)
