@@ -33,5 +33,4 @@ def console(verbose: bool = False) -> None:
     errors: what the CLI printed before it logged, ``-q`` included), DEBUG with ``verbose``."""
     if not any(isinstance(h, _Console) for h in log.handlers):
         log.addHandler(_Console())
-    log.propagate = False  # the console line is the one line; a root handler would repeat it
     log.setLevel(logging.DEBUG if verbose else logging.INFO)
