@@ -17,6 +17,7 @@ from lod2energy.errors import InputError, ParameterError
 from lod2energy.io.source import suffix_of
 
 from cityjson_docs import box_doc, to_seq, write
+from conftest import shared_path
 
 ROOT = Path(__file__).resolve().parents[1]
 EXAMPLE = ROOT / "examples" / "3dbag_b2.city.json"
@@ -49,6 +50,9 @@ def test_read_of_a_dict_exports_the_same_files_as_the_cli(tmp_path):
     assert [r.id for r in outcome.records] == [
         r["id"] for r in json.loads((tmp_path / "cli" / "report.json").read_text())["buildings"]]
     assert doc == json.loads(EXAMPLE.read_text())  # the caller's dict is not changed
+    # the STL's sidecars are named for the STL: no "<id>.json" to be taken for a city model
+    sidecars = [n for n in got if n.endswith(".json") and not n.endswith((".city.json", ".ext.json"))]
+    assert sidecars and all(n.endswith(".stl.json") and n[:-5] in got for n in sidecars)
 
 
 def test_read_of_a_file_object_and_a_list_of_dicts_validates_as_the_path():
@@ -72,6 +76,15 @@ def test_validate_and_repair_return_the_reports_the_cli_writes(tmp_path):
     assert [f["errors"] for f in rep["features"]] == [f["errors"] for f in cli_rep["features"]]
     rr = data.repair(tmp_path / "o.city.json", jobs=1)
     assert rr["exit_code"] == 0 and rr["summary"]["total"] == 1 and (tmp_path / "o.city.json").exists()
+
+
+def test_citygml_through_a_file_object_validates_as_the_path():
+    path = shared_path("citygml-real", "munich", "LOD2_4424_5482_solid.gml")
+    want = lod2energy.read(path).validate()
+    with open(path, "rb") as f:
+        got = lod2energy.read(f, name="munich").validate()
+    assert len(got["features"]) == len(want["features"]) > 10
+    assert [(f["id"], f["errors"]) for f in got["features"]] == [(f["id"], f["errors"]) for f in want["features"]]
 
 
 def test_api_refuses_unknown_options_and_objects(tmp_path):
