@@ -176,6 +176,7 @@ def test_verbose_sets_the_level_and_quiet_keeps_the_notes(tmp_path, capsys):
     path = write(tmp_path, doc)
     main(["validate", "-v", path])
     assert logging.getLogger("lod2energy").level == logging.DEBUG
+    assert f"lod2energy: debug: {path}: read as CityJSON" in capsys.readouterr().err
     main(["validate", path])
     assert logging.getLogger("lod2energy").level == logging.INFO
     capsys.readouterr()

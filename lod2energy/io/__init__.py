@@ -13,6 +13,7 @@ from lod2energy import crs as crs_
 from lod2energy.errors import InputError
 from lod2energy.geodesy import LocalFrame, ScaledFrame
 from lod2energy.io.shape import check_input_file
+from lod2energy.logs import log
 from lod2energy.model import Building, CityModel, FeatureError
 
 Reader = Callable[..., "tuple[CityModel | None, Iterator[Building | FeatureError]]"]
@@ -55,7 +56,8 @@ def read(path: str, **options) -> "tuple[CityModel | None, Iterator[Building | F
         return None, iter([FeatureError(None, e.code, str(e))])
     only = options.pop("only", None)
     crs = options.pop("crs", None)
-    reader = _lookup(path, _READERS[".json"])[1]  # unknown suffix: sniff JSON
+    name, reader = _lookup(path, _READERS[".json"])  # unknown suffix: sniff JSON
+    log.debug("%s: read as %s", path, name)
     if only is None:
         return to_local_frame(*with_crs(*reader(path, **options), crs))
     gate = _Only(only)
