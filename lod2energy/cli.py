@@ -17,6 +17,7 @@ import io
 import os
 import re
 import sys
+import tempfile
 import time
 from collections import Counter
 
@@ -25,6 +26,7 @@ from lod2energy.cfd import add_cli_arguments, options_from_args
 from lod2energy.config import USE_TYPES, Tolerances
 from lod2energy.errors import Lod2EnergyError
 from lod2energy.interrupt import Interrupted, Signals
+from lod2energy.logs import console, log
 from lod2energy.safe_write import UnsafeWriteError
 from lod2energy.threads import one_blas_thread
 
@@ -45,13 +47,13 @@ class _Parser(argparse.ArgumentParser):
 
 def _add_tolerances(p: argparse.ArgumentParser) -> None:
     g = p.add_argument_group("validation tolerances (val3dity's names and defaults)")
-    g.add_argument("--snap-tol", type=float, default=0.001, metavar="M",
+    g.add_argument("--snap-tol", "--snap_tol", type=float, default=0.001, metavar="M",
                    help="vertices closer than this are snapped together (default 0.001 m)")
-    g.add_argument("--planarity-d2p-tol", type=float, default=0.01, metavar="M",
+    g.add_argument("--planarity-d2p-tol", "--planarity_d2p_tol", type=float, default=0.01, metavar="M",
                    help="max distance of a vertex to its polygon's fitted plane, 203 (default 0.01 m)")
-    g.add_argument("--planarity-n-tol", type=float, default=20.0, metavar="DEG",
+    g.add_argument("--planarity-n-tol", "--planarity_n_tol", type=float, default=20.0, metavar="DEG",
                    help="max deviation of a polygon's triangle normals, 204 (default 20 degrees)")
-    g.add_argument("--overlap-tol", type=float, default=-1.0, metavar="M",
+    g.add_argument("--overlap-tol", "--overlap_tol", type=float, default=-1.0, metavar="M",
                    help="tolerance for overlapping solids/BuildingParts, 401/501/601 (default -1: off)")
     g.add_argument("--ignore204", action="store_true", help="do not report 204")
     g.add_argument("--lod", default=None, help="LoD of the envelope (default: the highest LoD >= 2 a building has)")
@@ -61,8 +63,14 @@ def _add_mesh_options(p: argparse.ArgumentParser) -> None:
     g = p.add_argument_group("mesh inputs (OBJ, OFF, POLY)")
     g.add_argument("--primitive", choices=("Solid", "CompositeSurface", "MultiSurface"), default="Solid",
                    help="validate a mesh file as this primitive (default Solid)")
-    g.add_argument("--inner-shell", action="append", default=[], metavar="FILE",
+    g.add_argument("--inner-shell", "--inner_shell", action="append", default=[], metavar="FILE",
                    help="POLY file of an inner shell (repeatable)")
+
+
+def _add_verbosity(p: argparse.ArgumentParser) -> None:
+    p.add_argument("-q", "--quiet", action="store_true",
+                   help="no progress bar, table or summary (notes, warnings and errors stay)")
+    p.add_argument("-v", "--verbose", action="store_true", help="also the debug messages of the lod2energy logger")
 
 
 def _add_crs(p: argparse.ArgumentParser) -> None:
@@ -110,9 +118,13 @@ def _command(sub, name: str, output: str | None = None) -> argparse.ArgumentPars
     help, description = COMMANDS[name]
     c = sub.add_parser(name, help=help, description=description, epilog=EXIT_HELP,
                        formatter_class=argparse.RawDescriptionHelpFormatter)
+    _add_verbosity(c)
     if output is not None:
-        c.add_argument("input", metavar="IN")
-        c.add_argument("-o", "--output", required=True, metavar=output)
+        c.add_argument("input", metavar="IN", help="input file (CityJSON, CityJSONSeq, CityGML, OBJ, OFF, POLY); "
+                       "- or /dev/stdin: CityJSON or CityJSONSeq on standard input")
+        c.add_argument("-o", "--output", required=True, metavar=output,
+                       help="output folder" if output == "OUTDIR" else
+                       "output file: CityJSON (.json) or CityJSONSeq (.jsonl) by its suffix")
     return c
 
 
@@ -132,11 +144,12 @@ def build_parser() -> argparse.ArgumentParser:
 def add_validate_parser(sub) -> argparse.ArgumentParser:
     """``lod2energy validate`` and its options."""
     v = _command(sub, "validate")
-    v.add_argument("files", nargs="+", metavar="FILE")
-    v.add_argument("--report", metavar="OUT.json", help="write the JSON report (val3dity's shape + energy blocks)")
+    v.add_argument("files", nargs="+", metavar="FILE",
+                   help="files to validate; - or /dev/stdin: CityJSON or CityJSONSeq on standard input")
+    v.add_argument("--report", metavar="OUT.json", help="write the JSON report (val3dity's shape + energy blocks); "
+                   "-: on standard output (the table then goes to stderr)")
     v.add_argument("--html", metavar="OUT.html", default=None,
                    help="write a self-contained HTML report (summary, plots, plan view, per-building panels)")
-    v.add_argument("-q", "--quiet", action="store_true", help="no progress bar and no table")
     _add_crs(v)
     _add_tolerances(v)
     _add_mesh_options(v)
@@ -146,15 +159,14 @@ def add_validate_parser(sub) -> argparse.ArgumentParser:
 def add_repair_parser(sub) -> argparse.ArgumentParser:
     """``lod2energy repair`` and its options."""
     r = _command(sub, "repair", output="OUT")
-    r.add_argument("--report", metavar="R.json", help="write the per-building repair report")
+    r.add_argument("--report", metavar="R.json", help="write the per-building repair report; -: on standard output "
+                   "(the summary then goes to stderr)")
     r.add_argument("--html", metavar="R.html", default=None,
                    help="write a self-contained HTML report (input and repaired buildings side by side)")
     r.add_argument("--timeout", type=float, default=30.0, metavar="S",
                    help="time budget per building in seconds before escalating/giving up (default 30)")
     r.add_argument("--merge-parts", action="store_true", help="merge overlapping BuildingParts (601) into one solid")
-    r.add_argument("-j", "--jobs", type=int, default=1, metavar="N",
-                   help="worker processes (default 1: in this process; 0: all cores)")
-    r.add_argument("-q", "--quiet", action="store_true")
+    _add_jobs(r)
     _add_crs(r)
     _add_tolerances(r)
     return r
@@ -163,12 +175,12 @@ def add_repair_parser(sub) -> argparse.ArgumentParser:
 def add_view_parser(subparsers) -> argparse.ArgumentParser:
     """Add ``view FILE [--id ID] [-o OUTDIR] [--no-open]`` to the CLI's subparsers."""
     v = _command(subparsers, "view")
-    v.add_argument("input", metavar="FILE")
+    v.add_argument("input", metavar="FILE", help="input file (any format validate reads)")
     v.add_argument("--id", default=None, help="building (or BuildingPart) id (default: the first building)")
     v.add_argument("-o", "--output", default=".", metavar="OUTDIR", help="folder of the page (default .)")
     v.add_argument("--no-open", action="store_true", help="do not open a browser")
     v.add_argument("--lod", default=None, help="LoD of the envelope (default: the highest)")
-    v.add_argument("--timeout", type=float, default=30.0, help="repair budget per building, s")
+    v.add_argument("--timeout", type=float, default=30.0, metavar="S", help="repair budget per building, s (default 30)")
     return v
 
 
@@ -190,8 +202,10 @@ def add_export_parser(sub) -> argparse.ArgumentParser:
     e.add_argument("--hbjson", action="store_true",
                    help="honeybee Model JSON per building (Ladybug Tools): a Room per IDF zone, typed faces, "
                    "boundary conditions, windows from the WWR, constructions from the U-values")
-    e.add_argument("--idf-mode", choices=("building", "dataset"), default="building")
-    e.add_argument("--stl-mode", choices=("building", "dataset"), default="building")
+    e.add_argument("--idf-mode", choices=("building", "dataset"), default="building",
+                   help="one IDF per building (default) or one for the whole file")
+    e.add_argument("--stl-mode", choices=("building", "dataset"), default="building",
+                   help="one STL per building (default) or one for the whole file")
     e.add_argument("--stl-ascii", action="store_true", help="ASCII STL (default binary)")
     e.add_argument("--wwr", type=float, default=None, help="window-to-wall ratio (default: the typology's)")
     e.add_argument("--shading", action="store_true", help="neighbours as Shading:Building:Detailed")
@@ -199,8 +213,10 @@ def add_export_parser(sub) -> argparse.ArgumentParser:
     e.add_argument("--weather", metavar="EPW", default=None,
                    help="weather file (EPW), or a folder of them: each building gets the nearest station "
                         "(distance in its record, a warning beyond 50 km); ground temperatures and --run use it")
-    e.add_argument("--energyplus-version", default="25.2")
-    e.add_argument("--cityjson-version", choices=("1.0", "1.1", "2.0"), default=None)
+    e.add_argument("--energyplus-version", default="25.2", metavar="X.Y",
+                   help="EnergyPlus version the IDF is written for (default 25.2)")
+    e.add_argument("--cityjson-version", choices=("1.0", "1.1", "2.0"), default=None,
+                   help="CityJSON version of the --cityjson output (default: the input's)")
     e.add_argument("--country", default=None, help="typology country (NL, DE, AT, CH, FI, ...; default: from the CRS)")
     e.add_argument("--u-table", metavar="FILE", default=None, help="CSV of U-values replacing the built-in tables")
     for c in ("wall", "roof", "ground", "window"):
@@ -208,9 +224,8 @@ def add_export_parser(sub) -> argparse.ArgumentParser:
     e.add_argument("--timeout", type=float, default=30.0, metavar="S",
                    help="time budget per building (default 30 s): the repair escalates when it is spent, "
                    "and a building whose job has used that much CPU time is stopped and reported 'timeout'")
-    e.add_argument("--merge-parts", action="store_true")
+    e.add_argument("--merge-parts", action="store_true", help="merge overlapping BuildingParts (601) into one solid")
     e.add_argument("--no-html", action="store_true", help="do not write OUTDIR/report.html")
-    e.add_argument("-q", "--quiet", action="store_true")
     _add_crs(e)
     g = e.add_argument_group("energy model (IDF)")
     g.add_argument("--zoning", choices=("storey", "building"), default="storey",
@@ -238,11 +253,15 @@ def add_export_parser(sub) -> argparse.ArgumentParser:
     return e
 
 
+def _add_jobs(p) -> None:
+    p.add_argument("-j", "--jobs", type=int, default=None, metavar="N",
+                   help="worker processes (default: all cores; 1: in this process)")
+
+
 def add_run_options(p: argparse.ArgumentParser) -> None:
     """``--jobs``, ``--dask``, ``--resume``: how a command runs (never what it writes)."""
     g = p.add_argument_group("city scale (the outputs are the same whatever runs them)")
-    g.add_argument("-j", "--jobs", type=int, default=None, metavar="N",
-                   help="worker processes (default: all cores; 1: in this process)")
+    _add_jobs(g)
     g.add_argument("--dask", metavar="tcp://HOST:8786", default=None,
                    help="run the per-building jobs on this Dask scheduler (workers must see OUTDIR)")
     g.add_argument("--resume", action="store_true",
@@ -251,15 +270,17 @@ def add_run_options(p: argparse.ArgumentParser) -> None:
 
 
 def _err(msg: str) -> None:
-    print(f"lod2energy: error: {msg}", file=sys.stderr)
+    log.error("%s", msg)
 
 
-def _print_validate_table(rows: list[dict]) -> None:
+def _print_validate_table(rows: list[dict], out=None) -> None:
+    out = sys.stdout if out is None else out
     hdr = f"{'file':<44} {'features':>8} {'valid':>6} {'invalid':>7} {'E-ready':>7}  errors"
-    print(hdr)
-    print("-" * len(hdr))
+    print(hdr, file=out)
+    print("-" * len(hdr), file=out)
     for r in rows:
-        print(f"{r['file'][-44:]:<44} {r['features']:>8} {r['valid']:>6} {r['invalid']:>7} {r['ready']:>7}  {r['codes']}")
+        print(f"{r['file'][-44:]:<44} {r['features']:>8} {r['valid']:>6} {r['invalid']:>7} {r['ready']:>7}  {r['codes']}",
+              file=out)
 
 
 def _progress(quiet: bool, desc: str):
@@ -271,65 +292,87 @@ def _progress(quiet: bool, desc: str):
     return (lambda _entry: bar.update(1)), bar.close
 
 
-def cmd_validate(a) -> int:
+def _stdin_once(files: list[str]) -> None:
+    from lod2energy.io.source import is_stdin
+    if sum(is_stdin(f) for f in files) > 1:
+        raise _UsageError("standard input (- or /dev/stdin) can be read only once")
+
+
+def validate_files(a, stdin_folder: str | None = None) -> tuple[int, list[dict], list[dict]]:
+    """``lod2energy validate`` without printing: (exit code, one JSON report per file, the table's rows).
+
+    Standard input (``-``, ``/dev/stdin``) is written to ``stdin_folder`` (a temporary folder
+    when None) and read from there; its report and row name it ``-``.
+    """
     from lod2energy import crs as crs_
     # the export side (lod2energy.reports: records, options, every writer's options) loads only
     # for what needs it: a geographic CRS, the HTML page
     from lod2energy import safe_write
     from lod2energy.io import read
+    from lod2energy.io.source import is_stdin, materialise, read_stdin
     from lod2energy.validate.report import validate_features
 
     tol = _tolerances(a)
-    if a.report:
-        safe_write.check_target(a.report, None, a.files)  # never over an input (exit 2)
-    if getattr(a, "html", None):
-        safe_write.check_target(a.html, None, a.files)
-    reports, rows = [], []
+    _stdin_once(a.files)
+    for target in (a.report, getattr(a, "html", None)):
+        if target and target != "-":
+            safe_write.check_target(target, None, [f for f in a.files if not is_stdin(f)])  # never over an input
+    reports, rows, paths = [], [], []
     worst = EXIT_OK
-    for path in a.files:
-        model, feats = read(path, primitive=a.primitive, inner_shells=a.inner_shell, crs=a.crs)
-        geographic = getattr(model, "frame", None) is not None
-        if geographic:
-            from lod2energy.reports import frame_entry, note_frame
-            note_frame(path, model)
-        elif model is not None and crs_.metres_note(path, model.crs):
-            print(crs_.metres_note(path, model.crs), file=sys.stderr)
-        tick, close = _progress(a.quiet, os.path.basename(path))
-        try:
-            rep = validate_features(model, feats, path, tol, a.lod, tick)
-        finally:
-            close()
-        if geographic:
-            rep.update(frame_entry(model))
-        reports.append(rep)
-        for e in rep["dataset_errors"]:
-            _err(e["info"] if path in e["info"] else f"{path}: {e['info']}")
-        if model is None or rep["dataset_errors"]:
-            worst = EXIT_UNUSABLE
-        elif not rep["validity"] and worst == EXIT_OK:
-            worst = EXIT_INVALID
-        codes = Counter(e["code"] for f in rep["features"] for e in f["errors"])
-        rows.append({"file": path, "features": len(rep["features"]),
-                     "valid": sum(f["validity"] for f in rep["features"]),
-                     "invalid": sum(not f["validity"] for f in rep["features"]),
-                     "ready": rep["energy_overview"]["geometry_ready"],
-                     "codes": " ".join(f"{c}x{n}" for c, n in sorted(codes.items())) or "-"})
-    if not a.quiet:
-        _print_validate_table(rows)
+    with tempfile.TemporaryDirectory(prefix="lod2energy-stdin-") as tmp:
+        for shown in a.files:
+            path = materialise(read_stdin(), stdin_folder or tmp) if is_stdin(shown) else shown
+            paths.append(path)
+            model, feats = read(path, primitive=a.primitive, inner_shells=a.inner_shell, crs=a.crs)
+            geographic = getattr(model, "frame", None) is not None
+            if geographic:
+                from lod2energy.reports import frame_entry, note_frame
+                note_frame(shown, model)
+            elif model is not None and crs_.metres_note(shown, model.crs):
+                log.info(crs_.metres_note(shown, model.crs))
+            tick, close = _progress(a.quiet, os.path.basename(shown))
+            try:
+                rep = validate_features(model, feats, shown, tol, a.lod, tick)
+            finally:
+                close()
+            if geographic:
+                rep.update(frame_entry(model))
+            reports.append(rep)
+            for e in rep["dataset_errors"]:
+                _err(e["info"] if shown in e["info"] else f"{shown}: {e['info']}")
+            if model is None or rep["dataset_errors"]:
+                worst = EXIT_UNUSABLE
+            elif not rep["validity"] and worst == EXIT_OK:
+                worst = EXIT_INVALID
+            codes = Counter(e["code"] for f in rep["features"] for e in f["errors"])
+            rows.append({"file": shown, "features": len(rep["features"]),
+                         "valid": sum(f["validity"] for f in rep["features"]),
+                         "invalid": sum(not f["validity"] for f in rep["features"]),
+                         "ready": rep["energy_overview"]["geometry_ready"],
+                         "codes": " ".join(f"{c}x{n}" for c, n in sorted(codes.items())) or "-"})
+        if getattr(a, "html", None):
+            from lod2energy.reports import json_ready
+            from lod2energy.viz.report import write_report_for_files
+            try:
+                out = reports[0] if len(reports) == 1 else {"type": "lod2energy_reports", "reports": reports}
+                # the files read again for the page: the panels' buildings and every footprint only
+                write_report_for_files(json_ready(out), a.html, paths, tol=tol, input_files=paths,
+                                       read_options={"primitive": a.primitive, "inner_shells": a.inner_shell,
+                                                     "crs": a.crs})
+            except Exception as e:  # noqa: BLE001 - the page is a view of the report
+                _err(f"{a.html} not written: {type(e).__name__}: {e}")
+    return worst, reports, rows
+
+
+def cmd_validate(a) -> int:
+    from lod2energy import safe_write
+    from lod2energy.io.source import is_stdin
+    worst, reports, rows = validate_files(a)
+    if not a.quiet:  # with --report -, standard output carries the JSON alone
+        _print_validate_table(rows, sys.stderr if a.report == "-" else sys.stdout)
     if a.report:
         out = reports[0] if len(reports) == 1 else {"type": "lod2energy_reports", "reports": reports}
-        safe_write.write_json(a.report, out, inputs=a.files)
-    if getattr(a, "html", None):
-        from lod2energy.reports import json_ready
-        from lod2energy.viz.report import write_report_for_files
-        try:
-            out = reports[0] if len(reports) == 1 else {"type": "lod2energy_reports", "reports": reports}
-            # the files read again for the page: the panels' buildings and every footprint only
-            write_report_for_files(json_ready(out), a.html, a.files, tol=tol, input_files=a.files,
-                                   read_options={"primitive": a.primitive, "inner_shells": a.inner_shell,
-                                                 "crs": a.crs})
-        except Exception as e:  # noqa: BLE001 - the page is a view of the report
-            _err(f"{a.html} not written: {type(e).__name__}: {e}")
+        safe_write.write_json_or_stdout(a.report, out, inputs=[f for f in a.files if not is_stdin(f)])
     return worst
 
 
@@ -392,10 +435,14 @@ def parse_ids(spec: str | None) -> tuple[str, ...] | None:
     return ids
 
 
-def cmd_export(a) -> int:
+def run_export(a):
+    """``lod2energy export`` without the summary: (:class:`~lod2energy.pipeline.ExportOutcome`,
+    :class:`~lod2energy.options.ExportOptions`). ``IN`` ``-`` (or ``/dev/stdin``) is written to
+    ``OUTDIR/.lod2energy/input/stdin.city.json[l]`` and read from there."""
+    from lod2energy.errors import ParameterError
+    from lod2energy.io.source import is_stdin, materialise, read_stdin
     from lod2energy.options import RunOptions
     from lod2energy.pipeline import export
-    from lod2energy.reports import print_export_summary, weather_warnings
     from lod2energy.options import FORMATS
     if not any(getattr(a, f, False) for f in FORMATS):
         raise _UsageError("choose at least one of " + ", ".join(f"--{f}" for f in FORMATS))
@@ -412,12 +459,22 @@ def cmd_export(a) -> int:
     if not (a.timeout > 0) or a.timeout != a.timeout:
         raise _UsageError("--timeout must be a positive number of seconds")
     opts = export_options(a)
-    res = export(a.input, a.output, opts, RunOptions(a.jobs, a.dask, a.resume, a.quiet))
+    path = a.input
+    if is_stdin(path):
+        if os.path.exists(a.output) and not os.path.isdir(a.output):
+            raise ParameterError(f"-o {a.output}: exists and is not a folder")
+        path = materialise(read_stdin(), os.path.join(a.output, ".lod2energy", "input"))
+    return export(path, a.output, opts, RunOptions(a.jobs, a.dask, a.resume, a.quiet)), opts
+
+
+def cmd_export(a) -> int:
+    from lod2energy.reports import print_export_summary, weather_warnings
+    res, opts = run_export(a)
     if not a.quiet and res.records and res.exit_code in (EXIT_OK, EXIT_INVALID):
         print_export_summary(res.records, opts.formats, a.output, res.terrain)
     if res.records and "idf" in opts.formats:
         for line in weather_warnings(res.records):
-            print(f"lod2energy: warning: {line}", file=sys.stderr)
+            log.warning("%s", line)
     return res.exit_code
 
 
@@ -437,6 +494,7 @@ def main(argv: list[str] | None = None) -> int:
     if not a.command:
         parser.print_help(sys.stderr)
         return EXIT_UNUSABLE
+    console(getattr(a, "verbose", False))
     t0 = time.perf_counter()
     one_blas_thread()  # parallel across buildings, not inside one
     try:

@@ -225,12 +225,12 @@ def no_crs_reason(crs: Any) -> str | None:
 
 
 def metres_note(path: str, crs: Any) -> str | None:
-    """The console line for a file whose coordinates are taken as metres (no CRS pyproj
+    """The note (logged at INFO) for a file whose coordinates are taken as metres (no CRS pyproj
     reads), None when its CRS is read."""
     why = no_crs_reason(crs)
     if not why:
         return None
-    return (f"lod2energy: note: {path}: {why}: coordinates are taken as metres "
+    return (f"{path}: {why}: coordinates are taken as metres "
             "(--crs gives the file's CRS)")
 
 

@@ -3,10 +3,10 @@ dataset mode, the CFD case."""
 from __future__ import annotations
 
 import os
-import sys
 from dataclasses import dataclass
 
 from lod2energy.exporters.run_results import with_run_results
+from lod2energy.logs import log
 from lod2energy.model import CityModel, frozen_mapping
 from lod2energy.options import ExportOptions
 from lod2energy.record_store import RecordStore
@@ -134,7 +134,7 @@ def dataset_apply(res: DatasetResult, records: RecordStore, quiet: bool, journal
         err(res.error)
     for note in res.notes:
         if not quiet:
-            print(f"lod2energy: note: {note}", file=sys.stderr)
+            log.info("%s", note)
     if res.terrain and journal is not None:  # the input's terrain the file carries, for the report
         journal.append({"kind": "terrain", **res.terrain}, sync=False)
     by_id: dict[str, list[int]] = {}
@@ -166,8 +166,8 @@ def dataset_apply(res: DatasetResult, records: RecordStore, quiet: bool, journal
         journal.sync()
     if refused and not quiet:
         bid, why = refused[0]
-        print(f"lod2energy: note: {name.upper()}: {len(refused)} of {len(by_id)} buildings not accepted as "
-              f"energy models (see report.csv), e.g. {bid}: {why}", file=sys.stderr)
+        log.info(f"{name.upper()}: {len(refused)} of {len(by_id)} buildings not accepted as "
+              f"energy models (see report.csv), e.g. {bid}: {why}")
     if bad is not None:
         err(bad[1].message(bad[0]))
     return res.terrain or None

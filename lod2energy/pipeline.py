@@ -20,7 +20,6 @@ from __future__ import annotations
 
 import importlib
 import os
-import sys
 from array import array
 from dataclasses import dataclass, replace
 from functools import partial
@@ -479,8 +478,8 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
     journal.append({"kind": "end", "interrupted": interrupted[0] if interrupted else None})
     journal.close()
     if interrupted:
-        print(f"lod2energy: error: interrupted by {interrupted[0]}: report.json has the {len(rows)} objects done so far; "
-              f"run again with --resume to continue", file=sys.stderr)
+        err(f"interrupted by {interrupted[0]}: report.json has the {len(rows)} objects done so far; "
+              f"run again with --resume to continue")
         return ExportOutcome(interrupted[1], rows, interrupted[0], report, tuple(dataset_errors), tuple(terrain))
     for m in dataset_errors:
         err(m)

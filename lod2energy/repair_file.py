@@ -2,7 +2,10 @@
 time budget by an executor, written back as CityJSON / CityJSONSeq with a report."""
 from __future__ import annotations
 
+import argparse
 import os
+import sys
+import tempfile
 from dataclasses import replace
 
 from lod2energy.config import Tolerances
@@ -13,7 +16,8 @@ from lod2energy.model import Building, FeatureError, frozen_mapping
 from lod2energy.options import hard_budget
 from lod2energy.repair import dataset_table, repair_attributes, repair_features, repair_info
 from lod2energy.reports import err, frame_entry, json_ready, note_frame, progress, refuse_overwriting_inputs
-from lod2energy.safe_write import UnsafeWriteError, check_target, write_json
+from lod2energy.io.source import is_stdin, materialise, read_stdin
+from lod2energy.safe_write import UnsafeWriteError, check_target, write_json_or_stdout
 from lod2energy.validate.report import error_json
 from lod2energy.viz.report import keep, write_report_html
 
@@ -42,7 +46,7 @@ def _repaired(feats, tol: Tolerances, timeout: float, merge_parts: bool, lod, jo
     still running ``max(2 s, 20 %)`` past ``timeout`` is stopped and kept as read, reported
     ``timeout`` (the ladder's own deadline is cooperative and cannot interrupt one long step)."""
     limit = hard_budget(timeout)
-    with make_executor(1 if jobs is None else jobs, None) as ex:
+    with make_executor(jobs, None) as ex:
         def tasks():
             for f in feats:
                 yield (f, tol, timeout, merge_parts, lod)
@@ -57,28 +61,45 @@ def _repaired(feats, tol: Tolerances, timeout: float, merge_parts: bool, lod, jo
             yield res
 
 
-def _print_repair_summary(table: dict) -> None:
+def _print_repair_summary(table: dict, out=None) -> None:
     keys = ("total", "valid_before", "valid_after", "compliant_before", "compliant_after", "local_repairs",
             "global_repairs", "left", "miou", "map_v")
     print("  ".join(f"{k}={table[k]:.3g}" if isinstance(table.get(k), float) else f"{k}={table.get(k)}"
-                    for k in keys if k in table))
-    print("stages: " + ", ".join(f"{k}: {v}" for k, v in (table.get("stages") or {}).items()))
+                    for k in keys if k in table), file=out)
+    print("stages: " + ", ".join(f"{k}: {v}" for k, v in (table.get("stages") or {}).items()), file=out)
 
 
 def repair_file(a, tol: Tolerances) -> int:
-    """``lod2energy repair IN -o OUT``: every CityObject kept, defective buildings replaced by solids."""
+    """``lod2energy repair IN -o OUT``: every CityObject kept, defective buildings replaced by solids.
+    ``IN`` ``-`` (or ``/dev/stdin``) reads standard input; ``--report -`` writes the report on
+    standard output (the summary then goes to stderr)."""
+    if is_stdin(a.input):
+        with tempfile.TemporaryDirectory(prefix="lod2energy-stdin-") as tmp:
+            return repair_to(replace_input(a, materialise(read_stdin(), tmp)), tol)[0]
+    return repair_to(a, tol)[0]
+
+
+def replace_input(a, path: str):
+    """The parsed arguments ``a`` reading ``path``."""
+    b = argparse.Namespace(**vars(a))
+    b.input, b.shown = path, a.input
+    return b
+
+
+def repair_to(a, tol: Tolerances) -> tuple[int, dict | None]:
+    """:func:`repair_file`: (exit code, the repair report; None when the input is unusable)."""
     if not a.output.lower().endswith(REPAIR_SUFFIXES):
         err(f"repair writes CityJSON (.json, .city.json) or CityJSONSeq (.jsonl, .city.jsonl): "
              f"cannot write {a.output!r}")
-        return EXIT_UNUSABLE
-    refuse_overwriting_inputs([a.output, getattr(a, "report", None)], [a.input])
-    if a.report and os.path.abspath(a.report) == os.path.abspath(a.output):
+        return EXIT_UNUSABLE, None
+    refuse_overwriting_inputs([a.output, a.report if a.report != "-" else None], [a.input])
+    if a.report and a.report != "-" and os.path.abspath(a.report) == os.path.abspath(a.output):
         raise UnsafeWriteError(f"--report {a.report} is the output file")
     model, feats = read(a.input, crs=getattr(a, "crs", None))
     if model is None:
         for fe in feats:
             err(fe.message)
-        return EXIT_UNUSABLE
+        return EXIT_UNUSABLE, None
     note_frame(a.input, model)
     out_b: list[Building] = []
     records: list[dict] = []
@@ -115,16 +136,16 @@ def repair_file(a, tol: Tolerances) -> int:
     check_target(a.output, None, [a.input])
     cityjson.write(a.output, model, out_b)
     table = dataset_table(out_b)
-    doc = {"input_file": a.input, "output_file": a.output, **frame_entry(model),
+    doc = {"input_file": getattr(a, "shown", a.input), "output_file": a.output, **frame_entry(model),
            "summary": table, "buildings": records, "unreadable": lost}
     if a.report:
-        write_json(a.report, doc, inputs=[a.input, a.output])
+        write_json_or_stdout(a.report, doc, inputs=[a.input, a.output])
     if getattr(a, "html", None):
         try:
             write_report_html(json_ready(doc), a.html, inputs=html_inputs, outputs={b.id: b for b in out_b},
                               tol=tol, input_files=[a.input, a.output])
         except Exception as e:  # noqa: BLE001 - the page is a view of the report
             err(f"{a.html} not written: {type(e).__name__}: {e}")
-    if not a.quiet:
-        _print_repair_summary(table)
-    return worst
+    if not a.quiet:  # with --report -, standard output carries the JSON alone
+        _print_repair_summary(table, sys.stderr if a.report == "-" else sys.stdout)
+    return worst, doc

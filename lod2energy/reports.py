@@ -15,6 +15,7 @@ from lod2energy import crs as crs_
 from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.io.json_stream import Scanner
 from lod2energy.journal import records_of, terrain_of
+from lod2energy.logs import log
 from lod2energy.model import CityModel
 from lod2energy.options import FORMATS
 from lod2energy.energy.downgrades import KINDS
@@ -29,8 +30,8 @@ if TYPE_CHECKING:
 
 
 def err(msg: str) -> None:
-    """One error line on stderr (``lod2energy: error: ...``)."""
-    print(f"lod2energy: error: {msg}", file=sys.stderr)
+    """One error of a building or file, on the package's logger (the CLI prints ``lod2energy: error: ...``)."""
+    log.error("%s", msg)
 
 
 def progress(quiet: bool, desc: str, total: int | None = None):
@@ -54,20 +55,20 @@ def frame_entry(model: CityModel | None) -> dict:
 
 
 def note_frame(path: str, model: CityModel | None, metres_note: bool = True) -> None:
-    """One line on stderr when an input is processed in a local metric frame (geographic CRS),
+    """One note (logged at INFO) when an input is processed in a local metric frame (geographic CRS),
     converted to metres (a CRS in feet) or, with ``metres_note``, taken as metres (no CRS
     pyproj reads)."""
     f = getattr(model, "frame", None)
     if f is not None and f.geographic:
-        print(f"lod2energy: note: {path}: CRS {model.crs} is geographic (degrees); buildings are checked and "
+        log.info(f"{path}: CRS {model.crs} is geographic (degrees); buildings are checked and "
               f"exported in a local east-north-up frame in metres at lat {f.lat0:.7f}, lon {f.lon0:.7f} "
-              "(report.json: local_frame); CityJSON is written back in degrees", file=sys.stderr)
+              "(report.json: local_frame); CityJSON is written back in degrees")
     elif f is not None:
-        print(f"lod2energy: note: {path}: CRS {model.crs} is in {f.unit} (heights in {f.vertical_unit}); "
+        log.info(f"{path}: CRS {model.crs} is in {f.unit} (heights in {f.vertical_unit}); "
               f"coordinates are converted to metres (x {f.to_metre:.10g}) for every check and export in "
-              "metres (report.json: unit_conversion); CityJSON is written back in the file's unit", file=sys.stderr)
+              "metres (report.json: unit_conversion); CityJSON is written back in the file's unit")
     elif metres_note and model is not None and crs_.metres_note(path, model.crs):
-        print(crs_.metres_note(path, model.crs), file=sys.stderr)
+        log.info(crs_.metres_note(path, model.crs))
 
 
 def refuse_overwriting_inputs(outputs: Iterable[str], inputs: Iterable[str]) -> None:

@@ -24,6 +24,7 @@ import itertools
 import json
 import os
 import re
+import sys
 from pathlib import Path
 from typing import IO, Any, Callable, Iterable, Iterator
 
@@ -225,6 +226,16 @@ def write_json(path: str | os.PathLike, obj: Any, *, root=None, inputs=(), inden
     with atomic_write(path, "w", root=root, inputs=inputs, fsync=fsync) as f:
         json.dump(obj, f, indent=indent, ensure_ascii=False, default=json_default)
     return Path(os.path.abspath(path))
+
+
+def write_json_or_stdout(path: str | os.PathLike, obj: Any, *, inputs=()) -> Path | None:
+    """:func:`write_json`, or with ``path`` ``-`` the JSON on standard output (then returns None)."""
+    if str(path) == "-":
+        json.dump(obj, sys.stdout, indent=1, ensure_ascii=False, default=json_default)
+        sys.stdout.write("\n")
+        sys.stdout.flush()
+        return None
+    return write_json(path, obj, inputs=inputs)
 
 
 def set_aside(path: str | os.PathLike, keep: bool = True) -> str:

@@ -7,12 +7,12 @@ neighbours (:func:`selection_reach`); report.json's ``study`` block says what wa
 """
 from __future__ import annotations
 
-import sys
 
 import numpy as np
 
 from lod2energy.exporters.cfd.region import building_hull
 from lod2energy.io import read
+from lod2energy.logs import log
 from lod2energy.model import Building
 from lod2energy.options import ExportOptions
 from lod2energy.thermal.facts import TABLE_KEY, attribute_map
@@ -47,8 +47,8 @@ def report_unknown_ids(input_path: str, input_ids: set, table, selection) -> dic
         missing = sorted(set(ids) - input_ids)
         if missing:
             first = ", ".join(missing[:5]) + (", ..." if len(missing) > 5 else "")
-            print(f"lod2energy: warning: {what}: {len(missing)} of {len(ids)} ids are not buildings of "
-                  f"{input_path} ({first})", file=sys.stderr)
+            log.warning(f"{what}: {len(missing)} of {len(ids)} ids are not buildings of "
+                  f"{input_path} ({first})")
             out[key] = missing[:1000]
     return out
 

@@ -45,7 +45,10 @@ def import_graph() -> dict[str, set[str]]:
     for mod, path in mods.items():
         tree = ast.parse(path.read_text(encoding="utf-8"))
         is_pkg = path.name == "__init__.py"
+        lazy = _lazy_entry(tree) if mod == "lod2energy" else set()
         for node in ast.walk(tree):
+            if id(node) in lazy:
+                continue
             targets = []
             if isinstance(node, ast.Import):
                 targets = [a.name for a in node.names]
@@ -70,6 +73,13 @@ def import_graph() -> dict[str, set[str]]:
                     if t in mods and t != mod and not mod.startswith(t + "."):
                         graph[mod].add(t)
     return graph
+
+
+def _lazy_entry(tree: ast.Module) -> set[int]:
+    """The imports inside the package root's module ``__getattr__`` (PEP 562): the API's lazy
+    entry, run when a caller asks for ``lod2energy.read``, never while a module is imported."""
+    return {id(n) for fn in tree.body if isinstance(fn, ast.FunctionDef) and fn.name == "__getattr__"
+            for n in ast.walk(fn) if isinstance(n, (ast.Import, ast.ImportFrom))}
 
 
 def cycles(graph: dict[str, set[str]]) -> list[list[str]]:
@@ -250,6 +260,7 @@ def test_allowed_module_state_exists():
 LOCAL_IMPORTS = {
     ("lod2energy.cli", "lod2energy"): "the CLI's lazy entry: a command imports its modules when it runs",
     ("lod2energy.cli", "tqdm"): "the CLI's lazy entry: validate's progress bar",
+    ("lod2energy", "lod2energy"): "the API's lazy entry (module __getattr__): import lod2energy stays light",
     # scipy costs about 0.4 s to import: loaded by the paths that need it (validation mostly does not)
     **{(m, "scipy"): "imported by the paths that need it" for m in (
         "lod2energy.geometry.cdt", "lod2energy.geometry.snap", "lod2energy.io.gml", "lod2energy.repair.alphashape",

@@ -48,7 +48,7 @@ def test_ascii_has_one_named_solid_per_class(tmp_path):
 def test_binary_patch_attribute_and_sidecar(tmp_path):
     b = energy_ready(shifted(box(10, 8, 6), (85123.4, 446789.6, 2.5)))
     res = stl.write([b], tmp_path)
-    side = json.loads(Path(res[0].path).with_suffix(".json").read_text())
+    side = json.loads(Path(res[0].path).with_suffix(".stl.json").read_text())
     assert side["patches"] == {"roof": 2, "wall": 8, "ground": 2}
     assert side["offset"] == list(res[0].offset)
     tris, codes, names = stl.read_stl(res[0].path)
@@ -102,9 +102,9 @@ def test_file_names_stay_in_outdir(tmp_path, evil):
     out = tmp_path / "out"
     res = stl.write([energy_ready(box(id=evil))], out)
     p = Path(res[0].path)
-    assert p.parent == out.resolve() and p.with_suffix(".json").parent == out.resolve()
+    assert p.parent == out.resolve() and p.with_suffix(".stl.json").parent == out.resolve()
     assert sorted(x.name for x in tmp_path.iterdir()) == ["out"]
-    assert json.loads(p.with_suffix(".json").read_text())["building_ids"] == [evil]
+    assert json.loads(p.with_suffix(".stl.json").read_text())["building_ids"] == [evil]
 
 
 def test_self_check_catches_open_and_inverted(tmp_path):

@@ -389,7 +389,7 @@ def test_links_planted_under_every_output_name_are_refused_and_not_followed(tmp_
     victim.write_text("do not touch\n")
     from lod2energy.io.cityjson import is_cityjsonseq  # noqa: F401 - the reader is importable
     from lod2energy.exporters.paths import safe_stem
-    names = [f"{safe_stem(i, set())}{s}" for i in IDS[:2] for s in (".idf", ".stl", ".json")]
+    names = [f"{safe_stem(i, set())}{s}" for i in IDS[:2] for s in (".idf", ".stl", ".stl.json")]
     names += ["energy.ext.json", "in.energy.city.json"]
     pid = os.getpid()
     for n in list(names):  # the temporaries a writer in this process could pick

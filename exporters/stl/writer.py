@@ -1,7 +1,7 @@
 """CFD STL export: closed, outward triangle surfaces with one patch per semantic class.
 
 One file per building (default) or per dataset, in a local metric frame whose offset is
-stored in a sidecar ``<name>.json`` (map coordinate = STL coordinate + offset). The
+stored in a sidecar ``<name>.stl.json`` (map coordinate = STL coordinate + offset). The
 BuildingParts of a building (and, in dataset mode, touching buildings) are merged with a
 boolean union (manifold3d) so that the surface has no internal walls and stays 2-manifold:
 what a CFD mesher (snappyHexMesh) needs. Triangles keep their semantic class through the
@@ -471,7 +471,7 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: StlOptions
                  "volume_m3": round(signed_volume(v, t), 3) if len(t) else 0.0}
         try:  # the STL self-checked on its staged temporary: a failed one never gets the good name
             # its folder is synced after the STL's rename, just below (write_checked)
-            sidecar_path = output_path(out, stem, ".json")
+            sidecar_path = output_path(out, stem, ".stl.json")
             safe_write.write_text(sidecar_path, json.dumps(sidecar, indent=1), root=out,
                                   sync_folder=False)
             final, problems = safe_write.write_checked(

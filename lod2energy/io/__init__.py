@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import itertools
+import os
 import re
 from dataclasses import replace
 from typing import Callable, Iterator
@@ -12,6 +13,7 @@ from lod2energy import crs as crs_
 from lod2energy.errors import InputError
 from lod2energy.geodesy import LocalFrame, ScaledFrame
 from lod2energy.io.shape import check_input_file
+from lod2energy.logs import log
 from lod2energy.model import Building, CityModel, FeatureError
 
 Reader = Callable[..., "tuple[CityModel | None, Iterator[Building | FeatureError]]"]
@@ -44,13 +46,18 @@ def read(path: str, **options) -> "tuple[CityModel | None, Iterator[Building | F
     of the coordinates (any form pyproj reads, :func:`lod2energy.crs.spelled`), replacing the
     one the file names, if any.
     """
+    if not isinstance(path, (str, os.PathLike)):  # a document, not a path: one line, not the document
+        return None, iter([FeatureError(None, 903, f"lod2energy.io.read takes a path, not a {type(path).__name__}: "
+                                                   "lod2energy.read takes a CityJSON dict or a file object")])
+    path = os.fspath(path)
     try:  # the input-shape check starts here: a regular file of bounded size
         check_input_file(str(path))
     except InputError as e:
         return None, iter([FeatureError(None, e.code, str(e))])
     only = options.pop("only", None)
     crs = options.pop("crs", None)
-    reader = _lookup(path, _READERS[".json"])[1]  # unknown suffix: sniff JSON
+    name, reader = _lookup(path, _READERS[".json"])  # unknown suffix: sniff JSON
+    log.debug("%s: read as %s", path, name)
     if only is None:
         return to_local_frame(*with_crs(*reader(path, **options), crs))
     gate = _Only(only)
