@@ -92,3 +92,13 @@ def with_model_figures(thermal: Mapping, figures: Mapping) -> dict:
         out["UA_geometry"] = thermal["UA"]
     out.update(areas=dict(figures["areas"]), A_env=figures["A_env"], UA=figures["UA"], figures_source="idf")
     return out
+
+
+#: The keys of a thermal block that :func:`with_model_figures` sets.
+FIGURE_KEYS = ("areas", "A_env", "UA", "UA_geometry", "figures_source")
+
+
+def model_figures(thermal: Mapping, recorded: Mapping) -> dict:
+    """``thermal`` with the figures of ``recorded`` (a thermal block that went through
+    :func:`with_model_figures`, e.g. the building's record)."""
+    return {**thermal, **{k: recorded[k] for k in FIGURE_KEYS if k in recorded}}
