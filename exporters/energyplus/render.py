@@ -211,7 +211,7 @@ def render_idf(zones: Sequence[ZoneShell], pieces: Sequence[list[Piece]], delta:
         # windows go on walls of at least min_window_wall_area; their ratio is raised so the
         # zone's window area stays wwr x its outdoor wall area (few windows = fast runs)
         wall_of = [polygon_area3d(p.points) if p.kind == "wall" and p.boundary == "Outdoors" else None for p in zp]
-        walls = [a for a in wall_of if a is not None]
+        walls = [a for a, p in zip(wall_of, zp) if a is not None and p.glazed]
         eligible = sum(a for a in walls if a >= options.min_window_wall_area)
         ratio = min(z.wwr * sum(walls) / eligible, 0.85) if eligible > 0 and not zop else 0.0
         hosts: list[tuple[Piece, str, str]] = []  # outdoor wall pieces: piece, surface, construction
@@ -247,7 +247,7 @@ def render_idf(zones: Sequence[ZoneShell], pieces: Sequence[list[Piece]], delta:
             if p.kind == "wall" and outdoor:  # a: its area, found above
                 wall_area += a
                 hosts.append((p, sname, cname))
-                if ratio > 0 and a >= options.min_window_wall_area:
+                if ratio > 0 and p.glazed and a >= options.min_window_wall_area:
                     w = window_for(p.points - delta, ratio)
                     if w is not None and (wa := polygon_area3d(w)) > 0.01:
                         wc = f"Window_U{z.u_window:.3f}_G{options.shgc:.2f}".replace(".", "p")
