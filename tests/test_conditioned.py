@@ -88,3 +88,32 @@ def test_between_two_conditioned_buildings_the_wall_stays_adiabatic(tmp_path):
     other = energy_ready(box(10, 8, 6, origin=(10.0, 0.0, 0.0), id="other"))
     res = write_idf([house], tmp_path, context=[other])
     assert res[0].stats["envelope"]["house"]["areas"]["adiabatic"] == pytest.approx(48.0, rel=1e-3)
+
+
+def test_nrw_tile_alkis_unheated_buildings_have_no_ideal_loads(tmp_path):
+    """A German state LoD2 tile: its barns, sheds, stables and garages (ALKIS codes) and its
+    annexes under the threshold are unconditioned, and their IDFs have no ideal loads; the
+    heated buildings' do."""
+    import json
+
+    from conftest import shared_path
+    from lod2energy.cli import main
+
+    src = shared_path("citygml-real", "nrw", "LoD2_32_280_5657_1_NW.gml")
+    out = tmp_path / "out"
+    assert main(["export", str(src), "-o", str(out), "--idf", "-q", "-j", "1", "--no-html"]) in (0, 1)
+    rep = json.loads((out / "report.json").read_text())
+    by_source: dict[str, int] = {}
+    for b in rep["buildings"]:
+        fact = ((b.get("thermal") or {}).get("facts") or {}).get("conditioned")
+        e = b["exports"].get("idf") or {}
+        if not fact or not e.get("ok"):
+            continue
+        text = open(e["path"]).read()
+        if fact["value"] is False:
+            by_source[fact["source"]] = by_source.get(fact["source"], 0) + 1
+            assert "ZoneHVAC:IdealLoadsAirSystem" not in text, b["id"]
+            assert b.get("heating_kwh_m2") in (None, "")
+        else:
+            assert "ZoneHVAC:IdealLoadsAirSystem" in text, b["id"]
+    assert by_source.get("attribute", 0) >= 10 and by_source.get("geometry", 0) >= 1
