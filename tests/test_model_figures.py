@@ -1,4 +1,4 @@
-"""Areas by thermal boundary and UA are the written IDF's (issue 39 item 4).
+"""Areas by thermal boundary, UA and party walls are the written IDF's (issue 39 item 4).
 
 Tiny named geometries: two boxes side by side (a terraced pair sharing one wall) and a box
 alone; the writer's figures are recomputed from the IDF it wrote (:mod:`idf_figures`, eppy).
@@ -91,7 +91,7 @@ def test_report_figures_equal_each_written_idf(tile, tmp_path):
     else:
         src = shared_path("citygml-real", "berlin", "3900_5819.gml")
     out = tmp_path / "out"
-    assert main(["export", str(src), "-o", str(out), "--idf", "--geojson", "-q", "-j", "1", "--no-html",
+    assert main(["export", str(src), "-o", str(out), "--idf", "--geojson", "--cityjson", "-q", "-j", "1", "--no-html",
                  *extra]) in (0, 1)
     rep = json.loads((out / "report.json").read_text())
     checked = adiabatic = 0
@@ -108,8 +108,32 @@ def test_report_figures_equal_each_written_idf(tile, tmp_path):
     assert checked >= 3
     if tile == "denhaag":
         assert adiabatic >= checked // 2
+        cj = json.loads(next(out.glob("*.city.json")).read_text())
+        types = {sf.get("thermalBoundaryType") for o in cj["CityObjects"].values() for g in o.get("geometry", [])
+                 for sf in (g.get("semantics") or {}).get("surfaces", [])}
+        assert "sharedWallOrFloor" in types and "exterior" in types
     feats = json.loads(next(out.glob("*.geojson")).read_text())["features"]
     by_id = {b["id"]: b["thermal"] for b in rep["buildings"] if b["thermal"].get("figures_source")}
     for f in feats:
         if f["id"] in by_id:
             assert f["properties"]["UA_W_per_K"] == by_id[f["id"]]["UA"]
+
+
+def test_the_shared_wall_is_shared_wall_or_floor_in_the_cityjson_semantics(tmp_path):
+    from lod2energy.energy.figures import with_shared_boundaries
+    from lod2energy.semantics import face_table
+
+    left = energy_ready(box(10, 8, 6, id="left"))
+    right = energy_ready(box(10, 8, 6, origin=(10.0, 0.0, 0.0), id="right"))
+    fig = write_idf([left], tmp_path, context=[right])[0].stats["envelope"]["left"]
+    assert list(fig["shared_faces"].values()) == [[fig["shared_faces"]["left"][0]]]
+    out = with_shared_boundaries(left, fig["shared_faces"])
+    (o, gi, g), = out.energy_objects()
+    t = face_table(out.vertices, g)
+    shared = [float(t.area[i]) for i, s in enumerate(t.surfaces)
+              if g.semantic_surfaces[s.semantic].get("thermalBoundaryType") == "sharedWallOrFloor"]
+    assert shared == [pytest.approx(48.0)]
+    # the other walls keep theirs, and the input building is unchanged
+    assert sum(e.get("thermalBoundaryType") == "exterior" for e in g.semantic_surfaces) >= 1
+    (_, _, g0), = left.energy_objects()
+    assert all(e.get("thermalBoundaryType") != "sharedWallOrFloor" for e in g0.semantic_surfaces)

@@ -10,7 +10,7 @@ import numpy as np
 
 import lod2energy.templates as tpl
 from lod2energy import __version__, cache
-from lod2energy.energy.figures import boundary_of, envelope_figures
+from lod2energy.energy.figures import boundary_of, envelope_figures, shared_faces
 from lod2energy.energy.openings import Opening, opening_polygon, window_for
 from lod2energy.energy.pieces import Piece, WRITE_DECIMALS, _pieces_volume
 from lod2energy.energy.zones.shells import ZoneShell
@@ -139,7 +139,8 @@ def render_idf(zones: Sequence[ZoneShell], pieces: Sequence[list[Piece]], delta:
                shading: Sequence[np.ndarray] = (), site: dict | None = None,
                ground: Sequence[float] | None = None, crs: str | None = None,
                zone_info: Sequence["ZoneInfo"] | None = None,
-               openings: Sequence[Sequence["Opening"]] | None = None) -> tuple[str, dict, list[str]]:
+               openings: Sequence[Sequence["Opening"]] | None = None,
+               source_ids: Sequence[str] | None = None) -> tuple[str, dict, list[str]]:
     """IDF text for zones whose pieces are in a frame ``delta`` away from the file frame.
 
     Each ``Zone``'s Floor Area is written (EnergyPlus's per-area loads and the reported
@@ -154,6 +155,10 @@ def render_idf(zones: Sequence[ZoneShell], pieces: Sequence[list[Piece]], delta:
 
     ``openings`` (per zone, :func:`split_openings`): a zone with real windows / doors gets
     them as ``FenestrationSurface:Detailed`` on their wall pieces instead of the WWR rule.
+
+    ``source_ids`` (one per zone): the id of the zone shell each written zone was cut from (its
+    storey zones share it), which names the input faces in ``stats["envelope"]``'s
+    ``shared_faces``; default the zone's own id.
 
     ``site`` (``Site:Location`` fields, :meth:`lod2energy.site.Site.as_idf`) is required: there
     is no default site.
@@ -180,6 +185,7 @@ def render_idf(zones: Sequence[ZoneShell], pieces: Sequence[list[Piece]], delta:
     unplaced: dict[int, tuple] = {}  # openings no outdoor wall piece of a zone took, by identity
     placed: set[int] = set()
     written: dict[str, list] = {}  # surface name -> [building, class, area m2, U, window area m2]
+    face_classes: dict[str, dict] = {}  # building -> zone -> input face index -> its pieces' classes
     glazed: list[tuple[str, float, float]] = []  # windows: (building, area m2, U)
     for zk, (z, zp, info) in enumerate(zip(zones, pieces, infos)):
         zop = tuple(openings[zk]) if openings and zk < len(openings) else ()
@@ -244,6 +250,9 @@ def render_idf(zones: Sequence[ZoneShell], pieces: Sequence[list[Piece]], delta:
                              **_vertex_block(pts)})
             written[sname] = [zc["building"], boundary_of(stype, p.boundary), polygon_area3d(pts),
                               _own_u(constructions[cname]), 0.0]
+            face_classes.setdefault(zc["building"], {}).setdefault(
+                source_ids[zk] if source_ids is not None else z.object_id, {}).setdefault(
+                p.face_index, set()).add(written[sname][1])
             if p.kind == "wall" and outdoor:  # a: its area, found above
                 wall_area += a
                 hosts.append((p, sname, cname))
@@ -344,6 +353,8 @@ def render_idf(zones: Sequence[ZoneShell], pieces: Sequence[list[Piece]], delta:
              "envelope": {bid: envelope_figures([tuple(w[1:]) for w in written.values() if w[0] == bid],
                                                 [(a, u) for b, a, u in glazed if b == bid])
                           for bid in dict.fromkeys(z["building"] for z in zone_ctx)}}
+    for bid, fig in stats["envelope"].items():
+        fig["shared_faces"] = shared_faces(face_classes.get(bid, {}))
     return text, stats, warnings
 
 

@@ -144,7 +144,8 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
         text, stats, warns = render_idf([w[0] for w in wl], [w[1] for w in wl], offset - origin, offset,
                                         options, [b.id for b in gb], shading, g_site, ground, crs,
                                         zone_info=[w[2] for w in wl],
-                                        openings=[openings.get(w[3], ()) for w in wl])
+                                        openings=[openings.get(w[3], ()) for w in wl],
+                                        source_ids=[zones[w[3]].object_id for w in wl])
         stats.update(g_stats)
         stats["building_info"] = {blist[j].id: bstats[j] for j in g}
         if len(g) == 1:

@@ -18,6 +18,9 @@ U-factor as written.
 from __future__ import annotations
 
 from collections.abc import Iterable, Mapping
+from dataclasses import replace
+
+from lod2energy.model import frozen_mapping
 
 #: The figures' boundary classes, in report order.
 AREA_KEYS = ("roof", "wall", "ground", "floor_exposed", "window", "adiabatic")
@@ -91,11 +94,64 @@ def with_model_figures(thermal: Mapping, figures: Mapping) -> dict:
     if "UA" in thermal and "UA_geometry" not in thermal:
         out["UA_geometry"] = thermal["UA"]
     out.update(areas=dict(figures["areas"]), A_env=figures["A_env"], UA=figures["UA"], figures_source="idf")
+    if figures.get("shared_faces"):
+        out["shared_faces"] = {str(k): list(v) for k, v in figures["shared_faces"].items()}
     return out
 
 
+def shared_faces(classes: Mapping[str, Mapping[int, set]]) -> dict[str, list[int]]:
+    """The input faces written as party walls only: ``{zone id: [face index, ...]}`` (the
+    index of the face in its solid's exterior shell, :class:`~lod2energy.energy.zones.shells.ZoneFace`).
+
+    Parameters
+    ----------
+    classes : mapping
+        Zone id -> face index -> the classes (:func:`boundary_of`) of its written pieces.
+    """
+    out = {}
+    for zone, faces in classes.items():
+        idx = sorted(int(fi) for fi, c in faces.items() if fi >= 0 and set(c) == {"adiabatic"})
+        if idx:
+            out[str(zone)] = idx
+    return out
+
+
+def with_shared_boundaries(b, shared: Mapping[str, Iterable[int]], lod: str | None = None):
+    """``b`` whose surfaces written as party walls (``shared``, :func:`shared_faces`) carry
+    the Energy ADE's ``thermalBoundaryType`` ``sharedWallOrFloor`` (a semantic entry of their
+    own where the input shares one with other surfaces)."""
+    if not shared:
+        return b
+    for o, gi, g in b.energy_objects(lod):
+        entries = list(g.semantic_surfaces)
+        copies: dict[int, int] = {}
+        solids = []
+        changed = False
+        for si, solid in enumerate(g.solids):
+            zone = o.id if len(g.solids) == 1 else f"{o.id}_s{si}"
+            faces = set(shared.get(zone, ()))
+            if not faces or not solid.shells:
+                solids.append(solid)
+                continue
+            ext = solid.shells[0]
+            surfs = list(ext.surfaces)
+            for fi in faces:
+                if fi >= len(surfs) or surfs[fi].semantic is None or surfs[fi].semantic >= len(entries):
+                    continue
+                k = surfs[fi].semantic
+                if k not in copies:
+                    copies[k] = len(entries)
+                    entries.append(frozen_mapping({**entries[k], "thermalBoundaryType": ADE_BOUNDARY["adiabatic"]}))
+                surfs[fi] = replace(surfs[fi], semantic=copies[k])
+                changed = True
+            solids.append(replace(solid, shells=(replace(ext, surfaces=tuple(surfs)),) + tuple(solid.shells[1:])))
+        if changed:
+            b = b.replace_geometry(o.id, gi, replace(g, solids=tuple(solids), semantic_surfaces=tuple(entries)))
+    return b
+
+
 #: The keys of a thermal block that :func:`with_model_figures` sets.
-FIGURE_KEYS = ("areas", "A_env", "UA", "UA_geometry", "figures_source")
+FIGURE_KEYS = ("areas", "A_env", "UA", "UA_geometry", "figures_source", "shared_faces")
 
 
 def model_figures(thermal: Mapping, recorded: Mapping) -> dict:
