@@ -4,6 +4,8 @@ Each building of the given tiles (the first ``--n`` per tile) goes through the m
 stages (labels, U-values), is written with storey zones and its use's loads and simulated for a
 year by EnergyPlus with the Heino (NL) weather file; the heating need per m2 of conditioned floor
 area is grouped by the typology row its U-values came from (country, building type, period).
+Unconditioned buildings (:func:`lod2energy.thermal.facts.conditioned_fact`: an unheated use, or
+an annex under 20 m2 of floor area) are written without ideal loads and left out of the table.
 
 Next to each row stands the value the typology source publishes for it: TABULA's calculated
 energy need for heating ``q_h_nd`` of the national generic type in its existing state
@@ -84,6 +86,7 @@ def _year(b) -> int:
 
 def measure(tiles, n: int, tmp: Path) -> list[dict]:
     from lod2energy.exporters import energyplus
+    from lod2energy.thermal.facts import is_conditioned
 
     rows = []
     for t in tiles:
@@ -94,6 +97,7 @@ def measure(tiles, n: int, tmp: Path) -> list[dict]:
                             crs=model.crs, frame=getattr(model, "frame", None))
             for r in res:
                 rows.append({"tile": Path(t).name, "id": b.id, "row": _row(b), "year": _year(b), "ok": r.ok,
+                             "conditioned": is_conditioned(b),
                              "use": r.stats.get("use"), "zones": r.stats.get("zones"),
                              "heating_kwh_m2": r.stats.get("heating_kwh_m2"),
                              "area": r.stats.get("conditioned_floor_area_m2")})
@@ -119,9 +123,11 @@ def table(rows: list[dict], ref: list[dict], band: float, min_area: float = 0.0)
     (buildings under ``min_area`` m2 of conditioned floor area left out and counted)."""
     by: dict = defaultdict(list)
     refs: dict = {}
-    small = 0
+    small = unheated = 0
     for r in rows:
-        if r["ok"] and r["heating_kwh_m2"] is not None and (r.get("area") or 0.0) < min_area:
+        if r.get("conditioned") is False:  # unheated (its use, or an annex under the threshold): no need
+            unheated += 1
+        elif r["ok"] and r["heating_kwh_m2"] is not None and (r.get("area") or 0.0) < min_area:
             small += 1
         elif r["ok"] and r["heating_kwh_m2"] is not None:
             key = tuple(r["row"])
@@ -144,7 +150,7 @@ def table(rows: list[dict], ref: list[dict], band: float, min_area: float = 0.0)
         lines.append(f"| {key[0]} | {key[1]} | {key[2]} | {key[3] or '-'} | {len(v)} | {med:.0f} | "
                      f"{min(v):.0f} - {max(v):.0f} | {refcol} | {ratio} | {inside} |")
     failed = sum(1 for r in rows if not r["ok"])
-    lines.append(f"\n{len(rows)} buildings, {failed} not simulated cleanly"
+    lines.append(f"\n{len(rows)} buildings, {failed} not simulated cleanly, {unheated} unconditioned left out"
                  + (f", {small} under {min_area:g} m2 of floor area left out." if min_area else "."))
     return "\n".join(lines)
 

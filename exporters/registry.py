@@ -186,6 +186,8 @@ def records_of(fmt: str, results: Sequence[ExportResult]) -> WriteResults:
         ids, problems, stats = tuple(res.building_ids), tuple(res.problems), res.stats
         if stats.get("downgrades"):  # building id -> the energy model's downgrades (records.Downgrade)
             extra["downgrades"] = {str(k): list(v) for k, v in stats["downgrades"].items()}
+        if stats.get("envelope"):  # building id -> areas by boundary and UA of the written model
+            extra["envelope"] = {str(k): dict(v) for k, v in stats["envelope"].items()}
         if stats.get("input_windows") or stats.get("input_doors"):  # LoD3: the input's own, in the file
             extra["openings"] = {"Window": int(stats.get("input_windows") or 0), "Door": int(stats.get("input_doors") or 0)}
         # a run's figures are stored once, as ``results``; the report's flat figures and per-zone

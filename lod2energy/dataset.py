@@ -5,6 +5,7 @@ from __future__ import annotations
 import os
 from dataclasses import dataclass
 
+from lod2energy.energy.figures import model_figures
 from lod2energy.exporters.run_results import with_run_results
 from lod2energy.logs import log
 from lod2energy.model import CityModel, frozen_mapping
@@ -69,8 +70,10 @@ BESIDE = ("cityjson", "geojson")
 
 
 def beside_ok(options: ExportOptions) -> bool:
-    """True when the one-file writers :data:`BESIDE` need nothing of the neighbour pass."""
-    return not ("idf" in options.formats and getattr(options.writer_options("idf"), "run", False))
+    """True when the one-file writers :data:`BESIDE` need nothing of the neighbour pass: no
+    IDF is written (the CityJSON and GeoJSON carry the written model's areas and UA, and a
+    run's figures)."""
+    return "idf" not in options.formats
 
 
 def dataset_write(w, options: ExportOptions, job: Job, records: RecordStore, others: list[int], model: CityModel,
@@ -90,6 +93,9 @@ def dataset_write(w, options: ExportOptions, job: Job, records: RecordStore, oth
             if rec.energy.compliant is False and (b.provenance.get("energy") or {}).get("compliant"):
                 # a writer before this one did not write it: the file says what the record says
                 b = b.with_provenance(energy=frozen_mapping(rec.energy.to_json()))
+            if rec.thermal.detail.get("figures_source") and b.provenance.get("thermal"):
+                b = b.with_provenance(thermal=frozen_mapping(
+                    model_figures(b.provenance["thermal"], rec.thermal.detail)))
             return with_run_results(with_repair_attributes(b), rec.export("idf"))
 
         # read from the spool one at a time as the writer streams the file

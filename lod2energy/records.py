@@ -19,6 +19,7 @@ from dataclasses import dataclass, field, replace
 from typing import Any, Mapping
 
 from lod2energy.energy.downgrades import Downgrade, summed
+from lod2energy.energy.figures import with_model_figures
 from lod2energy.safe_write import json_default
 
 
@@ -293,13 +294,14 @@ class ExportRecord:
         return f"{fmt} export {bid} not written: {'; '.join(why) or 'no file'}"
 
     def to_json(self) -> dict:
-        """The report's block (the energy model's downgrades are the building record's own field)."""
+        """The report's block (the energy model's downgrades and envelope figures are the
+        building record's own fields)."""
         d = {"ok": self.ok, "path": self.path, "problems": list(self.problems)}
-        d.update(_untimed({k: v for k, v in self.values().items() if k != "downgrades"}))
+        d.update(_untimed({k: v for k, v in self.values().items() if k not in ("downgrades", "envelope")}))
         return d
 
     def journal(self) -> dict:
-        down = {"downgrades": _untimed(self.extra["downgrades"])} if "downgrades" in self.extra else {}
+        down = {k: _untimed(self.extra[k]) for k in ("downgrades", "envelope") if k in self.extra}
         return {"format": self.format, **self.to_json(), **down, "files": [vars(f) for f in self.files]}
 
     @classmethod
@@ -323,7 +325,7 @@ FACTS = ("year", "storeys", "use", "conditioned")
 FACT_COLUMNS = tuple(c for f in FACTS for c in (f, f"{f}_source"))
 CSV_FIELDS = ["id", "type", "input_errors", "output_errors", "repair_stage", "iou", "mean_displacement_m",
               "compliant", "status", "typology", "construction_period", *FACT_COLUMNS, "roof_m2", "wall_m2", "ground_m2",
-              "A_env_m2", "volume_m3", "UA_W_per_K", "cityjson_ok", "idf_ok", "stl_ok", "cfd_ok", "heating_kwh",
+              "floor_exposed_m2", "window_m2", "adiabatic_m2", "A_env_m2", "volume_m3", "UA_W_per_K", "cityjson_ok", "idf_ok", "stl_ok", "cfd_ok", "heating_kwh",
               "cooling_kwh", "heating_kwh_m2", "cooling_kwh_m2", "heating_peak_w", "cooling_peak_w",
               "conditioned_floor_area_m2", "geojson_ok", "downgrades", "downgrade_d_height_m",
               "downgrade_d_volume_m3", "downgrade_d_floor_area_m2", "message", "outcome"]
@@ -388,6 +390,12 @@ class BuildingRecord:
             extra = {k: v for k, v in er.extra.items() if k != "downgrades"}
             er = replace(er, extra={**extra, "downgrades": {self.id: own}} if own else extra)
             self = replace(self, downgrades=tuple(Downgrade.from_json(d) for d in own))
+        if isinstance(er.extra.get("envelope"), Mapping):  # the written model's figures: this building's
+            own = er.extra["envelope"].get(self.id)
+            extra = {k: v for k, v in er.extra.items() if k != "envelope"}
+            er = replace(er, extra={**extra, "envelope": {self.id: own}} if own else extra)
+            if own and self.thermal.detail:
+                self = replace(self, thermal=ThermalRecord.from_block(with_model_figures(self.thermal.detail, own)))
         ex = tuple(e for e in self.exports if e.format != er.format) + (er,)
         rec = replace(self, exports=ex)
         if er.ok or not self.energy.compliant:
@@ -421,6 +429,7 @@ class BuildingRecord:
              "typology": th.detail.get("typology", ""), "construction_period": th.detail.get("construction_period", ""),
              **self.fact_columns(),
              "roof_m2": areas.get("roof", ""), "wall_m2": areas.get("wall", ""), "ground_m2": areas.get("ground", ""),
+             **{f"{k}_m2": areas.get(k, "") for k in ("floor_exposed", "window", "adiabatic")},
              "A_env_m2": th.detail.get("A_env", ""), "volume_m3": th.detail.get("volume", ""),
              "UA_W_per_K": th.detail.get("UA", "")}
         for e in sorted(self.exports, key=lambda e: e.format):

@@ -4,7 +4,9 @@ What is written (through :mod:`lod2energy.io.cityjson`'s writer):
 
 - the energy geometry of every building (the repaired, labelled LoD; other LoDs are left
   out unless ``keep_other_lods``), a semantic surface on every face carrying ``uValue``
-  (W/(m2 K)), ``thermalBoundaryType``, ``area`` (m2), ``azimuth`` and ``inclination`` (deg);
+  (W/(m2 K)), ``thermalBoundaryType`` (``sharedWallOrFloor`` for a face the written IDF makes a
+  party wall, :func:`lod2energy.energy.figures.with_shared_boundaries`), ``area`` (m2),
+  ``azimuth`` and ``inclination`` (deg);
 - per building, ``+energy...`` attributes on the first-level Building (envelope area,
   volume, UA, typology, construction period, repair stage, energy compliance, ...), defined
   by the CityJSON Extension ``Energy`` shipped in ``lod2energy/data/extensions/<v>/`` and
@@ -40,6 +42,7 @@ from typing import Any, Iterable, Iterator, Sequence
 
 from lod2energy import safe_write
 from lod2energy.config import DEFAULT
+from lod2energy.energy.figures import with_shared_boundaries
 from lod2energy.errors import Lod2EnergyError
 from lod2energy.heap import give_back
 from lod2energy.io import cityjson as cjio
@@ -108,6 +111,7 @@ def _ready_problem(b: Building, lod: str | None, keep_other_lods: bool = False, 
 def prepare_building(b: Building, lod: str | None = None, keep_other_lods: bool = False) -> Building:
     """The building as exported: energy LoD only, ``+energy`` attributes on the root."""
     lod = lod if lod is not None else (b.provenance.get("thermal") or {}).get("lod") or b.default_lod()
+    b = with_shared_boundaries(b, (b.provenance.get("thermal") or {}).get("shared_faces") or {}, lod)
     b = strip_to_energy(b, lod, keep_other_lods)
     root = b.root
     attrs = dict(root.attributes)

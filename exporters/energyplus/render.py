@@ -10,6 +10,7 @@ import numpy as np
 
 import lod2energy.templates as tpl
 from lod2energy import __version__, cache
+from lod2energy.energy.figures import boundary_of, envelope_figures, shared_faces
 from lod2energy.energy.openings import Opening, opening_polygon, window_for
 from lod2energy.energy.pieces import Piece, WRITE_DECIMALS, _pieces_volume
 from lod2energy.energy.zones.shells import ZoneShell
@@ -138,7 +139,8 @@ def render_idf(zones: Sequence[ZoneShell], pieces: Sequence[list[Piece]], delta:
                shading: Sequence[np.ndarray] = (), site: dict | None = None,
                ground: Sequence[float] | None = None, crs: str | None = None,
                zone_info: Sequence["ZoneInfo"] | None = None,
-               openings: Sequence[Sequence["Opening"]] | None = None) -> tuple[str, dict, list[str]]:
+               openings: Sequence[Sequence["Opening"]] | None = None,
+               source_ids: Sequence[str] | None = None) -> tuple[str, dict, list[str]]:
     """IDF text for zones whose pieces are in a frame ``delta`` away from the file frame.
 
     Each ``Zone``'s Floor Area is written (EnergyPlus's per-area loads and the reported
@@ -153,6 +155,10 @@ def render_idf(zones: Sequence[ZoneShell], pieces: Sequence[list[Piece]], delta:
 
     ``openings`` (per zone, :func:`split_openings`): a zone with real windows / doors gets
     them as ``FenestrationSurface:Detailed`` on their wall pieces instead of the WWR rule.
+
+    ``source_ids`` (one per zone): the id of the zone shell each written zone was cut from (its
+    storey zones share it), which names the input faces in ``stats["envelope"]``'s
+    ``shared_faces``; default the zone's own id.
 
     ``site`` (``Site:Location`` fields, :meth:`lod2energy.site.Site.as_idf`) is required: there
     is no default site.
@@ -178,6 +184,9 @@ def render_idf(zones: Sequence[ZoneShell], pieces: Sequence[list[Piece]], delta:
     infos = list(zone_info) if zone_info is not None else [None] * len(zones)
     unplaced: dict[int, tuple] = {}  # openings no outdoor wall piece of a zone took, by identity
     placed: set[int] = set()
+    written: dict[str, list] = {}  # surface name -> [building, class, area m2, U, window area m2]
+    face_classes: dict[str, dict] = {}  # building -> zone -> input face index -> its pieces' classes
+    glazed: list[tuple[str, float, float]] = []  # windows: (building, area m2, U)
     for zk, (z, zp, info) in enumerate(zip(zones, pieces, infos)):
         zop = tuple(openings[zk]) if openings and zk < len(openings) else ()
         zp, floored = with_floor(zp)
@@ -208,7 +217,7 @@ def render_idf(zones: Sequence[ZoneShell], pieces: Sequence[list[Piece]], delta:
         # windows go on walls of at least min_window_wall_area; their ratio is raised so the
         # zone's window area stays wwr x its outdoor wall area (few windows = fast runs)
         wall_of = [polygon_area3d(p.points) if p.kind == "wall" and p.boundary == "Outdoors" else None for p in zp]
-        walls = [a for a in wall_of if a is not None]
+        walls = [a for a, p in zip(wall_of, zp) if a is not None and p.glazed]
         eligible = sum(a for a in walls if a >= options.min_window_wall_area)
         ratio = min(z.wwr * sum(walls) / eligible, 0.85) if eligible > 0 and not zop else 0.0
         hosts: list[tuple[Piece, str, str]] = []  # outdoor wall pieces: piece, surface, construction
@@ -239,10 +248,15 @@ def render_idf(zones: Sequence[ZoneShell], pieces: Sequence[list[Piece]], delta:
                              "boundary": p.boundary, "boundary_object": "", "sun": "SunExposed" if outdoor else "NoSun",
                              "wind": "WindExposed" if outdoor else "NoWind",
                              **_vertex_block(pts)})
+            written[sname] = [zc["building"], boundary_of(stype, p.boundary), polygon_area3d(pts),
+                              _own_u(constructions[cname]), 0.0]
+            face_classes.setdefault(zc["building"], {}).setdefault(
+                source_ids[zk] if source_ids is not None else z.object_id, {}).setdefault(
+                p.face_index, set()).add(written[sname][1])
             if p.kind == "wall" and outdoor:  # a: its area, found above
                 wall_area += a
                 hosts.append((p, sname, cname))
-                if ratio > 0 and a >= options.min_window_wall_area:
+                if ratio > 0 and p.glazed and a >= options.min_window_wall_area:
                     w = window_for(p.points - delta, ratio)
                     if w is not None and (wa := polygon_area3d(w)) > 0.01:
                         wc = f"Window_U{z.u_window:.3f}_G{options.shgc:.2f}".replace(".", "p")
@@ -251,6 +265,8 @@ def render_idf(zones: Sequence[ZoneShell], pieces: Sequence[list[Piece]], delta:
                         win_ctx.append({"name": reg.name(f"{sname}_Win", 99), "construction": wc, "base": sname,
                                         **_vertex_block(upper_left_first(w))})
                         win_area += wa
+                        written[sname][4] += wa
+                        glazed.append((zc["building"], wa, float(win_constructions[wc]["u_value"])))
         for op in zop:  # real windows and doors, each on the outdoor piece of its wall it overlaps most
             best = None
             for p, sname, cname in hosts:
@@ -271,6 +287,8 @@ def render_idf(zones: Sequence[ZoneShell], pieces: Sequence[list[Piece]], delta:
                 win_constructions.setdefault(cons, {"name": cons, "u_value": _fmt(min(z.u_window, 7.0), 4),
                                                     "shgc": _fmt(options.shgc, 3), "vt": _fmt(options.shgc, 3)})
                 win_area += polygon_area3d(w)
+                written[sname][4] += polygon_area3d(w)
+                glazed.append((zc["building"], polygon_area3d(w), float(win_constructions[cons]["u_value"])))
             else:
                 cons = cname  # a door: the opaque construction of its wall
             n_real[op.kind] += 1
@@ -331,8 +349,22 @@ def render_idf(zones: Sequence[ZoneShell], pieces: Sequence[list[Piece]], delta:
              "conditioned_zones": [z["name"] for z in zone_ctx if z["conditioned"]],
              "zone_building": {z["name"]: z["building"] for z in zone_ctx},
              "input_windows": n_real["Window"], "input_doors": n_real["Door"],
-             "wwr_achieved": round(win_area / wall_area, 4) if wall_area > 0 else 0.0}
+             "wwr_achieved": round(win_area / wall_area, 4) if wall_area > 0 else 0.0,
+             "envelope": {bid: envelope_figures([tuple(w[1:]) for w in written.values() if w[0] == bid],
+                                                [(a, u) for b, a, u in glazed if b == bid])
+                          for bid in dict.fromkeys(z["building"] for z in zone_ctx)}}
+    for bid, fig in stats["envelope"].items():
+        fig["shared_faces"] = shared_faces(face_classes.get(bid, {}))
     return text, stats, warnings
+
+
+def _own_u(construction: dict) -> float:
+    """The U-value (W/(m2 K)) of a written opaque construction without films: 1 / its layers'
+    R summed, from the values as written."""
+    r = float(construction["resistance"])
+    if construction.get("mass_thickness"):
+        r += float(construction["mass_thickness"]) / float(_fmt(MASS["conductivity"], 3))
+    return 1.0 / r
 
 
 def _compact(values: Sequence[float], nd: int = 3) -> list[str]:

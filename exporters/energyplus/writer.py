@@ -16,7 +16,7 @@ import numpy as np
 from lod2energy import safe_write, site as site_mod
 from lod2energy.crs import no_crs_reason
 from lod2energy.energy import downgrades as dg, model as energy_model
-from lod2energy.energy.model import with_energy_model
+from lod2energy.energy.model import unglaze, with_energy_model
 from lod2energy.energy.pieces import _face_frame, _pieces_from_points
 from lod2energy.energy.surfaces import zone_pieces
 from lod2energy.energy.zones.shells import local_origin
@@ -123,7 +123,7 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
         if options.shading and options.mode == "building":
             shading = _shading_for(g[0], blist, bboxes, zones, zones_of, party, options.shading_radius)
         if split_pieces is None and options.zoning == "building":
-            wl = [(zones[i], zone_pieces(zones[i], i, party, False), w[2], i)
+            wl = [(zones[i], unglaze(zone_pieces(zones[i], i, party, False), i, model.unglazed), w[2], i)
                   for i, w in zip(zi, [w for j in g for w in written_of[j]])]
         elif split_pieces is None or simpler is not None:
             # storey zones cut again: from the zones with whole party walls, or from ``simpler``
@@ -133,7 +133,7 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
                 if simpler is not None:
                     zs[i], ps[i] = simpler[i], zone_pieces(simpler[i], i, {}, False)
                 else:
-                    ps[i] = zone_pieces(zones[i], i, party, False)
+                    ps[i] = unglaze(zone_pieces(zones[i], i, party, False), i, model.unglazed)
             wo, _, _, wdg = _written_zones(gb, zs, [zones_of[j] for j in g], ps, options, openings)
             wl = [w for k in range(len(g)) for w in wo[k]]
             kept_whole = {j: wdg[k] for k, j in enumerate(g)}
@@ -144,7 +144,8 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: IdfOptions
         text, stats, warns = render_idf([w[0] for w in wl], [w[1] for w in wl], offset - origin, offset,
                                         options, [b.id for b in gb], shading, g_site, ground, crs,
                                         zone_info=[w[2] for w in wl],
-                                        openings=[openings.get(w[3], ()) for w in wl])
+                                        openings=[openings.get(w[3], ()) for w in wl],
+                                        source_ids=[zones[w[3]].object_id for w in wl])
         stats.update(g_stats)
         stats["building_info"] = {blist[j].id: bstats[j] for j in g}
         if len(g) == 1:

@@ -14,7 +14,9 @@ One Feature per exported building, for the GIS where a UBEM study reads its resu
   storeys and use the energy model takes (:func:`lod2energy.thermal.storeys.storeys`,
   :func:`lod2energy.thermal.use.building_use`, with their sources), typology and period, the
   energy model's downgrades (``downgrades``: ``kind:zone`` items, and the height, volume and
-  floor-area change they made, :mod:`lod2energy.energy.downgrades`); with ``--run`` also the annual ideal-loads heating and cooling need (kWh, kWh/m2a of conditioned
+  floor-area change they made, :mod:`lod2energy.energy.downgrades`); the envelope's areas by
+  thermal boundary and UA (``figures_source`` "idf": those of the written IDF,
+  :mod:`lod2energy.energy.figures`; else the geometry's estimate); with ``--run`` also the annual ideal-loads heating and cooling need (kWh, kWh/m2a of conditioned
   floor area) and peak loads (W) from the building's IDF record.
 
 The file is written through :mod:`lod2energy.safe_write` and self-checked by re-reading it
@@ -35,6 +37,7 @@ from shapely.geometry import MultiPolygon, Polygon, shape
 from shapely.validation import explain_validity
 
 from lod2energy.energy.downgrades import summed
+from lod2energy.energy.figures import AREA_KEYS
 from lod2energy.exporters.registry import register_writer
 from lod2energy.exporters.result import ExportResult
 from lod2energy.io.json_stream import Scanner
@@ -197,6 +200,10 @@ def properties(b: Building, record=None, use: str | None = None, lod: str | None
              "storeys": n_st, "storeys_source": st_src, "use": u.type, "use_source": u.source,
              "typology": thermal.get("typology") or None,
              "construction_period": thermal.get("construction_period") or None}
+    th = dict(record.thermal.detail) if record is not None and record.thermal.detail else thermal
+    areas = th.get("areas") or {}
+    props.update(UA_W_per_K=th.get("UA"), A_env_m2=th.get("A_env"),
+                 **{f"{k}_m2": areas.get(k) for k in AREA_KEYS}, figures_source=th.get("figures_source"))
     down = tuple(record.downgrades) if record is not None else ()
     dh, dv, da = summed(down)
     props.update(downgrades=" ".join(f"{d.kind}:{d.zone}" for d in down) or None,

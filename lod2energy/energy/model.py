@@ -41,6 +41,7 @@ from lod2energy.energy.parts import merge_floorless_parts
 from lod2energy.validate.closed import check_closed_outward
 from lod2energy.energy.zones.shells import COLLINEAR_TOL, local_origin, zone_shells, ZoneShell
 from lod2energy.model import BUILDING_TYPES, Building, frozen_mapping
+from lod2energy.thermal.facts import is_conditioned
 from lod2energy.energy.fallback import FALLBACKS
 
 def _fallback_name(make) -> str:
@@ -104,6 +105,10 @@ class EnergyModel:
         with what they cost (:mod:`lod2energy.energy.downgrades`).
     key : tuple
         The buildings' ids and the options the model was made for (:func:`model_of`).
+    unglazed : frozenset of (int, int)
+        ``(zone index, face index)`` of the walls a conditioned zone shares with an
+        unconditioned building's zone (or the other way round): not adiabatic, written as
+        outdoor walls without windows (:func:`unglaze`).
     """
 
     buildings: tuple[Building, ...]
@@ -118,6 +123,7 @@ class EnergyModel:
     simpler: Mapping[int, str]
     downgrades: Mapping[int, tuple[dg.Downgrade, ...]]
     key: tuple
+    unglazed: frozenset = frozenset()
 
     def record(self, bi: int) -> dict:
         """What the stage did to building ``bi``, for its provenance (plain values)."""
@@ -221,12 +227,15 @@ def prepare_energy_model(buildings: Iterable[Building], options, context: Iterab
     # party faces between two neighbours
     n_own_zones = sum(len(zones_of[bi]) for bi in range(len(own)))
     party = find_party_faces(zones, first=None if shading else n_own_zones) if options.party_walls else {}
+    building_of = {zi: bi for bi, zl in zones_of.items() for zi in zl}
+    party, unglazed, shared = heat_party(party, [is_conditioned(b) for b in blist], building_of, zones)
+    for bi, text in shared.items():
+        notes[bi].append(text)
     made = range(len(zones) if shading else n_own_zones)
-    pieces = [zone_pieces(z, zi, party, options.party_split) if zi in made else []
+    pieces = [unglaze(zone_pieces(z, zi, party, options.party_split), zi, unglazed) if zi in made else []
               for zi, z in enumerate(zones)]
     simpler: dict[int, str] = {}
     downgrades: dict[int, list[dg.Downgrade]] = {}
-    building_of = {zi: bi for bi, zl in zones_of.items() for zi in zl}
     for zi in made:
         found = enclosable(zones[zi], zi, pieces[zi])
         if found is not None:
@@ -241,7 +250,58 @@ def prepare_energy_model(buildings: Iterable[Building], options, context: Iterab
             openings[zi] = ()  # a fallback envelope: the WWR rule
     return EnergyModel(tuple(blist), len(own), origin, tuple(zones), zones_of, openings, party, tuple(pieces),
                        {bi: tuple(n) for bi, n in notes.items()}, simpler,
-                       {bi: tuple(d) for bi, d in downgrades.items()}, key)
+                       {bi: tuple(d) for bi, d in downgrades.items()}, key, unglazed)
+
+
+def heat_party(party: Mapping, conditioned: Sequence[bool], building_of: Mapping[int, int],
+               zones: Sequence[ZoneShell]) -> tuple[dict, frozenset, dict[int, str]]:
+    """Party faces without those between a conditioned and an unconditioned building.
+
+    Such a wall is not adiabatic: heat flows through it to the unheated neighbour, so it is
+    written as an outdoor wall without windows.
+
+    Parameters
+    ----------
+    party : mapping
+        :func:`~lod2energy.energy.surfaces.find_party_faces`.
+    conditioned : sequence of bool
+        Per building index.
+    building_of : mapping of int to int
+        Zone index -> building index.
+
+    Returns
+    -------
+    party : dict
+        The faces kept adiabatic.
+    unglazed : frozenset of (int, int)
+        ``(zone, face)`` that lost a shared part.
+    notes : dict of int to str
+        Building index -> what was done, with the area (m2).
+    """
+    kept, unglazed, area = {}, set(), {}
+    for (zi, fi), entries in party.items():
+        mine = conditioned[building_of[zi]]
+        same = [(o, poly) for o, poly in entries if conditioned[building_of[o]] == mine]
+        if len(same) < len(entries):
+            unglazed.add((zi, fi))
+            bi = building_of[zi]
+            area[bi] = area.get(bi, 0.0) + sum(float(getattr(poly, "area", 0.0)) for o, poly in entries
+                                               if conditioned[building_of[o]] != mine)
+        if same:
+            kept[(zi, fi)] = same
+    notes = {bi: (f"{a:.1f} m2 of party wall shared with "
+                  f"{'an unconditioned' if conditioned[bi] else 'a conditioned'} building: "
+                  "written as outdoor wall without windows, not adiabatic") for bi, a in area.items()}
+    return kept, frozenset(unglazed), notes
+
+
+def unglaze(pieces: list[Piece], zi: int, unglazed: frozenset) -> list[Piece]:
+    """``pieces`` of zone ``zi`` with the outdoor wall pieces of the faces ``unglazed`` marked
+    to get no windows."""
+    if not unglazed:
+        return pieces
+    return [replace(p, glazed=False) if (zi, p.face_index) in unglazed and p.kind == "wall" else p
+            for p in pieces]
 
 
 def with_energy_model(buildings: Iterable[Building], options, context: Iterable[Building] = ()) -> list[Building]:

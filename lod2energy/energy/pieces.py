@@ -34,6 +34,9 @@ class Piece:
     link : str, optional
         Interzone pieces (``boundary == "Surface"``): ``"<key>:c"`` for a ceiling, ``"<key>:f"``
         for the floor on its other side (the same key).
+    glazed : bool
+        False for an outdoor wall that gets no windows (a wall shared with an unconditioned
+        building, written as an outdoor wall).
     """
 
     points: np.ndarray
@@ -42,6 +45,7 @@ class Piece:
     u_value: float
     face_index: int
     link: str | None = None
+    glazed: bool = True
 
 
 def _face_frame(zone: ZoneShell, face: ZoneFace):

@@ -183,8 +183,17 @@ def _heights(v: Any) -> tuple[float, ...] | None:
     return h if h and all(np.isfinite(x) and 0.5 < x < 30 for x in h) else None
 
 
-def conditioned_fact(b: Building, amap: AttributeMap | None = None) -> Fact:
-    """Whether ``b`` is heated / cooled: its row, its attributes, else True (``default``)."""
+#: Gross floor area (m2) under which a building is taken as an unheated annex (a shed, a
+#: garage, a carport) when neither its row nor its attributes say whether it is conditioned:
+#: below the 50 m2 under which the EU EPBD (Art. 4) lets member states exempt stand-alone
+#: buildings, and smaller than any dwelling.
+ANNEX_FLOOR_AREA = 20.0
+
+
+def conditioned_fact(b: Building, amap: AttributeMap | None = None, floor_area: float | None = None) -> Fact:
+    """Whether ``b`` is heated / cooled: its row, its attributes (a use that is never heated:
+    parking, sheds, barns, transformer and pump stations ...), its gross floor area
+    ``floor_area`` (m2) under :data:`ANNEX_FLOOR_AREA` (``geometry``), else True (``default``)."""
     row = table_row(b)
     if row.get("conditioned") is not None:
         return Fact(bool(row["conditioned"]), "table", "conditioned")
@@ -192,7 +201,16 @@ def conditioned_fact(b: Building, amap: AttributeMap | None = None) -> Fact:
     f = amap.read(b, "conditioned", boolean)
     if f is not None:
         return Fact(f.value, amap.source(f.key), f.key, f.raw if f.raw != f.value else None)
+    if floor_area is not None and 0 < floor_area < ANNEX_FLOOR_AREA:
+        return Fact(False, "geometry", "floor_area", round(float(floor_area), 2))
     return Fact(True, "default")
+
+
+def is_conditioned(b: Building) -> bool:
+    """The ``conditioned`` fact the thermal stage recorded for ``b`` (True without one)."""
+    facts = (b.provenance.get("thermal") or {}).get("facts") or {}
+    v = (facts.get("conditioned") or {}).get("value")
+    return v is not False
 
 
 def roof_type_fact(b: Building, amap: AttributeMap | None = None) -> Fact:

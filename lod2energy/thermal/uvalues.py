@@ -406,7 +406,8 @@ def assign_u_values(b: Building, options: ThermalOptions = ThermalOptions()) -> 
         "attribute_map": amap.name,
         "facts": facts_json({
             "year": year, "storeys": Fact(st.count, st.source, st.key, st.heights), "use": use.fact(),
-            "conditioned": conditioned_fact(b, amap), "roof_type": roof_type_fact(b, amap),
+            "conditioned": conditioned_fact(b, amap, ground_area * max(st.count or 1, 1) if ground_area else None),
+            "roof_type": roof_type_fact(b, amap),
             **{f"u_{e}": u_src[e] for e in ELEMENTS}, "wwr": Fact(wwr, wwr_src)}),
     }
     if warnings:

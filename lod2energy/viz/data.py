@@ -148,12 +148,15 @@ def report_kind(report: dict) -> str:
 
 
 def heating_per_m2(b: dict) -> float | None:
-    """Annual heating need of an export row per m2 of floor (footprint x storeys), kWh/m2."""
+    """Annual heating need of an export row per m2 of floor (footprint x storeys), kWh/m2; None
+    for an unconditioned building."""
     idf = (b.get("exports") or {}).get("idf") or {}
     h = _num(idf.get("heating_kwh", b.get("heating_kwh")))
     if h is None:
         return None
     th = b.get("thermal") or {}
+    if ((th.get("facts") or {}).get("conditioned") or {}).get("value") is False:
+        return None  # unconditioned: out of the per-m2 figures
     fp = _num(th.get("footprint")) or _num((th.get("areas") or {}).get("ground"))
     floors = _num(th.get("storeys")) or 1.0
     return h / (fp * floors) if fp else None

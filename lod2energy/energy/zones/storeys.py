@@ -19,6 +19,7 @@ from lod2energy.energy.zones.shells import ZoneShell
 from lod2energy.geometry.polygons import newell_normal, unit
 from lod2energy.validate.closed import check_closed_outward
 from lod2energy.thermal.storeys import ATTIC_MIN_HEIGHT, MIN_STOREY_HEIGHT, storeys, storeys_above_eave
+from lod2energy.thermal.facts import is_conditioned
 from lod2energy.thermal.use import building_use
 
 
@@ -205,6 +206,7 @@ def _written_zones(blist, zones, zones_of, pieces, options, openings):
     for bi, b in enumerate(blist):
         use = building_use(b, options.use)
         st = storeys(b, use.type, options.lod)
+        heated = is_conditioned(b)  # an unconditioned building: every zone without HVAC
         notes[bi] = []
         downgrades[bi] = []
         out = []
@@ -222,10 +224,10 @@ def _written_zones(blist, zones, zones_of, pieces, options, openings):
                 downgrades[bi].append(dg.whole_zone(zones[zi], st.storey_height, upper, note))
             for k, (z, zp, attic) in enumerate(sz):
                 info = ZoneInfo(b.id, (k + 1 if not attic else None) if len(sz) > 1 else None, attic,
-                                not attic or options.attic == "conditioned", use.type, upper)
+                                (not attic or options.attic == "conditioned") and heated, use.type, upper)
                 out.append((z, zp, info, zi))  # zi: the source zone (its real openings)
         written_of[bi] = out
         bstats[bi] = {"use": use.type, "use_source": use.source, "storeys": st.count,
                       "storeys_source": st.source, "storey_height_m": round(st.storey_height, 3),
-                      "attic": st.attic}
+                      "attic": st.attic, "conditioned": heated}
     return written_of, notes, bstats, downgrades
