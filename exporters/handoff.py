@@ -27,9 +27,10 @@ from lod2energy.energy.pieces import Piece
 from lod2energy.energy.zones.cut import section_area
 from lod2energy.energy.zones.shells import classify
 from lod2energy.energy.zones.storeys import upper_floor_area
-from lod2energy.exporters.geojson.writer import footprint
+from lod2energy.exporters.geojson.writer import footprint, footprint_geometry
 from lod2energy.geometry import newell_normal
 from lod2energy.model import Building
+from lod2energy.site import SiteError
 from lod2energy.thermal.storeys import storeys
 from lod2energy.thermal.use import building_use
 
@@ -160,3 +161,19 @@ def facts(b: Building, use: str | None = None, lod: str | None = None,
                         float(sum(p.exterior.length for p in getattr(fp, "geoms", [fp]))),
                         float(vol) if vol else None, floor, int(year) if year is not None else None,
                         year_fact.get("source") if year is not None else None)
+
+
+#: Why a building without a footprint is left out of a hand-off.
+NO_FOOTPRINT = "no face with a projected area"
+
+
+def placed(b: Building, crs: Any = None, frame=None, lod: str | None = None, use: str | None = None,
+           attic_mode: str = "unconditioned") -> tuple[dict | None, HandoffFacts | None, str | None]:
+    """``(footprint geometry in WGS84, facts, None)`` of ``b``, or ``(None, None, why)`` when it
+    cannot be placed on the Earth or has no footprint (:func:`footprint_geometry`, :func:`facts`)."""
+    try:
+        geom = footprint_geometry(b, crs, frame, lod)
+    except SiteError as e:
+        return None, None, str(e)
+    h = facts(b, use, lod, attic_mode) if geom is not None else None
+    return (geom, h, None) if h is not None else (None, None, NO_FOOTPRINT)

@@ -42,14 +42,12 @@ import shapely
 from pyproj import CRS, Transformer
 from shapely.geometry import shape
 
-from lod2energy.exporters.geojson.writer import footprint_geometry
-from lod2energy.exporters.handoff import facts
+from lod2energy.exporters.handoff import placed
 from lod2energy.exporters.paths import safe_stem
 from lod2energy.exporters.registry import register_writer
 from lod2energy.exporters.result import ExportResult
 from lod2energy.model import Building
 from lod2energy.safe_write import check_target
-from lod2energy.site import SiteError
 from lod2energy.thermal.typology import DEFAULT_YEAR
 
 #: Where CEA reads the zone table, under the scenario folder.
@@ -124,14 +122,9 @@ def write(buildings: Iterable[Building], path: str | os.PathLike, *, crs: Any = 
         if len(str(b.id).encode("utf-8")) > MAX_TEXT:
             left_out[str(b.id)] = f"CEA: the id is longer than a shapefile field holds ({MAX_TEXT} bytes)"
             continue
-        try:
-            geom = footprint_geometry(b, crs, frame, lod)
-        except SiteError as e:
-            left_out[str(b.id)] = str(e)
-            continue
-        h = facts(b, use, lod, attic) if geom is not None else None
-        if h is None:
-            left_out[str(b.id)] = "no face with a projected area"
+        geom, h, why = placed(b, crs, frame, lod, use, attic)
+        if why:
+            left_out[str(b.id)] = why
             continue
         height = h.prism_height
         if height < max(MIN_HEIGHT, float(h.storeys)):

@@ -40,15 +40,14 @@ import json
 import math
 import os
 from pathlib import Path
-from typing import Any, Iterable, Sequence
+from typing import Any, Iterable
 
-from lod2energy.exporters.geojson.writer import _features, _feature_problems, footprint_geometry
-from lod2energy.exporters.handoff import facts
+from lod2energy.exporters.geojson.writer import _features, _feature_problems
+from lod2energy.exporters.handoff import placed
 from lod2energy.exporters.registry import register_writer
 from lod2energy.exporters.result import ExportResult
 from lod2energy.model import Building
 from lod2energy.safe_write import write_checked
-from lod2energy.site import SiteError
 
 SUFFIX = ".urbanopt.geojson"
 #: Our use type -> URBANopt ``building_type`` (see the module docstring).
@@ -117,14 +116,9 @@ def write(buildings: Iterable[Building], path: str | os.PathLike, *, crs: Any = 
             if not b.is_building:
                 continue
             seen.append(str(b.id))
-            try:
-                geom = footprint_geometry(b, crs, frame, lod)
-            except SiteError as e:
-                left_out[str(b.id)] = str(e)
-                continue
-            h = facts(b, use, lod, attic) if geom is not None else None
-            if h is None:
-                left_out[str(b.id)] = "no face with a projected area"
+            geom, h, why = placed(b, crs, frame, lod, use, attic)
+            if why:
+                left_out[str(b.id)] = why
                 continue
             f.write(("," if ids else "") + _dumps({"type": "Feature", "id": h.id, "properties": properties(h),
                                                   "geometry": geom}))
