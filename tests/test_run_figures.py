@@ -78,4 +78,4 @@ def test_cli_run_puts_zone_figures_in_report_and_geojson(tmp_path):
     row = next(csv.DictReader((out / "report.csv").open()))
     assert float(row["heating_kwh_m2"]) == pytest.approx(b["heating_kwh_m2"])
     props = json.loads(next(out.glob("*.footprints.geojson")).read_text())["features"][0]["properties"]
-    assert props["heating_kwh_m2"] == pytest.approx(b["heating_kwh_m2"]) and props["heating_peak_w"] > 0
+    assert props["heating_kwh_m2"] == pytest.approx(b["heating_kwh_m2"], abs=0.05) and props["heating_peak_w"] > 0
