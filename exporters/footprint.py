@@ -82,15 +82,16 @@ def _oriented(ring: list, ccw: bool) -> list:
     return ring if (_signed_area(ring) > 0) == ccw else ring[::-1]
 
 
-def footprint_geometry(b: Building, crs: Any = None, frame=None, lod: str | None = None) -> dict | None:
-    """The GeoJSON geometry (WGS84, ``[lon, lat]``, RFC 7946 winding) of ``b``'s footprint.
+def footprint_geometry(b: Building, crs: Any = None, frame=None, lod: str | None = None, fp=None) -> dict | None:
+    """The GeoJSON geometry (WGS84, ``[lon, lat]``, RFC 7946 winding) of ``b``'s footprint
+    (``fp``: :func:`footprint` of ``b`` when the caller has it).
 
     Raises
     ------
     lod2energy.site.SiteError
         The coordinates cannot be placed on the Earth (no CRS, unknown CRS).
     """
-    fp = footprint(b, lod)
+    fp = footprint(b, lod) if fp is None else fp
     if fp is None:
         return None
     v = np.asarray(b.vertices, dtype=np.float64)

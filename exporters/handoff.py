@@ -127,7 +127,7 @@ def floor_area(parts: list[list[Piece]], storey_height: float, attic_mode: str =
 
 
 def facts(b: Building, use: str | None = None, lod: str | None = None,
-          attic_mode: str = "unconditioned") -> HandoffFacts | None:
+          attic_mode: str = "unconditioned", fp=None) -> HandoffFacts | None:
     """The :class:`HandoffFacts` of a prepared building; None when it has no footprint.
 
     Parameters
@@ -139,8 +139,10 @@ def facts(b: Building, use: str | None = None, lod: str | None = None,
     lod : str, optional
     attic_mode : {"unconditioned", "conditioned"}
         ``--attic``: whether the attic floor counts in the floor area.
+    fp : shapely Polygon or MultiPolygon, optional
+        :func:`~lod2energy.exporters.footprint.footprint` of ``b`` when the caller has it.
     """
-    fp = footprint(b, lod)
+    fp = footprint(b, lod) if fp is None else fp
     if fp is None:
         return None
     u = building_use(b, use)

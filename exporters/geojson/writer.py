@@ -77,7 +77,7 @@ from shapely.validation import explain_validity
 from lod2energy.energy.downgrades import summed
 from lod2energy.energy.figures import AREA_KEYS
 from lod2energy.exporters import handoff
-from lod2energy.exporters.footprint import _signed_area, footprint, footprint_geometry  # noqa: F401
+from lod2energy.exporters.footprint import _signed_area, footprint, footprint_geometry
 from lod2energy.exporters.registry import register_writer
 from lod2energy.exporters.result import ExportResult
 from lod2energy.io.json_stream import Scanner
@@ -136,7 +136,7 @@ def _source(facts: Mapping, key: str) -> str | None:
 
 
 def properties(b: Building, record=None, use: str | None = None, lod: str | None = None,
-               attic: str = "unconditioned") -> dict:
+               attic: str = "unconditioned", fp=None) -> dict:
     """The Feature properties of ``b``: every field of :data:`FIELDS`, typed (see the module docstring).
 
     Parameters
@@ -152,11 +152,13 @@ def properties(b: Building, record=None, use: str | None = None, lod: str | None
     lod : str, optional
     attic : {"unconditioned", "conditioned"}
         ``--attic``: whether the attic floor counts in the floor area.
+    fp : shapely Polygon or MultiPolygon, optional
+        Its :func:`footprint`, when the caller has it.
     """
     energy = dict(b.provenance.get("energy") or {})
     thermal = dict(b.provenance.get("thermal") or {})
     try:
-        h = handoff.facts(b, use, lod, attic)
+        h = handoff.facts(b, use, lod, attic, fp)
     except Exception:  # noqa: BLE001 - no storey figure is not a reason to drop the footprint
         h = None
     u = building_use(b, use) if h is None else None
@@ -221,8 +223,9 @@ def features(buildings: Iterable[Building], records: Sequence | None = None, *, 
         if not b.is_building:
             continue
         bid = str(b.id)
+        fp = footprint(b, lod)
         try:
-            geom = footprint_geometry(b, crs, frame, lod)
+            geom = footprint_geometry(b, crs, frame, lod, fp)
         except SiteError as e:
             yield bid, None, str(e)
             continue
@@ -230,7 +233,7 @@ def features(buildings: Iterable[Building], records: Sequence | None = None, *, 
             yield bid, None, handoff.NO_FOOTPRINT
             continue
         rec = records[by_id[bid]] if bid in by_id else None
-        yield bid, multi(geom), properties(b, rec, use, lod, attic)
+        yield bid, multi(geom), properties(b, rec, use, lod, attic, fp)
 
 
 # ----------------------------------------------------------------------------- file
