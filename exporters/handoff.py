@@ -5,7 +5,7 @@ the energy model uses rather than from an extrusion of the footprint:
 
 - **storeys** and the storey height: :func:`lod2energy.thermal.storeys.storeys` (the
   ``--buildings`` row, the attributes, else the LoD2 geometry), the same count the IDF zones;
-- **footprint**: :func:`lod2energy.exporters.geojson.writer.footprint` (the union of the
+- **footprint**: :func:`lod2energy.exporters.footprint.footprint` (the union of the
   envelope's projections), its area and perimeter;
 - **height**: ridge minus ground of the envelope (:class:`lod2energy.thermal.storeys.RoofLevels`);
 - **volume**: the thermal stage's (``provenance["thermal"]["volume"]``);
@@ -27,7 +27,7 @@ from lod2energy.energy.pieces import Piece
 from lod2energy.energy.zones.cut import section_area
 from lod2energy.energy.zones.shells import classify
 from lod2energy.energy.zones.storeys import upper_floor_area
-from lod2energy.exporters.geojson.writer import footprint, footprint_geometry
+from lod2energy.exporters.footprint import footprint, footprint_geometry
 from lod2energy.geometry import newell_normal
 from lod2energy.model import Building
 from lod2energy.site import SiteError
@@ -127,7 +127,7 @@ def floor_area(parts: list[list[Piece]], storey_height: float, attic_mode: str =
 
 
 def facts(b: Building, use: str | None = None, lod: str | None = None,
-          attic_mode: str = "unconditioned") -> HandoffFacts | None:
+          attic_mode: str = "unconditioned", fp=None) -> HandoffFacts | None:
     """The :class:`HandoffFacts` of a prepared building; None when it has no footprint.
 
     Parameters
@@ -139,8 +139,10 @@ def facts(b: Building, use: str | None = None, lod: str | None = None,
     lod : str, optional
     attic_mode : {"unconditioned", "conditioned"}
         ``--attic``: whether the attic floor counts in the floor area.
+    fp : shapely Polygon or MultiPolygon, optional
+        :func:`~lod2energy.exporters.footprint.footprint` of ``b`` when the caller has it.
     """
-    fp = footprint(b, lod)
+    fp = footprint(b, lod) if fp is None else fp
     if fp is None:
         return None
     u = building_use(b, use)

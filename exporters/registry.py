@@ -1,7 +1,7 @@
 """Writer registry: every export format the pipeline can write, found by its name.
 
 As the reader registry of :mod:`lod2energy.io` maps suffixes to readers, this maps a format
-name ("idf", "stl", "cityjson", "cfd", "geojson", "urbanopt", "cea", "hbjson") to its
+name ("idf", "stl", "cityjson", "cfd", "geojson", "gpkg", "urbanopt", "cea", "hbjson") to its
 writer. Each format is a package of
 :mod:`lod2energy.exporters` whose ``writer`` module registers its writer when it is imported
 (meshio's way); :func:`writers` imports the modules of :data:`FORMATS`.
@@ -14,7 +14,7 @@ in one uniform adapter returning the ``(building ids, ExportRecord)`` pairs of t
 - ``"building"``: one building at a time, nothing else needed (STL in building mode);
 - ``"context"``: one building at a time with its neighbours (IDF in building mode: party walls
   and ``--shading``);
-- ``"dataset"``: one file for all buildings (IDF / STL in dataset mode, CityJSON, GeoJSON, CFD).
+- ``"dataset"``: one file for all buildings (IDF / STL in dataset mode, CityJSON, GeoJSON, GPKG, CFD).
 """
 from __future__ import annotations
 
@@ -30,10 +30,10 @@ from lod2energy.records import LEFT_OUT, ExportRecord, FileRecord
 
 #: The modules that register a writer when imported.
 FORMATS = tuple(f"lod2energy.exporters.{m}.writer" for m in ("energyplus", "stl", "cityjson", "cfd", "geojson",
-                                                                         "urbanopt", "cea", "hbjson"))
+                                                                         "gpkg", "urbanopt", "cea", "hbjson"))
 #: The order the writers run in: the CityJSON and the footprints carry the results of the IDF's
 #: EnergyPlus runs.
-_ORDER = ("idf", "stl", "cityjson", "cfd", "geojson", "urbanopt", "cea", "hbjson")
+_ORDER = ("idf", "stl", "cityjson", "cfd", "geojson", "gpkg", "urbanopt", "cea", "hbjson")
 
 
 @dataclass(frozen=True)

@@ -177,7 +177,7 @@ def repair(data, output: str, **options) -> dict:
 
 def export(data, outdir: str, **options) -> ExportOutcome:
     """Export ``data`` into ``outdir`` as ``lod2energy export`` does (choose formats with
-    ``idf=True``, ``stl=True``, ``cityjson=True``, ``geojson=True``, ``cfd=True``).
+    ``idf=True``, ``stl=True``, ``cityjson=True``, ``geojson=True``, ``gpkg=True``, ``cfd=True``).
 
     A document held in memory is written to ``outdir/.lod2energy/input/<name>.city.json[l]``
     first, as the CLI does with standard input.

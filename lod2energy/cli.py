@@ -76,7 +76,7 @@ def _add_verbosity(p: argparse.ArgumentParser) -> None:
 def _add_crs(p: argparse.ArgumentParser) -> None:
     p.add_argument("--crs", default=None, metavar="CRS",
                    help="CRS of the input's coordinates (any form pyproj reads: EPSG:28992, a URN, WKT), "
-                        "replacing the file's; needed by --idf, --run, --geojson, --urbanopt and --cea when the file names none")
+                        "replacing the file's; needed by --idf, --run, --geojson, --gpkg, --urbanopt and --cea when the file names none")
 
 
 def _tolerances(a) -> Tolerances:
@@ -191,8 +191,12 @@ def add_export_parser(sub) -> argparse.ArgumentParser:
     e.add_argument("--stl", action="store_true", help="CFD-ready STL (one solid per semantic class)")
     e.add_argument("--cityjson", action="store_true", help="CityJSON with Energy-ADE-style attributes")
     e.add_argument("--geojson", action="store_true",
-                   help="GeoJSON of the building footprints in WGS84 with repair, compliance, storeys, use "
-                   "and (with --run) the heating/cooling figures")
+                   help="GeoJSON of the building footprints in WGS84, one typed layer: use, conditioned, year, "
+                   "storeys, height, floor area, UA, U-values, WWR, weather station, status, repair and (with --run) "
+                   "the heating/cooling need")
+    e.add_argument("--gpkg", action="store_true",
+                   help="the --geojson layer as a GeoPackage (<stem>.footprints.gpkg): one MultiPolygon row per "
+                   "building, fields of declared types")
     e.add_argument("--urbanopt", action="store_true",
                    help="URBANopt FeatureFile (GeoJSON): one Building per building with its storeys, floor area, "
                    "roof height and year, in URBANopt's schema and units (ft, ft2)")

@@ -18,12 +18,12 @@ from lod2energy.spool import Job, Spooled, load_spooled
 
 #: The one-file writers that take the buildings one at a time (a :class:`~lod2energy.spool.Spooled`
 #: sequence); the others get a list.
-STREAMED = ("cityjson", "geojson", "urbanopt", "cea")
+STREAMED = ("cityjson", "geojson", "gpkg", "urbanopt", "cea")
 #: The one-file writers that carry a building whatever its compliance (the city model, the GIS
 #: layer, each with the building's compliance status): a building in their file that is not
 #: energy-compliant is not *accepted* as an energy model, so that every writer accepts exactly
 #: the buildings called compliant (issue 19); its record says it is in the file, and why not.
-CARRIERS = ("cityjson", "geojson")
+CARRIERS = ("cityjson", "geojson", "gpkg")
 
 
 def accepted_only_if_compliant(er: ExportRecord, rec) -> ExportRecord:
@@ -66,7 +66,7 @@ class DatasetResult:
 #: The one-file writers that may run beside the neighbour pass (:class:`lod2energy.beside.Beside`):
 #: they read nothing the neighbour pass writes, unless the IDFs are simulated (``--run``: the
 #: CityJSON and GeoJSON carry the run's figures).
-BESIDE = ("cityjson", "geojson")
+BESIDE = ("cityjson", "geojson", "gpkg")
 
 
 def beside_ok(options: ExportOptions) -> bool:

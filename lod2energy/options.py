@@ -18,10 +18,10 @@ from lod2energy.thermal import ThermalOptions, country_from_crs
 from lod2energy.thermal.attributes import load_attribute_map
 
 #: Writers in the order they run and appear in the options.
-FORMATS = ("cityjson", "idf", "stl", "cfd", "geojson", "urbanopt", "cea", "hbjson")
+FORMATS = ("cityjson", "idf", "stl", "cfd", "geojson", "gpkg", "urbanopt", "cea", "hbjson")
 #: Writers that need the buildings' real positions (a site, latitude / longitude): refused for
 #: a file with no CRS pyproj reads unless ``--crs`` gives one; the others take metres.
-NEEDS_POSITIONS = ("idf", "geojson", "urbanopt", "cea")
+NEEDS_POSITIONS = ("idf", "geojson", "gpkg", "urbanopt", "cea")
 
 
 @dataclass(frozen=True)
@@ -118,7 +118,7 @@ class ExportOptions:
         # the footprints and the hand-offs (URBANopt, CEA, honeybee) carry the energy model's figures:
         # they take its options
         return {"idf": self.idf, "stl": self.stl, "cityjson": self.cityjson, "cfd": self.cfd,
-                "geojson": self.idf, "urbanopt": self.idf, "cea": self.idf, "hbjson": self.idf}[name]
+                "geojson": self.idf, "gpkg": self.idf, "urbanopt": self.idf, "cea": self.idf, "hbjson": self.idf}[name]
 
     @property
     def job_timeout(self) -> float | None:

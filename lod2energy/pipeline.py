@@ -171,6 +171,7 @@ _JOB_MODULES = ("lod2energy.repair.pipeline", "lod2energy.repair.accept", "lod2e
 _WRITER_MODULES = {"idf": ("lod2energy.exporters.energyplus.writer", "lod2energy.exporters.energyplus.check"),
                    "stl": ("lod2energy.exporters.stl", "lod2energy.repair.parts"),
                    "cityjson": ("lod2energy.exporters.cityjson",), "geojson": ("lod2energy.exporters.geojson",),
+                   "gpkg": ("lod2energy.exporters.gpkg",),
                    "urbanopt": ("lod2energy.exporters.urbanopt",), "cea": ("lod2energy.exporters.cea",),
                    "hbjson": ("lod2energy.exporters.hbjson",)}
 

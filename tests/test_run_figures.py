@@ -78,4 +78,8 @@ def test_cli_run_puts_zone_figures_in_report_and_geojson(tmp_path):
     row = next(csv.DictReader((out / "report.csv").open()))
     assert float(row["heating_kwh_m2"]) == pytest.approx(b["heating_kwh_m2"])
     props = json.loads(next(out.glob("*.footprints.geojson")).read_text())["features"][0]["properties"]
-    assert props["heating_kwh_m2"] == pytest.approx(b["heating_kwh_m2"]) and props["heating_peak_w"] > 0
+    assert props["heating_kwh_m2"] == pytest.approx(b["heating_kwh_m2"], abs=0.05) and props["heating_peak_w"] > 0
+    w = b["exports"]["idf"]["weather"]
+    assert (props["weather_file"], props["weather_station"]) == (w["file"], w["station"])
+    assert props["weather_distance_km"] == pytest.approx(w["distance_km"], abs=0.05)
+    assert props["heating_kwh"] == round(props["heating_kwh"]) and isinstance(props["heating_kwh"], float)
