@@ -121,10 +121,14 @@ def point_triangle_distance(P: np.ndarray, V: np.ndarray, tris: np.ndarray, chun
 
 #: Up to this many point-triangle pairs every pair is measured (no index: faster when small).
 _ALL_PAIRS_MAX = 20000
-#: Triangles thinner than this (x the extent of points and triangles) are measured against every point.
-_SLIVER = 1e-5
-#: Margin of the pruning bound (x the extent): far above the rounding of :func:`_sqdist`.
-_SLACK = 1e-6
+#: A triangle is a sliver, measured against every point, when ``|ab x ac|^2 / (|ab| |ac|)`` is below
+#: _WIDE x extent^2 (the interior case's denominator ``|ab x ac|^2`` then has a rounding error
+#: above ~1e-4 of itself) or ``|ab x ac|^2 / (|ab| |ac| (|ab| + |ac|))`` below _THIN x extent (its
+#: nearest point then moves by more than ~50 eps extent^2 / that, ~5e-5 x extent).
+_WIDE = 1e-12
+_THIN = 1e-10
+#: Margin of the pruning bound (x the extent): above that rounding for every triangle not a sliver.
+_SLACK = 1e-3
 #: Pairs measured at once (bounded memory: about 40 temporaries of (n, 3) floats).
 _PAIR_CHUNK = 65536
 
@@ -169,10 +173,11 @@ def _indexed_sqdist(P, A, B, C) -> np.ndarray | None:
     slack = _SLACK * ext
     ab, ac = B - A, C - A
     lab, lac = np.linalg.norm(ab, axis=1), np.linalg.norm(ac, axis=1)
-    with np.errstate(divide="ignore", invalid="ignore"):
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         # the interior case divides by |ab x ac|^2: its rounding moves the point by ~eps ext^2 / thin
-        thin = np.einsum("ij,ij->i", *(2 * [np.cross(ab, ac)])) / (lab * lac * (lab + lac))
-    safe = np.flatnonzero(thin >= _SLIVER * ext)
+        wide = np.einsum("ij,ij->i", *(2 * [np.cross(ab, ac)])) / (lab * lac)
+        thin = wide / (lab + lac)
+    safe = np.flatnonzero((wide >= _WIDE * ext * ext) & (thin >= _THIN * ext))
     unsafe = np.setdiff1d(np.arange(len(A)), safe)
     if len(safe) == 0:
         return None
