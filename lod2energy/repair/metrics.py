@@ -97,7 +97,8 @@ def point_triangle_distance(P: np.ndarray, V: np.ndarray, tris: np.ndarray, chun
     A k-d tree on the triangles' bounding spheres keeps, for each point, the triangles that can
     be nearest; :func:`_sqdist` measures those pairs, so the result is the one of measuring every
     pair, bit for bit. Degenerate and sliver triangles (where rounding may move the computed
-    nearest point off the triangle) are measured against every point.
+    nearest point off the triangle) are measured against every point, and so is every pair of
+    a small, non-finite or not float64 input.
 
     Parameters
     ----------
@@ -112,8 +113,8 @@ def point_triangle_distance(P: np.ndarray, V: np.ndarray, tris: np.ndarray, chun
     (p,) float
     """
     A, B, C = V[tris[:, 0]], V[tris[:, 1]], V[tris[:, 2]]
-    if len(P) * len(tris) > _ALL_PAIRS_MAX:
-        d2 = _indexed_sqdist(np.asarray(P, dtype=float), A, B, C)
+    if len(P) * len(tris) > _ALL_PAIRS_MAX and np.result_type(P, A) == np.float64:
+        d2 = _indexed_sqdist(P, A, B, C)
         if d2 is not None:
             return np.sqrt(d2)
     return _all_pairs_distance(P, A, B, C, chunk)
