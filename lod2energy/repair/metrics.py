@@ -204,12 +204,16 @@ def _indexed_sqdist(P, A, B, C) -> np.ndarray | None:
         keep = np.linalg.norm(P[pi] - cen[gi], axis=1) <= ub[pi] + rad[gi] + slack
         pi_parts.append(pi[keep])
         ti_parts.append(safe[gi[keep]])
-    if len(unsafe):
-        pi_parts.append(np.repeat(np.arange(len(P)), len(unsafe)))
-        ti_parts.append(np.tile(unsafe, len(P)))
-    pi, ti = np.concatenate(pi_parts), np.concatenate(ti_parts)
+    pi = np.concatenate(pi_parts or [np.empty(0, np.intp)])
+    ti = np.concatenate(ti_parts or [np.empty(0, np.intp)])
     out = np.full(len(P), np.inf)
     np.minimum.at(out, pi, _pairs_sqdist(P, A, B, C, pi, ti))
+    if len(unsafe):  # every point against the slivers, in blocks as without the index
+        Au, Bu, Cu = A[unsafe][None], B[unsafe][None], C[unsafe][None]
+        step = max(1, 200000 // len(unsafe))
+        for s in range(0, len(P), step):
+            blk = out[s:s + step]
+            np.minimum(blk, _sqdist(P[s:s + step, None, :], Au, Bu, Cu).min(axis=1), out=blk)
     return out
 
 
