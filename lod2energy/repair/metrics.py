@@ -123,8 +123,8 @@ def point_triangle_distance(P: np.ndarray, V: np.ndarray, tris: np.ndarray, chun
 #: Up to this many point-triangle pairs every pair is measured (no index: faster when small).
 _ALL_PAIRS_MAX = 20000
 #: A triangle is a sliver, measured against every point, when ``|ab x ac|^2 / (|ab| |ac|)`` is below
-#: _WIDE x extent^2 (the interior case's denominator ``|ab x ac|^2`` then has a rounding error
-#: above ~1e-4 of itself) or ``|ab x ac|^2 / (|ab| |ac| (|ab| + |ac|))`` below _THIN x extent (its
+#: _WIDE x extent^2 (the interior case's denominator ``|ab x ac|^2`` then has a relative rounding
+#: error above ~50 eps extent^2 / that, ~6e-3) or ``|ab x ac|^2 / (|ab| |ac| (|ab| + |ac|))`` below _THIN x extent (its
 #: nearest point then moves by more than ~50 eps extent^2 / that, ~5e-5 x extent).
 _WIDE = 1e-12
 _THIN = 1e-10
