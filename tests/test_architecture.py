@@ -264,7 +264,8 @@ LOCAL_IMPORTS = {
     # scipy costs about 0.4 s to import: loaded by the paths that need it (validation mostly does not)
     **{(m, "scipy"): "imported by the paths that need it" for m in (
         "lod2energy.geometry.cdt", "lod2energy.geometry.snap", "lod2energy.io.gml", "lod2energy.repair.alphashape",
-        "lod2energy.repair.cleanup", "lod2energy.repair.footprint", "lod2energy.repair.parts",
+        "lod2energy.repair.cleanup", "lod2energy.repair.footprint", "lod2energy.repair.metrics",
+        "lod2energy.repair.parts",
         "lod2energy.repair.plausible", "lod2energy.viz.footprints", "lod2energy.viz.render")},
     ("lod2energy.options", "lod2energy"): "the writers' option classes load with their packages: on use",
     ("lod2energy.executor", "cloudpickle"): "optional (the dask extra)",

@@ -94,22 +94,135 @@ def iou_sampled(Va, Ta, Vb, Tb, n: int = 3000) -> float:
 def point_triangle_distance(P: np.ndarray, V: np.ndarray, tris: np.ndarray, chunk: int = 256) -> np.ndarray:
     """Distance of each point to the nearest triangle, m.
 
+    A k-d tree on the triangles' bounding spheres keeps, for each point, the triangles that can
+    be nearest; :func:`_sqdist` measures those pairs, so the result is the one of measuring every
+    pair, bit for bit. Degenerate and sliver triangles (where rounding may move the computed
+    nearest point off the triangle) are measured against every point, and so is every pair of
+    a small, non-finite or not float64 input.
+
     Parameters
     ----------
     P : (p, 3) float
     V : (n, 3) float
     tris : (t, 3) int
+    chunk : int
+        Points per block when every pair is measured.
 
     Returns
     -------
     (p,) float
     """
     A, B, C = V[tris[:, 0]], V[tris[:, 1]], V[tris[:, 2]]
+    if len(P) * len(tris) > _ALL_PAIRS_MAX and np.result_type(P, A) == np.float64:
+        d2 = _indexed_sqdist(P, A, B, C)
+        if d2 is not None:
+            return np.sqrt(d2)
+    return _all_pairs_distance(P, A, B, C, chunk)
+
+
+#: Up to this many point-triangle pairs every pair is measured (no index: faster when small).
+_ALL_PAIRS_MAX = 20000
+#: A triangle is a sliver, measured against every point, when ``|ab x ac|^2 / (|ab| |ac|)`` is below
+#: _WIDE x extent^2 (the interior case's denominator ``|ab x ac|^2`` then has a relative rounding
+#: error above ~50 eps extent^2 / that, ~6e-3) or ``|ab x ac|^2 / (|ab| |ac| (|ab| + |ac|))`` below _THIN x extent (its
+#: nearest point then moves by more than ~50 eps extent^2 / that, ~5e-5 x extent).
+_WIDE = 1e-12
+_THIN = 1e-10
+#: Margin of the pruning bound (x the extent): above that rounding for every triangle not a sliver.
+_SLACK = 1e-3
+#: Pairs measured at once (bounded memory: about 40 temporaries of (n, 3) floats).
+_PAIR_CHUNK = 65536
+
+
+def _all_pairs_distance(P, A, B, C, chunk: int) -> np.ndarray:
+    """Distance of each point to the nearest of the triangles ``(A, B, C)``, every pair measured."""
     out = np.empty(len(P))
-    chunk = max(1, min(chunk, 200000 // max(len(tris), 1)))
+    chunk = max(1, min(chunk, 200000 // max(len(A), 1)))
     for s in range(0, len(P), chunk):
         p = P[s:s + chunk, None, :]
         out[s:s + chunk] = np.sqrt(_sqdist(p, A[None], B[None], C[None]).min(axis=1))
+    return out
+
+
+def _indexed_sqdist(P, A, B, C) -> np.ndarray | None:
+    """Squared distance of each point to the nearest triangle, only the pairs that can be nearest.
+
+    A pair is left out when the point is farther from the triangle's bounding sphere than from a
+    triangle already measured (plus a margin far above the rounding of :func:`_sqdist` on
+    triangles that are not slivers). None when an input is not finite or has no extent.
+
+    Parameters
+    ----------
+    P : (p, 3) float
+        Points, m.
+    A, B, C : (t, 3) float
+        Triangle corners, m.
+
+    Returns
+    -------
+    (p,) float or None
+        Squared distances, m2, equal to :func:`_all_pairs_distance`'s squared.
+    """
+    from scipy.spatial import cKDTree
+
+    allpts = np.vstack([P, A, B, C])
+    if not np.isfinite(allpts).all():
+        return None
+    ext = float(np.linalg.norm(allpts.max(axis=0) - allpts.min(axis=0)))
+    if ext == 0.0:
+        return None
+    slack = _SLACK * ext
+    ab, ac = B - A, C - A
+    lab, lac = np.linalg.norm(ab, axis=1), np.linalg.norm(ac, axis=1)
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        # the interior case divides by |ab x ac|^2: its rounding moves the point by ~eps ext^2 / thin
+        wide = np.einsum("ij,ij->i", *(2 * [np.cross(ab, ac)])) / (lab * lac)
+        thin = wide / (lab + lac)
+    safe = np.flatnonzero((wide >= _WIDE * ext * ext) & (thin >= _THIN * ext))
+    unsafe = np.setdiff1d(np.arange(len(A)), safe)
+    if len(safe) == 0:
+        return None
+    cen = (A[safe] + B[safe] + C[safe]) / 3
+    rad = np.max([np.linalg.norm(X[safe] - cen, axis=1) for X in (A, B, C)], axis=0)
+    # an upper bound per point: the nearest of the triangles with the nearest centroids
+    k = min(4, len(safe))
+    _, near = cKDTree(cen).query(P, k=k)
+    near = near.reshape(len(P), k)
+    ub2 = _pairs_sqdist(P, A, B, C, np.repeat(np.arange(len(P)), k), safe[near.ravel()])
+    ub = np.sqrt(ub2.reshape(len(P), k).min(axis=1))
+    # candidates by bounding sphere, the triangles grouped by radius (a factor 2 within a group)
+    level = np.floor(np.log2(rad)).astype(np.int64)
+    pi_parts, ti_parts = [], []
+    for lv in np.unique(level):
+        grp = np.flatnonzero(level == lv)
+        hits = cKDTree(cen[grp]).query_ball_point(P, ub + rad[grp].max() + slack, return_sorted=False)
+        n = np.fromiter(map(len, hits), dtype=np.intp, count=len(P))
+        if not n.sum():
+            continue
+        pi = np.repeat(np.arange(len(P)), n)
+        gi = grp[np.concatenate([h for h in hits if h]).astype(np.intp)]
+        keep = np.linalg.norm(P[pi] - cen[gi], axis=1) <= ub[pi] + rad[gi] + slack
+        pi_parts.append(pi[keep])
+        ti_parts.append(safe[gi[keep]])
+    pi = np.concatenate(pi_parts or [np.empty(0, np.intp)])
+    ti = np.concatenate(ti_parts or [np.empty(0, np.intp)])
+    out = np.full(len(P), np.inf)
+    np.minimum.at(out, pi, _pairs_sqdist(P, A, B, C, pi, ti))
+    if len(unsafe):  # every point against the slivers, in blocks as without the index
+        Au, Bu, Cu = A[unsafe][None], B[unsafe][None], C[unsafe][None]
+        step = max(1, 200000 // len(unsafe))
+        for s in range(0, len(P), step):
+            blk = out[s:s + step]
+            np.minimum(blk, _sqdist(P[s:s + step, None, :], Au, Bu, Cu).min(axis=1), out=blk)
+    return out
+
+
+def _pairs_sqdist(P, A, B, C, pi, ti) -> np.ndarray:
+    """:func:`_sqdist` of points ``P[pi]`` to triangles ``ti``, in blocks: (len(pi),) float, m2."""
+    out = np.empty(len(pi))
+    for s in range(0, len(pi), _PAIR_CHUNK):
+        p, t = pi[s:s + _PAIR_CHUNK], ti[s:s + _PAIR_CHUNK]
+        out[s:s + _PAIR_CHUNK] = _sqdist(P[p], A[t], B[t], C[t])
     return out
 
 
