@@ -335,3 +335,17 @@ def test_no_test_imports_the_writers_under_a_second_name():
     found = [p.name for d in ("tests", "benchmarks") for p in sorted((ROOT / d).rglob("*.py"))
              if second.search(p.read_text(encoding="utf-8"))]
     assert not found, found
+
+
+def test_every_package_is_installed():
+    # pyproject lists the packages one by one: one left out installs in editable mode (tests) but
+    # not with `pip install .` (the quick start), where importing it fails
+    try:
+        import tomllib
+    except ImportError:  # Python 3.10
+        import tomli as tomllib
+    listed = set(tomllib.loads((ROOT / "pyproject.toml").read_text(encoding="utf-8"))["tool"]["setuptools"]["packages"])
+    found = {".".join(("lod2energy", *p.parent.relative_to(ROOT / "exporters").parts)).replace("lod2energy", "lod2energy.exporters", 1)
+             if p.is_relative_to(ROOT / "exporters") else ".".join(p.parent.relative_to(ROOT).parts)
+             for d in ("lod2energy", "exporters") for p in (ROOT / d).rglob("__init__.py")}
+    assert found <= listed, sorted(found - listed)
