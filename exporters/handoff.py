@@ -173,9 +173,10 @@ def placed(b: Building, crs: Any = None, frame=None, lod: str | None = None, use
            attic_mode: str = "unconditioned") -> tuple[dict | None, HandoffFacts | None, str | None]:
     """``(footprint geometry in WGS84, facts, None)`` of ``b``, or ``(None, None, why)`` when it
     cannot be placed on the Earth or has no footprint (:func:`footprint_geometry`, :func:`facts`)."""
+    fp = footprint(b, lod)  # once, for the geometry and the facts
     try:
-        geom = footprint_geometry(b, crs, frame, lod)
+        geom = footprint_geometry(b, crs, frame, lod, fp=fp)
     except SiteError as e:
         return None, None, str(e)
-    h = facts(b, use, lod, attic_mode) if geom is not None else None
+    h = facts(b, use, lod, attic_mode, fp=fp) if geom is not None else None
     return (geom, h, None) if h is not None else (None, None, NO_FOOTPRINT)
