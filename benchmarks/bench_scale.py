@@ -316,7 +316,7 @@ def measure_dask(src: Path, out: Path, fmt: list[str], workers: int = 2) -> dict
     from dask.distributed import Client, LocalCluster
 
     from lod2energy.cli import build_parser, export_options
-    from lod2energy.executor import DaskExecutor
+    from lod2energy.run.executor import DaskExecutor
     from lod2energy.options import RunOptions
     from lod2energy.pipeline import export
 

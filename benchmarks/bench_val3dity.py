@@ -54,7 +54,7 @@ IMPORTS = ("import lod2energy.cli, lod2energy.io, lod2energy.validate.report, lo
 validate path needs none since session 33 (GEOS's CDT, numpy close pairs and components); a
 polygon GEOS does not take still loads scipy's Qhull, inside the work."""
 
-START = "from lod2energy.threads import one_blas_thread\none_blas_thread()\n" + IMPORTS
+START = "from lod2energy.run.blas_threads import one_blas_thread\none_blas_thread()\n" + IMPORTS
 """The start-up alone: one BLAS thread set before numpy loads (as :func:`lod2energy.cli.main`
 does; otherwise OpenBLAS's spinning threads add CPU time), then the imports."""
 

@@ -25,10 +25,10 @@ from lod2energy import __version__
 from lod2energy.cfd import add_cli_arguments, options_from_args
 from lod2energy.config import USE_TYPES, Tolerances
 from lod2energy.errors import Lod2EnergyError
-from lod2energy.interrupt import Interrupted, Signals
+from lod2energy.run.interrupt import Interrupted, Signals
 from lod2energy.logs import console, log
 from lod2energy.safe_write import UnsafeWriteError
-from lod2energy.threads import one_blas_thread
+from lod2energy.run.blas_threads import one_blas_thread
 
 EXIT_OK, EXIT_INVALID, EXIT_UNUSABLE = 0, 1, 2
 

@@ -10,13 +10,13 @@ from lod2energy.exporters.run_results import with_run_results
 from lod2energy.logs import log
 from lod2energy.model import CityModel, frozen_mapping
 from lod2energy.options import ExportOptions
-from lod2energy.record_store import RecordStore
+from lod2energy.run.record_store import RecordStore
 from lod2energy.records import NOT_COMPLIANT, ExportRecord
 from lod2energy.repair_file import with_repair_attributes
 from lod2energy.reports import err
-from lod2energy.spool import Job, Spooled, load_spooled
+from lod2energy.run.spool import Job, Spooled, load_spooled
 
-#: The one-file writers that take the buildings one at a time (a :class:`~lod2energy.spool.Spooled`
+#: The one-file writers that take the buildings one at a time (a :class:`~lod2energy.run.spool.Spooled`
 #: sequence); the others get a list.
 STREAMED = ("cityjson", "geojson", "gpkg", "urbanopt", "cea")
 #: The one-file writers that carry a building whatever its compliance (the city model, the GIS
@@ -63,7 +63,7 @@ class DatasetResult:
     error: str | None = None
 
 
-#: The one-file writers that may run beside the neighbour pass (:class:`lod2energy.beside.Beside`):
+#: The one-file writers that may run beside the neighbour pass (:class:`lod2energy.run.side_process.Beside`):
 #: they read nothing the neighbour pass writes, unless the IDFs are simulated (``--run``: the
 #: CityJSON and GeoJSON carry the run's figures).
 BESIDE = ("cityjson", "geojson", "gpkg")
@@ -126,7 +126,7 @@ def dataset_write(w, options: ExportOptions, job: Job, records: RecordStore, oth
 
 def dataset_apply(res: DatasetResult, records: RecordStore, quiet: bool, journal=None) -> dict | None:
     """Give every record of ``records`` (seq -> BuildingRecord) in the file of ``res`` the
-    writer's export record, also appended to ``journal`` (a :class:`~lod2energy.journal.Journal`;
+    writer's export record, also appended to ``journal`` (a :class:`~lod2energy.run.resume.Journal`;
     a ``dataset`` line per building, and a ``terrain`` line when the file carries the input's
     terrain); print the writer's notes and its first failure.
 
@@ -187,7 +187,7 @@ def dataset_pass(w, options: ExportOptions, job: Job, records: RecordStore, othe
 
 
 def write_beside(task: tuple) -> tuple[DatasetResult, ...]:
-    """The job of a :class:`lod2energy.beside.Beside` process: ``(writers, options, job,
+    """The job of a :class:`lod2energy.run.side_process.Beside` process: ``(writers, options, job,
     records, others, model, input_path)`` -> one :class:`DatasetResult` per writer, in order."""
     ws, options, job, records, others, model, input_path = task
     return tuple(dataset_write(w, options, job, records, others, model, input_path) for w in ws)

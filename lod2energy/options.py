@@ -178,7 +178,7 @@ def hard_budget(timeout: float | None, margin: bool = True) -> float | None:
         (``lod2energy repair``, whose job is the repair alone). ``export`` passes False: there
         ``--timeout S`` bounds the whole job of a building, which is stopped after ``S`` s of
         its worker's CPU time (or ``WALL_FACTOR * S`` s of wall time, see
-        :mod:`lod2energy.executor`). The ladder works to a wall-clock deadline of the same
+        :mod:`lod2energy.run.executor`). The ladder works to a wall-clock deadline of the same
         ``S`` s, which on a loaded machine comes first; on an idle one a building whose repair
         runs to its deadline is stopped before its last stages and reported ``timeout``.
     """

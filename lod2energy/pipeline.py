@@ -4,7 +4,7 @@ Per building, one pure and picklable job (:func:`process_building`):
 validate -> repair -> label -> U-values -> compliance and the final check -> the writers that
 need only this building -> their self-checks; it returns the new building and a
 :class:`~lod2energy.records.BuildingRecord`. :func:`export` runs that job over a file on an
-executor (:mod:`lod2energy.executor`: in-process, a process pool or Dask) and then
+executor (:mod:`lod2energy.run.executor`: in-process, a process pool or Dask) and then
 
 1. the writers that need a building's neighbours (IDF party walls, ``--shading``, ``--run``),
    one building at a time with the neighbours found in a spatial index of the prepared
@@ -13,7 +13,7 @@ executor (:mod:`lod2energy.executor`: in-process, a process pool or Dask) and th
 
 Prepared buildings are spooled to ``OUTDIR/.lod2energy/spool`` (one pickle each), so that the
 parent holds records, not geometry. Every finished step is appended to the journal
-(``OUTDIR/report.jsonl``, :mod:`lod2energy.journal`); ``report.json`` and ``report.csv`` are
+(``OUTDIR/report.jsonl``, :mod:`lod2energy.run.resume`); ``report.json`` and ``report.csv`` are
 assembled from it, in input order, so that every executor writes the same bytes.
 """
 from __future__ import annotations
@@ -26,19 +26,19 @@ from functools import partial
 from typing import Iterator, Sequence
 
 
-from lod2energy.beside import Beside
+from lod2energy.run.side_process import Beside
 from lod2energy.crs import no_crs_reason
 from lod2energy.dataset import BESIDE, CARRIERS, DatasetResult, beside_ok, dataset_apply, dataset_pass, write_beside
 from lod2energy.errors import ParameterError
-from lod2energy.executor import Failure, Overrun, ProcessPoolExecutor, make_executor
+from lod2energy.run.executor import Failure, Overrun, ProcessPoolExecutor, make_executor
 from lod2energy.exporters.registry import writers
-from lod2energy.interrupt import EXIT_INVALID, EXIT_OK, EXIT_SIGINT, EXIT_UNUSABLE, Interrupted, Signals
+from lod2energy.run.interrupt import EXIT_INVALID, EXIT_OK, EXIT_SIGINT, EXIT_UNUSABLE, Interrupted, Signals
 from lod2energy.io import read
-from lod2energy.journal import JOURNAL_NAME, Journal, header, records_of
+from lod2energy.run.resume import JOURNAL_NAME, Journal, header, records_of
 from lod2energy.model import Building, FeatureError
 from lod2energy.neighbours import neighbours_within, spatial_order
 from lod2energy.options import NEEDS_POSITIONS, ExportOptions, RunOptions, resolve
-from lod2energy.record_store import RecordStore
+from lod2energy.run.record_store import RecordStore
 from lod2energy.records import BuildingRecord, ExportRecord
 from lod2energy.prepare import prepare_building
 from lod2energy.reports import (
@@ -46,7 +46,7 @@ from lod2energy.reports import (
 )
 from lod2energy.safe_write import sweep_stale
 from lod2energy.study import joined, report_unknown_ids, selection_reach, selector, study_entry
-from lod2energy.spool import Job, load_spooled, reusable, spool_building
+from lod2energy.run.spool import Job, load_spooled, reusable, spool_building
 from lod2energy.viz.footprints import FootprintSpill, plan_footprint
 from lod2energy.viz.report import warm_page
 
@@ -154,7 +154,7 @@ class ExportOutcome:
     """What :func:`export` did: exit code, records in input order, the interruption if any."""
 
     exit_code: int
-    #: In input order; a lazy sequence (:class:`~lod2energy.record_store.RecordSequence`) of an export.
+    #: In input order; a lazy sequence (:class:`~lod2energy.run.record_store.RecordSequence`) of an export.
     records: Sequence[BuildingRecord] = ()
     interrupted: str | None = None
     report: str = ""
@@ -200,7 +200,7 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
     run : RunOptions
         Executor (``jobs``, ``dask``), ``resume``, ``quiet``.
     executor : Executor, optional
-        Use this one (e.g. a :class:`~lod2energy.executor.DaskExecutor` over your Client);
+        Use this one (e.g. a :class:`~lod2energy.run.executor.DaskExecutor` over your Client);
         it is not closed here.
 
     Returns

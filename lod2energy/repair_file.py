@@ -9,8 +9,8 @@ import tempfile
 from dataclasses import replace
 
 from lod2energy.config import Tolerances
-from lod2energy.executor import Failure, Overrun, make_executor
-from lod2energy.interrupt import EXIT_OK, EXIT_INVALID, EXIT_UNUSABLE
+from lod2energy.run.executor import Failure, Overrun, make_executor
+from lod2energy.run.interrupt import EXIT_OK, EXIT_INVALID, EXIT_UNUSABLE
 from lod2energy.io import cityjson, read
 from lod2energy.model import Building, FeatureError, frozen_mapping
 from lod2energy.options import hard_budget

@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING, Iterable, Sequence
 from lod2energy import crs as crs_
 from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.io.json_stream import Scanner
-from lod2energy.journal import records_of, terrain_of
+from lod2energy.run.resume import records_of, terrain_of
 from lod2energy.logs import log
 from lod2energy.model import CityModel
 from lod2energy.options import FORMATS
@@ -22,11 +22,11 @@ from lod2energy.energy.downgrades import KINDS
 from lod2energy.records import CSV_FIELDS, BuildingRecord
 from lod2energy.safe_write import atomic_write, check_target, json_default
 from lod2energy.site import MAX_WEATHER_KM
-from lod2energy.spool import load_spooled, spool_path
+from lod2energy.run.spool import load_spooled, spool_path
 from lod2energy.viz.report import write_report_for_files
 
 if TYPE_CHECKING:
-    from lod2energy.journal import JournalRecords
+    from lod2energy.run.resume import JournalRecords
 
 
 def err(msg: str) -> None:
@@ -169,7 +169,7 @@ def write_reports(out: str, input_path: str, model, rows: Iterable[BuildingRecor
 def write_reports_from_journal(out: str, input_path: str, model, journal_path: str, start: int,
                                dataset_errors: list[str], interrupted, inputs, recs=None,
                                study: dict | None = None) -> str:
-    """:func:`write_reports` from this run's lines of the journal (:func:`lod2energy.journal.records_of`
+    """:func:`write_reports` from this run's lines of the journal (:func:`lod2energy.run.resume.records_of`
     from byte ``start``, or ``recs`` when given): what the journal says was done is what the
     report says."""
     recs = recs if recs is not None else records_of(journal_path, start)
@@ -219,7 +219,7 @@ def report_lazily(path: str) -> dict:
 def write_html_report(report_path: str, input_path: str, records: JournalRecords, spool: str, out: str,
                       tol: Tolerances = DEFAULT, inputs=(), footprints=None, mapper=None, crs=None) -> str:
     """``OUTDIR/report.html`` (:mod:`lod2energy.viz`) from the report, the input buildings and the
-    prepared ones of the spool (``records``: the report's, :func:`lod2energy.journal.records_of`);
+    prepared ones of the spool (``records``: the report's, :func:`lod2energy.run.resume.records_of`);
     a page that cannot be written costs one line, never the export.
     ``footprints``: the plan footprints of every object of the input, in input order (a
     :class:`~lod2energy.viz.footprints.FootprintSpill`; without it the input is read again);

@@ -13,7 +13,7 @@ import time
 import numpy as np
 
 from factories import box_polygons, building_from_polygons
-from lod2energy.executor import Failure, ProcessPoolExecutor
+from lod2energy.run.executor import Failure, ProcessPoolExecutor
 from lod2energy.repair import alphashape
 from lod2energy.repair.pipeline import mesh_of_geometry
 

@@ -156,7 +156,7 @@ def test_module_size(rel):
 MODULE_STATE = {
     "lod2energy.io._READERS": "the reader registry: each reader module registers itself on import",
     "exporters.registry._WRITERS": "the writer registry: each format package registers itself on import",
-    "lod2energy.executor._CHILDREN": "run state: the budget process of each worker thread, to stop it",
+    "lod2energy.run.executor._CHILDREN": "run state: the budget process of each worker thread, to stop it",
 }
 _MUTABLE_CALLS = {"dict", "list", "set", "OrderedDict", "defaultdict", "deque", "Counter",
                   "WeakKeyDictionary", "WeakValueDictionary", "WeakSet"}
@@ -268,15 +268,15 @@ LOCAL_IMPORTS = {
         "lod2energy.repair.parts",
         "lod2energy.repair.plausible", "lod2energy.viz.footprints", "lod2energy.viz.render")},
     ("lod2energy.options", "lod2energy"): "the writers' option classes load with their packages: on use",
-    ("lod2energy.executor", "cloudpickle"): "optional (the dask extra)",
-    ("lod2energy.executor", "dask"): "optional (the dask extra)",
+    ("lod2energy.run.executor", "cloudpickle"): "optional (the dask extra)",
+    ("lod2energy.run.executor", "dask"): "optional (the dask extra)",
     ("lod2energy.graph", "torch"): "optional (the pyg extra)",
     ("lod2energy.graph", "torch_geometric"): "optional (the pyg extra)",
     ("lod2energy.repair.alphashape", "pymeshlab"): "starts threads: loaded in the alpha-wrap child only",
     ("lod2energy.safe_write", "numpy"): "safe_write is on the CLI's head; numpy only for a report's arrays",
     ("lod2energy.site", "pyproj"): "a transformer only for outputs that need positions",
     ("lod2energy.crs", "pyproj"): "pyproj (0.1 s) only for a file that names a CRS, not for --help",
-    ("lod2energy.threads", "threadpoolctl"): "only when numpy is loaded already (the CLI's head)",
+    ("lod2energy.run.blas_threads", "threadpoolctl"): "only when numpy is loaded already (the CLI's head)",
     ("lod2energy.viz.browser", "playwright"): "optional (the test extra)",
     ("lod2energy.viz.figures", "matplotlib"): "the report's pictures only",
     ("lod2energy.viz.render", "matplotlib"): "the report's pictures only",

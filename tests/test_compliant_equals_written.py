@@ -153,7 +153,7 @@ def test_a_compliant_building_left_out_of_a_one_file_writer_is_not_compliant():
     """A one-file writer (the CityJSON) that leaves a compliant building out without a record:
     not written, so not compliant."""
     from lod2energy.dataset import DatasetResult, dataset_apply
-    from lod2energy.record_store import RecordStore
+    from lod2energy.run.record_store import RecordStore
     from lod2energy.records import BuildingRecord, ComplianceRecord
     ok = ComplianceRecord.from_block({"compliant": True, "geometry_ready": True, "reasons": []})
     store = RecordStore()

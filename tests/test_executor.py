@@ -13,8 +13,8 @@ from pathlib import Path
 import pytest
 
 from lod2energy.cli import main
-from lod2energy.beside import Beside
-from lod2energy.executor import Failure, InProcessExecutor, Overrun, ProcessPoolExecutor
+from lod2energy.run.side_process import Beside
+from lod2energy.run.executor import Failure, InProcessExecutor, Overrun, ProcessPoolExecutor
 
 from conftest import shared_path
 from spine_inputs import huge_building_line, row_of_boxes_seq, terraced_subset, tree_bytes
@@ -184,7 +184,7 @@ def test_terraced_3dbag_subset_with_shading_agrees_across_executors(tmp_path, ca
 def test_dask_local_cluster_writes_the_same_bytes_as_jobs_1(tmp_path, capsys):
     distributed = pytest.importorskip("dask.distributed")
     from lod2energy.cli import export_options, build_parser
-    from lod2energy.executor import DaskExecutor
+    from lod2energy.run.executor import DaskExecutor
     from lod2energy.options import RunOptions
     from lod2energy.pipeline import export
 
@@ -279,7 +279,7 @@ def _alive(pid: int) -> bool:
 @pytest.mark.parametrize("processes", [True, False])
 def test_dask_stops_a_cpu_bound_job_at_its_budget_and_the_worker_goes_on(tmp_path, processes):
     distributed = pytest.importorskip("dask.distributed")
-    from lod2energy.executor import DaskExecutor
+    from lod2energy.run.executor import DaskExecutor
 
     tell = tmp_path / "pid"
     with distributed.LocalCluster(n_workers=1, threads_per_worker=1, processes=processes,
@@ -305,7 +305,7 @@ def test_dask_reports_a_100000_face_building_timeout_with_the_bytes_of_jobs_1(tm
     # worker processes (processes=False is covered by the budget test above)
     distributed = pytest.importorskip("dask.distributed")
     from lod2energy.cli import build_parser, export_options
-    from lod2energy.executor import DaskExecutor
+    from lod2energy.run.executor import DaskExecutor
     from lod2energy.options import RunOptions
     from lod2energy.pipeline import export
 

@@ -209,7 +209,7 @@ def test_every_input_object_is_a_row_with_its_problem(tmp_path, capsys):
 # ----------------------------------------------------------------------------- the journal
 
 def test_journal_skips_a_torn_line_and_starts_anew_for_other_options(tmp_path):
-    from lod2energy.journal import Journal, header, read_lines
+    from lod2energy.run.resume import Journal, header, read_lines
     src = write(tmp_path, box_doc())
     out = tmp_path / "o"
     out.mkdir()
@@ -228,7 +228,7 @@ def test_journal_skips_a_torn_line_and_starts_anew_for_other_options(tmp_path):
 
 
 def test_journal_never_follows_a_link_out_of_outdir(tmp_path):
-    from lod2energy.journal import Journal, header
+    from lod2energy.run.resume import Journal, header
     from lod2energy.safe_write import UnsafeWriteError
     victim = tmp_path / "victim.txt"
     victim.write_text("keep")

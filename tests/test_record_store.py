@@ -6,7 +6,7 @@ import sys
 
 import pytest
 
-from lod2energy.record_store import RecordStore
+from lod2energy.run.record_store import RecordStore
 from lod2energy.records import BuildingRecord, ComplianceRecord, ExportRecord, RepairRecord
 
 

@@ -309,7 +309,7 @@ def test_the_page_of_a_large_file_keeps_only_its_panels_whole_and_draws_the_same
 
 
 def test_pictures_rendered_by_a_process_pool_give_the_same_page_and_a_failed_job_is_redone(tmp_path):
-    from lod2energy.executor import Failure, ProcessPoolExecutor
+    from lod2energy.run.executor import Failure, ProcessPoolExecutor
     from lod2energy.viz.report import page_job
     bs = [box(id="ok"), open_box(id="hole"), fin_box()]
     rep, outs = export_report(bs)

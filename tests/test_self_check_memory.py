@@ -114,7 +114,7 @@ def test_a_link_costs_a_fraction_of_the_dict_it_replaces():
 
 def test_give_back_asks_the_c_library_on_linux():
     import sys
-    from lod2energy.heap import give_back
+    from lod2energy.run.memory import give_back
     assert give_back() is sys.platform.startswith("linux")
 
 

@@ -165,7 +165,7 @@ def test_one_blas_thread_loads_no_scipy_and_still_limits_it():
         for v in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
             os.environ.pop(v, None)
         import numpy, sys
-        from lod2energy.threads import one_blas_thread
+        from lod2energy.run.blas_threads import one_blas_thread
         one_blas_thread()
         assert "scipy" not in sys.modules
         import scipy.linalg

@@ -169,7 +169,7 @@ def test_one_file_writers_hold_one_building_at_a_time(delft_export, monkeypatch)
     """The CityJSON and GeoJSON passes read the spool as they write: never all buildings alive."""
     from lod2energy import dataset
     from lod2energy.exporters.registry import writer
-    from lod2energy.spool import Job, Spooled
+    from lod2energy.run.spool import Job, Spooled
     out, res = delft_export
     alive, peak = [0], [0]
 
@@ -193,7 +193,7 @@ def test_one_file_writers_hold_one_building_at_a_time(delft_export, monkeypatch)
     a = build_parser().parse_args(["export", str(DELFT), "-o", str(out), "--stl", "--cityjson", "--geojson"])
     opts = resolve(export_options(a), model)
     job = Job(opts, str(out), str(out / ".lod2energy" / "spool"), model.crs)
-    from lod2energy.record_store import RecordStore
+    from lod2energy.run.record_store import RecordStore
     records = RecordStore({r.seq: r for r in res.records})
     before = {n: (out / n).read_bytes() for n in ("delft_subset.energy.city.json", "delft_subset.footprints.geojson")}
     for name in ("cityjson", "geojson"):
@@ -218,7 +218,7 @@ def test_report_json_from_the_journal_equals_the_report_of_the_records(delft_exp
     for name in ("report.json", "report.csv"):
         (other / name).write_bytes((out / name).read_bytes())
     # and from the journal again, as export wrote them
-    from lod2energy.journal import read_lines
+    from lod2energy.run.resume import read_lines
     head = next(iter(read_lines(out / "report.jsonl")))
     start = len((json.dumps(head, ensure_ascii=False) + "\n").encode())
     from lod2energy.reports import write_reports_from_journal
@@ -303,7 +303,7 @@ def test_the_page_reads_report_json_one_building_at_a_time(tmp_path):
 
 def _fold_reference(path, start=0):
     """records_of as it was: every line decoded, each record folded into a dict as it came."""
-    from lod2energy.journal import _lines
+    from lod2energy.run.resume import _lines
     from lod2energy.records import BuildingRecord, ExportRecord
     out = {}
     for d in _lines(path, start):
@@ -320,7 +320,7 @@ def _fold_reference(path, start=0):
 
 
 def test_records_of_reads_the_journal_as_every_line_folded_in_order(delft_export, tmp_path):
-    from lod2energy.journal import _dumps, read_lines, records_of
+    from lod2energy.run.resume import _dumps, read_lines, records_of
     out, res = delft_export
     lines = list(read_lines(out / "report.jsonl"))
     body = [ln for ln in lines if ln.get("kind") in ("building", "dataset")]
@@ -347,7 +347,7 @@ def test_records_of_reads_the_journal_as_every_line_folded_in_order(delft_export
 def test_journal_fsyncs_at_most_once_a_second_and_when_closed(tmp_path, monkeypatch):
     import os as _os
 
-    from lod2energy import journal as J
+    from lod2energy.run import resume as J
     calls = []
     real = _os.fsync
     monkeypatch.setattr(J.os, "fsync", lambda fd: (calls.append(fd), real(fd))[1])

@@ -39,7 +39,7 @@ def _loaded_by_validate(path: str, tmp_path) -> set[str]:
         from lod2energy.cli import main
         rc = main(["validate", {path!r}, "-q", "--report", {str(tmp_path / "r.json")!r}])
         print(json.dumps([rc] + sorted(m for m in sys.modules
-                                       if m in ("lod2energy.reports", "lod2energy.records", "lod2energy.spool"))))
+                                       if m in ("lod2energy.reports", "lod2energy.records", "lod2energy.run.spool"))))
     """)
     out = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, check=True)
     rc, *mods = json.loads(out.stdout.strip().splitlines()[-1])
@@ -55,7 +55,7 @@ def test_validate_of_a_plain_file_loads_no_export_modules(tmp_path):
 
 
 @pytest.mark.parametrize("parts, epsg, want", [
-    (1, 4979, {"lod2energy.reports", "lod2energy.records", "lod2energy.spool"}),  # geographic: local frame
+    (1, 4979, {"lod2energy.reports", "lod2energy.records", "lod2energy.run.spool"}),  # geographic: local frame
 ])
 def test_they_load_when_the_file_needs_them(tmp_path, parts, epsg, want):
     rc, loaded = _loaded_by_validate(_city(tmp_path / "f.city.json", epsg, parts), tmp_path)

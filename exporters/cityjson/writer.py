@@ -44,7 +44,7 @@ from lod2energy import safe_write
 from lod2energy.config import DEFAULT
 from lod2energy.energy.figures import with_shared_boundaries
 from lod2energy.errors import Lod2EnergyError
-from lod2energy.heap import give_back
+from lod2energy.run.memory import give_back
 from lod2energy.io import cityjson as cjio
 from lod2energy.io.cityjson_grid import on_grid
 from lod2energy.io.cityjson_write import write_document

@@ -34,7 +34,7 @@ import importlib
 import pickle
 
 import lod2energy.records  # noqa: F401 - makes Building picklable in every process
-from lod2energy.threads import one_blas_thread
+from lod2energy.run.blas_threads import one_blas_thread
 from lod2energy.errors import ParameterError
 
 
@@ -325,7 +325,7 @@ class ProcessPoolExecutor(Executor):
 
 # ----------------------------------------------------------------------------- budget process
 
-_CHILD_CODE = "import sys; from lod2energy.executor import _budget_child_main; _budget_child_main(int(sys.argv[1]))"
+_CHILD_CODE = "import sys; from lod2energy.run.executor import _budget_child_main; _budget_child_main(int(sys.argv[1]))"
 #: Wall time (s) a fresh budget process may take to start and import the job's module.
 START_TIMEOUT = 120.0
 

@@ -7,8 +7,8 @@ import signal
 import sys
 from typing import Any, Callable
 
-from lod2energy.executor import Failure, _one_line
-from lod2energy.threads import one_blas_thread
+from lod2energy.run.executor import Failure, _one_line
+from lod2energy.run.blas_threads import one_blas_thread
 
 
 def _beside_main(conn, fn, arg) -> None:

@@ -36,7 +36,7 @@ from collections.abc import Mapping
 from pathlib import Path
 from typing import Any, Iterator
 
-from lod2energy.record_store import RecordSequence
+from lod2energy.run.record_store import RecordSequence
 from lod2energy.records import BuildingRecord, ExportRecord
 from lod2energy.safe_write import atomic_write, check_target, json_default
 
