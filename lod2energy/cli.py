@@ -175,7 +175,8 @@ def add_repair_parser(sub) -> argparse.ArgumentParser:
 def add_view_parser(subparsers) -> argparse.ArgumentParser:
     """Add ``view FILE [--id ID] [-o OUTDIR] [--no-open]`` to the CLI's subparsers."""
     v = _command(subparsers, "view")
-    v.add_argument("input", metavar="FILE", help="input file (any format validate reads)")
+    v.add_argument("input", metavar="FILE", help="input file (any format validate reads); "
+                   "- or /dev/stdin: CityJSON or CityJSONSeq on standard input")
     v.add_argument("--id", default=None, help="building (or BuildingPart) id (default: the first building)")
     v.add_argument("-o", "--output", default=".", metavar="OUTDIR", help="folder of the page (default .)")
     v.add_argument("--no-open", action="store_true", help="do not open a browser")

@@ -466,10 +466,7 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
         report = write_reports_from_journal(out, input_path, model, str(journal.path), journal.run_start,
                                             dataset_errors, interrupted, inputs, done, study)
         if options.html:
-            mapper = None
-            if page_pool is not None and not interrupted:
-                def mapper(fn, jobs):
-                    return [res for _, res in page_pool.map(fn, jobs)]
+            mapper = partial(_results, page_pool) if page_pool is not None and not interrupted else None
             write_html_report(report, input_path, done, job.spool, out, options.prepare.tol, inputs, plans, mapper,
                               crs=options.crs)
             plans.close()
@@ -503,6 +500,11 @@ def _beside_results(beside, writers) -> dict:
     if isinstance(res, Failure):  # every writer of the process, as dataset_write reports a failed writer
         return {w.name: DatasetResult(w.name, error=f"{w.name.upper()} export failed: {res.message}") for w in writers}
     return {r.name: r for r in res}
+
+
+def _results(pool, fn, jobs) -> list:
+    """``fn`` over ``jobs`` on ``pool``, the results in order."""
+    return [res for _, res in pool.map(fn, jobs)]
 
 
 def _context_or_record(task):

@@ -37,10 +37,6 @@ def repair_one(b: Building, tol: Tolerances, timeout: float = 30.0, merge_parts:
     return repair_building(b, tol=tol, timeout=timeout, merge_parts=merge_parts, lod=lod)
 
 
-#: The digest of a geometry state (its one home is :mod:`lod2energy.validate.memo`).
-_geometry_key = geometry_key
-
-
 def final_check(b: Building, defects, lod: str | None, tol: Tolerances = DEFAULT) -> str | None:
     """Why ``b`` may not be called compliant nor exported (None when it may).
 
@@ -101,7 +97,7 @@ def prepare_building(b: Building, options: PrepareOptions = PrepareOptions(), se
     tb = assign_u_values(lb, thermal_opts)
     if rb is not unclipped:  # the union writers (STL) keep the input parts: same union, no new seams
         tb = keep_input_parts(tb, assign_u_values(label_building(unclipped, lod=lod, source=b), thermal_opts))
-    after = before if _geometry_key(tb) == _geometry_key(b) else _checks.validate_building(tb, tol)
+    after = before if geometry_key(tb) == geometry_key(b) else _checks.validate_building(tb, tol)
     block = dict(energy_compliance(tb, after, lod=lod, tol=tol, assess_labels=True, assess_u_values=True))
     if repair.error:  # e.g. implausible coordinates: kept in the output, not simulated
         block.update(compliant=False, geometry_ready=False,

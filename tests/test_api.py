@@ -143,6 +143,16 @@ def test_stdin_is_read_once_and_empty_stdin_is_refused():
     assert p.returncode == 2 and b"standard input is empty" in p.stderr and b"Traceback" not in p.stderr
 
 
+def test_view_of_stdin_writes_the_page_of_the_file(tmp_path):
+    p = cli(["view", "-", "-o", str(tmp_path / "in"), "--no-open", "-q"], stdin=SEQ.read_bytes())
+    assert p.returncode == 0 and b"Traceback" not in p.stderr, p.stderr
+    q = cli(["view", str(SEQ), "-o", str(tmp_path / "file"), "--no-open", "-q"])
+    got, want = Path(p.stdout.decode().strip()), Path(q.stdout.decode().strip())
+    assert got.parent == tmp_path / "in" and got.name == want.name and got.stat().st_size > 1000
+    p = cli(["view", "-", "-o", str(tmp_path / "in"), "--no-open"], stdin=b"")
+    assert p.returncode == 2 and b"standard input is empty" in p.stderr and b"Traceback" not in p.stderr
+
+
 def test_export_and_repair_of_stdin(tmp_path):
     p = cli(["export", "-", "-o", str(tmp_path / "e"), "--idf", "--stl", "-j", "1", "-q"], stdin=SEQ.read_bytes())
     assert p.returncode == 0, p.stderr

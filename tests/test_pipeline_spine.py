@@ -49,13 +49,13 @@ def validate_calls(monkeypatch):
 
 def test_process_building_is_pure_picklable_and_returns_a_typed_record(tmp_path):
     from lod2energy.exporters.registry import CityJsonOptions  # noqa: F401 - registry loads
-    from lod2energy.prepare import _geometry_key
+    from lod2energy.validate.memo import geometry_key
     b = box(id="bx")
-    before = (_geometry_key(b), dict(b.provenance), [dict(o.attributes) for o in b.objects],
+    before = (geometry_key(b), dict(b.provenance), [dict(o.attributes) for o in b.objects],
               [g.semantic_surfaces for o in b.objects for g in o.geometries])
     opts = ExportOptions(formats=("stl",))
     pb, rec = process_building(b, pickle.loads(pickle.dumps(opts)), str(tmp_path), seq=3)
-    assert (_geometry_key(b), dict(b.provenance), [dict(o.attributes) for o in b.objects],
+    assert (geometry_key(b), dict(b.provenance), [dict(o.attributes) for o in b.objects],
             [g.semantic_surfaces for o in b.objects for g in o.geometries]) == before  # input unchanged
     assert isinstance(rec, BuildingRecord) and rec.seq == 3 and rec.outcome == "done"
     assert rec.energy.compliant and rec.energy.geometry_ready and rec.repair.stage == "valid"

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import os
 import sys
+import tempfile
 import time
 import webbrowser
 from pathlib import Path
@@ -16,6 +17,7 @@ from types import SimpleNamespace
 from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.errors import InputError
 from lod2energy.io import read
+from lod2energy.io.source import is_stdin, materialise, read_stdin
 from lod2energy.model import Building, FeatureError
 from lod2energy.prepare import prepare
 from lod2energy.reports import report_lazily
@@ -60,7 +62,7 @@ def view(path, building_id: str | None = None, outdir=".", *, tol: Tolerances = 
     Parameters
     ----------
     path : path-like
-        Any file ``lod2energy`` reads.
+        Any file ``lod2energy`` reads; ``-`` or ``/dev/stdin``: CityJSON or CityJSONSeq on standard input.
     building_id : str, optional
         Id of the building or of one of its BuildingParts.
     outdir : path-like
@@ -74,6 +76,10 @@ def view(path, building_id: str | None = None, outdir=".", *, tol: Tolerances = 
     Path of the page.
     """
     path = os.fspath(path)
+    if is_stdin(path):
+        with tempfile.TemporaryDirectory(prefix="lod2energy-stdin-") as tmp:
+            return view(materialise(read_stdin(), tmp), building_id, outdir, tol=tol, options=options,
+                        open_browser=open_browser)
     model, b = _pick(path, building_id)
     a = options or SimpleNamespace(lod=None, timeout=30.0, merge_parts=False)
     pb, rec = prepare(b, tol, a, model)
