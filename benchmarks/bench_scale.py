@@ -315,7 +315,8 @@ def measure_dask(src: Path, out: Path, fmt: list[str], workers: int = 2) -> dict
     import psutil
     from dask.distributed import Client, LocalCluster
 
-    from lod2energy.cli import build_parser, export_options
+    from lod2energy.cli import build_parser
+    from lod2energy.options import export_options
     from lod2energy.run.executor import DaskExecutor
     from lod2energy.options import RunOptions
     from lod2energy.pipeline import export

@@ -31,8 +31,10 @@ from lod2energy.errors import InputError, ParameterError
 from lod2energy.io import read as read_file
 from lod2energy.io.source import materialise, to_bytes
 from lod2energy.model import Building, CityModel, FeatureError
-from lod2energy.pipeline import ExportOutcome
-from lod2energy.repair_file import repair_to
+from lod2energy.pipeline import EXPORT, ExportOutcome
+from lod2energy.repair_file import REPAIR
+from lod2energy.run.driver import execute
+from lod2energy.validate_files import VALIDATE
 
 
 @dataclass(frozen=True, eq=False)
@@ -135,13 +137,6 @@ def _arguments(command: str, positional: list[str], options: dict) -> argparse.N
     return a
 
 
-def _run(fn, a):
-    try:
-        return fn(a)
-    except cli._UsageError as e:
-        raise ParameterError(str(e)) from None
-
-
 def validate(data, **options) -> dict:
     """Validate ``data`` (what :func:`read` takes or returns) as ``lod2energy validate`` does.
 
@@ -154,8 +149,8 @@ def validate(data, **options) -> dict:
     data = read(data)
     with data.on_disk() as path:
         a = _arguments("validate", [path], {"quiet": True, "crs": data.crs, **options})
-        worst, reports, _ = _run(cli.validate_files, a)
-    return {**reports[0], "input_file": data.path or data.name, "exit_code": worst}
+        run = execute(VALIDATE, a)
+    return {**run.made["reports"][0], "input_file": data.path or data.name, "exit_code": run.code}
 
 
 def repair(data, output: str, **options) -> dict:
@@ -171,8 +166,8 @@ def repair(data, output: str, **options) -> dict:
     data = read(data)
     with data.on_disk() as path:
         a = _arguments("repair", [path, "-o", os.fspath(output)], {"quiet": True, "crs": data.crs, **options})
-        worst, doc = _run(lambda a: repair_to(a, cli._tolerances(a)), a)
-    return {**(doc or {}), "exit_code": worst}
+        run = execute(REPAIR, a)
+    return {**run.made.get("doc", {}), "exit_code": run.code}
 
 
 def export(data, outdir: str, **options) -> ExportOutcome:
@@ -194,4 +189,4 @@ def export(data, outdir: str, **options) -> ExportOutcome:
         raise ParameterError(f"{outdir}: exists and is not a folder")
     with data.on_disk(os.path.join(outdir, ".lod2energy", "input")) as path:
         a = _arguments("export", [path, "-o", outdir], {"quiet": True, "crs": data.crs, **options})
-        return _run(cli.run_export, a)[0]
+        return execute(EXPORT, a).made["outcome"]

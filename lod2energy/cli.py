@@ -12,25 +12,14 @@ Exit codes (all commands):
 from __future__ import annotations
 
 import argparse
-import csv
-import io
-import os
-import re
+import importlib
 import sys
-import tempfile
-import time
-from collections import Counter
 
 from lod2energy import __version__
-from lod2energy.cfd import add_cli_arguments, options_from_args
-from lod2energy.config import USE_TYPES, Tolerances
-from lod2energy.errors import Lod2EnergyError
-from lod2energy.run.interrupt import Interrupted, Signals
-from lod2energy.logs import console, log
-from lod2energy.safe_write import UnsafeWriteError
-from lod2energy.run.blas_threads import one_blas_thread
-
-EXIT_OK, EXIT_INVALID, EXIT_UNUSABLE = 0, 1, 2
+from lod2energy.config import USE_TYPES
+from lod2energy.exporters.cfd.options import add_cli_arguments
+from lod2energy.run.driver import drive
+from lod2energy.run.interrupt import EXIT_UNUSABLE
 
 EXIT_HELP = """exit codes:
   0  all buildings valid (validate) / repaired (repair) / exported and self-checked (export)
@@ -77,19 +66,6 @@ def _add_crs(p: argparse.ArgumentParser) -> None:
     p.add_argument("--crs", default=None, metavar="CRS",
                    help="CRS of the input's coordinates (any form pyproj reads: EPSG:28992, a URN, WKT), "
                         "replacing the file's; needed by --idf, --run, --geojson, --gpkg, --urbanopt and --cea when the file names none")
-
-
-def _tolerances(a) -> Tolerances:
-    for k in ("snap_tol", "planarity_d2p_tol", "planarity_n_tol"):
-        v = getattr(a, k)
-        if not (v >= 0) or v != v or v == float("inf"):
-            raise _UsageError(f"--{k.replace('_', '-')} must be a finite number >= 0, got {v}")
-    return Tolerances(snap_tol=a.snap_tol, planarity_d2p_tol=a.planarity_d2p_tol,
-                      planarity_n_tol=a.planarity_n_tol, overlap_tol=a.overlap_tol, ignore204=a.ignore204)
-
-
-class _UsageError(Exception):
-    pass
 
 
 #: Each command: its line in the list of commands, and its description (``COMMAND --help``).
@@ -274,258 +250,20 @@ def add_run_options(p: argparse.ArgumentParser) -> None:
                    "self-checked and unchanged (report.jsonl)")
 
 
-def _err(msg: str) -> None:
-    log.error("%s", msg)
-
-
-def _print_validate_table(rows: list[dict], out=None) -> None:
-    out = sys.stdout if out is None else out
-    hdr = f"{'file':<44} {'features':>8} {'valid':>6} {'invalid':>7} {'E-ready':>7}  errors"
-    print(hdr, file=out)
-    print("-" * len(hdr), file=out)
-    for r in rows:
-        print(f"{r['file'][-44:]:<44} {r['features']:>8} {r['valid']:>6} {r['invalid']:>7} {r['ready']:>7}  {r['codes']}",
-              file=out)
-
-
-def _progress(quiet: bool, desc: str):
-    """``(tick, close)`` of a progress bar over the features of one file (``tick`` None when quiet)."""
-    if quiet:
-        return None, lambda: None
-    from tqdm import tqdm
-    bar = tqdm(desc=desc, unit=" features", file=sys.stderr, disable=None, leave=False)
-    return (lambda _entry: bar.update(1)), bar.close
-
-
-def _stdin_once(files: list[str]) -> None:
-    from lod2energy.io.source import is_stdin
-    if sum(is_stdin(f) for f in files) > 1:
-        raise _UsageError("standard input (- or /dev/stdin) can be read only once")
-
-
-def validate_files(a, stdin_folder: str | None = None) -> tuple[int, list[dict], list[dict]]:
-    """``lod2energy validate`` without printing: (exit code, one JSON report per file, the table's rows).
-
-    Standard input (``-``, ``/dev/stdin``) is written to ``stdin_folder`` (a temporary folder
-    when None) and read from there; its report and row name it ``-``.
-    """
-    from lod2energy import crs as crs_
-    # the export side (lod2energy.reports: records, options, every writer's options) loads only
-    # for what needs it: a geographic CRS, the HTML page
-    from lod2energy import safe_write
-    from lod2energy.io import read
-    from lod2energy.io.source import is_stdin, materialise, read_stdin
-    from lod2energy.validate.report import validate_features
-
-    tol = _tolerances(a)
-    _stdin_once(a.files)
-    for target in (a.report, getattr(a, "html", None)):
-        if target and target != "-":
-            safe_write.check_target(target, None, [f for f in a.files if not is_stdin(f)])  # never over an input
-    reports, rows, paths = [], [], []
-    worst = EXIT_OK
-    with tempfile.TemporaryDirectory(prefix="lod2energy-stdin-") as tmp:
-        for shown in a.files:
-            path = materialise(read_stdin(), stdin_folder or tmp) if is_stdin(shown) else shown
-            paths.append(path)
-            model, feats = read(path, primitive=a.primitive, inner_shells=a.inner_shell, crs=a.crs)
-            geographic = getattr(model, "frame", None) is not None
-            if geographic:
-                from lod2energy.reports import frame_entry, note_frame
-                note_frame(shown, model)
-            elif model is not None and crs_.metres_note(shown, model.crs):
-                log.info(crs_.metres_note(shown, model.crs))
-            tick, close = _progress(a.quiet, os.path.basename(shown))
-            try:
-                rep = validate_features(model, feats, shown, tol, a.lod, tick)
-            finally:
-                close()
-            if geographic:
-                rep.update(frame_entry(model))
-            reports.append(rep)
-            for e in rep["dataset_errors"]:
-                _err(e["info"] if shown in e["info"] else f"{shown}: {e['info']}")
-            if model is None or rep["dataset_errors"]:
-                worst = EXIT_UNUSABLE
-            elif not rep["validity"] and worst == EXIT_OK:
-                worst = EXIT_INVALID
-            codes = Counter(e["code"] for f in rep["features"] for e in f["errors"])
-            rows.append({"file": shown, "features": len(rep["features"]),
-                         "valid": sum(f["validity"] for f in rep["features"]),
-                         "invalid": sum(not f["validity"] for f in rep["features"]),
-                         "ready": rep["energy_overview"]["geometry_ready"],
-                         "codes": " ".join(f"{c}x{n}" for c, n in sorted(codes.items())) or "-"})
-        if getattr(a, "html", None):
-            from lod2energy.reports import json_ready
-            from lod2energy.viz.report import write_report_for_files
-            try:
-                out = reports[0] if len(reports) == 1 else {"type": "lod2energy_reports", "reports": reports}
-                # the files read again for the page: the panels' buildings and every footprint only
-                write_report_for_files(json_ready(out), a.html, paths, tol=tol, input_files=paths,
-                                       read_options={"primitive": a.primitive, "inner_shells": a.inner_shell,
-                                                     "crs": a.crs})
-            except Exception as e:  # noqa: BLE001 - the page is a view of the report
-                _err(f"{a.html} not written: {type(e).__name__}: {e}")
-    return worst, reports, rows
-
-
-def cmd_validate(a) -> int:
-    from lod2energy import safe_write
-    from lod2energy.io.source import is_stdin
-    worst, reports, rows = validate_files(a)
-    if not a.quiet:  # with --report -, standard output carries the JSON alone
-        _print_validate_table(rows, sys.stderr if a.report == "-" else sys.stdout)
-    if a.report:
-        out = reports[0] if len(reports) == 1 else {"type": "lod2energy_reports", "reports": reports}
-        safe_write.write_json_or_stdout(a.report, out, inputs=[f for f in a.files if not is_stdin(f)])
-    return worst
-
-
-def cmd_repair(a) -> int:
-    from lod2energy.repair_file import repair_file
-    return repair_file(a, _tolerances(a))
-
-
-def export_options(a) -> "ExportOptions":
-    """:class:`lod2energy.options.ExportOptions` from the parsed ``export`` arguments."""
-    from lod2energy.exporters.energyplus.options import IdfOptions
-    from lod2energy.exporters.registry import CityJsonOptions
-    from lod2energy.exporters.stl import StlOptions
-    from lod2energy.options import FORMATS, ExportOptions, prepare_options
-
-    from lod2energy.exporters.cfd.options import region_from_args
-    from lod2energy.exporters.energyplus.options import parse_run_period
-
-    formats = tuple(f for f in FORMATS if getattr(a, f, False))
-    run_period = getattr(a, "run_period", None)
-    idf = IdfOptions(**{k: v for k, v in dict(
-        mode=a.idf_mode, version=a.energyplus_version, shading=a.shading, run=a.run, weather=a.weather,
-        lod=a.lod, wwr=a.wwr, zoning=getattr(a, "zoning", None), attic=getattr(a, "attic", None),
-        use=getattr(a, "use", None),
-        run_period=parse_run_period(run_period) if run_period else None).items() if v is not None})
-    table = None
-    if getattr(a, "buildings", None):
-        from lod2energy.thermal.table import load_buildings
-        table = load_buildings(a.buildings)
-    cfd = None
-    if getattr(a, "cfd", False):
-        cfd = options_from_args(a)
-    return ExportOptions(formats, prepare_options(a, _tolerances(a)), idf,
-                         StlOptions(mode=a.stl_mode, ascii=a.stl_ascii, lod=a.lod),
-                         CityJsonOptions(a.cityjson_version), cfd=cfd, html=not getattr(a, "no_html", False),
-                         buildings=table, ids=parse_ids(getattr(a, "ids", None)), region=region_from_args(a),
-                         crs=getattr(a, "crs", None))
-
-
-def parse_ids(spec: str | None) -> tuple[str, ...] | None:
-    """The ids of ``--ids``: comma-separated, or ``@FILE`` with one id a line (``#`` comments),
-    or a CSV whose header has an ``id`` column (a ``--buildings`` table, say)."""
-    if spec is None:
-        return None
-    text = spec
-    if spec.startswith("@"):
-        try:
-            with open(spec[1:], encoding="utf-8-sig") as f:
-                text = f.read()
-        except (OSError, UnicodeDecodeError) as e:
-            raise _UsageError(f"--ids {spec}: cannot read: {getattr(e, 'strerror', None) or 'not UTF-8 text'}") from None
-        head = [c.strip() for c in re.split(r"[,;\t]", text.split("\n", 1)[0])]
-        if "id" in head and len(head) > 1:
-            delim = next(d for d in ",;\t" if d in text.split("\n", 1)[0])
-            text = ",".join(r.get("id") or "" for r in csv.DictReader(io.StringIO(text), delimiter=delim))
-    ids = tuple(dict.fromkeys(t.strip() for t in text.replace("\n", ",").replace("\r", ",").split(",")
-                              if t.strip() and not t.strip().startswith("#")))
-    if not ids:
-        raise _UsageError(f"--ids {spec}: no id given")
-    return ids
-
-
-def run_export(a):
-    """``lod2energy export`` without the summary: (:class:`~lod2energy.pipeline.ExportOutcome`,
-    :class:`~lod2energy.options.ExportOptions`). ``IN`` ``-`` (or ``/dev/stdin``) is written to
-    ``OUTDIR/.lod2energy/input/stdin.city.json[l]`` and read from there."""
-    from lod2energy.errors import ParameterError
-    from lod2energy.io.source import is_stdin, materialise, read_stdin
-    from lod2energy.options import RunOptions
-    from lod2energy.pipeline import export
-    from lod2energy.options import FORMATS
-    if not any(getattr(a, f, False) for f in FORMATS):
-        raise _UsageError("choose at least one of " + ", ".join(f"--{f}" for f in FORMATS))
-    if a.wwr is not None and not (0.0 <= a.wwr < 1.0):
-        raise _UsageError("--wwr must be in [0, 1)")
-    for c in ("wall", "roof", "ground", "window"):
-        v = getattr(a, f"u_{c}")
-        if v is not None and not (v > 0 and v < 100):
-            raise _UsageError(f"--u-{c} must be a positive U-value in W/(m2 K)")
-    if getattr(a, "run_period", None) and not a.idf:
-        raise _UsageError("--run-period is for the IDF (--idf, --run)")
-    if a.jobs is not None and a.jobs < 0:
-        raise _UsageError("--jobs must be >= 0 (0: all cores)")
-    if not (a.timeout > 0) or a.timeout != a.timeout:
-        raise _UsageError("--timeout must be a positive number of seconds")
-    opts = export_options(a)
-    path = a.input
-    if is_stdin(path):
-        if os.path.exists(a.output) and not os.path.isdir(a.output):
-            raise ParameterError(f"-o {a.output}: exists and is not a folder")
-        path = materialise(read_stdin(), os.path.join(a.output, ".lod2energy", "input"))
-    return export(path, a.output, opts, RunOptions(a.jobs, a.dask, a.resume, a.quiet)), opts
-
-
-def cmd_export(a) -> int:
-    from lod2energy.reports import print_export_summary, weather_warnings
-    res, opts = run_export(a)
-    if not a.quiet and res.records and res.exit_code in (EXIT_OK, EXIT_INVALID):
-        print_export_summary(res.records, opts.formats, a.output, res.terrain)
-    if res.records and "idf" in opts.formats:
-        for line in weather_warnings(res.records):
-            log.warning("%s", line)
-    return res.exit_code
-
-
-def cmd_view(a) -> int:
-    """``lod2energy view``: :func:`lod2energy.viz.view.cmd_view`, imported only when it runs."""
-    from lod2energy.viz.view import cmd_view
-    return cmd_view(a)
-
-
-def _commands() -> dict:
-    return {"validate": cmd_validate, "repair": cmd_repair, "export": cmd_export, "view": cmd_view}
+#: The module that declares each command (its ``COMMAND``-style attribute), imported when it runs.
+_DECLARED = {"validate": ("lod2energy.validate_files", "VALIDATE"), "repair": ("lod2energy.repair_file", "REPAIR"),
+             "export": ("lod2energy.pipeline", "EXPORT"), "view": ("lod2energy.viz.view", "VIEW")}
 
 
 def main(argv: list[str] | None = None) -> int:
+    """Parse, run the command by :func:`lod2energy.run.driver.drive`, return its exit code."""
     parser = build_parser()
     a = parser.parse_args(argv)
     if not a.command:
         parser.print_help(sys.stderr)
         return EXIT_UNUSABLE
-    console(getattr(a, "verbose", False))
-    t0 = time.perf_counter()
-    one_blas_thread()  # parallel across buildings, not inside one
-    try:
-        with Signals():  # SIGTERM ends every command as ^C does: one line, exit 143
-            rc = _commands()[a.command](a)
-    except Interrupted as e:
-        _err(f"interrupted by {e.name}")
-        return e.code
-    except _UsageError as e:
-        _err(str(e))
-        return EXIT_UNUSABLE
-    except UnsafeWriteError as e:  # an output that is an input, a link, outside OUTDIR
-        _err(str(e))
-        return EXIT_UNUSABLE
-    except Lod2EnergyError as e:
-        _err(str(e))
-        return EXIT_UNUSABLE if e.code >= 900 and e.code < 950 else EXIT_INVALID
-    except KeyboardInterrupt:
-        _err("interrupted")
-        return 130
-    except OSError as e:
-        _err(f"{e.filename or ''}: {e.strerror}")
-        return EXIT_UNUSABLE
-    if not getattr(a, "quiet", False):
-        print(f"done in {time.perf_counter() - t0:.1f} s", file=sys.stderr)
-    return rc
+    module, name = _DECLARED[a.command]
+    return drive(getattr(importlib.import_module(module), name), a)
 
 
 if __name__ == "__main__":  # pragma: no cover

@@ -6,6 +6,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from lod2energy.errors import ParameterError
+
 
 @dataclass(frozen=True)
 class Tolerances:
@@ -66,6 +68,16 @@ class Tolerances:
 
 
 DEFAULT = Tolerances()
+
+
+def tolerances(a) -> Tolerances:
+    """The :class:`Tolerances` of a command's parsed arguments (ParameterError for a bad one)."""
+    for k in ("snap_tol", "planarity_d2p_tol", "planarity_n_tol"):
+        v = getattr(a, k)
+        if not (v >= 0) or v != v or v == float("inf"):
+            raise ParameterError(f"--{k.replace('_', '-')} must be a finite number >= 0, got {v}")
+    return Tolerances(snap_tol=a.snap_tol, planarity_d2p_tol=a.planarity_d2p_tol,
+                      planarity_n_tol=a.planarity_n_tol, overlap_tol=a.overlap_tol, ignore204=a.ignore204)
 
 USE_TYPES = ("residential", "office", "retail", "education", "health", "hospitality", "industry", "other")
 """Building use types: the choices of ``export --use`` and the results of

@@ -5,13 +5,16 @@ The options are frozen and picklable: they travel with every job to the workers.
 """
 from __future__ import annotations
 
+import csv
+import io
 import os
+import re
 from dataclasses import asdict, dataclass, field, replace
 from importlib.resources import files
 from typing import Any, Mapping
 
 from lod2energy.cache import digest
-from lod2energy.config import DEFAULT, Tolerances
+from lod2energy.config import DEFAULT, Tolerances, tolerances
 from lod2energy.errors import ParameterError
 from lod2energy.model import CityModel
 from lod2energy.thermal import ThermalOptions, country_from_crs
@@ -254,3 +257,74 @@ def resolve(options: ExportOptions, model: CityModel) -> ExportOptions:
     if options.prepare.lod is not None and stl.lod is None:
         stl = replace(stl, lod=options.prepare.lod)
     return replace(options, prepare=prep, idf=idf, stl=stl)
+
+
+def chosen_formats(a) -> tuple[str, ...]:
+    """The writers ``export``'s parsed arguments choose (``--idf``, ``--stl``, ...), in :data:`FORMATS` order."""
+    return tuple(f for f in FORMATS if getattr(a, f, False))
+
+
+def export_options(a) -> "ExportOptions":
+    """:class:`ExportOptions` from the parsed ``export`` arguments (ParameterError for a bad one)."""
+    from lod2energy.exporters.cfd.options import options_from_args, region_from_args
+    from lod2energy.exporters.energyplus.options import IdfOptions, parse_run_period
+    from lod2energy.exporters.registry import CityJsonOptions
+    from lod2energy.exporters.stl import StlOptions
+
+    formats = chosen_formats(a)
+    if not formats:
+        raise ParameterError("choose at least one of " + ", ".join(f"--{f}" for f in FORMATS))
+    if a.wwr is not None and not (0.0 <= a.wwr < 1.0):
+        raise ParameterError("--wwr must be in [0, 1)")
+    for c in ("wall", "roof", "ground", "window"):
+        v = getattr(a, f"u_{c}")
+        if v is not None and not (v > 0 and v < 100):
+            raise ParameterError(f"--u-{c} must be a positive U-value in W/(m2 K)")
+    if getattr(a, "run_period", None) and not a.idf:
+        raise ParameterError("--run-period is for the IDF (--idf, --run)")
+    if a.jobs is not None and a.jobs < 0:
+        raise ParameterError("--jobs must be >= 0 (0: all cores)")
+    if not (a.timeout > 0) or a.timeout != a.timeout:
+        raise ParameterError("--timeout must be a positive number of seconds")
+
+    run_period = getattr(a, "run_period", None)
+    idf = IdfOptions(**{k: v for k, v in dict(
+        mode=a.idf_mode, version=a.energyplus_version, shading=a.shading, run=a.run, weather=a.weather,
+        lod=a.lod, wwr=a.wwr, zoning=getattr(a, "zoning", None), attic=getattr(a, "attic", None),
+        use=getattr(a, "use", None),
+        run_period=parse_run_period(run_period) if run_period else None).items() if v is not None})
+    table = None
+    if getattr(a, "buildings", None):
+        from lod2energy.thermal.table import load_buildings
+        table = load_buildings(a.buildings)
+    cfd = None
+    if getattr(a, "cfd", False):
+        cfd = options_from_args(a)
+    return ExportOptions(formats, prepare_options(a, tolerances(a)), idf,
+                         StlOptions(mode=a.stl_mode, ascii=a.stl_ascii, lod=a.lod),
+                         CityJsonOptions(a.cityjson_version), cfd=cfd, html=not getattr(a, "no_html", False),
+                         buildings=table, ids=parse_ids(getattr(a, "ids", None)), region=region_from_args(a),
+                         crs=getattr(a, "crs", None))
+
+
+def parse_ids(spec: str | None) -> tuple[str, ...] | None:
+    """The ids of ``--ids``: comma-separated, or ``@FILE`` with one id a line (``#`` comments),
+    or a CSV whose header has an ``id`` column (a ``--buildings`` table, say)."""
+    if spec is None:
+        return None
+    text = spec
+    if spec.startswith("@"):
+        try:
+            with open(spec[1:], encoding="utf-8-sig") as f:
+                text = f.read()
+        except (OSError, UnicodeDecodeError) as e:
+            raise ParameterError(f"--ids {spec}: cannot read: {getattr(e, 'strerror', None) or 'not UTF-8 text'}") from None
+        head = [c.strip() for c in re.split(r"[,;\t]", text.split("\n", 1)[0])]
+        if "id" in head and len(head) > 1:
+            delim = next(d for d in ",;\t" if d in text.split("\n", 1)[0])
+            text = ",".join(r.get("id") or "" for r in csv.DictReader(io.StringIO(text), delimiter=delim))
+    ids = tuple(dict.fromkeys(t.strip() for t in text.replace("\n", ",").replace("\r", ",").split(",")
+                              if t.strip() and not t.strip().startswith("#")))
+    if not ids:
+        raise ParameterError(f"--ids {spec}: no id given")
+    return ids

@@ -34,16 +34,20 @@ from lod2energy.run.executor import Failure, Overrun, ProcessPoolExecutor, make_
 from lod2energy.exporters.registry import writers
 from lod2energy.run.interrupt import EXIT_INVALID, EXIT_OK, EXIT_SIGINT, EXIT_UNUSABLE, Interrupted, Signals
 from lod2energy.io import read
+from lod2energy.io.source import is_stdin, materialise, read_stdin
+from lod2energy.logs import log
 from lod2energy.run.resume import JOURNAL_NAME, Journal, header, records_of
 from lod2energy.model import Building, FeatureError
 from lod2energy.neighbours import neighbours_within, spatial_order
-from lod2energy.options import NEEDS_POSITIONS, ExportOptions, RunOptions, resolve
+from lod2energy.options import NEEDS_POSITIONS, ExportOptions, RunOptions, chosen_formats, export_options, resolve
 from lod2energy.run.record_store import RecordStore
 from lod2energy.records import BuildingRecord, ExportRecord
 from lod2energy.prepare import prepare_building
 from lod2energy.reports import (
-    CsvRows, err, note_frame, progress, refuse_overwriting_inputs, write_html_report, write_reports_from_journal,
+    CsvRows, err, note_frame, print_export_summary, refuse_overwriting_inputs, weather_warnings, write_html_report,
+    write_reports_from_journal,
 )
+from lod2energy.run.driver import Command, Run, progress
 from lod2energy.safe_write import sweep_stale
 from lod2energy.study import joined, report_unknown_ids, selection_reach, selector, study_entry
 from lod2energy.run.spool import Job, load_spooled, reusable, spool_building
@@ -511,3 +515,33 @@ def _context_or_record(task):
     if task[0] == "record":
         return task[2]
     return context_pass(task)
+
+
+# ============================================================================ the command
+
+def export_file(run: Run) -> None:
+    """The export of ``IN`` into ``OUTDIR`` (``-``: standard input, written to
+    ``OUTDIR/.lod2energy/input/stdin.city.json[l]`` and read from there). The run's ``made``:
+    ``options`` (:class:`~lod2energy.options.ExportOptions`), ``outcome`` (:class:`ExportOutcome`)."""
+    a = run.args
+    opts = run.made["options"] = export_options(a)
+    path = a.input
+    if is_stdin(path):
+        if os.path.exists(a.output) and not os.path.isdir(a.output):
+            raise ParameterError(f"-o {a.output}: exists and is not a folder")
+        path = materialise(read_stdin(), os.path.join(a.output, ".lod2energy", "input"))
+    res = run.made["outcome"] = export(path, a.output, opts, RunOptions(a.jobs, a.dask, a.resume, a.quiet))
+    run.code = res.exit_code
+
+
+def print_summary(run: Run) -> None:
+    """The table of what was written (none with ``-q``) and the weather stations' warnings."""
+    res, opts = run.made["outcome"], run.made["options"]
+    if not run.args.quiet and res.records and res.exit_code in (EXIT_OK, EXIT_INVALID):
+        print_export_summary(res.records, opts.formats, run.args.output, res.terrain)
+    if res.records and "idf" in opts.formats:
+        for line in weather_warnings(res.records):
+            log.warning("%s", line)
+
+
+EXPORT = Command("export", (export_file, print_summary), writers=chosen_formats)

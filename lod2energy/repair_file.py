@@ -5,17 +5,17 @@ from __future__ import annotations
 import argparse
 import os
 import sys
-import tempfile
 from dataclasses import replace
 
-from lod2energy.config import Tolerances
+from lod2energy.config import Tolerances, tolerances
 from lod2energy.run.executor import Failure, Overrun, make_executor
-from lod2energy.run.interrupt import EXIT_OK, EXIT_INVALID, EXIT_UNUSABLE
+from lod2energy.run.interrupt import EXIT_INVALID, EXIT_UNUSABLE
 from lod2energy.io import cityjson, read
 from lod2energy.model import Building, FeatureError, frozen_mapping
 from lod2energy.options import hard_budget
 from lod2energy.repair import dataset_table, repair_attributes, repair_features, repair_info
-from lod2energy.reports import err, frame_entry, json_ready, note_frame, progress, refuse_overwriting_inputs
+from lod2energy.reports import err, frame_entry, json_ready, note_frame, refuse_overwriting_inputs
+from lod2energy.run.driver import Command, Run, progress
 from lod2energy.io.source import is_stdin, materialise, read_stdin
 from lod2energy.safe_write import UnsafeWriteError, check_target, write_json_or_stdout
 from lod2energy.validate.report import error_json
@@ -69,16 +69,6 @@ def _print_repair_summary(table: dict, out=None) -> None:
     print("stages: " + ", ".join(f"{k}: {v}" for k, v in (table.get("stages") or {}).items()), file=out)
 
 
-def repair_file(a, tol: Tolerances) -> int:
-    """``lod2energy repair IN -o OUT``: every CityObject kept, defective buildings replaced by solids.
-    ``IN`` ``-`` (or ``/dev/stdin``) reads standard input; ``--report -`` writes the report on
-    standard output (the summary then goes to stderr)."""
-    if is_stdin(a.input):
-        with tempfile.TemporaryDirectory(prefix="lod2energy-stdin-") as tmp:
-            return repair_to(replace_input(a, materialise(read_stdin(), tmp)), tol)[0]
-    return repair_to(a, tol)[0]
-
-
 def replace_input(a, path: str):
     """The parsed arguments ``a`` reading ``path``."""
     b = argparse.Namespace(**vars(a))
@@ -86,12 +76,16 @@ def replace_input(a, path: str):
     return b
 
 
-def repair_to(a, tol: Tolerances) -> tuple[int, dict | None]:
-    """:func:`repair_file`: (exit code, the repair report; None when the input is unusable)."""
+def read_input(run: Run) -> None:
+    """Standard input written to a scratch file; the output's suffix and targets checked; the file read."""
+    a = run.args
+    run.made["tol"] = tolerances(a)
+    if is_stdin(a.input):
+        a = run.args = replace_input(a, materialise(read_stdin(), run.scratch()))
     if not a.output.lower().endswith(REPAIR_SUFFIXES):
         err(f"repair writes CityJSON (.json, .city.json) or CityJSONSeq (.jsonl, .city.jsonl): "
-             f"cannot write {a.output!r}")
-        return EXIT_UNUSABLE, None
+            f"cannot write {a.output!r}")
+        run.stop(EXIT_UNUSABLE)
     refuse_overwriting_inputs([a.output, a.report if a.report != "-" else None], [a.input])
     if a.report and a.report != "-" and os.path.abspath(a.report) == os.path.abspath(a.output):
         raise UnsafeWriteError(f"--report {a.report} is the output file")
@@ -99,26 +93,30 @@ def repair_to(a, tol: Tolerances) -> tuple[int, dict | None]:
     if model is None:
         for fe in feats:
             err(fe.message)
-        return EXIT_UNUSABLE, None
+        run.stop(EXIT_UNUSABLE)
     note_frame(a.input, model)
-    out_b: list[Building] = []
-    records: list[dict] = []
-    lost: list[dict] = []
-    html_inputs: dict = {}
+    run.made["html_inputs"] = {}
     if getattr(a, "html", None):
         check_target(a.html, None, [a.input, a.output])
-        feats = keep(feats, html_inputs)
+        feats = keep(feats, run.made["html_inputs"])
+    run.made.update(model=model, feats=feats)
+
+
+def repair_each(run: Run) -> None:
+    """Every building by the ladder on an executor; the report's records, the exit code."""
+    a = run.args
+    out_b, records, lost = run.made["buildings"], run.made["records"], run.made["unreadable"] = [], [], []
     tick, close = progress(a.quiet, os.path.basename(a.input))
-    worst = EXIT_OK
     try:
-        for item in _repaired(feats, tol, a.timeout, a.merge_parts, a.lod, getattr(a, "jobs", None)):
+        for item in _repaired(run.made["feats"], run.made["tol"], a.timeout, a.merge_parts, a.lod,
+                              getattr(a, "jobs", None)):
             tick()
             if isinstance(item, FeatureError):
                 err(f"{a.input}: {item.message}")
                 if item.id is None:
-                    worst = EXIT_UNUSABLE
+                    run.worse(EXIT_UNUSABLE)
                 lost.append({"id": item.id, "type": item.type, "errors": [error_json(item.code, "", item.message)]})
-                worst = max(worst, EXIT_INVALID)
+                run.worse(EXIT_INVALID)
                 continue
             if item.is_building:
                 rep = {"id": item.id, **{k: v for k, v in repair_info(item).items() if k != "geometries"}}
@@ -127,25 +125,38 @@ def repair_to(a, tol: Tolerances) -> tuple[int, dict | None]:
                     err(f"{a.input}: {item.type} {item.id}: {rep['error']}")
                 after = rep.get("defects_after") or []
                 if rep.get("stage") == "irreparable" or any(c != 601 for c in after):
-                    worst = max(worst, EXIT_INVALID)
+                    run.worse(EXIT_INVALID)
             out_b.append(with_repair_attributes(item))
     finally:
         close()
-    out_dir = os.path.dirname(os.path.abspath(a.output))
-    os.makedirs(out_dir, exist_ok=True)
+
+
+def write_output(run: Run) -> None:
+    """The repaired file, the report (``doc``) and the page."""
+    a, m = run.args, run.made
+    os.makedirs(os.path.dirname(os.path.abspath(a.output)), exist_ok=True)
     check_target(a.output, None, [a.input])
-    cityjson.write(a.output, model, out_b)
-    table = dataset_table(out_b)
-    doc = {"input_file": getattr(a, "shown", a.input), "output_file": a.output, **frame_entry(model),
-           "summary": table, "buildings": records, "unreadable": lost}
+    cityjson.write(a.output, m["model"], m["buildings"])
+    m["table"] = dataset_table(m["buildings"])
+    doc = m["doc"] = {"input_file": getattr(a, "shown", a.input), "output_file": a.output, **frame_entry(m["model"]),
+                      "summary": m["table"], "buildings": m["records"], "unreadable": m["unreadable"]}
     if a.report:
         write_json_or_stdout(a.report, doc, inputs=[a.input, a.output])
     if getattr(a, "html", None):
         try:
-            write_report_html(json_ready(doc), a.html, inputs=html_inputs, outputs={b.id: b for b in out_b},
-                              tol=tol, input_files=[a.input, a.output])
+            write_report_html(json_ready(doc), a.html, inputs=m["html_inputs"],
+                              outputs={b.id: b for b in m["buildings"]}, tol=m["tol"], input_files=[a.input, a.output])
         except Exception as e:  # noqa: BLE001 - the page is a view of the report
             err(f"{a.html} not written: {type(e).__name__}: {e}")
-    if not a.quiet:  # with --report -, standard output carries the JSON alone
-        _print_repair_summary(table, sys.stderr if a.report == "-" else sys.stdout)
-    return worst, doc
+
+
+def print_summary(run: Run) -> None:
+    """The summary line and the stages; with ``--report -`` on stderr; none with ``-q``."""
+    if not run.args.quiet:  # with --report -, standard output carries the JSON alone
+        _print_repair_summary(run.made["table"], sys.stderr if run.args.report == "-" else sys.stdout)
+
+
+#: ``lod2energy repair IN -o OUT``: every CityObject kept, defective buildings replaced by solids;
+#: ``IN`` ``-`` reads standard input, ``--report -`` writes the report on standard output. The
+#: run's ``made``: ``doc`` (the report; absent for an unusable input), ``buildings``, ``table``.
+REPAIR = Command("repair", (read_input, repair_each, write_output, print_summary))

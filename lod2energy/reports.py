@@ -7,7 +7,6 @@ import csv
 import io
 import json
 import os
-import sys
 from collections import Counter
 from typing import TYPE_CHECKING, Iterable, Sequence
 
@@ -32,16 +31,6 @@ if TYPE_CHECKING:
 def err(msg: str) -> None:
     """One error of a building or file, on the package's logger (the CLI prints ``lod2energy: error: ...``)."""
     log.error("%s", msg)
-
-
-def progress(quiet: bool, desc: str, total: int | None = None):
-    """``(tick, close)`` of a progress bar on stderr (no-ops when ``quiet``); with ``total``
-    it shows the share done and an ETA."""
-    if quiet:
-        return lambda: None, lambda: None
-    from tqdm import tqdm
-    bar = tqdm(desc=desc, unit=" buildings", file=sys.stderr, disable=None, leave=False, total=total)
-    return (lambda: bar.update(1)), bar.close
 
 
 def frame_entry(model: CityModel | None) -> dict:

@@ -183,7 +183,8 @@ def test_terraced_3dbag_subset_with_shading_agrees_across_executors(tmp_path, ca
 
 def test_dask_local_cluster_writes_the_same_bytes_as_jobs_1(tmp_path, capsys):
     distributed = pytest.importorskip("dask.distributed")
-    from lod2energy.cli import export_options, build_parser
+    from lod2energy.cli import build_parser
+    from lod2energy.options import export_options
     from lod2energy.run.executor import DaskExecutor
     from lod2energy.options import RunOptions
     from lod2energy.pipeline import export
@@ -304,7 +305,8 @@ def test_dask_stops_a_cpu_bound_job_at_its_budget_and_the_worker_goes_on(tmp_pat
 def test_dask_reports_a_100000_face_building_timeout_with_the_bytes_of_jobs_1(tmp_path, capsys):
     # worker processes (processes=False is covered by the budget test above)
     distributed = pytest.importorskip("dask.distributed")
-    from lod2energy.cli import build_parser, export_options
+    from lod2energy.cli import build_parser
+    from lod2energy.options import export_options
     from lod2energy.run.executor import DaskExecutor
     from lod2energy.options import RunOptions
     from lod2energy.pipeline import export

@@ -185,19 +185,13 @@ def test_validation_and_repair_reports_render(tmp_path):
 
 
 def test_view_writes_the_panel_of_one_building(tmp_path, capsys):
-    from lod2energy.cli import add_view_parser
-    from lod2energy.viz.view import cmd_view
-    import argparse
+    from lod2energy.cli import main
     src = shared_path("citygml-real", "berlin", "3900_5819.gml")
-    p = argparse.ArgumentParser()
-    add_view_parser(p.add_subparsers(dest="command"))
-    a = p.parse_args(["view", str(src), "-o", str(tmp_path), "--no-open"])
-    assert cmd_view(a) == 0
+    assert main(["view", str(src), "-o", str(tmp_path), "--no-open", "-q"]) == 0
     page = capsys.readouterr().out.strip()
     d = page_data(open(page, encoding="utf-8").read())
     assert len(d["panels"]) == 1 and d["buildings"][0]["id"] == d["panels"][0]
-    a = p.parse_args(["view", str(src), "--id", "no-such-building", "-o", str(tmp_path), "--no-open"])
-    assert cmd_view(a) == 2
+    assert main(["view", str(src), "--id", "no-such-building", "-o", str(tmp_path), "--no-open"]) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and "no-such-building" in err
 

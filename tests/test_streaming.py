@@ -114,7 +114,8 @@ def test_streamed_document_refuses_two_objects_with_one_id():
 @pytest.fixture(scope="module")
 def delft_export(tmp_path_factory):
     """One export of Delft with the one-file writers and the records it returned."""
-    from lod2energy.cli import build_parser, export_options
+    from lod2energy.cli import build_parser
+    from lod2energy.options import export_options
     from lod2energy.options import RunOptions
     from lod2energy.pipeline import export
     out = tmp_path_factory.mktemp("delft") / "out"
@@ -186,7 +187,8 @@ def test_one_file_writers_hold_one_building_at_a_time(delft_export, monkeypatch)
         return b
 
     monkeypatch.setattr(Spooled, "_get", tracked)
-    from lod2energy.cli import build_parser, export_options
+    from lod2energy.cli import build_parser
+    from lod2energy.options import export_options
     from lod2energy.io import read
     from lod2energy.options import resolve
     model, _ = read(str(DELFT))

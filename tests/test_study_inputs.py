@@ -282,7 +282,7 @@ def test_ids_from_a_file(tmp_path):
     out = tmp_path / "out"
     assert main(["export", src, "-o", str(out), "--idf", "-q", "-j", "1", "--ids", f"@{ids}"]) == 0
     assert sorted(p.name for p in out.glob("*.idf")) == ["b0.idf", "b2.idf"]
-    from lod2energy.cli import parse_ids
+    from lod2energy.options import parse_ids
     table = tmp_path / "b.csv"
     table.write_text("year;id\n1950;b1\n;b3\n", encoding="utf-8")
     assert parse_ids(f"@{table}") == ("b1", "b3") and parse_ids(" b4, b5 ,b4") == ("b4", "b5")

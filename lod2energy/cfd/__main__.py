@@ -15,40 +15,49 @@ import time
 from dataclasses import replace
 
 from lod2energy.config import DEFAULT
-from lod2energy.errors import Lod2EnergyError
-from lod2energy.exporters.cfd.options import add_cli_arguments, options_from_args
+from lod2energy.exporters.cfd.options import CfdOptions, add_cli_arguments, options_from_args
 from lod2energy.exporters.cfd.region import building_hull, make_region
 from lod2energy.exporters.cfd.writer import export_case
 from lod2energy.io import read
+from lod2energy.logs import log
 from lod2energy.model import FeatureError
 from lod2energy.prepare import prepare
+from lod2energy.run.driver import Command, Run, drive
+from lod2energy.run.interrupt import EXIT_INVALID, EXIT_OK, EXIT_UNUSABLE
 from lod2energy.safe_write import write_json
 
 
-def main(argv: list[str] | None = None) -> int:
+def parser() -> argparse.ArgumentParser:
+    """The command's arguments: ``IN -o OUTDIR`` and the case's options."""
     ap = argparse.ArgumentParser(prog="python -m lod2energy.cfd", description=__doc__.splitlines()[0])
-    ap.add_argument("input")
+    ap.add_argument("input", help="input file (any format validate reads)")
     ap.add_argument("-o", "--output", required=True, help="OUTDIR (the case goes to OUTDIR/cfd)")
-    ap.add_argument("--lod", default=None)
+    ap.add_argument("--lod", default=None, help="LoD of the envelope (default: the highest)")
     ap.add_argument("--iterations", type=int, default=1000, help="simpleFoam iterations in controlDict")
     ap.add_argument("--nice", type=int, default=10, help="nice level of the meshing tools")
     add_cli_arguments(ap)
-    a = ap.parse_args(argv)
+    return ap
 
-    try:
-        opts = replace(options_from_args(a), iterations=a.iterations, nice=a.nice)
-    except Lod2EnergyError as e:
-        print(f"lod2energy: error: {e}", file=sys.stderr)
-        return 2
+
+def read_input(run: Run) -> None:
+    """The case's options and the file read (exit 2 when it cannot be)."""
+    a = run.args
+    run.made["options"] = replace(options_from_args(a), iterations=a.iterations, nice=a.nice)
     model, feats = read(a.input)
     if model is None:
         for fe in feats:
-            print(f"lod2energy: error: {fe.message}", file=sys.stderr)
-        return 2
+            log.error("%s", fe.message)
+        run.stop(EXIT_UNUSABLE)
+    run.made.update(model=model, feats=feats)
+
+
+def prepare_buildings(run: Run) -> None:
+    """Every building that can meet the region validated, repaired and labelled, as ``export`` does."""
+    a, m = run.args, run.made
     t0 = time.perf_counter()
-    prepared, others, errors = [], [], []
-    region_filter = _prefilter(opts)
-    for item in feats:
+    prepared, others, errors = m["prepared"], m["others"], m["errors"] = [], [], []
+    region_filter = _prefilter(m["options"])
+    for item in m["feats"]:
         if isinstance(item, FeatureError):
             errors.append(item.message)
             continue
@@ -59,7 +68,7 @@ def main(argv: list[str] | None = None) -> int:
             prepared.append(item)  # outside the region: left out by export_case, not worth repairing
             continue
         try:
-            pb, rec = prepare(item, DEFAULT, a, model)
+            pb, rec = prepare(item, DEFAULT, a, m["model"])
         except Exception as e:  # noqa: BLE001 - one building never stops the batch
             errors.append(f"{item.id}: pipeline failed: {type(e).__name__}: {e}")
             continue
@@ -67,24 +76,37 @@ def main(argv: list[str] | None = None) -> int:
             errors.append(f"{item.id}: not geometry-ready: {'; '.join(rec.energy.get('reasons', []))}")
             continue
         prepared.append(pb)
-    t_prep = time.perf_counter() - t0
+    m["seconds_prepare"] = time.perf_counter() - t0
+
+
+def write_case(run: Run) -> None:
+    """The case, ``OUTDIR/cfd_report.json``, the problems logged and a JSON summary on stdout."""
+    a, m = run.args, run.made
     os.makedirs(a.output, exist_ok=True)
-    res = export_case(prepared + others, model, a.output, opts)
-    report = {"input_file": a.input, "seconds_prepare": round(t_prep, 2), "input_errors": errors, "ok": res.ok, "path": res.path,
-              "problems": list(res.problems), "stats": dict(res.stats), "building_ids": list(res.building_ids)}
+    res = export_case(m["prepared"] + m["others"], m["model"], a.output, m["options"])
+    report = {"input_file": a.input, "seconds_prepare": round(m["seconds_prepare"], 2), "input_errors": m["errors"],
+              "ok": res.ok, "path": res.path, "problems": list(res.problems), "stats": dict(res.stats),
+              "building_ids": list(res.building_ids)}
     write_json(os.path.join(a.output, "cfd_report.json"), report, root=a.output, inputs=[a.input])
-    for e in errors:
-        print(f"lod2energy: error: {a.input}: {e}", file=sys.stderr)
+    for e in m["errors"]:
+        log.error("%s: %s", a.input, e)
     for p in res.problems:
-        print(f"lod2energy: {'note' if p.startswith('building ') else 'error'}: {p}", file=sys.stderr)
+        (log.info if p.startswith("building ") else log.error)("%s", p)
     st = res.stats
-    m = st.get("mesh", {})
+    mesh = st.get("mesh", {})
     print(json.dumps({"ok": res.ok, "path": res.path, "buildings": st.get("buildings_included"),
-                      "cells": m.get("cells"), "mesh_ok": m.get("check_mesh_ok"),
-                      "carved_volume_error": m.get("carved_volume_error")}))
-    if not res.path:
-        return 2
-    return 0 if res.ok else 1
+                      "cells": mesh.get("cells"), "mesh_ok": mesh.get("check_mesh_ok"),
+                      "carved_volume_error": mesh.get("carved_volume_error")}))
+    run.code = EXIT_UNUSABLE if not res.path else EXIT_OK if res.ok else EXIT_INVALID
+
+
+#: The CFD case's command: read -> prepare -> the case.
+CFD = Command("cfd", (read_input, prepare_buildings, write_case), writers=lambda a: ("cfd",))
+
+
+def main(argv: list[str] | None = None) -> int:
+    """``python -m lod2energy.cfd``: the exit code."""
+    return drive(CFD, parser().parse_args(argv))
 
 
 def _prefilter(opts: CfdOptions):

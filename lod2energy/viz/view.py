@@ -21,6 +21,7 @@ from lod2energy.io.source import is_stdin, materialise, read_stdin
 from lod2energy.model import Building, FeatureError
 from lod2energy.prepare import prepare
 from lod2energy.reports import report_lazily
+from lod2energy.run.driver import Command, Run
 from lod2energy.viz.render import slug
 from lod2energy.viz.report import DEFAULT_CAP, write_report_for_files, write_report_html
 
@@ -93,17 +94,17 @@ def view(path, building_id: str | None = None, outdir=".", *, tol: Tolerances = 
     return out
 
 
-def cmd_view(args) -> int:
-    """Run ``lod2energy view``; prints the page's path. 0 on success, 2 on unusable input."""
-    try:
-        out = view(args.input, args.id, args.output, options=SimpleNamespace(
-            lod=getattr(args, "lod", None), timeout=getattr(args, "timeout", 30.0), merge_parts=False),
-            open_browser=not getattr(args, "no_open", False))
-    except (ViewError, OSError) as e:
-        print(f"lod2energy: error: {e}", file=sys.stderr)
-        return 2
-    print(out)
-    return 0
+def show(run: Run) -> None:
+    """Write (and open) the page of ``run.args``' building and print its path (``made["page"]``)."""
+    a = run.args
+    run.made["page"] = view(a.input, a.id, a.output, options=SimpleNamespace(
+        lod=getattr(a, "lod", None), timeout=getattr(a, "timeout", 30.0), merge_parts=False),
+        open_browser=not getattr(a, "no_open", False))
+    print(run.made["page"])
+
+
+#: ``lod2energy view``: exit 0 when the page is written, 2 on unusable input (:class:`ViewError`).
+VIEW = Command("view", (show,))
 
 
 def prepare_outputs(ids, inputs: dict[str, Building], tol: Tolerances = DEFAULT, options=None) -> dict:
