@@ -191,6 +191,283 @@ def warm(options: ExportOptions) -> None:
         importlib.import_module("lod2energy.exporters.energyplus.run").idd()
 
 
+class _Export:
+    """One export under way: what its passes share (the input, the journal, the records, the
+    executor, the one-file writers' process beside pass 2) and the passes themselves
+    (:data:`PASSES`), run in order by :func:`export`."""
+
+    def __init__(self, input_path: str, out: str, options: ExportOptions, run: RunOptions, model, feats, executor):
+        self.input_path, self.out, self.options, self.run, self.model, self.feats = (
+            input_path, out, options, run, model, feats)
+        self.inputs = (input_path,)
+        spool = os.path.join(out, ".lod2energy", "spool")
+        os.makedirs(spool, exist_ok=True)
+        self.table = options.buildings or {}
+        self.selection = frozenset(options.ids) if options.ids is not None else None
+        self.selected = selector(self.selection, options.region)
+        # the table's rows travel with their buildings, not with every job
+        self.job = Job(replace(options, buildings=None), out, spool, model.crs, getattr(model, "frame", None))
+        self.chosen = writers(options.formats)
+        self.scope = {w.name: w.scope(options.writer_options(w.name)) for w in self.chosen}
+        self.near_selected = selection_reach(input_path, self.selected, self.chosen, self.scope, options)
+        self.input_ids: set[str] = set()  # every building id of the file (ids of --buildings / --ids not in it are reported)
+        self.study = study_entry(options)  # report.json's "study"
+        self.neighbour_boxes: dict[int, tuple] = {}  # buildings outside --ids that serve as neighbours: their boxes
+        self.journal = Journal(os.path.join(out, JOURNAL_NAME), out, self.inputs,
+                               header(input_path, options.fingerprint()), resume=run.resume)
+        self.csv_rows = CsvRows(os.path.join(out, "report.csv"), out, self.inputs)  # a row as each building finishes
+        self.prev_b = RecordStore(scratch=spool)  # the journal's records of an earlier run (--resume)
+        self.prev_c: dict[int, dict] = {}
+        for ln in self.journal.previous():
+            if ln.get("kind") == "building":
+                self.prev_b[int(ln["seq"])] = BuildingRecord.from_json(ln)
+            elif ln.get("kind") == "context":
+                self.prev_c[int(ln["seq"])] = ln
+        self.records = RecordStore(scratch=spool)  # seq -> record, on disk: the parent's memory stays flat
+        self.others: list[int] = []
+        self.terrain: list[dict] = []  # the input's terrain the one-file writers carried
+        self.reused: set[int] = set()
+        self.dataset_errors: list[str] = []
+        self.unusable = False
+        self.interrupted = None
+        self.own = executor is None
+        self.ex = executor
+        self.page_pool = None  # the process pool that renders report.html's pictures, kept open for it
+        self.beside, self.side = None, []  # the one-file writers' process beside pass 2 (Beside), and its writers
+        self.demoted = 0  # buildings no longer compliant after pass 2 (a file that failed its check): carriers again
+        self.closing = []  # the progress bars' close functions
+        # the plan footprints of every object as read, in input order, for report.html
+        self.plans = FootprintSpill(out) if options.html else None
+        self.resumed_plans: dict[int, tuple[str, list]] = {}  # of resumed objects, drawn here (no job reads them)
+
+    def progress(self, desc: str, total: int | None = None):
+        tick, close = progress(self.run.quiet, desc, total=total)
+        self.closing.append(close)
+        return tick, close
+
+    def start_executor(self) -> None:
+        """The executor (ours unless one was given), warmed before a process pool forks its workers."""
+        if self.own:
+            self.ex = make_executor(self.run.jobs, self.run.dask)
+        if isinstance(self.ex, ProcessPoolExecutor):
+            warm(self.options)  # before the workers are forked (at their first job): they share it
+            # report.html's pictures are rendered by the pool when its workers are ours
+            if self.options.html and self.own:
+                self.page_pool = self.ex
+
+    # ------------------------------------------------------------------------ pass 1
+    def tasks(self) -> Iterator[tuple]:
+        """The first pass's jobs, in input order: ``(seq, kind, payload, job)``."""
+        for seq, item in enumerate(self.feats):
+            if isinstance(item, FeatureError):
+                if item.id is None:  # the file itself (e.g. an XML external entity)
+                    self.dataset_errors.append(item.message)
+                    self.journal.append({"kind": "dataset_error", "code": item.code, "message": item.message})
+                    continue
+                rec = BuildingRecord(seq, str(item.id), item.type or "unknown", "unreadable", (item.code,),
+                                     message=item.message)
+                yield (seq, "record", rec, self.job)
+            elif not item.is_building:
+                yield (seq, "other", item, self.job)
+            else:
+                item = joined(item, self.table, self.input_ids)
+                if self.selected is not None and not self.selected(item):
+                    if self.near_selected(item):
+                        yield (seq, "neighbour", item, self.job)
+                elif self.run.resume and reusable(prev := self.prev_b.get(seq), item, self.job, self.per_building):
+                    self.reused.add(seq)
+                    if self.plans is not None:
+                        self.resumed_plans[seq] = (item.id, plan_of(item))
+                    yield (seq, "record", prev, self.job)
+                else:
+                    yield (seq, "building", item, self.job)
+
+    def pass_one(self) -> None:
+        """Every object, in input order: prepared, written by the writers of scope "building", spooled."""
+        self.per_building = [n for n, s in self.scope.items() if s == "building"]
+        timeout = self.options.job_timeout
+        tick, close = self.progress(os.path.basename(self.input_path))
+        for task, res in self.ex.map(first_pass, self.tasks(), timeout):
+            seq, kind, payload = task[0], task[1], task[2]
+            tick()
+            if kind == "neighbour":  # prepared and spooled for its neighbours, not reported
+                r = res.record if isinstance(res, Pass1) else None
+                if r is not None and r.outcome == "done" and r.energy.geometry_ready and r.bbox is not None:
+                    self.neighbour_boxes[seq] = r.bbox
+                continue
+            if isinstance(res, Pass1):
+                plan, res = res.plan, res.record
+            else:  # the job did not finish: its object as read is drawn here
+                plan = plan_of(payload) if self.plans is not None and kind != "record" else None
+            if self.plans is not None:
+                if kind == "record":
+                    plan = self.resumed_plans.pop(seq, (None, None))[1]
+                if plan is not None:
+                    self.plans.add(str(payload.id), plan)
+            if kind == "other":
+                if not isinstance(res, (Overrun, Failure)):
+                    self.others.append(seq)  # spooled: written with the CityJSON
+                continue
+            if isinstance(res, Overrun):  # not spooled: no later pass reads a building that is not "done"
+                rec = BuildingRecord(seq, str(payload.id), payload.type, "timeout",
+                                     message=f"timeout: not finished within {timeout:g} s "
+                                     f"(--timeout); kept as read, not exported")
+            elif isinstance(res, Failure):
+                rec = BuildingRecord(seq, str(payload.id), payload.type, "failed",
+                                     message=f"pipeline failed: {res.message}")
+            else:
+                rec = res
+            if rec.outcome == "unreadable":  # the reader's message names the object itself
+                err(f"{self.input_path}: {rec.message}")
+            elif rec.outcome != "done":
+                err(f"{self.input_path}: {rec.type} {rec.id}: {rec.message}")
+            elif rec.repair.error:
+                err(f"{self.input_path}: {rec.type} {rec.id}: {rec.repair.error}")
+            for e in rec.exports:
+                if not e.ok:
+                    err(e.message(rec.id))
+            self.records[seq] = rec
+            self.journal.append({"kind": "building", **rec.to_json()})
+            self.csv_rows.append(rec)
+        close()
+        self.study.update(report_unknown_ids(self.input_path, self.input_ids, self.table, self.selection))
+        self.job = replace(self.job, neighbours=tuple(sorted(self.neighbour_boxes)))  # for the one-file writers
+        # the one-file writers that need nothing of pass 2 run beside it, in a process of their own
+        self.unusable = bool(self.dataset_errors) and not any(r.outcome == "done" for r in self.records.values())
+        self.side = [w for w in self.chosen if self.scope[w.name] == "dataset" and w.name in BESIDE]
+        if (self.side and not self.unusable and isinstance(self.ex, ProcessPoolExecutor)
+                and beside_ok(self.options)):
+            self.beside = Beside(write_beside, (tuple(self.side), self.options, self.job, self.records, self.others,
+                                                self.model, self.input_path))
+
+    # ------------------------------------------------------------------------ pass 2
+    def pass_two(self) -> None:
+        """The writers that need the neighbours (scope "context"), one building at a time."""
+        ctx_writers = [w for w in self.chosen if self.scope[w.name] == "context"]
+        if not ctx_writers:
+            return
+        options, job, timeout = self.options, self.job, self.options.job_timeout
+        ready, ready_boxes = array("q"), array("d")  # 56 bytes a building, not a tuple of floats
+        for s, r in self.records.in_order():
+            if r.outcome == "done" and r.energy.geometry_ready and r.bbox is not None:
+                ready.append(s)
+                ready_boxes.extend(r.bbox)
+        for s, bbox in sorted(self.neighbour_boxes.items()):
+            ready.append(s)
+            ready_boxes.extend(bbox)
+        halo = max(w.halo(options.writer_options(w.name)) for w in ctx_writers)
+        near = neighbours_within(ready, ready_boxes, halo)
+        order = spatial_order(ready_boxes)  # near buildings one after the other: the same for every executor
+        del ready_boxes
+        names = [w.name for w in ctx_writers]
+
+        def ctx_tasks():
+            for k in order.tolist():
+                s = ready[k]
+                if s in self.neighbour_boxes:  # a neighbour only: nothing of its own is written
+                    continue
+                p = self.prev_c.get(s)
+                if self.run.resume and s in self.reused and p is not None:
+                    ers = [ExportRecord.from_journal(e) for e in p.get("exports", [])]
+                    if {e.format for e in ers} >= set(names) and all(e.intact() for e in ers):
+                        yield ("record", s, ers)
+                        continue
+                yield (s, near.of(k), job)
+
+        # the same budget per job as pass 1: an overrun stops the worker (replaced), the rest goes on;
+        # a worker left idle at the end loads what report.html's pictures need
+        tail = None
+        if self.page_pool is not None:
+            tail = partial(warm_page, after=self.beside.proc.pid if self.beside is not None else None)
+        run_idf = "idf" in names and getattr(options.writer_options("idf"), "run", False)
+        tick, close = self.progress(f"{', '.join(names)}{' + EnergyPlus' if run_idf else ''}",
+                                    total=len(ready) - len(self.neighbour_boxes))
+        for task, res in self.ex.map(_context_or_record, ctx_tasks(), timeout, tail=tail):
+            tick()
+            seq = task[1] if task[0] == "record" else task[0]
+            rec = self.records[seq]
+            if isinstance(res, (Overrun, Failure)):
+                msg = (res.message if isinstance(res, Failure) else
+                       f"timeout: not finished within {timeout:g} s (--timeout)")
+                res = [ExportRecord(n, False, "", (f"{n.upper()} not written: {msg}",)) for n in names]
+            was = rec.energy.compliant
+            for er in res:
+                rec = rec.with_export(er)
+                if not er.ok:
+                    err(er.message(rec.id))
+            if was and not rec.energy.compliant:
+                self.demoted += 1  # the carriers written beside this pass say compliant
+            self.records[seq] = rec
+            self.journal.append({"kind": "context", "seq": seq, "exports": [e.journal() for e in res]})
+        close()
+
+    # ------------------------------------------------------------------------ pass 3
+    def pass_three(self) -> None:
+        """One file for all buildings (none for a file that could not be read; ``unusable`` is of
+        pass 1, which alone sets the outcomes and the file's errors)."""
+        if self.own and self.page_pool is None:
+            self.ex.close()
+        if self.demoted and self.beside is not None and self.beside.cancel():
+            sweep_stale(self.out)  # its half-written files go; the carriers are written again below
+        done_beside = _beside_results(self.beside, self.side) if not self.demoted else {}
+        # the carriers last: they carry each building's compliance, which the others' checks decide
+        for w in sorted(self.chosen, key=lambda w: w.name in CARRIERS):
+            if self.scope[w.name] != "dataset" or self.unusable:
+                continue
+            if w.name in done_beside:
+                carried = dataset_apply(done_beside[w.name], self.records, self.run.quiet, self.journal)
+            else:
+                if self.page_pool is not None:  # its idle workers' memory is not held while this one writes
+                    self.page_pool.close()
+                    self.page_pool = None
+                carried = dataset_pass(w, self.options, self.job, self.records, self.others, self.model,
+                                       self.input_path, self.run.quiet, self.journal)
+            if carried:
+                self.terrain.append(carried)
+
+    # ------------------------------------------------------------------------ the reports
+    def outcome(self) -> ExportOutcome:
+        """report.json, report.csv, report.html from the journal; the exit code."""
+        rows = self.records.ordered()
+        self.csv_rows.close()
+        journal, interrupted = self.journal, self.interrupted
+        journal.sync()
+        try:
+            done = records_of(journal.path, journal.run_start)  # what the journal says was done: the report
+            report = write_reports_from_journal(self.out, self.input_path, self.model, str(journal.path),
+                                                journal.run_start, self.dataset_errors, interrupted, self.inputs,
+                                                done, self.study)
+            if self.options.html:
+                mapper = partial(_results, self.page_pool) if self.page_pool is not None and not interrupted else None
+                write_html_report(report, self.input_path, done, self.job.spool, self.out, self.options.prepare.tol,
+                                  self.inputs, self.plans, mapper, crs=self.options.crs)
+                self.plans.close()
+        finally:
+            if self.page_pool is not None:
+                self.page_pool.close()
+        journal.append({"kind": "end", "interrupted": interrupted[0] if interrupted else None})
+        journal.close()
+        errors, terrain = tuple(self.dataset_errors), tuple(self.terrain)
+        if interrupted:
+            err(f"interrupted by {interrupted[0]}: report.json has the {len(rows)} objects done so far; "
+                f"run again with --resume to continue")
+            return ExportOutcome(interrupted[1], rows, interrupted[0], report, errors, terrain)
+        for m in self.dataset_errors:
+            err(m)
+        worst = EXIT_OK
+        for r in rows:
+            if (r.outcome != "done" or (r.assessed and not r.energy.geometry_ready)
+                    or any(not e.ok for e in r.exports)):
+                worst = EXIT_INVALID
+        if self.dataset_errors:
+            worst = EXIT_UNUSABLE
+        return ExportOutcome(worst, rows, None, report, errors, terrain)
+
+
+#: The passes of an export, in order (:class:`_Export`).
+PASSES = (_Export.pass_one, _Export.pass_two, _Export.pass_three)
+
+
 def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions = RunOptions(),
            executor=None) -> ExportOutcome:
     """``lod2energy export``: every building of ``input_path`` through the spine, into ``outdir``.
@@ -237,262 +514,32 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
     os.makedirs(outdir, exist_ok=True)
     out = os.path.abspath(outdir)
     sweep_stale(out)  # temporaries of a run that was killed mid-write
-    spool = os.path.join(out, ".lod2energy", "spool")
-    os.makedirs(spool, exist_ok=True)
-    table = options.buildings or {}
-    selection = frozenset(options.ids) if options.ids is not None else None
-    selected = selector(selection, options.region)
-    # the table's rows travel with their buildings, not with every job
-    job = Job(replace(options, buildings=None), out, spool, model.crs, getattr(model, "frame", None))
-    chosen = writers(options.formats)
-    scope = {w.name: w.scope(options.writer_options(w.name)) for w in chosen}
-    near_selected = selection_reach(input_path, selected, chosen, scope, options)
-    input_ids: set[str] = set()  # every building id of the file (ids of --buildings / --ids not in it are reported)
-    study = study_entry(options)  # report.json's "study"
-    neighbour_boxes: dict[int, tuple] = {}  # buildings outside --ids that serve as neighbours: their boxes
-    per_building = [n for n, s in scope.items() if s == "building"]
-    journal = Journal(os.path.join(out, JOURNAL_NAME), out, inputs,
-                      header(input_path, options.fingerprint()), resume=run.resume)
-    csv_rows = CsvRows(os.path.join(out, "report.csv"), out, inputs)  # a row as each building finishes
-    prev_b = RecordStore(scratch=spool)  # the journal's records of an earlier run (--resume)
-    prev_c: dict[int, dict] = {}
-    for ln in journal.previous():
-        if ln.get("kind") == "building":
-            prev_b[int(ln["seq"])] = BuildingRecord.from_json(ln)
-        elif ln.get("kind") == "context":
-            prev_c[int(ln["seq"])] = ln
-    records = RecordStore(scratch=spool)  # seq -> record, on disk: the parent's memory stays flat
-    others: list[int] = []
-    terrain: list[dict] = []  # the input's terrain the one-file writers carried
-    reused: set[int] = set()
-    dataset_errors: list[str] = []
-    interrupted = None
-    own = executor is None
-    page_pool = None  # the process pool that renders report.html's pictures, kept open for it
-    beside, side = None, []  # the one-file writers' process beside pass 2 (Beside), if any, and its writers
-    demoted = 0  # buildings no longer compliant after pass 2 (a file that failed its check): carriers again
-    tick, close_bar = progress(run.quiet, os.path.basename(input_path))
-    close_bar2 = close_bar  # the neighbour pass's own bar, once it runs
-    timeout = options.job_timeout
-    plans = None  # the plan footprints of every object as read, in input order, for report.html
-    if options.html:
-        plans = FootprintSpill(out)
-    resumed_plans: dict[int, tuple[str, list]] = {}  # of resumed objects, drawn here (no job reads them)
+    st = _Export(input_path, out, options, run, model, feats, executor)
+    ours = None  # our executor while passes 1 and 2 use it: stopped at once if they are interrupted
     try:
         with Signals():
-            ex = make_executor(run.jobs, run.dask) if own else executor
-            if isinstance(ex, ProcessPoolExecutor):
-                warm(options)  # before the workers are forked (at their first job): they share it
-            # report.html's pictures are rendered by the pool when its workers are ours
-            page_pool = ex if options.html and own and isinstance(ex, ProcessPoolExecutor) else None
             try:
-                # ---- pass 1: every object, in input order
-                def tasks() -> Iterator[tuple]:
-                    for seq, item in enumerate(feats):
-                        if isinstance(item, FeatureError):
-                            if item.id is None:  # the file itself (e.g. an XML external entity)
-                                dataset_errors.append(item.message)
-                                journal.append({"kind": "dataset_error", "code": item.code,
-                                                "message": item.message})
-                                continue
-                            rec = BuildingRecord(seq, str(item.id), item.type or "unknown", "unreadable",
-                                                 (item.code,), message=item.message)
-                            yield (seq, "record", rec, job)
-                        elif not item.is_building:
-                            yield (seq, "other", item, job)
-                        else:
-                            yield from building_task(seq, joined(item, table, input_ids))
-
-                def building_task(seq, item) -> Iterator[tuple]:
-                    if selected is not None and not selected(item):
-                        if near_selected(item):
-                            yield (seq, "neighbour", item, job)
-                    elif run.resume and reusable(prev := prev_b.get(seq), item, job, per_building):
-                        reused.add(seq)
-                        if plans is not None:
-                            resumed_plans[seq] = (item.id, plan_of(item))
-                        yield (seq, "record", prev, job)
-                    else:
-                        yield (seq, "building", item, job)
-
-                for task, res in ex.map(first_pass, tasks(), timeout):
-                    seq, kind, payload = task[0], task[1], task[2]
-                    tick()
-                    if kind == "neighbour":  # prepared and spooled for its neighbours, not reported
-                        r = res.record if isinstance(res, Pass1) else None
-                        if r is not None and r.outcome == "done" and r.energy.geometry_ready and r.bbox is not None:
-                            neighbour_boxes[seq] = r.bbox
-                        continue
-                    if isinstance(res, Pass1):
-                        plan, res = res.plan, res.record
-                    else:  # the job did not finish: its object as read is drawn here
-                        plan = plan_of(payload) if plans is not None and kind != "record" else None
-                    if plans is not None:
-                        if kind == "record":
-                            plan = resumed_plans.pop(seq, (None, None))[1]
-                        if plan is not None:
-                            plans.add(str(payload.id), plan)
-                    if kind == "other":
-                        if not isinstance(res, (Overrun, Failure)):
-                            others.append(seq)  # spooled: written with the CityJSON
-                        continue
-                    if isinstance(res, (Overrun, Failure)):
-                        b = payload
-                        if isinstance(res, Overrun):
-                            rec = BuildingRecord(seq, str(b.id), b.type, "timeout",
-                                                 message=f"timeout: not finished within {timeout:g} s "
-                                                 f"(--timeout); kept as read, not exported")
-                        else:
-                            rec = BuildingRecord(seq, str(b.id), b.type, "failed",
-                                                 message=f"pipeline failed: {res.message}")
-                        # not spooled: no later pass reads a building that is not "done"
-                    else:
-                        rec = res
-                    if rec.outcome == "unreadable":  # the reader's message names the object itself
-                        err(f"{input_path}: {rec.message}")
-                    elif rec.outcome != "done":
-                        err(f"{input_path}: {rec.type} {rec.id}: {rec.message}")
-                    elif rec.repair.error:
-                        err(f"{input_path}: {rec.type} {rec.id}: {rec.repair.error}")
-                    for e in rec.exports:
-                        if not e.ok:
-                            err(e.message(rec.id))
-                    records[seq] = rec
-                    journal.append({"kind": "building", **rec.to_json()})
-                    csv_rows.append(rec)
-                close_bar()
-                study.update(report_unknown_ids(input_path, input_ids, table, selection))
-                job = replace(job, neighbours=tuple(sorted(neighbour_boxes)))  # for the one-file writers
-                # the one-file writers that need nothing of pass 2 run beside it, in a process of their own
-                unusable = bool(dataset_errors) and not any(r.outcome == "done" for r in records.values())
-                side = [w for w in chosen if scope[w.name] == "dataset" and w.name in BESIDE]
-                if side and not unusable and isinstance(ex, ProcessPoolExecutor) and beside_ok(options):
-                    beside = Beside(write_beside, (tuple(side), options, job, records, others, model, input_path))
-
-                # ---- pass 2: writers that need the neighbours, one building at a time
-                ctx_writers = [w for w in chosen if scope[w.name] == "context"]
-                if ctx_writers:
-                    ready, ready_boxes = array("q"), array("d")  # 56 bytes a building, not a tuple of floats
-                    for s, r in records.in_order():
-                        if r.outcome == "done" and r.energy.geometry_ready and r.bbox is not None:
-                            ready.append(s)
-                            ready_boxes.extend(r.bbox)
-                    for s, bbox in sorted(neighbour_boxes.items()):
-                        ready.append(s)
-                        ready_boxes.extend(bbox)
-                    halo = max(w.halo(options.writer_options(w.name)) for w in ctx_writers)
-                    near = neighbours_within(ready, ready_boxes, halo)
-                    order = spatial_order(ready_boxes)  # near buildings one after the other: the same for every executor
-                    del ready_boxes
-                    names = [w.name for w in ctx_writers]
-
-                    def ctx_tasks():
-                        for k in order.tolist():
-                            s = ready[k]
-                            if s in neighbour_boxes:  # a neighbour only: nothing of its own is written
-                                continue
-                            p = prev_c.get(s)
-                            if run.resume and s in reused and p is not None:
-                                ers = [ExportRecord.from_journal(e) for e in p.get("exports", [])]
-                                if {e.format for e in ers} >= set(names) and all(e.intact() for e in ers):
-                                    yield ("record", s, ers)
-                                    continue
-                            yield (s, near.of(k), job)
-
-                    # the same budget per job as pass 1: an overrun stops the worker (replaced), the rest goes on;
-                    # a worker left idle at the end loads what report.html's pictures need
-                    tail = None
-                    if page_pool is not None:
-                        tail = partial(warm_page, after=beside.proc.pid if beside is not None else None)
-                    n_ctx = len(ready) - len(neighbour_boxes)
-                    run_idf = "idf" in names and getattr(options.writer_options("idf"), "run", False)
-                    tick2, close_bar2 = progress(run.quiet, f"{', '.join(names)}{' + EnergyPlus' if run_idf else ''}",
-                                                 total=n_ctx)
-                    for task, res in ex.map(_context_or_record, ctx_tasks(), timeout, tail=tail):
-                        tick2()
-                        seq = task[1] if task[0] == "record" else task[0]
-                        rec = records[seq]
-                        if isinstance(res, (Overrun, Failure)):
-                            msg = (res.message if isinstance(res, Failure) else
-                                   f"timeout: not finished within {timeout:g} s (--timeout)")
-                            res = [ExportRecord(n, False, "", (f"{n.upper()} not written: {msg}",)) for n in names]
-                        was = rec.energy.compliant
-                        for er in res:
-                            rec = rec.with_export(er)
-                            if not er.ok:
-                                err(er.message(rec.id))
-                        if was and not rec.energy.compliant:
-                            demoted += 1  # the carriers written beside this pass say compliant
-                        records[seq] = rec
-                        journal.append({"kind": "context", "seq": seq, "exports": [e.journal() for e in res]})
-                    close_bar2()
+                st.start_executor()
+                ours = st.ex if st.own else None
+                for one_pass in PASSES:
+                    if one_pass is _Export.pass_three:
+                        ours = None
+                    one_pass(st)
             except BaseException:
-                if own:
-                    ex.close(kill=True)  # interrupted: workers stop now, not after their job
+                if ours is not None:
+                    ours.close(kill=True)  # interrupted: workers stop now, not after their job
                 raise
-            else:
-                if own and page_pool is None:
-                    ex.close()
-
-            # ---- pass 3: one file for all buildings (none for a file that could not be read;
-            # ``unusable`` is of pass 1, which alone sets the outcomes and the file's errors)
-            if demoted and beside is not None and beside.cancel():
-                sweep_stale(out)  # its half-written files go; the carriers are written again below
-            done_beside = _beside_results(beside, side) if not demoted else {}
-            # the carriers last: they carry each building's compliance, which the others' checks decide
-            for w in sorted(chosen, key=lambda w: w.name in CARRIERS):
-                if scope[w.name] != "dataset" or unusable:
-                    continue
-                if w.name in done_beside:
-                    carried = dataset_apply(done_beside[w.name], records, run.quiet, journal)
-                else:
-                    if page_pool is not None:  # its idle workers' memory is not held while this one writes
-                        page_pool.close()
-                        page_pool = None
-                    carried = dataset_pass(w, options, job, records, others, model, input_path, run.quiet, journal)
-                if carried:
-                    terrain.append(carried)
     except KeyboardInterrupt:
-        interrupted = ("SIGINT", EXIT_SIGINT)
+        st.interrupted = ("SIGINT", EXIT_SIGINT)
     except Interrupted as e:
-        interrupted = (e.name, e.code)
+        st.interrupted = (e.name, e.code)
     finally:
-        close_bar()
-        close_bar2()
-        stopped = beside is not None and beside.cancel()  # interrupted: its file is not finished
-        if stopped or interrupted:
+        for close in st.closing:
+            close()
+        stopped = st.beside is not None and st.beside.cancel()  # interrupted: its file is not finished
+        if stopped or st.interrupted:
             sweep_stale(out)  # the temporaries of the processes stopped mid-write go
-    rows = records.ordered()
-    csv_rows.close()
-    journal.sync()
-    try:
-        done = records_of(journal.path, journal.run_start)  # what the journal says was done: the report
-        report = write_reports_from_journal(out, input_path, model, str(journal.path), journal.run_start,
-                                            dataset_errors, interrupted, inputs, done, study)
-        if options.html:
-            mapper = partial(_results, page_pool) if page_pool is not None and not interrupted else None
-            write_html_report(report, input_path, done, job.spool, out, options.prepare.tol, inputs, plans, mapper,
-                              crs=options.crs)
-            plans.close()
-    finally:
-        if page_pool is not None:
-            page_pool.close()
-    journal.append({"kind": "end", "interrupted": interrupted[0] if interrupted else None})
-    journal.close()
-    if interrupted:
-        err(f"interrupted by {interrupted[0]}: report.json has the {len(rows)} objects done so far; "
-              f"run again with --resume to continue")
-        return ExportOutcome(interrupted[1], rows, interrupted[0], report, tuple(dataset_errors), tuple(terrain))
-    for m in dataset_errors:
-        err(m)
-    worst = EXIT_OK
-    for r in rows:
-        if (r.outcome != "done" or (r.assessed and not r.energy.geometry_ready)
-                or any(not e.ok for e in r.exports)):
-            worst = EXIT_INVALID
-    if dataset_errors:
-        worst = EXIT_UNUSABLE
-    return ExportOutcome(worst, rows, None, report, tuple(dataset_errors), tuple(terrain))
+    return st.outcome()
 
 
 def _beside_results(beside, writers) -> dict:
