@@ -66,6 +66,15 @@ def _attach(rec: BuildingRecord, fmt: str, pairs) -> BuildingRecord:
     return rec
 
 
+def _written(w, b: Building, write) -> list:
+    """``write()``'s (ids, ExportRecord) pairs; a writer that raises is one failed record for ``b``
+    (a geometry the writer cannot take: reported for this building, the rest goes on)."""
+    try:
+        return write()
+    except Exception as e:  # noqa: BLE001
+        return [((b.id,), ExportRecord(w.name, False, "", (f"{w.name.upper()} not written: {type(e).__name__}: {e}",)))]
+
+
 def process_building(b: Building, options: ExportOptions, outdir: str, seq: int = 0,
                      crs: str | None = None, frame=None) -> tuple[Building, BuildingRecord]:
     """The whole job of one building: :func:`prepare_building`, then the chosen writers that
@@ -78,11 +87,8 @@ def process_building(b: Building, options: ExportOptions, outdir: str, seq: int 
         wopts = options.writer_options(w.name)
         if w.scope(wopts) != "building":
             continue
-        try:
-            pairs = w.write(w.prepare([pb], wopts), outdir, wopts, crs=crs, tol=options.prepare.tol, frame=frame)
-        except Exception as e:  # noqa: BLE001 - a geometry the writer cannot take
-            pairs = [((pb.id,), ExportRecord(w.name, False, "", (f"{w.name.upper()} not written: "
-                                                                 f"{type(e).__name__}: {e}",)))]
+        pairs = _written(w, pb, lambda: w.write(w.prepare([pb], wopts), outdir, wopts, crs=crs,
+                                                tol=options.prepare.tol, frame=frame))
         rec = _attach(rec, w.name, pairs)
     return pb, rec
 
@@ -138,13 +144,9 @@ def context_pass(task: tuple) -> list[ExportRecord]:
         wopts = job.options.writer_options(w.name)
         if w.scope(wopts) != "context":
             continue
-        try:
-            own = w.prepare([b], wopts, context)  # the stage before the writer, with the writer's neighbours
-            pairs = w.write(own, job.outdir, wopts, crs=job.crs, context=context, tol=job.options.prepare.tol,
-                            frame=job.frame)
-        except Exception as e:  # noqa: BLE001 - reported for this building, the rest goes on
-            pairs = [((b.id,), ExportRecord(w.name, False, "", (f"{w.name.upper()} not written: "
-                                                                f"{type(e).__name__}: {e}",)))]
+        # the stage before the writer (prepare) runs with the writer's neighbours
+        pairs = _written(w, b, lambda: w.write(w.prepare([b], wopts, context), job.outdir, wopts, crs=job.crs,
+                                               context=context, tol=job.options.prepare.tol, frame=job.frame))
         rec = _attach(BuildingRecord(seq, b.id, b.type), w.name, pairs)
         out.append(rec.export(w.name))
     return out

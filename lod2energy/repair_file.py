@@ -47,10 +47,7 @@ def _repaired(feats, tol: Tolerances, timeout: float, merge_parts: bool, lod, jo
     ``timeout`` (the ladder's own deadline is cooperative and cannot interrupt one long step)."""
     limit = hard_budget(timeout)
     with make_executor(jobs, None) as ex:
-        def tasks():
-            for f in feats:
-                yield (f, tol, timeout, merge_parts, lod)
-        for task, res in ex.map(_repair_job, tasks(), limit):
+        for task, res in ex.map(_repair_job, ((f, tol, timeout, merge_parts, lod) for f in feats), limit):
             b = task[0]
             if isinstance(res, (Overrun, Failure)):
                 why = f"timeout after {res.seconds:.0f} s" if isinstance(res, Overrun) else res.message
@@ -59,14 +56,6 @@ def _repaired(feats, tol: Tolerances, timeout: float, merge_parts: bool, lod, jo
                                                 "iou": None, "mean_displacement": None, "hausdorff": None,
                                                 "defects_before": [], "defects_after": [999]})
             yield res
-
-
-def _print_repair_summary(table: dict, out=None) -> None:
-    keys = ("total", "valid_before", "valid_after", "compliant_before", "compliant_after", "local_repairs",
-            "global_repairs", "left", "miou", "map_v")
-    print("  ".join(f"{k}={table[k]:.3g}" if isinstance(table.get(k), float) else f"{k}={table.get(k)}"
-                    for k in keys if k in table), file=out)
-    print("stages: " + ", ".join(f"{k}: {v}" for k, v in (table.get("stages") or {}).items()), file=out)
 
 
 def replace_input(a, path: str):
@@ -152,8 +141,14 @@ def write_output(run: Run) -> None:
 
 def print_summary(run: Run) -> None:
     """The summary line and the stages; with ``--report -`` on stderr; none with ``-q``."""
-    if not run.args.quiet:  # with --report -, standard output carries the JSON alone
-        _print_repair_summary(run.made["table"], sys.stderr if run.args.report == "-" else sys.stdout)
+    if run.args.quiet:
+        return
+    table, out = run.made["table"], sys.stderr if run.args.report == "-" else sys.stdout  # stdout: the JSON alone
+    keys = ("total", "valid_before", "valid_after", "compliant_before", "compliant_after", "local_repairs",
+            "global_repairs", "left", "miou", "map_v")
+    print("  ".join(f"{k}={table[k]:.3g}" if isinstance(table.get(k), float) else f"{k}={table.get(k)}"
+                    for k in keys if k in table), file=out)
+    print("stages: " + ", ".join(f"{k}: {v}" for k, v in (table.get("stages") or {}).items()), file=out)
 
 
 #: ``lod2energy repair IN -o OUT``: every CityObject kept, defective buildings replaced by solids;

@@ -14,7 +14,7 @@ import gc
 from lod2energy import cache
 
 
-@cache.memoize("heap.malloc-trim", 1)
+@cache.memoize("memory.malloc-trim", 1)
 def _malloc_trim():
     name = ctypes.util.find_library("c")
     try:
