@@ -1,7 +1,7 @@
 """The Python API: :func:`read`, :func:`validate`, :func:`repair` and :func:`export` on a path,
 a file object or a CityJSON dict, with the CLI's options as keyword arguments.
 
-Each function runs the command of the same name (:mod:`lod2energy.cli`) with the CLI's defaults
+Each function runs the command of the same name (:func:`lod2energy.run.driver.execute`) with the CLI's defaults
 and returns what the CLI reports: the validation report, the repair report, the export's records.
 Keyword arguments are the CLI's options with ``_`` for ``-`` (``idf=True``, ``jobs=1``,
 ``planarity_d2p_tol=0.02``); an unknown one is a ``TypeError``, a bad value a

@@ -226,21 +226,19 @@ class _Export:
             elif ln.get("kind") == "context":
                 self.prev_c[int(ln["seq"])] = ln
         self.records = RecordStore(scratch=spool)  # seq -> record, on disk: the parent's memory stays flat
-        self.others: list[int] = []
+        self.others: list[int] = []  # the spooled non-building objects (written with the CityJSON)
         self.terrain: list[dict] = []  # the input's terrain the one-file writers carried
-        self.reused: set[int] = set()
+        self.reused: set[int] = set()  # the buildings whose records --resume took from the journal
         self.dataset_errors: list[str] = []
-        self.unusable = False
-        self.interrupted = None
-        self.own = executor is None
-        self.ex = executor
+        self.unusable, self.interrupted, self.closing = False, None, []  # closing: the progress bars' close
+        self.own, self.ex = executor is None, executor
         self.page_pool = None  # the process pool that renders report.html's pictures, kept open for it
         self.beside, self.side = None, []  # the one-file writers' process beside pass 2 (Beside), and its writers
         self.demoted = 0  # buildings no longer compliant after pass 2 (a file that failed its check): carriers again
-        self.closing = []  # the progress bars' close functions
-        # the plan footprints of every object as read, in input order, for report.html
+        # the plan footprints of every object as read, in input order, for report.html; and of resumed
+        # objects, drawn here (no job reads them)
         self.plans = FootprintSpill(out) if options.html else None
-        self.resumed_plans: dict[int, tuple[str, list]] = {}  # of resumed objects, drawn here (no job reads them)
+        self.resumed_plans: dict[int, tuple[str, list]] = {}
 
     def progress(self, desc: str, total: int | None = None):
         tick, close = progress(self.run.quiet, desc, total=total)
