@@ -212,7 +212,7 @@ class _Export:
         self.chosen = writers(options.formats)
         self.scope = {w.name: w.scope(options.writer_options(w.name)) for w in self.chosen}
         self.near_selected = selection_reach(input_path, self.selected, self.chosen, self.scope, options)
-        self.input_ids: set[str] = set()  # every building id of the file (ids of --buildings / --ids not in it are reported)
+        self.input_ids: set[str] = set()  # the file's building ids (--buildings / --ids not in it are reported)
         self.study = study_entry(options)  # report.json's "study"
         self.neighbour_boxes: dict[int, tuple] = {}  # buildings outside --ids that serve as neighbours: their boxes
         self.journal = Journal(os.path.join(out, JOURNAL_NAME), out, self.inputs,

@@ -17,8 +17,8 @@ def one_blas_thread() -> None:
     OpenBLAS too, and every child); after, ``threadpoolctl`` limits the libraries loaded by then,
     and the environment still limits those loaded later (OpenBLAS and OpenMP read it when they
     load), so scipy is not imported here just to limit it.
-    Called by the CLI, every pool worker (:mod:`lod2energy.run.executor`) and the one-file writers' process. A thread count the
-    user set in the environment is left alone.
+    Called by the CLI, every pool worker (:mod:`lod2energy.run.executor`) and the one-file
+    writers' process. A thread count the user set in the environment is left alone.
     """
     if any(v in os.environ for v in _BLAS_THREAD_VARS):
         return
