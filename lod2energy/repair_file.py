@@ -58,19 +58,13 @@ def _repaired(feats, tol: Tolerances, timeout: float, merge_parts: bool, lod, jo
             yield res
 
 
-def replace_input(a, path: str):
-    """The parsed arguments ``a`` reading ``path``."""
-    b = argparse.Namespace(**vars(a))
-    b.input, b.shown = path, a.input
-    return b
-
-
 def read_input(run: Run) -> None:
     """Standard input written to a scratch file; the output's suffix and targets checked; the file read."""
     a = run.args
     run.made["tol"] = tolerances(a)
     if is_stdin(a.input):
-        a = run.args = replace_input(a, materialise(read_stdin(), run.scratch()))
+        path = materialise(read_stdin(), run.scratch())  # the report names the input as given (``shown``)
+        a = run.args = argparse.Namespace(**{**vars(a), "input": path, "shown": a.input})
     if not a.output.lower().endswith(REPAIR_SUFFIXES):
         err(f"repair writes CityJSON (.json, .city.json) or CityJSONSeq (.jsonl, .city.jsonl): "
             f"cannot write {a.output!r}")
