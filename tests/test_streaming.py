@@ -305,10 +305,10 @@ def test_the_page_reads_report_json_one_building_at_a_time(tmp_path):
 
 def _fold_reference(path, start=0):
     """records_of as it was: every line decoded, each record folded into a dict as it came."""
-    from lod2energy.run.resume import _lines
+    from lod2energy.run.resume import read_lines
     from lod2energy.records import BuildingRecord, ExportRecord
     out = {}
-    for d in _lines(path, start):
+    for d in read_lines(path, start):
         kind = d.get("kind")
         if kind == "building":
             out[int(d["seq"])] = BuildingRecord.from_json(d)

@@ -142,21 +142,6 @@ def _same_header(a: dict, b: dict) -> bool:
 
 
 
-def read_lines(path: str | os.PathLike) -> Iterator[dict]:
-    """The journal's lines; a torn last line (a crash while appending) is skipped."""
-    with open(path, "r", encoding="utf-8") as f:
-        for ln in f:
-            ln = ln.strip()
-            if not ln:
-                continue
-            try:
-                d = json.loads(ln)
-            except json.JSONDecodeError:
-                continue
-            if isinstance(d, dict):
-                yield d
-
-
 def records_of(path: str | os.PathLike, start: int = 0) -> "JournalRecords":
     """The buildings' records as the journal's lines from byte ``start`` on tell them.
 
@@ -271,7 +256,7 @@ class JournalRecords(Mapping):
         return RecordSequence(self, sorted(self._lines) if seqs is None else list(seqs))
 
 
-def _lines(path: str | os.PathLike, start: int = 0):
+def read_lines(path: str | os.PathLike, start: int = 0) -> Iterator[dict]:
     """The journal's JSON object lines from byte ``start`` on (a torn last line skipped)."""
     with open(path, "rb") as f:
         f.seek(start)
@@ -279,7 +264,7 @@ def _lines(path: str | os.PathLike, start: int = 0):
             try:
                 d = json.loads(raw)
             except (json.JSONDecodeError, UnicodeDecodeError):
-                continue  # a torn last line
+                continue  # a torn last line (a crash while appending), or a blank one
             if isinstance(d, dict):
                 yield d
 
@@ -288,7 +273,7 @@ def terrain_of(path: str | os.PathLike, start: int = 0) -> list[dict]:
     """The ``terrain`` lines from byte ``start`` on (this run's), without their ``kind``: one
     per format, a later line replacing an earlier one, in the order the formats first came."""
     out: dict[str, dict] = {}
-    for d in _lines(path, start):
+    for d in read_lines(path, start):
         if d.get("kind") == "terrain":
             out[str(d.get("format"))] = {k: v for k, v in d.items() if k != "kind"}
     return list(out.values())
