@@ -511,7 +511,6 @@ def export(input_path: str, outdir: str, options: ExportOptions, run: RunOptions
                              "give the file's CRS with --crs (nothing written)")
     note_frame(input_path, model, metres_note=True)
     options = resolve(options, model)
-    writers(options.formats)  # loaded (seconds) before OUTDIR exists: a signal after that finds the report's parts
     os.makedirs(outdir, exist_ok=True)
     out = os.path.abspath(outdir)
     sweep_stale(out)  # temporaries of a run that was killed mid-write

@@ -260,6 +260,7 @@ def test_allowed_module_state_exists():
 LOCAL_IMPORTS = {
     ("lod2energy.validate_files", "lod2energy"): "validate loads the export side only for a file or page that needs it",
     ("lod2energy.run.driver", "tqdm"): "a progress bar only when not quiet (0.1 s)",
+    ("lod2energy.run.driver", "lod2energy"): "the writers a command declares, loaded when it runs (the CLI's head)",
     ("lod2energy", "lod2energy"): "the API's lazy entry (module __getattr__): import lod2energy stays light",
     # scipy costs about 0.4 s to import: loaded by the paths that need it (validation mostly does not)
     **{(m, "scipy"): "imported by the paths that need it" for m in (

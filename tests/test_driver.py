@@ -80,3 +80,20 @@ def test_every_cli_command_is_a_declared_command(name):
 def test_the_cfd_case_is_a_declared_command():
     from lod2energy.cfd.__main__ import CFD
     assert isinstance(CFD, Command) and CFD.writers(_args()) == ("cfd",)
+
+
+def test_the_declared_writers_are_loaded_before_the_first_stage():
+    import subprocess
+    import sys
+    import textwrap
+    probe = textwrap.dedent("""
+        import argparse, sys
+        from lod2energy.run.driver import Command, execute
+        seen = []
+        stage = lambda run: seen.append("lod2energy.exporters.stl.writer" in sys.modules)
+        execute(Command("none", (stage,)), argparse.Namespace())
+        execute(Command("stl", (stage,), writers=lambda a: ("stl",)), argparse.Namespace())
+        print(seen)
+    """)
+    out = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, check=True)
+    assert out.stdout.strip() == "[False, True]"

@@ -69,9 +69,12 @@ class Run:
 
 
 def execute(command: Command, args: argparse.Namespace) -> Run:
-    """Run the stages of ``command`` over ``args``; the :class:`Run` holds the exit code and what
-    the stages made. Errors propagate (:func:`drive` turns them into exit codes)."""
+    """Load the writers of ``command``, run its stages over ``args``; the :class:`Run` holds the
+    exit code and what the stages made. Errors propagate (:func:`drive` turns them into exit codes)."""
     run = Run(args, command.writers(args))
+    if run.writers:  # loaded (seconds) before a stage writes: a signal after that finds what it needs
+        from lod2energy.exporters.registry import writers
+        writers(run.writers)
     with run._cleanup:
         try:
             for stage in command.stages:
