@@ -39,6 +39,21 @@ def tiles(root: Path) -> list[Path]:
     return out
 
 
+def label_confusion(b) -> dict[tuple[str, str], float]:
+    """Area (m2) per (input label, rule label) pair of building ``b``."""
+    from lod2energy import semantics
+
+    out: dict[tuple[str, str], float] = {}
+    for o, gi, g in semantics.envelope_objects(b, None):
+        t = semantics.face_table(b.vertices, g)
+        rl = semantics.rule_labels(t, semantics.DEFAULT_RULES)
+        for i, s in enumerate(t.surfaces):
+            st = semantics._known_type(g, s)
+            if st is not None:
+                out[(st, rl[i])] = out.get((st, rl[i]), 0.0) + float(t.area[i])
+    return out
+
+
 def run_tile(path: Path, repair: bool, export: str | None = None, versions=("1.0", "1.1", "2.0")) -> dict:
     from lod2energy.io import cityjson
     from lod2energy.model import Building
@@ -60,7 +75,7 @@ def run_tile(path: Path, repair: bool, export: str | None = None, versions=("1.0
         a, t = semantics.rule_agreement(f)
         agree += a
         total += t
-        for k, v in semantics.label_confusion(f).items():
+        for k, v in label_confusion(f).items():
             conf[k] = conf.get(k, 0.0) + v
         if repair:
             from lod2energy.repair.pipeline import repair_building

@@ -30,11 +30,7 @@ from lod2energy.geometry.pairs import close_pairs_grid, connected_components
 from lod2energy.geometry.snap import snapped_ids
 from lod2energy.model import Shell
 from lod2energy.validate.memo import shell_keys
-
-
-def _fmt(x: float) -> str:
-    """C++ ``ostream`` default formatting (6 significant digits), as val3dity prints."""
-    return f"{x:g}"
+from lod2energy.validate.polygon import _fmt
 
 
 def _loc(p) -> str:
