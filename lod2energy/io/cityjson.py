@@ -19,12 +19,8 @@ import numpy as np
 from lod2energy.errors import FormatNotSupportedError, InputError
 from lod2energy.io import shape
 from lod2energy.io.seen_ids import SeenIds
-from lod2energy.io.cityjson_grid import (  # noqa: F401 - the writer and the grid, importable from here as before
-    _quantise, default_transform, file_coordinates, on_grid, quantise,
-)
-from lod2energy.io.cityjson_write import (  # noqa: F401 - the writer and the grid, importable from here as before
-    _geometry_json, _header_json, _lod_json, _offset_nested, _plain, cityobject_json, feature_document,
-    _transform_for, is_cityjsonseq, to_document, transform_for, write,
+from lod2energy.io.cityjson_write import (  # noqa: F401 - the writer, importable from the reader's module
+    _plain, _transform_for, feature_document, is_cityjsonseq, write,
 )
 from lod2energy.model import (
     MULTISOLID_TYPES, SOLID_TYPES, SURFACE_TYPES, Building, CityModel, CityObject, FeatureError,
