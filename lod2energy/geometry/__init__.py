@@ -11,7 +11,7 @@
 - :mod:`~lod2energy.geometry.polygons`: planar polygons as the writers cut them (wall basis, triangles
   with every ring vertex kept, convex pieces);
 - :mod:`~lod2energy.geometry.intersect`: box pairs, segment/triangle tests, winding number, closest point on a triangle;
-- :mod:`~lod2energy.geometry.measure`: areas, signed volume (the one formula), best-fit plane, planarity;
+- :mod:`~lod2energy.geometry.measure`: areas, signed volume (the one formula), planarity;
 - :mod:`~lod2energy.geometry.simplify`: short-edge collapse.
 
 Everything works on a building's ``vertices`` (n, 3) float, metres, and integer rings of
@@ -25,7 +25,7 @@ from lod2energy.geometry.intersect import (
     bbox_pairs, closest_on_triangle, segment_triangle_intersect, triangle_pairs_intersect, winding_number,
 )
 from lod2energy.geometry.measure import (
-    best_fit_plane, plane_distance, ring_area_2d, signed_volume, triangle_areas, triangle_normals,
+    plane_distance, ring_area_2d, signed_volume, triangle_areas, triangle_normals,
 )
 from lod2energy.geometry.pairs import close_pairs_grid, connected_components
 from lod2energy.geometry.simplify import collapse_short_edges
@@ -39,7 +39,7 @@ from lod2energy.geometry.vectors import (
 __all__ = [
     "constrained_delaunay", "constrained_delaunay_many", "ear_triangles", "earcut_rings", "lawson_cdt",
     "bbox_pairs", "closest_on_triangle", "segment_triangle_intersect", "triangle_pairs_intersect", "winding_number",
-    "best_fit_plane", "plane_distance", "ring_area_2d", "signed_volume", "triangle_areas", "triangle_normals",
+    "plane_distance", "ring_area_2d", "signed_volume", "triangle_areas", "triangle_normals",
     "close_pairs_grid", "connected_components", "collapse_short_edges",
     "close_pairs", "snap_map", "snapped_ids", "split_at_points", "weld",
     "SLIVER_RATIO", "triangulate_flat", "triangulate_surface",
