@@ -345,7 +345,7 @@ def _check_meshes(vertices: np.ndarray, meshes: Sequence[ShellMesh], vol: np.nda
     lo, hi = np.minimum(src, dst), np.maximum(src, dst)
     ukey = (esh * N + lo) * N + hi
     _, dinv, dcnt = np.unique(dkey, return_inverse=True, return_counts=True)
-    uu, uinv, ucnt = np.unique(ukey, return_inverse=True, return_counts=True)
+    _, uinv, ucnt = np.unique(ukey, return_inverse=True, return_counts=True)
     bad = np.zeros(S, dtype=bool)
     bad[tsh[degenerate]] = True
     bad[esh[dcnt[dinv.ravel()] > 1]] = True
