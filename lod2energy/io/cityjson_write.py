@@ -235,7 +235,3 @@ def write(path: str, model: CityModel, buildings: Iterable[Building], version: s
                                    ensure_ascii=False) + "\n")
         else:
             write_document(f, model, buildings, version, scratch_dir=os.path.dirname(os.path.abspath(path)))
-
-
-#: The former private name.
-_transform_for = transform_for
