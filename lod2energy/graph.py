@@ -23,7 +23,6 @@ from lod2energy.model import Building, Surface
 
 FEATURE_NAMES = ("area", "n_x", "n_y", "n_z", "h", "degenerate", "planarity",
                  "n_boundary_edges", "n_nonmanifold_edges", "degree")
-EDGE_FEATURE_NAMES = ("cos_dihedral", "boundary", "nonmanifold")
 
 
 @dataclass(frozen=True, eq=False)

@@ -21,7 +21,6 @@ SOLID_TYPES = ("Solid",)
 MULTISOLID_TYPES = ("MultiSolid", "CompositeSolid")
 SURFACE_TYPES = ("MultiSurface", "CompositeSurface")
 POLYGONAL_TYPES = SOLID_TYPES + MULTISOLID_TYPES + SURFACE_TYPES
-OTHER_TYPES = ("MultiPoint", "MultiLineString", "GeometryInstance")
 BUILDING_TYPES = ("Building", "BuildingPart")
 
 _EMPTY: Mapping[str, Any] = MappingProxyType({})

@@ -509,47 +509,6 @@ def check_labels(b: Building, lod: str | None = None, rules: LabelRules = DEFAUL
     return out
 
 
-def rule_agreement(b: Building, lod: str | None = None,
-                   rules: LabelRules = DEFAULT_RULES) -> tuple[float, float]:
-    """Area-weighted agreement of the rules alone with the input's own labels.
-
-    Only faces that carry an input label count.
-
-    Returns
-    -------
-    agree_area : float, m2
-        Area of labelled faces whose rule label equals the input label.
-    total_area : float, m2
-        Area of all labelled faces.
-    """
-    agree = total = 0.0
-    for o, gi, g in envelope_objects(b, lod):
-        t = face_table(b.vertices, g)
-        rl = rule_labels(t, rules)
-        for i, s in enumerate(t.surfaces):
-            st = _known_type(g, s)
-            if st is None:
-                continue
-            total += float(t.area[i])
-            if st == rl[i]:
-                agree += float(t.area[i])
-    return agree, total
-
-
-def label_confusion(b: Building, lod: str | None = None,
-                    rules: LabelRules = DEFAULT_RULES) -> dict[tuple[str, str], float]:
-    """Area (m2) per (input label, rule label) pair, for benchmarks."""
-    out: dict[tuple[str, str], float] = {}
-    for o, gi, g in envelope_objects(b, lod):
-        t = face_table(b.vertices, g)
-        rl = rule_labels(t, rules)
-        for i, s in enumerate(t.surfaces):
-            st = _known_type(g, s)
-            if st is not None:
-                out[(st, rl[i])] = out.get((st, rl[i]), 0.0) + float(t.area[i])
-    return out
-
-
 def strip_to_energy(b: Building, lod: str | None, keep_other_lods: bool = False) -> Building:
     """``b`` with only its envelope geometries at ``lod`` (all of them when ``keep_other_lods``)."""
     if keep_other_lods:

@@ -278,7 +278,6 @@ LOCAL_IMPORTS = {
     ("lod2energy.site", "pyproj"): "a transformer only for outputs that need positions",
     ("lod2energy.crs", "pyproj"): "pyproj (0.1 s) only for a file that names a CRS, not for --help",
     ("lod2energy.run.blas_threads", "threadpoolctl"): "only when numpy is loaded already (the CLI's head)",
-    ("lod2energy.viz.browser", "playwright"): "optional (the test extra)",
     ("lod2energy.viz.figures", "matplotlib"): "the report's pictures only",
     ("lod2energy.viz.render", "matplotlib"): "the report's pictures only",
     ("lod2energy.viz.report", "matplotlib"): "the report's pictures only",

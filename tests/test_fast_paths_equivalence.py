@@ -157,7 +157,7 @@ def test_batched_collinear_test_is_the_single_one():
     assert any(got) and not all(got)
 
 
-# ---------------------------------------------------------------- session 22, second wave
+# ---------------------------------------------------------------- ring centroids, piece volumes, corners
 
 def _ref_ring_centroid(p, n_hat):
     if len(p) < 3:

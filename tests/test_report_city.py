@@ -318,7 +318,7 @@ def test_page_memory_does_not_grow_with_the_file():
 @pytest.mark.external
 def test_plan_picture_page_in_chromium(tmp_path):
     pytest.importorskip("playwright")
-    from lod2energy.viz.browser import chromium_path, open_page
+    from chromium import chromium_path, open_page
     from lod2energy.viz.report import write_report_html
     if chromium_path() is None:
         pytest.skip("chromium not installed (.ci/install-chromium.sh)")

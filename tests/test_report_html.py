@@ -200,7 +200,7 @@ def test_view_writes_the_panel_of_one_building(tmp_path, capsys):
 
 def _browser():
     pytest.importorskip("playwright")
-    from lod2energy.viz.browser import chromium_path
+    from chromium import chromium_path
     if chromium_path() is None:
         pytest.skip("chromium not installed (.ci/install-chromium.sh)")
 
@@ -214,7 +214,7 @@ def _variance(png: bytes) -> float:
 def test_real_tile_report_in_chromium(tmp_path):
     _browser()
     from lod2energy.cli import main
-    from lod2energy.viz.browser import open_page
+    from chromium import open_page
     src = shared_path("citygml-real", "berlin", "3900_5819.gml")
     assert main(["export", str(src), "-o", str(tmp_path), "--stl", "-q"]) in (0, 1)
     rep = json.loads((tmp_path / "report.json").read_text())

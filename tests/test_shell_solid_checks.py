@@ -11,7 +11,7 @@ import pytest
 from factories import box, box_polygons, building_from_polygons, flipped_wall, gabled_house, inward_box, open_box
 from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.geometry import (
-    bbox_pairs, signed_volume, snap_map, triangle_pairs_intersect, triangulate_surface, triangulate_surfaces,
+    bbox_pairs, signed_volume, snap_map, triangle_pairs_intersect, triangulate_flat, triangulate_surface,
     winding_number,
 )
 from lod2energy.model import Building, CityObject, Geometry, Shell, Solid, Surface
@@ -265,6 +265,12 @@ def test_exterior_shell_orientation_is_checked_once_shell_is_valid():
 
 
 # ----------------------------------------------------------------------------- geometry helpers
+
+def triangulate_surfaces(vertices, ringsets):
+    """:func:`triangulate_flat` of polygons given as lists of rings."""
+    rings = [np.asarray(r) for rs in ringsets for r in rs]
+    return triangulate_flat(vertices, np.concatenate(rings), [len(r) for r in rings], [len(rs) for rs in ringsets])
+
 
 def test_triangulation_keeps_orientation_and_area():
     b = gabled_house()

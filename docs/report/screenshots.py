@@ -18,9 +18,10 @@ from PIL import Image
 
 from lod2energy.safe_write import write_bytes
 from lod2energy.viz.view import write_report_for
-from lod2energy.viz.browser import open_page
 
 HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE.parents[1] / "tests"))
+from chromium import open_page  # noqa: E402 - the tests' headless Chromium
 
 
 def small_png(png: bytes, limit: int = 300_000) -> bytes:

@@ -42,7 +42,7 @@ from lod2energy.exporters.cityjson.schema import (
     extension_problems, extension_schema, load_extension_beside,
 )
 from lod2energy.io import cityjson as cjio
-from lod2energy.io import shape, to_local_frame
+from lod2energy.io import to_local_frame
 from lod2energy.io.json_stream import Scanner, StreamError
 from lod2energy.model import Building, FeatureError
 from lod2energy.validate.closed import TOLERATED_CODES, envelope_problems
@@ -310,34 +310,6 @@ def _cityobjects(path: str, repeated: bool = True) -> Iterator[tuple[str, Any, b
             sc.value()
 
 
-def _feature(root: str, ids: list[str], cos: Mapping, verts: np.ndarray, transform, templates,
-             path: str) -> Building | FeatureError:
-    """One group read as :func:`lod2energy.io.cityjson._features_of_document` reads it."""
-    rtype = cos[root].get("type", "") if isinstance(cos[root], Mapping) else ""
-    rtype = rtype if isinstance(rtype, str) else ""
-    bad = next(((oid, p) for oid in ids if (p := shape.cityobject_problem(oid, cos[oid]))), None)
-    if bad is not None:
-        item: Building | FeatureError = FeatureError(root, 901, f"coid={bad[0]}: {bad[1]}", rtype)
-    else:
-        try:
-            item = cjio.build_feature(root, ids, cos, verts)
-        except Lod2EnergyError as e:
-            item = FeatureError(root, getattr(e, "code", 901), str(e), rtype)
-        except (TypeError, ValueError, KeyError, IndexError, OverflowError, RecursionError) as e:
-            item = FeatureError(root, 901, f"coid={root}: unusable value ({type(e).__name__}: "
-                                           f"{str(e).splitlines()[0][:120] if str(e) else ''})", rtype)
-    if isinstance(item, FeatureError):
-        if not item.message.isprintable() or len(item.message) > shape.MAX_MESSAGE:
-            item = FeatureError(item.id, item.code, shape.one_line(item.message), item.type)
-        return item
-    if isinstance(transform, Mapping):
-        item = item.with_provenance(file_transform={"scale": [float(x) for x in transform["scale"]],
-                                                    "translate": [float(x) for x in transform["translate"]]})
-    if isinstance(templates, Mapping) and any(g.type == "GeometryInstance" for o in item.objects for g in o.geometries):
-        item = item.with_provenance(geometry_templates=templates)
-    return item
-
-
 def self_check_document(path: str, extension: Mapping | None = None, tol=None) -> list[str]:
     """Problems of an exported CityJSON document (empty: the file is OK), read one
     CityObject at a time; see :func:`lod2energy.exporters.cityjson.writer.self_check`."""
@@ -394,7 +366,7 @@ def _check(path: str, p: _Pass1, extension: Mapping | None, tol) -> list[str]:
     templates = head.get("geometry-templates")
 
     def group(g: list[str], cos: Mapping) -> Building | FeatureError:
-        return _feature(g[0], g, cos, verts, model.transform, templates, path)
+        return cjio.finished(cjio.group_feature(g[0], g, cos, verts), model.transform, templates)
 
     def schema_checked(out: list[str], repeated: bool) -> Iterator[tuple[str, Any, bool]]:
         """:func:`_cityobjects`, each CityObject also seen by the schema (in batches; a repeated

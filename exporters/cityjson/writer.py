@@ -166,7 +166,7 @@ def write(path: str, model: CityModel, buildings: Iterable[Building], version: s
     if not isinstance(buildings, Sequence):
         buildings = list(buildings)
     m, notes = model_for(model, version)
-    transform = cjio._transform_for(m, buildings)  # iterates the buildings only without a transform
+    transform = cjio.transform_for(m, buildings)  # iterates the buildings only without a transform
     if not m.transform:
         m = replace(m, transform=frozen_mapping(transform))
 

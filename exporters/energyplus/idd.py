@@ -1,10 +1,8 @@
 """EnergyPlus's Input Data Dictionary (``Energy+.idd``) read once, and IDF text checked against it.
 
-The IDF self-check used to re-parse every written file with eppy, which costs about 0.1 s a
-file and checks little: eppy prints and skips an unknown object, accepts any text in a numeric
-field and crashes on too many fields. Here the IDD is parsed once per process
-(:func:`load_idd`, cached) into frozen object and field definitions, and :func:`check_idf`
-tests a file the way EnergyPlus's input processor does before it simulates:
+The IDD is parsed once per process (:func:`load_idd`) into frozen object and field
+definitions; :func:`check_idf` tests a file the way EnergyPlus's input processor does before
+it simulates:
 
 - every object is a class of the IDD (case-insensitive), with no more fields than the IDD
   defines (extensible objects repeat their last ``\\extensible:N`` fields);
@@ -156,8 +154,7 @@ def parse_idd(text: str) -> Idd:
 
     The text is cut into one piece a class (:data:`_CLASS_LINE`); a class is read from its
     piece the first time it is asked for (:class:`_Classes`), as :func:`_read_classes` reads
-    the whole text: a file uses a few dozen of the IDD's ~850 classes, and reading them all
-    cost ~0.45 CPU s a process.
+    the whole text: a file uses a few dozen of the IDD's ~850 classes.
     """
     m = re.search(r"!IDD_Version\s+(\S+)", text)
     version = m.group(1) if m else ""
@@ -270,12 +267,10 @@ def _class_def(cur: dict) -> ClassDef:
 
 class _Classes(Mapping):
     """``{upper-case class name: ClassDef}`` of a parsed IDD, each class read from its piece of
-    the text and its :class:`ClassDef` built the first time it is asked for (a file uses a few
-    dozen of the IDD's ~850 classes, and building all their ~66,000 field definitions was a
-    third of reading the IDD). What is built depends only on the class's own lines, which
-    nothing changes after :func:`parse_idd`: a class built later is the one it would have built
-    at once. ``whole``: every class already read (an IDD with a line :data:`_ODD_LINE` finds);
-    a piece that does not read as exactly its one class makes the whole text be read, too."""
+    the text and its :class:`ClassDef` built the first time it is asked for (what is built
+    depends only on the class's own lines). ``whole``: every class already read (an IDD with a
+    line :data:`_ODD_LINE` finds); a piece that does not read as exactly its one class makes
+    the whole text be read, too."""
 
     def __init__(self, text: str, pieces: dict[str, tuple[int, int]], whole: dict[str, dict] | None = None):
         self._text, self._pieces = text, pieces

@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import json
 import struct
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Iterable
 
@@ -364,11 +364,6 @@ def _closed_by_position(v: np.ndarray, t: np.ndarray) -> bool:
     return len(np.unique(keys)) == len(e) and bool(np.isin(row_keys(e[:, ::-1]), keys).all())
 
 
-def _facet_normals(v: np.ndarray, t: np.ndarray) -> np.ndarray:
-    """Unit facet normals, (t, 3) float; zero for a degenerate triangle."""
-    return triangle_normals(v, t)
-
-
 def write_ascii(path, v: np.ndarray, t: np.ndarray, codes: np.ndarray, root=None) -> None:
     """ASCII STL with one ``solid <class>`` per patch, to ``path`` (atomically, inside ``root``:
     :mod:`lod2energy.safe_write`) or into an open text file."""
@@ -382,7 +377,7 @@ def write_ascii(path, v: np.ndarray, t: np.ndarray, codes: np.ndarray, root=None
 def ascii_solids(v: np.ndarray, t: np.ndarray, codes: np.ndarray, names: tuple[str, ...] = PATCHES):
     """The text of an ASCII STL, chunk by chunk: one ``solid <name>`` per code present
     (``names[code]``), vertices ``v (n, 3) float`` m, triangles ``t (k, 3) int``, ``codes (k,) int``."""
-    n = _facet_normals(v, t)
+    n = triangle_normals(v, t)
     for ci, name in enumerate(names):
         sel = np.nonzero(codes == ci)[0]
         if len(sel) == 0:
@@ -406,7 +401,7 @@ def write_binary(path, v: np.ndarray, t: np.ndarray, codes: np.ndarray, root=Non
     order = np.argsort(codes, kind="stable")
     t, codes = t[order], codes[order]
     rec = np.zeros(len(t), dtype=[("n", "<f4", 3), ("v", "<f4", (3, 3)), ("a", "<u2")])
-    rec["n"] = _facet_normals(v, t)
+    rec["n"] = triangle_normals(v, t)
     rec["v"] = v[t]
     rec["a"] = codes
     header = b"lod2energy STL; patches: " + ",".join(PATCHES).encode()

@@ -464,8 +464,6 @@ def face_defects(faces: Sequence[np.ndarray], tol: float = POINT_TOL) -> list[Ba
 def width(points: np.ndarray) -> float:
     """Width (m) of a polygon across its main direction: its extent along the second
     principal axis of its points."""
-    # lod2energy.geometry.best_fit_plane gives only the third axis (the normal); the width
-    # needs the second
     q = np.asarray(points, dtype=np.float64)
     q = q - q.mean(axis=0)
     if len(q) < 3:

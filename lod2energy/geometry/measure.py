@@ -1,4 +1,4 @@
-"""Measures: triangle normals and areas, signed volume, best-fit plane, planarity.
+"""Measures: triangle normals and areas, signed volume, planarity (distance to the least-squares plane).
 
 Coordinates are metres; areas m2, volumes m3.
 """
@@ -6,9 +6,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from lod2energy.geometry.vectors import _cross, newell_normal
+from lod2energy.geometry.vectors import _cross
 
-__all__ = ["triangle_normals", "triangle_areas", "signed_volume", "best_fit_plane", "plane_distance",
+__all__ = ["triangle_normals", "triangle_areas", "signed_volume", "plane_distance",
            "ring_area_2d"]
 
 
@@ -69,29 +69,6 @@ def signed_volume(vertices: np.ndarray, tris: np.ndarray, origin: str = "centroi
     v = vertices[tris]
     v = v - v[0, 0]
     return float(np.einsum("ij,ij->i", v[:, 0], _cross(v[:, 1], v[:, 2])).sum() / 6.0)
-
-
-
-def best_fit_plane(points: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Least-squares plane through points (as CGAL's ``linear_least_squares_fitting_3``).
-
-    Parameters
-    ----------
-    points : (k, 3) float
-
-    Returns
-    -------
-    centroid : (3,) float
-    normal : (3,) float
-        Unit normal, oriented like the Newell normal of ``points`` taken as a ring.
-    """
-    p = np.asarray(points, dtype=np.float64)
-    c = p.mean(axis=0)
-    _, _, vt = np.linalg.svd(p - c, full_matrices=False)
-    n = vt[-1]
-    if np.dot(n, newell_normal(p)) < 0:
-        n = -n
-    return c, n
 
 
 def plane_distance(points: np.ndarray) -> float:

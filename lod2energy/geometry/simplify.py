@@ -1,4 +1,4 @@
-"""Mesh simplification: collapse short edges, drop collinear ring vertices.
+"""Mesh simplification: collapse short edges.
 
 Coplanar faces are merged on the polygon mesh (:func:`lod2energy.polymesh.merge_coplanar`).
 """
@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["collapse_short_edges", "drop_collinear"]
+__all__ = ["collapse_short_edges"]
 
 
 def collapse_short_edges(v: np.ndarray, t: np.ndarray, c: np.ndarray, tol: float
@@ -98,18 +98,3 @@ def collapse_short_edges(v: np.ndarray, t: np.ndarray, c: np.ndarray, tol: float
     used, inv = np.unique(t, return_inverse=True)
     return v[used], inv.reshape(-1, 3), c
 
-
-def drop_collinear(V: np.ndarray, r: tuple[int, ...], tol: float = 1e-9) -> tuple[int, ...]:
-    """Remove ring vertices lying on the segment between their neighbours (only used on new faces)."""
-    r = list(r)
-    changed = True
-    while changed and len(r) > 3:
-        changed = False
-        for i in range(len(r)):
-            a, b, c = V[r[i - 1]], V[r[i]], V[r[(i + 1) % len(r)]]
-            if np.linalg.norm(np.cross(b - a, c - b)) <= tol * max(np.linalg.norm(c - a), 1e-12) and \
-                    np.dot(b - a, c - b) > 0:
-                del r[i]
-                changed = True
-                break
-    return tuple(r)

@@ -7,14 +7,12 @@ where ear clipping leaves slivers). The ear clipping and the CDT of one polygon 
 """
 from __future__ import annotations
 
-from typing import Sequence
-
 import numpy as np
 
 from lod2energy.geometry.cdt import constrained_delaunay, constrained_delaunay_many, earcut_rings
 from lod2energy.geometry.vectors import _cross, cross2 as _cross2, newell_normal, project_2d
 
-__all__ = ["triangulate_surface", "triangulate_surfaces", "triangulate_flat", "SLIVER_RATIO"]
+__all__ = ["triangulate_surface", "triangulate_flat", "SLIVER_RATIO"]
 
 
 def _fix_orientation(tris: np.ndarray, p2: np.ndarray, local: np.ndarray) -> np.ndarray:
@@ -93,32 +91,6 @@ def _triangulate_quads(vertices: np.ndarray, quads: np.ndarray, normals: np.ndar
     t1 = np.where(use_bd[:, None], np.stack([a, b, d], 1), np.stack([a, b, c], 1))
     t2 = np.where(use_bd[:, None], np.stack([b, c, d], 1), np.stack([a, c, d], 1))
     return np.stack([t1, t2], axis=1).reshape(-1, 3)
-
-
-def triangulate_surfaces(vertices: np.ndarray, ringsets: Sequence[Sequence[np.ndarray]]
-                         ) -> tuple[np.ndarray, np.ndarray]:
-    """Triangulate many polygons at once (see :func:`triangulate_flat`).
-
-    Parameters
-    ----------
-    vertices : (n, 3) float
-        The building's vertices, m.
-    ringsets : sequence of sequence of (k,) int
-        For each polygon its rings (outer first).
-
-    Returns
-    -------
-    tris : (T, 3) int
-        Indices into ``vertices``, each oriented like its polygon's outer ring, grouped
-        by polygon in input order.
-    poly_of_tri : (T,) int
-        Index (into ``ringsets``) of the polygon of each triangle.
-    """
-    rings = [np.asarray(r, dtype=np.intp) for rs in ringsets for r in rs]
-    if not rings:
-        return np.zeros((0, 3), dtype=np.intp), np.zeros(0, dtype=np.intp)
-    return triangulate_flat(vertices, np.concatenate(rings), np.array([len(r) for r in rings]),
-                            np.array([len(rs) for rs in ringsets]))
 
 
 SLIVER_RATIO = 0.01

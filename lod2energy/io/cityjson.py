@@ -19,12 +19,8 @@ import numpy as np
 from lod2energy.errors import FormatNotSupportedError, InputError
 from lod2energy.io import shape
 from lod2energy.io.seen_ids import SeenIds
-from lod2energy.io.cityjson_grid import (  # noqa: F401 - the writer and the grid, importable from here as before
-    _quantise, default_transform, file_coordinates, on_grid, quantise,
-)
-from lod2energy.io.cityjson_write import (  # noqa: F401 - the writer and the grid, importable from here as before
-    _geometry_json, _header_json, _lod_json, _offset_nested, _plain, cityobject_json, feature_document,
-    _transform_for, is_cityjsonseq, to_document, transform_for, write,
+from lod2energy.io.cityjson_write import (  # noqa: F401 - the writer, importable from the reader's module
+    _plain, feature_document, is_cityjsonseq, transform_for, write,
 )
 from lod2energy.model import (
     MULTISOLID_TYPES, SOLID_TYPES, SURFACE_TYPES, Building, CityModel, CityObject, FeatureError,
@@ -405,19 +401,42 @@ def _features_of_document(doc: Mapping[str, Any], transform: Mapping | None,
     if templates is None:
         templates = doc.get("geometry-templates")
     for item in _features_of_document_raw(doc, transform, what, keys, seen, tag, only):
-        if isinstance(item, FeatureError) and (not item.message.isprintable()
-                                               or len(item.message) > shape.MAX_MESSAGE):
+        yield finished(item, transform, templates)
+
+
+def finished(item: Building | FeatureError, transform: Mapping | None, templates: Any) -> Building | FeatureError:
+    """A feature as :func:`read` gives it: an error's message on one line, a building with the
+    file's grid and, when it has instances, the file's geometry templates."""
+    if isinstance(item, FeatureError):
+        if not item.message.isprintable() or len(item.message) > shape.MAX_MESSAGE:
             # one line, whatever the ids hold (a newline, a control character)
             item = FeatureError(item.id, item.code, shape.one_line(item.message), item.type)
-        if isinstance(item, Building) and isinstance(transform, Mapping):
-            # the grid a writer keeps: the final check judges the building on it
-            item = item.with_provenance(file_transform={"scale": [float(x) for x in transform["scale"]],
-                                                        "translate": [float(x) for x in transform["translate"]]})
-        if isinstance(templates, Mapping) and isinstance(item, Building) and any(
-                g.type == "GeometryInstance" for o in item.objects for g in o.geometries):
-            # instances are validated on their template (lod2energy.validate.checks.check_instance)
-            item = item.with_provenance(geometry_templates=templates)
-        yield item
+        return item
+    if isinstance(transform, Mapping):
+        # the grid a writer keeps: the final check judges the building on it
+        item = item.with_provenance(file_transform={"scale": [float(x) for x in transform["scale"]],
+                                                    "translate": [float(x) for x in transform["translate"]]})
+    if isinstance(templates, Mapping) and any(g.type == "GeometryInstance" for o in item.objects for g in o.geometries):
+        # instances are validated on their template (lod2energy.validate.checks.check_instance)
+        item = item.with_provenance(geometry_templates=templates)
+    return item
+
+
+def group_feature(root: str, ids: list[str], cos: Mapping[str, Any], vertices: np.ndarray) -> Building | FeatureError:
+    """The feature of first-level CityObject ``root`` and its descendants ``ids`` (root
+    first): the Building, or a FeatureError for it."""
+    rtype = cos[root].get("type", "") if isinstance(cos[root], Mapping) else ""
+    rtype = rtype if isinstance(rtype, str) else ""
+    bad = next(((oid, p) for oid in ids if (p := shape.cityobject_problem(oid, cos[oid]))), None)
+    if bad is not None:
+        return FeatureError(root, 901, f"coid={bad[0]}: {bad[1]}", rtype)
+    try:
+        return build_feature(root, ids, cos, vertices)
+    except InputError as e:
+        return FeatureError(root, e.code, str(e), rtype)
+    except (TypeError, ValueError, KeyError, IndexError, OverflowError, RecursionError) as e:
+        return FeatureError(root, 901, f"coid={root}: unusable value ({type(e).__name__}: "
+                                       f"{str(e).splitlines()[0][:120] if str(e) else ''})", rtype)
 
 
 def _features_of_document_raw(doc: Mapping[str, Any], transform: Mapping | None,
@@ -461,17 +480,7 @@ def _features_of_document_raw(doc: Mapping[str, Any], transform: Mapping | None,
             seen.add(oid, tag)
         if only is not None and root not in only:
             continue
-        bad = next(((oid, p) for oid in ids if (p := shape.cityobject_problem(oid, cos[oid]))), None)
-        if bad is not None:
-            yield FeatureError(root, 901, f"coid={bad[0]}: {bad[1]}", rtype)
-            continue
-        try:
-            yield build_feature(root, ids, cos, verts)
-        except InputError as e:
-            yield FeatureError(root, e.code, str(e), rtype)
-        except (TypeError, ValueError, KeyError, IndexError, OverflowError, RecursionError) as e:
-            yield FeatureError(root, 901, f"coid={root}: unusable value ({type(e).__name__}: "
-                                          f"{str(e).splitlines()[0][:120] if str(e) else ''})", rtype)
+        yield group_feature(root, ids, cos, verts)
     yield from _orphan_errors(cos, groups, what)
 
 

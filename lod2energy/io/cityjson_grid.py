@@ -35,7 +35,6 @@ def default_transform(vertices: np.ndarray, scale: float = 0.001) -> dict:
     return {"scale": [scale] * 3, "translate": [float(round(x, 3)) for x in lo]}
 
 
-
 def on_grid(b: Building, transform: Mapping, frame=None) -> Building:
     """``b`` with its vertices rounded to the grid of ``transform`` (scale, translate), as a
     CityJSON file stores them (for a geographic input, on the file's grid in degrees:
@@ -49,10 +48,6 @@ def on_grid(b: Building, transform: Mapping, frame=None) -> Building:
     if np.array_equal(v, b.vertices):
         return b
     return replace(b, vertices=v)
-
-
-#: The former private names.
-_quantise = quantise
 
 
 #: Scale of the grid a geographic file (degrees) is written on: ~0.1 mm horizontally, 1 mm in height.

@@ -140,25 +140,6 @@ def transform_for(model: CityModel, buildings: Iterable[Building]) -> dict:
     return t
 
 
-def to_document(model: CityModel, buildings: Iterable[Building], version: str | None = None) -> dict:
-    """A whole CityJSON document (dict) from the model and its features."""
-    version = version or model.version
-    buildings = list(buildings)
-    doc = _header_json(model, version)
-    transform = transform_for(model, buildings)
-    doc["transform"] = transform
-    cos: dict[str, Any] = {}
-    verts: list = []
-    for b in buildings:
-        off = len(verts)
-        verts.extend(_quantise(b.vertices, transform, model.frame))
-        for o in b.objects:
-            cos[o.id] = cityobject_json(o, off, version)
-    doc["CityObjects"] = cos
-    doc["vertices"] = verts
-    return doc
-
-
 def _dumps(x: Any) -> str:
     return json.dumps(x, separators=(",", ":"), ensure_ascii=False)
 
@@ -168,11 +149,10 @@ def write_document(f, model: CityModel, buildings: Iterable[Building], version: 
                    fix_header: Callable[[dict], None] | None = None, scratch_dir: str | None = None) -> None:
     """Write a whole CityJSON document into the text file ``f``, one building at a time.
 
-    The bytes are those of ``json.dump(to_document(model, buildings, version), f,
-    separators=(",", ":"), ensure_ascii=False)`` (after ``fix_header`` / ``fix_object`` on the
-    document's head and on each CityObject), but no more than one building is in memory: the
-    CityObjects go to ``f`` as they come, the vertices to an anonymous scratch file (in
-    ``scratch_dir``), appended after them.
+    The bytes are those of ``json.dump(document, f, separators=(",", ":"), ensure_ascii=False)``
+    (after ``fix_header`` / ``fix_object`` on the document's head and on each CityObject), but
+    no more than one building is in memory: the CityObjects go to ``f`` as they come, the
+    vertices to an anonymous scratch file (in ``scratch_dir``), appended after them.
 
     Parameters
     ----------
@@ -255,7 +235,3 @@ def write(path: str, model: CityModel, buildings: Iterable[Building], version: s
                                    ensure_ascii=False) + "\n")
         else:
             write_document(f, model, buildings, version, scratch_dir=os.path.dirname(os.path.abspath(path)))
-
-
-#: The former private name.
-_transform_for = transform_for

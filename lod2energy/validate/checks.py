@@ -27,7 +27,7 @@ import numpy as np
 from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.errors import InputError
 from lod2energy.io.cityjson import _Collector, _parse_geometry
-from lod2energy.model import MULTISOLID_TYPES, Building, Geometry
+from lod2energy.model import BUILDING_TYPES, MULTISOLID_TYPES, Building, Geometry
 from lod2energy.validate import memo, polygon, shell as shell_checks, solid as solid_checks
 from lod2energy.validate.codes import Defect
 
@@ -169,7 +169,7 @@ def _validate_all(buildings: list, tol: Tolerances) -> list[list[Defect]]:
                 if found:
                     # val3dity reports installations etc. as features of their own: their
                     # errors do not stop the BuildingPart overlap check
-                    if o is b.root or o.type in solid_checks.PARTS_TYPES:
+                    if o is b.root or o.type in BUILDING_TYPES:
                         geom_ok = False
                     out.extend(found)
         outs.append(out)

@@ -30,11 +30,7 @@ from lod2energy.geometry.pairs import close_pairs_grid, connected_components
 from lod2energy.geometry.snap import snapped_ids
 from lod2energy.model import Shell
 from lod2energy.validate.memo import shell_keys
-
-
-def _fmt(x: float) -> str:
-    """C++ ``ostream`` default formatting (6 significant digits), as val3dity prints."""
-    return f"{x:g}"
+from lod2energy.validate.polygon import _fmt
 
 
 def _loc(p) -> str:
@@ -349,7 +345,7 @@ def _check_meshes(vertices: np.ndarray, meshes: Sequence[ShellMesh], vol: np.nda
     lo, hi = np.minimum(src, dst), np.maximum(src, dst)
     ukey = (esh * N + lo) * N + hi
     _, dinv, dcnt = np.unique(dkey, return_inverse=True, return_counts=True)
-    uu, uinv, ucnt = np.unique(ukey, return_inverse=True, return_counts=True)
+    _, uinv, ucnt = np.unique(ukey, return_inverse=True, return_counts=True)
     bad = np.zeros(S, dtype=bool)
     bad[tsh[degenerate]] = True
     bad[esh[dcnt[dinv.ravel()] > 1]] = True

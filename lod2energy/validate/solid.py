@@ -7,7 +7,7 @@ after two cheap filters: bounding boxes, then a separating face plane (one solid
 one of its faces, the other in front: parts sharing a wall). Inner shells are first
 placed by the winding numbers of their vertices, which is exact where a shared volume
 would be below round-off (a cavity poking 10 um out of its solid). "Interiors overlap" means a shared volume above
-``VOLUME_EPS`` (val3dity's exact test reports any positive volume; the floor only
+``Tolerances.volume_eps`` (m3; val3dity's exact test reports any positive volume; the floor only
 absorbs round-off of coplanar shared walls). With ``overlap_tol > 0`` two solids
 overlap when the shared part is thicker than ``overlap_tol`` (its volume / area ratio,
 a stand-in for val3dity's erosion by ``overlap_tol``).
@@ -21,17 +21,8 @@ import numpy as np
 
 from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.geometry import bbox_pairs, cross_rows as _cross, signed_volume, winding_number
-from lod2energy.model import Building, Geometry, Solid
+from lod2energy.model import BUILDING_TYPES, Building, Geometry, Solid
 from lod2energy.validate.shell import shell_meshes
-
-
-VOLUME_EPS = DEFAULT.volume_eps
-"""Default of ``Tolerances.volume_eps``: shared volumes at or under this (m3) count as touching."""
-
-AREA_EPS = DEFAULT.area_eps
-"""Default of ``Tolerances.area_eps``: shared boundary area at or under this (m2) is no shared face."""
-
-PARTS_TYPES = ("Building", "BuildingPart")
 
 
 # ----------------------------------------------------------------------------- meshes -> manifolds
@@ -354,7 +345,7 @@ def check_parts_overlap(buildings: Sequence[Building], tol: Tolerances = DEFAULT
             continue
         prims: dict[str | None, list] = {}
         for o in b.objects:
-            if o.type not in PARTS_TYPES:
+            if o.type not in BUILDING_TYPES:
                 continue
             for gi, g in enumerate(o.geometries):
                 if g.type in ("Solid", "CompositeSolid") and g.solids:

@@ -1,4 +1,4 @@
-"""A headless Chromium that loads ``report.html`` offline: console errors, requests, screenshots.
+"""A headless Chromium that loads ``report.html`` offline (the tests' and docs' page checks): console errors, requests.
 
 Drives the Debian ``chromium`` (``.ci/install-chromium.sh``) with playwright's Python client
 (``executable_path``; playwright's own browsers are never downloaded). Every request is
@@ -13,8 +13,6 @@ import tempfile
 from contextlib import contextmanager
 from dataclasses import dataclass, field
 from pathlib import Path
-
-from lod2energy.safe_write import write_bytes
 
 CHROMIUM_FLAGS = ("--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
                   "--disable-background-networking", "--disable-component-update", "--disable-sync")
@@ -80,12 +78,3 @@ def open_page(path, width: int = 1280, height: int = 900):
     finally:
         shutil.rmtree(profile, ignore_errors=True)
 
-
-def screenshot(page, path, *, selector: str | None = None, quality: int | None = None) -> Path:
-    """PNG screenshot of the viewport (or of the element ``selector``) to ``path``."""
-    if selector:
-        page.locator(selector).first.scroll_into_view_if_needed()
-        png = page.locator(selector).first.screenshot()
-    else:
-        png = page.screenshot()
-    return write_bytes(path, png, root=os.path.dirname(os.path.abspath(path)))
