@@ -8,11 +8,13 @@ One ``Model`` per building, in the IDF's local frame (metres; map coordinate = f
 :func:`lod2energy.energy.model.model_of`, cut into storeys by
 :func:`lod2energy.energy.zones.storeys._written_zones`):
 
-- one ``Room`` per thermal zone, its ``Face`` s the zone's written pieces (planar, convex),
-  typed ``Wall``, ``RoofCeiling`` (roofs, ceilings) or ``Floor`` (ground, floors), a floor
-  facing up or a roof facing down by its normal;
+- one ``Room`` per thermal zone, its ``Face`` s the zone's written pieces (convex), typed
+  ``Wall``, ``RoofCeiling`` (roofs, ceilings) or ``Floor`` (ground, floors), a floor facing up
+  or a roof facing down by its normal; a warped piece without a window as exact triangles
+  (:func:`fan`), a sliver honeybee calls degenerate merged into its neighbour
+  (:func:`mend_slivers`);
 - the model's tolerance the geometry's own precision (:func:`model_tolerance`: 1 mm, or more
-  where the input's faces are less flat);
+  where a face is less flat or the input's parts interpenetrate, :func:`overlap_tolerance`);
 - boundary conditions as in the IDF: ``Outdoors``, ``Ground``, ``Adiabatic`` for party walls,
   ``Surface`` for the floors and ceilings between storeys (each naming its partner);
 - ``Aperture`` s on the outdoor walls from the window-to-wall ratio, placed as the IDF places
@@ -377,7 +379,8 @@ def face_problem(points: np.ndarray, tol: float = TOLERANCE) -> str | None:
 
 def self_check(path: str, n_rooms: int | None = None) -> list[str]:
     """Problems of a written HBJSON (empty: good): a Model of ``n_rooms`` Rooms, each a closed,
-    outward shell (:func:`lod2energy.validate.closed.check_closed_outward`, as the IDF's zones),
+    outward shell (:func:`lod2energy.validate.closed.check_closed_outward`, T-junctions joined
+    within EnergyPlus's 1.27 cm or within the model's tolerance),
     no face honeybee would refuse (:func:`face_problem`), every ``Surface`` boundary naming a
     face of the file, no two rooms overlapping (:func:`collisions`)."""
     try:
@@ -410,7 +413,11 @@ def self_check(path: str, n_rooms: int | None = None) -> list[str]:
             bc = f.get("boundary_condition") or {}
             if bc.get("type") == "Surface" and bc["boundary_condition_objects"][0] not in ids:
                 problems.append(f"{path}: face {f['identifier']}: its Surface partner is not in the file")
+        # T-junctions joined within EnergyPlus's 1.27 cm, or within the model's tolerance (a
+        # vertex nearer than 1.27 cm to another face's edge, and not on it, is a corner of its own)
         shell = check_closed_outward(polys) if polys else ["no faces"]
+        if shell and polys and not check_closed_outward(polys, t_tol=tol):
+            shell = []
         if shell or not vol > 0:
             problems.append(f"{path}: room {r['identifier']}: not a closed, outward shell"
                             + (f" ({shell[0]})" if shell else ""))
