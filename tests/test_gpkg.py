@@ -179,4 +179,5 @@ def test_the_layer_facts_are_computed_once_for_geojson_and_gpkg(tmp_path, monkey
         assert [f["id"] for f in feats] == [str(v) for v in cols["id"]]
         for k in ("storeys", "height_m", "floor_area_m2", "use"):
             assert [f["properties"][k] for f in feats] == [_plain(v) for v in cols[k]], k
-        assert not geojson._KEPT
+        from lod2energy import cache
+        assert cache.sizes().get(geojson.LAYER_TABLE, (0, 0))[0] == 0

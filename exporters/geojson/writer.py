@@ -74,6 +74,7 @@ import numpy as np
 from shapely.geometry import shape
 from shapely.validation import explain_validity
 
+from lod2energy import cache
 from lod2energy.energy.downgrades import summed
 from lod2energy.energy.figures import AREA_KEYS
 from lod2energy.exporters import handoff
@@ -106,9 +107,10 @@ ROUND = {"heating_kwh": 0, "cooling_kwh": 0, "heating_kwh_m2": 1, "cooling_kwh_m
          "footprint_area_m2": 2, "weather_distance_km": 1}
 #: Run figures copied from the building's IDF record (``ExportRecord.values()``).
 _UNSET = object()
-#: The layer's geometry and facts per building, kept by the GeoPackage writer for the GeoJSON
-#: writer of the same export (:func:`features`): ``{key: {id: (geometry or None, facts or why)}}``.
-_KEPT: dict = {}
+#: The :mod:`lod2energy.cache` table of the layer's geometry and facts, kept by the GeoPackage
+#: writer for the GeoJSON writer of the same export (:func:`features`): one layer,
+#: ``{building key: (geometry or None, facts or why)}``.
+LAYER_TABLE = "footprint_layer"
 RUN_KEYS = ("heating_kwh", "cooling_kwh", "heating_kwh_m2", "cooling_kwh_m2", "heating_peak_w",
             "cooling_peak_w", "conditioned_floor_area_m2")
 
@@ -229,23 +231,27 @@ def features(buildings: Iterable[Building], records: Sequence | None = None, *, 
     Parameters are those of :func:`write`, and
     keep, take : hashable, optional
         The layer's key in one export that writes it twice (GeoPackage, then GeoJSON): ``keep``
-        keeps each building's footprint geometry and facts (the costly part) under it, ``take``
-        uses those kept instead of computing them again. The properties from the records
+        keeps each building's footprint geometry and facts (the costly part) under it in
+        :data:`LAYER_TABLE`, ``take`` uses those kept for the same building (id, geometry and
+        thermal facts) instead of computing them again, once. The properties from the records
         are made afresh for each.
     """
     records = records or ()
     by_id = {r.id: i for i, r in enumerate(records)}  # the index: a record may be rebuilt when read
-    kept = _KEPT.pop(take, None) if take is not None else None
-    if keep is not None:
-        _KEPT.clear()
-        _KEPT[keep] = {}
+    kept = cache.recall(LAYER_TABLE, take) if take is not None else None
+    if take is not None:
+        cache.clear(LAYER_TABLE)  # taken once
+    mine = cache.keep(LAYER_TABLE, keep, {}, size=1) if keep is not None else None
     for b in buildings:
         if not b.is_building:
             continue
         bid = str(b.id)
         fp = None
-        if kept is not None and bid in kept:
-            geom, h = kept.pop(bid)
+        # the building as read: its geometry and the thermal stage's facts (storeys, use)
+        bkey = (bid, cache.digest(b.vertices, repr(b.provenance.get("thermal")))) \
+            if kept is not None or mine is not None else None
+        if kept is not None and bkey in kept:
+            geom, h = kept.pop(bkey)
         else:
             fp = footprint(b, lod)
             try:
@@ -254,8 +260,8 @@ def features(buildings: Iterable[Building], records: Sequence | None = None, *, 
                 geom = multi(geom) if geom is not None else None
             except SiteError as e:
                 geom, h = None, str(e)
-            if keep is not None:
-                _KEPT[keep][bid] = (geom, h)
+            if mine is not None:
+                mine[bkey] = (geom, h)
         if geom is None:
             yield bid, None, h
             continue
