@@ -4,6 +4,7 @@ honeybee is AGPL-3: it is a test dependency only, the writer never imports it.""
 from __future__ import annotations
 
 import json
+from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
@@ -15,7 +16,6 @@ from factories import box, gabled_house
 from lod2energy.cli import main
 from lod2energy.exporters.energyplus.options import IdfOptions
 from lod2energy.exporters.hbjson import writer as hbjson
-from dataclasses import replace
 
 honeybee_model = pytest.importorskip("honeybee.model")
 pytest.importorskip("honeybee_energy")
@@ -191,4 +191,4 @@ def test_rooms_of_overlapping_parts_are_refused_with_the_reason(tmp_path):
     bad = tmp_path / "two.hbjson"
     bad.write_text(json.dumps(doc))
     assert any(e["code"] == "000108" for e in load(bad).check_all(raise_exception=False, detailed=True))
-    assert any(f"and twin overlap" in p for p in hbjson.self_check(str(bad)))
+    assert any("and twin overlap" in p for p in hbjson.self_check(str(bad)))
