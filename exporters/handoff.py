@@ -14,7 +14,7 @@ the energy model uses rather than from an extrusion of the footprint:
   storeys (:func:`lod2energy.energy.zones.storeys.upper_floor_area`: each the horizontal
   section of the real envelope at the storey's floor level, so a set-back top storey or a
   lower wing counts only where it is; the attic floor only with ``--attic conditioned``);
-- **use** and **year**: :func:`lod2energy.thermal.use.building_use` and the thermal stage's year.
+- **use** and **year**: :func:`lod2energy.thermal.use.recorded_use` and the thermal stage's year.
 """
 from __future__ import annotations
 
@@ -32,7 +32,7 @@ from lod2energy.geometry import newell_normal
 from lod2energy.model import Building
 from lod2energy.site import SiteError
 from lod2energy.thermal.storeys import storeys
-from lod2energy.thermal.use import building_use
+from lod2energy.thermal.use import recorded_use
 
 
 @dataclass(frozen=True)
@@ -145,7 +145,7 @@ def facts(b: Building, use: str | None = None, lod: str | None = None,
     fp = footprint(b, lod) if fp is None else fp
     if fp is None:
         return None
-    u = building_use(b, use)
+    u = recorded_use(b, use)
     st = storeys(b, u.type, lod)
     parts = part_pieces(b, lod)
     if not parts:

@@ -33,7 +33,7 @@ FORMATS = tuple(f"lod2energy.exporters.{m}.writer" for m in ("energyplus", "stl"
                                                                          "gpkg", "urbanopt", "cea", "hbjson"))
 #: The order the writers run in: the CityJSON and the footprints carry the results of the IDF's
 #: EnergyPlus runs.
-_ORDER = ("idf", "stl", "cityjson", "cfd", "geojson", "gpkg", "urbanopt", "cea", "hbjson")
+_ORDER = ("idf", "stl", "cityjson", "cfd", "gpkg", "geojson", "urbanopt", "cea", "hbjson")
 
 
 @dataclass(frozen=True)

@@ -152,3 +152,32 @@ def test_a_gpkg_that_fails_its_check_never_has_the_good_name(tmp_path, monkeypat
     assert not res.ok and res.path.endswith(".invalid") and not g.exists()
     assert (tmp_path / f"t{gpkg.SUFFIX}.invalid").exists()
     assert sorted(x.name for x in tmp_path.iterdir()) == [f"t{gpkg.SUFFIX}.invalid"]  # no temporary left
+
+
+@pytest.mark.parametrize("formats", [("--geojson", "--gpkg"), ("--geojson",), ("--gpkg",)])
+def test_the_layer_facts_are_computed_once_for_geojson_and_gpkg(tmp_path, monkeypatch, formats):
+    """With --geojson and --gpkg each building's footprint facts are computed once (the
+    GeoPackage keeps them, the GeoJSON takes them), the two files hold the same rows, and
+    nothing is kept once the GeoJSON has taken them."""
+    from lod2energy.exporters import handoff
+    calls = []
+    real = handoff.facts
+
+    def counting(b, *a, **kw):
+        calls.append(str(b.id))
+        return real(b, *a, **kw)
+
+    monkeypatch.setattr(handoff, "facts", counting)
+    out = tmp_path / "out"
+    assert main(["export", str(REPO / "examples" / "delft_subset.city.jsonl"), "-o", str(out), *formats,
+                 "--no-html", "-q", "-j", "1"]) in (0, 1)
+    assert calls and len(calls) == len(set(calls)), "facts computed more than once for a building"
+    if len(formats) == 2:
+        feats = json.loads(next(out.glob(f"*{geojson.SUFFIX}")).read_text())["features"]
+        _, _, _, values = pyogrio.raw.read(str(next(out.glob(f"*{gpkg.SUFFIX}"))))
+        cols = dict(zip(geojson.FIELDS, values))
+        assert [f["id"] for f in feats] == [str(v) for v in cols["id"]]
+        for k in ("storeys", "height_m", "floor_area_m2", "use"):
+            assert [f["properties"][k] for f in feats] == [_plain(v) for v in cols[k]], k
+        from lod2energy import cache
+        assert cache.sizes().get(geojson.LAYER_TABLE, (0, 0))[0] == 0

@@ -322,3 +322,65 @@ def test_pictures_rendered_by_a_process_pool_give_the_same_page_and_a_failed_job
     def broken(fn, jobs):  # every second job failed: done here instead, the page unchanged
         return [Failure("worker lost") if i % 2 else fn(j) for i, j in enumerate(jobs)]
     assert render_report_html(rep, inputs=inputs, outputs=outs, mapper=broken) == here
+
+
+# --- warnings by kind ----------------------------------------------------------------------------
+
+def _warned_report():
+    """Three boxes with the warnings report.json records: sentinels, a downgrade, a far station,
+    a failed export; the study's --buildings ids not in the input."""
+    rep, outs = export_report([box(id="a"), box(id="b"), box(id="c")])
+    a, b, c = rep["buildings"]
+    a["thermal"] = {**dict(a["thermal"].detail), "warnings": [{"field": "year", "message": "year 2099"}]}
+    b["thermal"] = {**dict(b["thermal"].detail), "warnings": [{"field": "year", "message": "year 9999"},
+                                                             {"field": "storeys", "message": "9999 storeys"}]}
+    b["energy_downgrades"] = [{"kind": "lod1_block", "zone": "b"}]
+    b["exports"]["idf"] = {"ok": True, "path": "b.idf", "problems": [],
+                           "weather": {"station": "Far", "file": "far.epw", "distance_km": 120.0}}
+    c["exports"]["stl"] = {"ok": False, "path": "", "problems": ["STL not written"]}
+    rep["study"] = {"buildings_table_not_in_input": ["x", "y"]}
+    return rep, outs
+
+
+def _expected_warnings(rep) -> dict:
+    """Kind -> count, straight from the report's fields."""
+    from collections import Counter
+    n = Counter()
+    for b in rep["buildings"]:
+        n.update(f"{f}: a sentinel or implausible value taken as unknown"
+                 for f in {w["field"] for w in (b.get("thermal") or {}).get("warnings") or ()})
+        n.update(f"energy model downgraded ({d['kind']})" for d in b.get("energy_downgrades") or ())
+        if any((e.get("weather") or {}).get("distance_km", 0) > 50 for e in b["exports"].values()):
+            n["weather station more than 50 km away"] += 1
+        n.update(f"{f}: not written or failed its self-check" for f, e in b["exports"].items() if not e["ok"])
+    n["--buildings ids not in the input"] = len(rep["study"]["buildings_table_not_in_input"])
+    return dict(n)
+
+
+def test_the_page_summarises_warnings_by_kind(tmp_path):
+    rep, outs = _warned_report()
+    html = write_report_html(rep, tmp_path / "report.html", outputs=outs).read_text(encoding="utf-8")
+    shown = page_data(html)["warnings"]
+    assert {w["kind"]: w["count"] for w in shown} == _expected_warnings(rep)
+    assert [w["count"] for w in shown] == sorted((w["count"] for w in shown), reverse=True)
+    year = next(w for w in shown if w["kind"].startswith("year"))
+    assert year["count"] == 2 and year["example"] == "a"
+    cells = dict(re.findall(r'<td class="n" data-kind="([^"]*)">(\d+)</td>', html))
+    assert {k.replace("&gt;", ">"): int(v) for k, v in cells.items()} == _expected_warnings(rep)
+    clean, outs = export_report([box(id="a")])
+    assert page_data(render_report_html(clean, outputs=outs))["warnings"] == []
+
+
+@pytest.mark.external
+def test_the_warnings_table_in_chromium(tmp_path):
+    _browser()
+    from lod2energy.viz.browser import open_page
+    rep, outs = _warned_report()
+    page = write_report_html(rep, tmp_path / "report.html", outputs=outs)
+    with open_page(page) as (p, log):
+        assert log.console_errors == [] and log.page_errors == []
+        assert p.locator("#warnings-table").is_visible()
+        cells = p.eval_on_selector_all("#warnings-table td[data-kind]",
+                                       "els => Object.fromEntries(els.map(e => [e.dataset.kind, +e.textContent]))")
+        assert cells == _expected_warnings(rep)
+        assert cells == {w["kind"]: w["count"] for w in p.evaluate("window.reportData").get("warnings")}

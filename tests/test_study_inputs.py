@@ -306,6 +306,33 @@ def test_use_is_read_once_and_reused_from_the_prepared_building():
     assert building_use(tb, amap=parse_map("include = []", "t", "t")).type == "office"
 
 
+def test_every_writer_takes_the_recorded_use_and_a_table_row_beats_the_use_option(tmp_path):
+    """The energy model's zones (IDF, HBJSON) take the use the thermal stage recorded (report.json's),
+    made with the attribute map; a --buildings row wins over --use, as for its other columns."""
+    from lod2energy.thermal.use import recorded_use
+    tb = assign_u_values(label_building(_with(box(), C_KAYTTARK="151")),
+                         ThermalOptions(country="NL", attribute_map=parse_map(
+                             '[use]\nkeys = ["C_KAYTTARK"]\n[use.values]\n"151" = "office"\n', "m", "m")))
+    assert recorded_use(tb).type == "office" and recorded_use(tb).source == "map"
+    assert recorded_use(tb, "retail").type == "office"  # what the thermal stage recorded wins
+    row = _with(box()).with_provenance(**{TABLE_KEY: {"use": "health"}})
+    assert building_use(row, "retail").type == "health" and building_use(row, "retail").source == "table"
+    table = tmp_path / "b.csv"
+    first = json.loads(EXAMPLE.read_text().splitlines()[1])
+    bid = next(k for k, v in first["CityObjects"].items() if v["type"] == "Building")
+    table.write_text(f"id,use\n{bid},retail\n", encoding="utf-8")
+    out = tmp_path / "out"
+    assert main(["export", str(EXAMPLE), "-o", str(out), "--hbjson", "--no-html", "-q", "-j", "1", "--use", "office",
+                 "--buildings", str(table)]) in (0, 1)
+    report = {r["id"]: r for r in json.loads((out / "report.json").read_text())["buildings"]}
+    assert report[bid]["thermal"]["facts"]["use"]["value"] == "retail"
+    for path in out.glob("*.hbjson"):
+        doc = json.loads(path.read_text())
+        b = doc["user_data"]["building"]
+        assert {r["user_data"]["use"] for r in doc["rooms"]} == {report[b]["thermal"]["facts"]["use"]["value"]}, b
+    assert (out / f"{bid}.hbjson").exists()
+
+
 def test_region_selects_for_every_output(tmp_path):
     src = row_of_boxes_seq(tmp_path / "row.city.jsonl", n=5)
     out = tmp_path / "out"

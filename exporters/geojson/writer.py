@@ -16,7 +16,7 @@ field                      type   meaning
 =========================  =====  ==============================================================
 id                         str    the building's id (also the Feature's ``id``)
 type                       str    its CityObject type
-use, use_source            str    use type the model takes (:func:`lod2energy.thermal.use.building_use`)
+use, use_source            str    use type the model takes (:func:`lod2energy.thermal.use.recorded_use`)
 conditioned                bool   heated / cooled (false: no ideal loads, out of per-m2 figures)
 conditioned_source         str    ``table``, ``map``, ``attribute``, ``geometry`` or ``default``
 year, year_source          int    year of construction (null: unknown) and its source (str)
@@ -74,6 +74,7 @@ import numpy as np
 from shapely.geometry import shape
 from shapely.validation import explain_validity
 
+from lod2energy import cache
 from lod2energy.energy.downgrades import summed
 from lod2energy.energy.figures import AREA_KEYS
 from lod2energy.exporters import handoff
@@ -84,7 +85,7 @@ from lod2energy.io.json_stream import Scanner
 from lod2energy.model import Building
 from lod2energy.safe_write import atomic_write
 from lod2energy.site import SiteError
-from lod2energy.thermal.use import building_use
+from lod2energy.thermal.use import recorded_use
 
 SUFFIX = ".footprints.geojson"
 #: The layer's fields, in order, and their types (see the module docstring).
@@ -105,6 +106,11 @@ ROUND = {"heating_kwh": 0, "cooling_kwh": 0, "heating_kwh_m2": 1, "cooling_kwh_m
          "cooling_peak_w": 0, "conditioned_floor_area_m2": 2, "height_m": 2, "floor_area_m2": 2,
          "footprint_area_m2": 2, "weather_distance_km": 1}
 #: Run figures copied from the building's IDF record (``ExportRecord.values()``).
+_UNSET = object()
+#: The :mod:`lod2energy.cache` table of the layer's geometry and facts, kept by the GeoPackage
+#: writer for the GeoJSON writer of the same export (:func:`features`): one layer,
+#: ``{building key: (geometry or None, facts or why)}``.
+LAYER_TABLE = "footprint_layer"
 RUN_KEYS = ("heating_kwh", "cooling_kwh", "heating_kwh_m2", "cooling_kwh_m2", "heating_peak_w",
             "cooling_peak_w", "conditioned_floor_area_m2")
 
@@ -131,12 +137,20 @@ def typed(name: str, x: Any) -> Any:
     return float(round(x, ROUND[name])) if name in ROUND else x
 
 
+def _facts(b: Building, use, lod, attic, fp) -> handoff.HandoffFacts | None:
+    """:func:`lod2energy.exporters.handoff.facts`, None when the building has no storey figure."""
+    try:
+        return handoff.facts(b, use, lod, attic, fp)
+    except Exception:  # noqa: BLE001 - no storey figure is not a reason to drop the footprint
+        return None
+
+
 def _source(facts: Mapping, key: str) -> str | None:
     return (facts.get(key) or {}).get("source")
 
 
 def properties(b: Building, record=None, use: str | None = None, lod: str | None = None,
-               attic: str = "unconditioned", fp=None) -> dict:
+               attic: str = "unconditioned", fp=None, facts=_UNSET) -> dict:
     """The Feature properties of ``b``: every field of :data:`FIELDS`, typed (see the module docstring).
 
     Parameters
@@ -154,14 +168,13 @@ def properties(b: Building, record=None, use: str | None = None, lod: str | None
         ``--attic``: whether the attic floor counts in the floor area.
     fp : shapely Polygon or MultiPolygon, optional
         Its :func:`footprint`, when the caller has it.
+    facts : HandoffFacts or None, optional
+        Its :func:`_facts`, when the caller has them.
     """
     energy = dict(b.provenance.get("energy") or {})
     thermal = dict(b.provenance.get("thermal") or {})
-    try:
-        h = handoff.facts(b, use, lod, attic, fp)
-    except Exception:  # noqa: BLE001 - no storey figure is not a reason to drop the footprint
-        h = None
-    u = building_use(b, use) if h is None else None
+    h = _facts(b, use, lod, attic, fp) if facts is _UNSET else facts
+    u = recorded_use(b, use) if h is None else None
     stage = ""
     out_errors: list[int] = []
     if record is not None:
@@ -210,37 +223,63 @@ def multi(geom: dict) -> dict:
 
 
 def features(buildings: Iterable[Building], records: Sequence | None = None, *, crs: Any = None, frame=None,
-             use: str | None = None, lod: str | None = None,
-             attic: str = "unconditioned") -> Iterator[tuple[str, dict | None, dict | str]]:
+             use: str | None = None, lod: str | None = None, attic: str = "unconditioned",
+             keep: Any = None, take: Any = None) -> Iterator[tuple[str, dict | None, dict | str]]:
     """The layer's rows, one building at a time: ``(id, MultiPolygon geometry, properties)``, or
     ``(id, None, why)`` for a building left out (it cannot be placed, or has no footprint).
 
-    Parameters are those of :func:`write`.
+    Parameters are those of :func:`write`, and
+    keep, take : hashable, optional
+        The layer's key in one export that writes it twice (GeoPackage, then GeoJSON): ``keep``
+        keeps each building's footprint geometry and facts (the costly part) under it in
+        :data:`LAYER_TABLE`, ``take`` uses those kept for the same building (id, geometry and
+        thermal facts) instead of computing them again, once. The properties from the records
+        are made afresh for each.
     """
     records = records or ()
     by_id = {r.id: i for i, r in enumerate(records)}  # the index: a record may be rebuilt when read
+    kept = cache.recall(LAYER_TABLE, take) if take is not None else None
+    if take is not None:
+        cache.clear(LAYER_TABLE)  # taken once
+    mine = cache.keep(LAYER_TABLE, keep, {}, size=1) if keep is not None else None
     for b in buildings:
         if not b.is_building:
             continue
         bid = str(b.id)
-        fp = footprint(b, lod)
-        try:
-            geom = footprint_geometry(b, crs, frame, lod, fp)
-        except SiteError as e:
-            yield bid, None, str(e)
-            continue
+        fp = None
+        # the building as read: its geometry and the thermal stage's facts (storeys, use)
+        bkey = (bid, cache.digest(b.vertices, repr(b.provenance.get("thermal")))) \
+            if kept is not None or mine is not None else None
+        if kept is not None and bkey in kept:
+            geom, h = kept.pop(bkey)
+        else:
+            fp = footprint(b, lod)
+            try:
+                geom = footprint_geometry(b, crs, frame, lod, fp)
+                h = _facts(b, use, lod, attic, fp) if geom is not None else handoff.NO_FOOTPRINT
+                geom = multi(geom) if geom is not None else None
+            except SiteError as e:
+                geom, h = None, str(e)
+            if mine is not None:
+                mine[bkey] = (geom, h)
         if geom is None:
-            yield bid, None, handoff.NO_FOOTPRINT
+            yield bid, None, h
             continue
         rec = records[by_id[bid]] if bid in by_id else None
-        yield bid, multi(geom), properties(b, rec, use, lod, attic, fp)
+        yield bid, geom, properties(b, rec, use, lod, attic, fp, facts=h)
+
+
+def layer_key(outdir, stem: str, crs: Any, frame, options) -> tuple:
+    """The key of one export's footprint layer (:func:`features`' ``keep`` / ``take``)."""
+    return (os.path.abspath(str(outdir)), stem, str(crs), repr(frame), getattr(options, "use", None),
+            getattr(options, "lod", None), getattr(options, "attic", None) or "unconditioned")
 
 
 # ----------------------------------------------------------------------------- file
 
 def write(buildings: Iterable[Building], path: str | os.PathLike, *, crs: Any = None, frame=None,
           records: Sequence | None = None, use: str | None = None, lod: str | None = None,
-          attic: str = "unconditioned", root: str | os.PathLike | None = None) -> ExportResult:
+          attic: str = "unconditioned", root: str | os.PathLike | None = None, take: Any = None) -> ExportResult:
     """Write the footprints of ``buildings`` to ``path`` and self-check the file.
 
     Parameters
@@ -256,6 +295,8 @@ def write(buildings: Iterable[Building], path: str | os.PathLike, *, crs: Any = 
         See :func:`properties`.
     root : path, optional
         The folder the file must stay in (:func:`lod2energy.safe_write.check_target`).
+    take : hashable, optional
+        The layer's key, when the GeoPackage writer kept its geometry and facts (:func:`features`).
     """
     ids, left_out, seen = [], {}, []
     name = Path(path).name[:-len(SUFFIX)] if str(path).endswith(SUFFIX) else Path(path).stem
@@ -263,7 +304,8 @@ def write(buildings: Iterable[Building], path: str | os.PathLike, *, crs: Any = 
     # one Feature at a time: the bytes of json.dumps of the whole collection
     with atomic_write(path, "w", root=root) as f:
         f.write(head[:-2])
-        for bid, geom, props in features(buildings, records, crs=crs, frame=frame, use=use, lod=lod, attic=attic):
+        for bid, geom, props in features(buildings, records, crs=crs, frame=frame, use=use, lod=lod, attic=attic,
+                                         take=take):
             seen.append(bid)
             if geom is None:
                 left_out[bid] = props
@@ -396,7 +438,7 @@ def _write(buildings, outdir, options, *, crs=None, frame=None, records=None, st
     path = os.path.join(str(outdir), f"{stem}{SUFFIX}")
     return [write(buildings, path, crs=crs, frame=frame, records=records, use=getattr(options, "use", None),
                   lod=getattr(options, "lod", None), attic=getattr(options, "attic", None) or "unconditioned",
-                  root=outdir)]
+                  root=outdir, take=layer_key(outdir, stem, crs, frame, options))]
 
 
 # after "idf": the footprints carry the run figures of the IDF pass

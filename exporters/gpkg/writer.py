@@ -27,7 +27,7 @@ import pyogrio.raw
 import shapely
 from shapely.geometry import shape
 
-from lod2energy.exporters.geojson.writer import FIELDS, features
+from lod2energy.exporters.geojson.writer import FIELDS, features, layer_key
 from lod2energy.exporters.registry import register_writer
 from lod2energy.exporters.result import ExportResult
 from lod2energy.model import Building
@@ -102,14 +102,16 @@ def self_check(path: str, ids: Sequence[str] | None = None, rows: Sequence[dict]
 
 def write(buildings: Iterable[Building], path: str | os.PathLike, *, crs: Any = None, frame=None,
           records: Sequence | None = None, use: str | None = None, lod: str | None = None,
-          attic: str = "unconditioned", root: str | os.PathLike | None = None) -> ExportResult:
+          attic: str = "unconditioned", root: str | os.PathLike | None = None, keep: Any = None) -> ExportResult:
     """Write the footprint layer of ``buildings`` to GeoPackage ``path`` and self-check it.
 
-    Parameters are those of :func:`lod2energy.exporters.geojson.writer.write`.
+    Parameters are those of :func:`lod2energy.exporters.geojson.writer.write`; ``keep``: the
+    layer's key, to keep its geometry and facts for the GeoJSON writer of the same export.
     """
     path = Path(path)
     ids, geoms, rows, left_out, seen = [], [], [], {}, []
-    for bid, geom, props in features(buildings, records, crs=crs, frame=frame, use=use, lod=lod, attic=attic):
+    for bid, geom, props in features(buildings, records, crs=crs, frame=frame, use=use, lod=lod, attic=attic,
+                                     keep=keep):
         seen.append(bid)
         if geom is None:
             left_out[bid] = props
@@ -150,8 +152,8 @@ def _write(buildings, outdir, options, *, crs=None, frame=None, records=None, st
     path = os.path.join(str(outdir), f"{stem}{SUFFIX}")
     return [write(buildings, path, crs=crs, frame=frame, records=records, use=getattr(options, "use", None),
                   lod=getattr(options, "lod", None), attic=getattr(options, "attic", None) or "unconditioned",
-                  root=outdir)]
+                  root=outdir, keep=layer_key(outdir, stem, crs, frame, options))]
 
 
-# after "geojson": the same layer, the run figures of the IDF pass included
+# before "geojson", which takes the geometry and facts it keeps; after "idf": the run figures included
 register_writer("gpkg", _write, self_check, scope="dataset", records=True)

@@ -4,10 +4,11 @@
 (:mod:`lod2energy.thermal.attributes`; default the ``auto`` profile, which holds the code
 tables of the producers recognised today: AdV ALKIS ``Gebaeudefunktion``, CityGML 1.0 /
 SIG3D ``BuildingFunctionType``, PLATEAU ``usage``, BAG ``gebruiksdoel``, OSM ``building``
-and plain words; see ``lod2energy/data/attribute_maps/``). Precedence: the ``--use`` option,
-the ``--buildings`` row, the attributes, else residential (``source = "default"``), as the
-typology tables are residential. A building prepared by the thermal stage carries its use in
-``provenance["thermal"]["facts"]``, which is reused.
+and plain words; see ``lod2energy/data/attribute_maps/``). Precedence: the ``--buildings``
+row (the more specific, as for every field of the table), the ``--use`` option, the
+attributes, else residential (``source = "default"``), as the typology tables are residential.
+A building prepared by the thermal stage carries its use in ``provenance["thermal"]["facts"]``:
+:func:`recorded_use` reads it (the use report.json shows), as every writer must.
 
 :func:`use_conditions` reads ``data/use_conditions.csv`` and ``data/use_schedules.csv``,
 derived by ``scripts/derive_use_conditions.py`` from TEASER's DIN V 18599-10 / SIA 2024 use
@@ -67,20 +68,31 @@ def check_use(use: str) -> str:
 
 
 def building_use(b: Building, override: str | None = None, amap: AttributeMap | None = None) -> Use:
-    """The use of ``b`` (see the module docstring); ``override`` wins."""
+    """The use of ``b`` (see the module docstring): its ``--buildings`` row, else ``override``,
+    else its recorded use, else its attributes through ``amap``."""
+    row = table_row(b)
+    if row.get("use"):
+        return Use(row["use"], "table", None, "use")
     if override:
         return Use(check_use(override), "option")
     known = ((b.provenance.get("thermal") or {}).get("facts") or {}).get("use")
     if known:
         return Use(known["value"], known["source"], known.get("raw"), known.get("key"), known.get("scheme", ""))
-    row = table_row(b)
-    if row.get("use"):
-        return Use(row["use"], "table", None, "use")
     amap = attribute_map(amap)
     f = amap.read(b, "use")
     if f is not None:
         return Use(f.value, amap.source(f.key), str(f.raw)[:80], f.key, f.scheme)
     return Use("residential", "default")
+
+
+def recorded_use(b: Building, override: str | None = None) -> Use:
+    """The use the thermal stage recorded for ``b`` (``provenance["thermal"]["facts"]["use"]``:
+    the one report.json shows, made with the attribute map and the ``--buildings`` row), else
+    :func:`building_use` of ``b`` and ``override``."""
+    known = ((b.provenance.get("thermal") or {}).get("facts") or {}).get("use")
+    if known:
+        return Use(known["value"], known["source"], known.get("raw"), known.get("key"), known.get("scheme", ""))
+    return building_use(b, override)
 
 
 @dataclass(frozen=True)

@@ -17,6 +17,7 @@ from typing import Iterable, Iterator
 import numpy as np
 
 from lod2energy.site import MAX_WEATHER_KM
+from lod2energy.viz.warnings import warning_kinds
 from lod2energy.validate.codes import name as code_name
 from lod2energy.energy.downgrades import KINDS as DOWNGRADE_KINDS
 
@@ -66,6 +67,8 @@ class Row:
     message : str
     downgrades : tuple of str
         Kinds of the energy model's downgrades (:data:`lod2energy.energy.downgrades.KINDS`).
+    warnings : tuple of str
+        Kinds of its warnings (:func:`lod2energy.viz.warnings.warning_kinds`).
     """
 
     id: str
@@ -83,6 +86,7 @@ class Row:
     errors: tuple = ()
     message: str = ""
     downgrades: tuple[str, ...] = ()
+    warnings: tuple[str, ...] = ()
 
     @property
     def status(self) -> str:
@@ -210,7 +214,8 @@ def iter_rows(report: dict) -> Iterator[Row]:
                                **({"weather": v["weather"]} if v.get("weather") else {})}
                            for k, v in (b.get("exports") or {}).items()},
                   message=b.get("message", ""),
-                  downgrades=tuple(str(d.get("kind")) for d in b.get("energy_downgrades") or ()))
+                  downgrades=tuple(str(d.get("kind")) for d in b.get("energy_downgrades") or ()),
+                  warnings=warning_kinds(b))
 
 
 # --- figure data (pure functions of the rows) ---------------------------------------------------

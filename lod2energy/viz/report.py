@@ -41,6 +41,7 @@ from lod2energy.viz import figures as F
 from lod2energy.viz import render as R
 from lod2energy.viz.footprints import (MAX_PANEL_FACES, FootprintSpill, drawable as _drawable, n_faces as _n_faces,
                                        plan_footprint)
+from lod2energy.viz.warnings import study_warnings
 
 #: Default panel cap (see the module docstring).
 DEFAULT_CAP = 16
@@ -87,6 +88,7 @@ class PageRows:
         self._worst: dict[int, list[D.Row]] = {}  # severity -> the first ``cap`` deserving rows
         self._deserving = 0
         self.keys, self.status, self.heat = array("q"), array("B"), array("d")
+        self.warnings: dict[str, list] = {}  # kind -> [buildings, the first one's id]
         for r in rs:
             self.add(r)
 
@@ -107,6 +109,16 @@ class PageRows:
         self.keys.append(id_key(r.id))
         self.status.append(D.STATUSES.index(r.status))
         self.heat.append(np.nan if r.heating_kwh_m2 is None else r.heating_kwh_m2)
+        for k in r.warnings:
+            self.warnings.setdefault(k, [0, r.id])[0] += 1
+
+    def warning_table(self, study: dict | None = None) -> list[dict]:
+        """The warnings by kind, the most frequent first: ``[{"kind", "count", "example"}]``
+        (``example``: the first building of that kind, None for the study's own, ``study``:
+        :func:`lod2energy.viz.warnings.study_warnings`)."""
+        rows = [{"kind": k, "count": v[0], "example": v[1]} for k, v in self.warnings.items()]
+        rows += [{"kind": k, "count": n, "example": None} for k, n in (study or {}).items()]
+        return sorted(rows, key=lambda w: (-w["count"], w["kind"]))
 
     @property
     def large(self) -> bool:
@@ -373,7 +385,9 @@ def render_report_html(report: dict, *, inputs: dict | None = None, outputs: dic
     kind = D.report_kind(report)
     src = report.get("input_file") or (report.get("reports") or [{}])[0].get("input_file", "")
     embedded = page.embedded()
+    warnings = page.warning_table(study_warnings(report))
     page_data = {"kind": kind, "input_file": src, "figures": fd, "cap": cap, "panels": ids, "left_out": page.left_out,
+                 "warnings": warnings,
                  "plan": {k: v for k, v in plan_info.items()},
                  "graphs": {p["id"]: p["graph"] for p in panels},
                  "buildings": [_row_json(r) for r in embedded],
@@ -390,7 +404,7 @@ def render_report_html(report: dict, *, inputs: dict | None = None, outputs: dic
                       src=src, src_name=os.path.basename(src), fd=fd, plots=plots, plan=plan, picture=picture,
                       plan_info=plan_info, panels=panels, plan_max=page.plan_max,
                       left_out=page.left_out, cap=cap, n=page.n, statuses=D.STATUSES, colours=D.STATUS_COLOURS,
-                      graph_colours=R.GRAPH_COLOURS, data_json=blob, conditions=D.CONDITIONS,
+                      graph_colours=R.GRAPH_COLOURS, data_json=blob, conditions=D.CONDITIONS, warnings=warnings,
                       has_geometry=drawn)
 
 

@@ -20,7 +20,7 @@ from lod2energy.geometry.polygons import newell_normal, unit
 from lod2energy.validate.closed import check_closed_outward
 from lod2energy.thermal.storeys import ATTIC_MIN_HEIGHT, MIN_STOREY_HEIGHT, storeys, storeys_above_eave
 from lod2energy.thermal.facts import is_conditioned
-from lod2energy.thermal.use import building_use
+from lod2energy.thermal.use import recorded_use
 
 
 #: EnergyPlus puts a zone's interior solar gains on its floors, and counts a surface as one
@@ -204,7 +204,7 @@ def _written_zones(blist, zones, zones_of, pieces, options, openings):
     :func:`lod2energy.energy.downgrades.whole_zone`)."""
     written_of, notes, bstats, downgrades = {}, {}, {}, {}
     for bi, b in enumerate(blist):
-        use = building_use(b, options.use)
+        use = recorded_use(b, options.use)
         st = storeys(b, use.type, options.lod)
         heated = is_conditioned(b)  # an unconditioned building: every zone without HVAC
         notes[bi] = []
