@@ -374,7 +374,7 @@ def test_the_page_summarises_warnings_by_kind(tmp_path):
 @pytest.mark.external
 def test_the_warnings_table_in_chromium(tmp_path):
     _browser()
-    from lod2energy.viz.browser import open_page
+    from chromium import open_page
     rep, outs = _warned_report()
     page = write_report_html(rep, tmp_path / "report.html", outputs=outs)
     with open_page(page) as (p, log):
