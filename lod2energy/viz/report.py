@@ -25,7 +25,7 @@ import os
 import time
 from array import array
 from pathlib import Path
-from typing import Iterable, Iterator
+from typing import Iterable
 
 import numpy as np
 
