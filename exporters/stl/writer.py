@@ -422,7 +422,7 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: StlOptions
         raise ParameterError(f"--stl-mode must be 'building' or 'dataset', not {options.mode!r}")
     out = Path(outdir)
     out.mkdir(parents=True, exist_ok=True)
-    blist = [b for b in buildings if b.type in BUILDING_TYPES and b.energy_objects(options.lod)]
+    blist = [b for b in buildings if b.type in BUILDING_TYPES and b.envelope(options.lod)]
     groups = [[b] for b in blist] if options.mode == "building" else ([blist] if blist else [])
     used: set[str] = set()
     results = []

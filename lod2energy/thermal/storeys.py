@@ -46,7 +46,6 @@ ATTIC_MIN_HEIGHT = 2.0
 MIN_STOREY_HEIGHT = 2.2
 #: Roof faces tilted less than this (degrees) are flat.
 FLAT_TILT = 10.0
-MAX_STOREYS = 200
 
 
 @dataclass(frozen=True)
@@ -141,7 +140,7 @@ def storeys_from_attributes(b: Building, amap: AttributeMap | None = None
 
 
 def _surfaces(b: Building, lod: str | None):
-    for _, _, g in b.energy_objects(lod):
+    for _, _, g in b.envelope(lod):
         for _, hi, _, s in g.iter_surfaces():
             if hi > 0:
                 continue

@@ -226,7 +226,7 @@ def zone_shells(b: Building, origin: np.ndarray, lod: str | None = None,
     thermal = _thermal(b)
     u_table = thermal.get("u_values") if isinstance(thermal.get("u_values"), Mapping) else {}
     out = []
-    for obj, gi, g in b.energy_objects(lod):
+    for obj, gi, g in b.envelope(lod):
         for si, solid in enumerate(g.solids):
             if not solid.shells:
                 continue
