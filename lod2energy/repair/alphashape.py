@@ -231,12 +231,6 @@ def _hull_volume(m: PolyMesh) -> float:
         return 0.0
 
 
-#: A closed candidate whose volume per surface area (m) is below this while it fills less
-#: than a third of the input's convex hull is a skin around the surfaces (about 2 x OFFSET
-#: deep), not a building: a 1.5 m cube has 0.25 m. Default of ``Tolerances.skin_depth``.
-SKIN_DEPTH = DEFAULT.skin_depth
-
-
 def _area(m: PolyMesh) -> float:
     return float(sum(face_area(m.vertices, f) for f in m.faces))
 
