@@ -64,6 +64,11 @@ def name(code: int) -> str:
     return NAMES.get(int(code), "UNKNOWN_ERROR")
 
 
+def val3dity_valid(codes) -> bool:
+    """No val3dity error but 601 among ``codes`` (as ``lod2energy validate`` counts valid)."""
+    return all(c == 601 or c >= 1000 for c in codes)
+
+
 @dataclass(frozen=True, order=True)
 class Defect:
     """One error found by a check.

@@ -54,12 +54,6 @@ PLAN_SVG_MAX = 5000
 PLAN_PX = 1600
 
 
-def panel_ids(rs: Iterable[D.Row], cap: int = DEFAULT_CAP) -> tuple[list[str], int]:
-    """Ids of the buildings that get a panel, and how many deserving ones the cap left out."""
-    page = PageRows(rs, cap)
-    return [r.id for r in page.panel_rows()], page.left_out
-
-
 class PageRows:
     """What the page needs of a report's rows, read once and one at a time.
 
@@ -546,11 +540,3 @@ def read_for_page(path: str, wanted: set[str], spill: FootprintSpill | None = No
         elif f.id not in keep:
             fps[f.id] = plan_footprint(f)
     return keep, fps
-
-
-def read_buildings(path: str) -> dict[str, Building]:
-    """Buildings of a file by id (unreadable features left out)."""
-    model, feats = read(path)
-    if model is None:
-        return {}
-    return {f.id: f for f in feats if isinstance(f, Building)}
