@@ -39,7 +39,7 @@ from lod2energy.validate.checks import validate_building
 from lod2energy.viz import data as D
 from lod2energy.viz import figures as F
 from lod2energy.viz import render as R
-from lod2energy.viz.footprints import (MAX_PANEL_FACES, FootprintSpill, drawable as _drawable, n_faces as _n_faces,
+from lod2energy.viz.footprints import (MAX_PANEL_FACES, FootprintSpill, drawable, n_faces,
                                        plan_footprint)
 from lod2energy.viz.warnings import study_warnings
 
@@ -188,14 +188,14 @@ def _plan_picture(page: PageRows, footprints, inputs: dict, outputs: dict) -> tu
     for store in (inputs, outputs):
         for i, b in store.items():
             if i not in given and i not in own:
-                own[i] = _drawable(plan_footprint(b))
+                own[i] = drawable(plan_footprint(b))
 
     def items():
         """``(key, rings)``: the footprints given, then the panels' own (drawn last, over the
         others, whether or not a spill holds theirs too)."""
         if isinstance(footprints, dict):
             for i, rings in footprints.items():
-                yield id_key(i), _drawable(rings)
+                yield id_key(i), drawable(rings)
         else:
             mine = {id_key(i) for i in own}
             yield from ((k, rings) for k, rings in footprints if k not in mine)
@@ -262,7 +262,7 @@ def _plan_picture(page: PageRows, footprints, inputs: dict, outputs: dict) -> tu
 
 def _panel(r: D.Row, before: Building | None, after: Building | None, tol: Tolerances) -> dict:
     defects = []
-    too_big = max(_n_faces(before), _n_faces(after)) > MAX_PANEL_FACES
+    too_big = max(n_faces(before), n_faces(after)) > MAX_PANEL_FACES
     if too_big:
         before = after = None
     if before is not None:

@@ -17,8 +17,9 @@ import numpy as np
 from lod2energy.model import Building
 from lod2energy.semantics import DEFAULT_RULES
 
-from lod2energy.geometry.polygons import _norm, newell_normal, polygon_area3d, triangulate, unit
+from lod2energy.geometry.polygons import newell_normal, polygon_area3d, triangulate, unit
 from lod2energy.geometry import signed_volume
+from lod2energy.geometry.vectors import vector_length
 from lod2energy.geometry.snap import drop_repeats as clean_ring, weld
 from lod2energy.energy.uvalues import face_u_value, positive_number, window_u_value
 
@@ -153,7 +154,7 @@ def _drop_shared_collinear(faces: list, v: np.ndarray, tol: float) -> list:
         if L2 == 0:
             return False
         t = float((b - a) @ ac) / L2
-        return 0 < t < 1 and _norm(a + t * ac - b) < tol
+        return 0 < t < 1 and vector_length(a + t * ac - b) < tol
 
     status: dict[int, bool] = {}
     for f in faces:
