@@ -20,7 +20,7 @@ from lod2energy.semantics import DEFAULT_RULES
 from lod2energy.geometry.polygons import newell_normal, polygon_area3d, triangulate, unit
 from lod2energy.geometry import signed_volume
 from lod2energy.geometry.vectors import vector_length
-from lod2energy.geometry.snap import drop_repeats as clean_ring, weld
+from lod2energy.geometry.snap import drop_repeats, weld
 from lod2energy.energy.uvalues import face_u_value, positive_number, window_u_value
 
 #: Weld distance for zone vertices (m): EnergyPlus warns about vertices closer than 1 cm.
@@ -245,7 +245,7 @@ def zone_shells(b: Building, origin: np.ndarray, lod: str | None = None,
             for fi, s in enumerate(shell.surfaces):
                 rings = []
                 for ri, r in enumerate(s.rings):
-                    cr = clean_ring([remap[int(i)] for i in r])
+                    cr = drop_repeats([remap[int(i)] for i in r])
                     if len(set(cr)) >= 3:
                         rings.append(tuple(cr))
                     elif ri == 0:
