@@ -235,10 +235,6 @@ def _area(m: PolyMesh) -> float:
     return float(sum(face_area(m.vertices, f) for f in m.faces))
 
 
-def _volume(m: PolyMesh) -> float:
-    return signed_volume(m)
-
-
 def alpha_repair(m: PolyMesh, tol: Tolerances = DEFAULT, deadline: float | None = None,
                  alphas=ALPHAS, accept=None) -> PolyMesh | None:
     """Stage 4: the best valid alpha reconstruction of ``m`` (None if no candidate is valid).
@@ -268,7 +264,7 @@ def alpha_repair(m: PolyMesh, tol: Tolerances = DEFAULT, deadline: float | None 
             continue
         if accept is not None and not accept(r):
             continue
-        vol = _volume(r)
+        vol = signed_volume(r)
         if vol < hv / 3 and vol < tol.skin_depth * _area(r):
             continue  # a hollow skin around missing walls, not a building (a slender tower
             # fills a third of its hull neither, but its volume per area is metres)
