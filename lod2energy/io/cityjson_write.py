@@ -28,8 +28,6 @@ def is_cityjsonseq(path: str) -> bool:
     return p.endswith(".jsonl") or p.endswith(".cjseq") or p.endswith(".city.jsonl")
 
 
-
-
 def _lod_json(lod: str | None, version: str):
     if version != "1.0" or lod is None:
         return lod

@@ -129,7 +129,6 @@ def _same_header(a: dict, b: dict) -> bool:
     return json.loads(_dumps({k: a.get(k) for k in keys})) == json.loads(_dumps({k: b.get(k) for k in keys}))
 
 
-
 def records_of(path: str | os.PathLike, start: int = 0) -> "JournalRecords":
     """The buildings' records as the journal's lines from byte ``start`` on tell them.
 
