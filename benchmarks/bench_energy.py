@@ -57,7 +57,7 @@ def _prepared(tile: Path, n: int):
     model, feats = io.to_local_frame(model, feats)
     out = []
     for b in feats:
-        if not isinstance(b, Building) or b.type != "Building" or not b.energy_objects():
+        if not isinstance(b, Building) or b.type != "Building" or not b.envelope():
             continue
         try:
             out.append(assign_u_values(label_building(b), ThermalOptions(crs=model.crs if model else None)))

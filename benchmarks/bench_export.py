@@ -185,7 +185,7 @@ def writer_throughput(a) -> dict:
     from lod2energy.model import Building
 
     _, it = read(a.tile)
-    raw = [b for b in it if isinstance(b, Building) and b.type == "Building" and b.energy_objects()]
+    raw = [b for b in it if isinstance(b, Building) and b.type == "Building" and b.envelope()]
     t0 = time.perf_counter()
     bs = [energy_ready(b) for b in raw]
     t_label = time.perf_counter() - t0

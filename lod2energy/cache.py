@@ -69,8 +69,6 @@ def keep(name: str, key: Hashable, value: Any, size: int) -> Any:
     return value
 
 
-
-
 def remember(name: str, key: Hashable, make: Callable[[], Any], size: int) -> Any:
     """``make()`` once per ``key`` in table ``name`` of at most ``size`` entries."""
     value = recall(name, key, _MISSING)

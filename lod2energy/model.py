@@ -286,10 +286,6 @@ class Building:
                 out.append((o, gi, g))
         return out
 
-    def energy_objects(self, lod: str | None = None) -> list[tuple[CityObject, int, Geometry]]:
-        """The envelope geometries at ``lod`` (:meth:`envelope`; the older name)."""
-        return self.envelope(lod)
-
     def shells(self, lod: str | None = None, exterior_only: bool = True) -> list[ShellRef]:
         """Shells of the envelope at ``lod`` (see :meth:`envelope`)."""
         refs = []

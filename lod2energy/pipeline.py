@@ -119,18 +119,13 @@ def first_pass(task: tuple) -> Pass1:
         if rec.energy.geometry_ready:
             spool_building(job, seq, pb)
         return Pass1(rec)
-    plan = plan_of(payload) if job.options.html else None
+    plan = plan_footprint(payload) if job.options.html else None
     if kind == "other":
         spool_building(job, seq, payload)
         return Pass1(None, plan)
     pb, rec = process_building(payload, job.options, job.outdir, seq, job.crs, job.frame)
     spool_building(job, seq, pb)
     return Pass1(rec, plan)
-
-
-def plan_of(b: Building) -> list:
-    """The plan footprint of ``b`` for report.html (:func:`lod2energy.viz.footprints.plan_footprint`)."""
-    return plan_footprint(b)
 
 
 def context_pass(task: tuple) -> list[ExportRecord]:
@@ -277,7 +272,7 @@ class _Export:
                 elif self.run.resume and reusable(prev := self.prev_b.get(seq), item, self.job, self.per_building):
                     self.reused.add(seq)
                     if self.plans is not None:
-                        self.resumed_plans[seq] = (item.id, plan_of(item))
+                        self.resumed_plans[seq] = (item.id, plan_footprint(item))
                     yield (seq, "record", prev, self.job)
                 else:
                     yield (seq, "building", item, self.job)
@@ -298,7 +293,7 @@ class _Export:
             if isinstance(res, Pass1):
                 plan, res = res.plan, res.record
             else:  # the job did not finish: its object as read is drawn here
-                plan = plan_of(payload) if self.plans is not None and kind != "record" else None
+                plan = plan_footprint(payload) if self.plans is not None and kind != "record" else None
             if self.plans is not None:
                 if kind == "record":
                     plan = self.resumed_plans.pop(seq, (None, None))[1]

@@ -19,7 +19,7 @@ from lod2energy.repair.parts import clip_overlapping_parts, keep_input_parts
 from lod2energy.repair.pipeline import repair_building
 from lod2energy.semantics import label_building
 from lod2energy.thermal import assign_u_values
-from lod2energy.validate import checks as _checks
+from lod2energy.validate import checks
 from lod2energy.validate.closed import export_problem
 from lod2energy.validate.compliance import energy_compliance
 from lod2energy.validate.memo import carry, geometry_key, recall, verdict_key
@@ -64,7 +64,7 @@ def prepare_building(b: Building, options: PrepareOptions = PrepareOptions(), se
     tol, lod = options.tol, options.lod
     b = without_interior(b)  # LoD3/4 interior detail is not envelope (counted in the repair record)
     b = cut_openings(b)  # LoD3 openings drawn over their wall: the wall gets their hole (counted too)
-    before = _checks.validate_building(b, tol)
+    before = checks.validate_building(b, tol)
     # the ladder escalates before the job's budget ends, so its fallbacks can finish in it
     rb = repair_one(b, tol, ladder_budget(options.timeout), options.merge_parts, lod)
     if rb.provenance.get("repair") is not None:
@@ -97,7 +97,7 @@ def prepare_building(b: Building, options: PrepareOptions = PrepareOptions(), se
     tb = assign_u_values(lb, thermal_opts)
     if rb is not unclipped:  # the union writers (STL) keep the input parts: same union, no new seams
         tb = keep_input_parts(tb, assign_u_values(label_building(unclipped, lod=lod, source=b), thermal_opts))
-    after = before if geometry_key(tb) == geometry_key(b) else _checks.validate_building(tb, tol)
+    after = before if geometry_key(tb) == geometry_key(b) else checks.validate_building(tb, tol)
     block = dict(energy_compliance(tb, after, lod=lod, tol=tol, assess_labels=True, assess_u_values=True))
     if repair.error:  # e.g. implausible coordinates: kept in the output, not simulated
         block.update(compliant=False, geometry_ready=False,

@@ -40,9 +40,6 @@ copyreg.pickle(types.MappingProxyType, _reduce_mapping)
 #: Keys never written to a report: they hold timings, so they would make two runs differ.
 TIMING_KEYS = frozenset({"seconds", "elapsed", "time_s"})
 
-#: Outcomes of the per-building job.
-OUTCOMES = ("done", "timeout", "failed", "unreadable")
-
 
 def _untimed(obj: Any) -> Any:
     """``obj`` (JSON-ready) without timing keys, recursively; tuples become lists."""

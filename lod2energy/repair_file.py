@@ -10,7 +10,7 @@ from dataclasses import replace
 from lod2energy.config import Tolerances, tolerances
 from lod2energy.run.executor import Failure, Overrun, make_executor
 from lod2energy.run.interrupt import EXIT_INVALID, EXIT_UNUSABLE
-from lod2energy.io import cityjson, read
+from lod2energy.io import cityjson_write, read
 from lod2energy.model import Building, FeatureError, frozen_mapping
 from lod2energy.options import hard_budget
 from lod2energy.repair import dataset_table, repair_attributes, repair_features, repair_info
@@ -119,7 +119,7 @@ def write_output(run: Run) -> None:
     a, m = run.args, run.made
     os.makedirs(os.path.dirname(os.path.abspath(a.output)), exist_ok=True)
     check_target(a.output, None, [a.input])
-    cityjson.write(a.output, m["model"], m["buildings"])
+    cityjson_write.write(a.output, m["model"], m["buildings"])
     m["table"] = dataset_table(m["buildings"])
     doc = m["doc"] = {"input_file": getattr(a, "shown", a.input), "output_file": a.output, **frame_entry(m["model"]),
                       "summary": m["table"], "buildings": m["records"], "unreadable": m["unreadable"]}

@@ -269,11 +269,3 @@ def weather_distance(site: Site, weather: WeatherHeader) -> tuple[float, str | N
         warn = (f"weather file {weather.name} is {d:.0f} km from the site ({site.latitude:.4f}, "
                 f"{site.longitude:.4f}): more than {MAX_WEATHER_KM:.0f} km, its climate may not be the site's")
     return round(d, 2), warn
-
-
-def site_or_none(points: np.ndarray, crs: Any, frame=None, name: str = "Site") -> tuple[Site | None, str | None]:
-    """:func:`site_of`, or ``(None, reason)`` when the coordinates cannot be placed."""
-    try:
-        return site_of(points, crs, frame, name), None
-    except SiteError as e:
-        return None, str(e)

@@ -56,7 +56,7 @@ def eppy_idf(path) -> IDF:
 def _fallback_label(b: Building) -> Building:
     """One semantic entry per surface with a uValue from its type; wwr 0.2."""
     out = b
-    for o, gi, g in b.energy_objects():
+    for o, gi, g in b.envelope():
         sems = []
         solids = []
         for solid in g.solids:
@@ -152,9 +152,9 @@ def real_buildings(rel: str, ids: list[str] | None = None, n: int | None = None,
     for b in itertools.islice((x for x in it if isinstance(x, Building)), 0, None, step):
         if ids is not None and b.id not in ids:
             continue
-        if b.type != "Building" or not b.energy_objects():
+        if b.type != "Building" or not b.envelope():
             continue
-        if multipart and len(b.energy_objects()) < 2:
+        if multipart and len(b.envelope()) < 2:
             continue
         out.append(b)
         if n is not None and len(out) >= n:

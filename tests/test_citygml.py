@@ -162,7 +162,7 @@ def test_building_parts_are_children_in_one_feature(tmp_path):
     assert b.root.children == ("P1", "B1_BuildingPart_2") and b.objects[1].parents == ("B1",)
     assert b.root.geometries == () and dict(b.root.attributes) == {"function": "1000"}
     assert [o.geometries[0].type for o in b.objects[1:]] == ["Solid", "MultiSurface"]
-    assert [o.id for o, _, _ in b.energy_objects()] == ["P1", "B1_BuildingPart_2"]
+    assert [o.id for o, _, _ in b.envelope()] == ["P1", "B1_BuildingPart_2"]
     assert b2.id == "B2" and len(b2.objects) == 1
 
 

@@ -12,7 +12,7 @@ from lod2energy.exporters import energyplus
 from lod2energy.exporters.cityjson import writer as X
 from lod2energy.exporters.cityjson import schema as CS
 from lod2energy.exporters import run_results as R
-from lod2energy.io import cityjson as cjio
+from lod2energy.io import cityjson_write
 from lod2energy.model import CityModel, frozen_mapping
 
 
@@ -21,7 +21,7 @@ def _house_file(tmp_path):
     model = CityModel(version="2.0", metadata=frozen_mapping({"referenceSystem":
                                                               "https://www.opengis.net/def/crs/EPSG/0/28992"}))
     path = tmp_path / "house.city.json"
-    cjio.write(str(path), model, [b])
+    cityjson_write.write(str(path), model, [b])
     return path
 
 

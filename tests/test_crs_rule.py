@@ -56,7 +56,7 @@ def encoded(doc: dict, xyz: np.ndarray, scale) -> dict:
 
 def shell_volume(b) -> float:
     """Volume (m3) of the first solid of a building read by :func:`lod2energy.io.read`."""
-    tris = [(r[0], r[i], r[i + 1]) for _, _, g in b.energy_objects() for solid in g.solids
+    tris = [(r[0], r[i], r[i + 1]) for _, _, g in b.envelope() for solid in g.solids
             for s in solid.shells[0].surfaces for r in [np.asarray(s.rings[0])] for i in range(1, len(r) - 1)]
     return signed_volume(np.asarray(b.vertices, float), np.asarray(tris, dtype=np.int64))
 

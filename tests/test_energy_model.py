@@ -46,7 +46,7 @@ def test_the_stage_records_a_united_dormer_and_keeps_the_geometry():
     assert isinstance(rec["model"], energy_model.EnergyModel)
     # the building's own geometry (what STL and CityJSON write) keeps both parts
     assert np.array_equal(staged.vertices, b.vertices) and staged.objects == b.objects
-    assert [o.id for o, _, _ in staged.energy_objects()] == ["dormer_house-part0", "dormer_house-part1"]
+    assert [o.id for o, _, _ in staged.envelope()] == ["dormer_house-part0", "dormer_house-part1"]
     assert "energy_model" not in b.provenance
 
 

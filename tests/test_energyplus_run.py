@@ -59,7 +59,7 @@ def test_energyplus_sees_the_input_u_values(tmp_path, weather):
         "AND TableName='Opaque Exterior' AND ColumnName='U-Factor with Film'").fetchall()
     con.close()
     expected = {}
-    for _, _, g in b.energy_objects():
+    for _, _, g in b.envelope():
         for s in g.semantic_surfaces:
             expected[s["type"]] = float(s["uValue"])
     assert rows
@@ -78,7 +78,7 @@ def test_heating_grows_with_u_value(tmp_path, weather):
         from dataclasses import replace
         from types import MappingProxyType
         from lod2energy.model import Geometry
-        o, gi, g = b.energy_objects()[0]
+        o, gi, g = b.envelope()[0]
         sem = tuple(MappingProxyType({**s, "uValue": s["uValue"] * f}) for s in g.semantic_surfaces)
         return b.replace_geometry(o.id, gi, replace(g, semantic_surfaces=sem))
 
@@ -116,7 +116,7 @@ def test_dataset_mode_runs(tmp_path, weather):
     bs = [energy_ready(b) for b in real_buildings(rel, n=2, multipart=True)]
     res = write_idf(bs, tmp_path, _opts(mode="dataset", zoning="building"), weather=weather)
     assert len(res) == 1 and res[0].ok, res[0].problems
-    assert res[0].stats["zones"] == sum(len(b.energy_objects()) for b in bs)
+    assert res[0].stats["zones"] == sum(len(b.envelope()) for b in bs)
 
 
 def test_parse_err_counts_severe_and_enclosure():

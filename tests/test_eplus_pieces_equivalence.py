@@ -66,7 +66,7 @@ def test_enclosure_verdicts_remembered_are_the_computed_ones():
     cache.clear(enclosure.DEFECTS)
     for z in zones + zones:
         got = enclosure.enclosure_defects([q.copy() for q in z])
-        exp = enclosure._enclosure_defects([np.asarray(q, dtype=np.float64) for q in z], enclosure.POINT_TOL)
+        exp = enclosure.face_defects(enclosure.eplus_vertices([np.asarray(q, dtype=np.float64) for q in z]))
         assert len(got) == len(exp)
         for a, b in zip(got, exp):
             assert np.array_equal(a.start, b.start) and np.array_equal(a.end, b.end)
@@ -91,7 +91,7 @@ def test_vertices_and_degenerate_together_as_apart():
     assert len(faces) == len(exp)
     assert all(a.shape == b.shape and np.array_equal(a, b) for a, b in zip(faces, exp))
     zone = rings[:30]
-    assert len(enclosure.face_defects(faces[:30])) == len(enclosure._enclosure_defects(zone, enclosure.POINT_TOL))
+    assert len(enclosure.face_defects(faces[:30])) == len(enclosure.face_defects(enclosure.eplus_vertices(zone)))
 
 
 def test_surely_planar_only_when_the_tests_pass():

@@ -54,7 +54,7 @@ def test_canonical_buildings_pass_self_check(tmp_path, make):
     assert len(res) == 1 and res[0].ok, res[0].problems
     assert energyplus.check.self_check(res[0].path) == []
     I, surfs, _ = _surfaces(res[0].path)
-    assert len(I.idfobjects["ZONE"]) == len(b.energy_objects())
+    assert len(I.idfobjects["ZONE"]) == len(b.envelope())
 
 
 def test_box_surfaces_outward_ccw_upper_left_first(tmp_path):
@@ -241,10 +241,10 @@ def test_self_check_catches_open_zone(tmp_path):
 def test_does_not_mutate_input(tmp_path):
     b = energy_ready(two_part_building())
     before = b.vertices.copy()
-    sems = [dict(s) for _, _, g in b.energy_objects() for s in g.semantic_surfaces]
+    sems = [dict(s) for _, _, g in b.envelope() for s in g.semantic_surfaces]
     write_idf([b], tmp_path)
     assert np.array_equal(before, b.vertices)
-    assert sems == [dict(s) for _, _, g in b.energy_objects() for s in g.semantic_surfaces]
+    assert sems == [dict(s) for _, _, g in b.envelope() for s in g.semantic_surfaces]
 
 
 def test_bad_options_are_parameter_errors(tmp_path):
@@ -290,8 +290,8 @@ def test_a_dormer_without_a_floor_joins_the_zone_it_sits_on(tmp_path):
     assert energy_parts.floorless_parts(b) == ["dormer_house-part1"]
     merged, notes = energy_parts.merge_floorless_parts(b)
     assert energy_parts.floorless_parts(merged) == [] and "united with dormer_house-part0" in notes[0]
-    assert [o.id for o, _, _ in merged.energy_objects()] == ["dormer_house-part0"]
-    assert [o.id for o, _, _ in b.energy_objects()] == ["dormer_house-part0", "dormer_house-part1"]  # input kept
+    assert [o.id for o, _, _ in merged.envelope()] == ["dormer_house-part0"]
+    assert [o.id for o, _, _ in b.envelope()] == ["dormer_house-part0", "dormer_house-part1"]  # input kept
     res = write_idf([b], tmp_path)
     assert res[0].ok, res[0].problems
     text = open(res[0].path).read()
@@ -303,7 +303,7 @@ def test_a_floorless_part_that_touches_nothing_is_left_out():
     lifted = [[(x, y, z + 20) for x, y, z in r] for r in dormer]
     b = energy_ready(parts_with_semantics([(house, ht), (lifted, dt)]))
     merged, notes = energy_parts.merge_floorless_parts(b)
-    assert [o.id for o, _, _ in merged.energy_objects()] == ["dormer_house-part0"]
+    assert [o.id for o, _, _ in merged.envelope()] == ["dormer_house-part0"]
     assert "left out of the IDF" in notes[0]
 
 

@@ -185,7 +185,8 @@ def _neighbour_lines(transform: dict) -> list[str]:
     """The two untouched buildings as CityJSONSeq lines in ``transform`` (the mutant's file's)."""
     key = json.dumps(transform, sort_keys=True)
     if key not in _NEIGHBOUR_LINES:
-        from lod2energy.io.cityjson import build_feature, feature_document, _transform_vertices
+        from lod2energy.io.cityjson import build_feature, _transform_vertices
+        from lod2energy.io.cityjson_write import feature_document
         lines = []
         for f in NEIGHBOURS:
             verts = _transform_vertices(f["vertices"], DELFT_HEADER["transform"], "neighbour")

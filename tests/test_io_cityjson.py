@@ -7,7 +7,7 @@ import math
 import numpy as np
 import pytest
 
-from lod2energy.io import cityjson, read
+from lod2energy.io import cityjson_write, read
 from lod2energy.model import Building, FeatureError
 
 from cityjson_docs import BOX_VERTICES, box_doc, parts_doc, to_seq, write
@@ -141,7 +141,7 @@ def test_round_trip_keeps_what_it_does_not_touch(tmp_path, suffix):
     model, feats = _all(write(tmp_path, doc))
     out = str(tmp_path / suffix)
     before = [b.vertices.copy() for b in feats]
-    cityjson.write(out, model, feats)
+    cityjson_write.write(out, model, feats)
     assert all(np.array_equal(a, b.vertices) for a, b in zip(before, feats))  # input untouched
     model2, feats2 = _all(out)
     assert model2.metadata["title"] == "round trip"
@@ -175,6 +175,6 @@ def test_textures_and_version_1_0_lods_round_trip(tmp_path):
     model, feats = _all(write(tmp_path, doc))
     assert feats[0].root.geometries[0].lod == "2"
     out = tmp_path / "o.city.json"
-    cityjson.write(str(out), model, feats)
+    cityjson_write.write(str(out), model, feats)
     g = json.loads(out.read_text())["CityObjects"]["b1"]["geometry"][0]
     assert g["lod"] == 2 and g["material"] == {"visual": {"value": 0}}

@@ -31,7 +31,7 @@ def one(path: Path) -> Building:
 
 def semantic_counts(b: Building) -> collections.Counter:
     c = collections.Counter()
-    for _o, _gi, g in b.energy_objects():
+    for _o, _gi, g in b.envelope():
         c.update(g.semantic_type(s) for *_, s in g.iter_surfaces())
     return c
 

@@ -128,12 +128,12 @@ def test_the_shared_wall_is_shared_wall_or_floor_in_the_cityjson_semantics(tmp_p
     fig = write_idf([left], tmp_path, context=[right])[0].stats["envelope"]["left"]
     assert list(fig["shared_faces"].values()) == [[fig["shared_faces"]["left"][0]]]
     out = with_shared_boundaries(left, fig["shared_faces"])
-    (o, gi, g), = out.energy_objects()
+    (o, gi, g), = out.envelope()
     t = face_table(out.vertices, g)
     shared = [float(t.area[i]) for i, s in enumerate(t.surfaces)
               if g.semantic_surfaces[s.semantic].get("thermalBoundaryType") == "sharedWallOrFloor"]
     assert shared == [pytest.approx(48.0)]
     # the other walls keep theirs, and the input building is unchanged
     assert sum(e.get("thermalBoundaryType") == "exterior" for e in g.semantic_surfaces) >= 1
-    (_, _, g0), = left.energy_objects()
+    (_, _, g0), = left.envelope()
     assert all(e.get("thermalBoundaryType") != "sharedWallOrFloor" for e in g0.semantic_surfaces)

@@ -278,7 +278,7 @@ def test_kept_answers_are_keyed_on_vertices_shell_and_tolerances():
 def test_geometry_instance_is_validated_on_its_template(tmp_path):
     import json
 
-    from lod2energy.io import cityjson, read
+    from lod2energy.io import cityjson_write, read
     from lod2energy.validate.checks import validate_building
 
     bent = [[0, 1, 2, 3]]
@@ -298,7 +298,7 @@ def test_geometry_instance_is_validated_on_its_template(tmp_path):
     assert [(d.code, d.location) for d in defects] == [(203, "coid=tree|geom=0|face=0")]
     # the template reference does not leak into what is written back
     out = tmp_path / "out.city.json"
-    cityjson.write(str(out), model, [b])
+    cityjson_write.write(str(out), model, [b])
     back = json.loads(out.read_text())
     assert back["geometry-templates"] == doc["geometry-templates"]
     assert back["CityObjects"]["tree"]["geometry"][0]["template"] == 0

@@ -381,7 +381,8 @@ def test_provenance_records_face_sources_and_attributes():
 
 @pytest.mark.parametrize("suffix", [".city.json", ".city.jsonl"])
 def test_repaired_building_round_trips_through_cityjson(tmp_path, suffix):
-    from lod2energy.io.cityjson import read, write
+    from lod2energy.io.cityjson import read
+    from lod2energy.io.cityjson_write import write
     from lod2energy.model import CityModel
     from dataclasses import replace as dc_replace
     out = []

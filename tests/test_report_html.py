@@ -11,11 +11,13 @@ import numpy as np
 import pytest
 
 from lod2energy.config import DEFAULT
+from lod2energy.io import read
+from lod2energy.model import Building
 from lod2energy.prepare import prepare
 from lod2energy.validate.checks import validate_building
 from lod2energy.viz import data as D
 from lod2energy.viz import render as R
-from lod2energy.viz.report import panel_ids, render_report_html, write_report_html
+from lod2energy.viz.report import PageRows, render_report_html, write_report_html
 from lod2energy.viz.view import write_report_for
 
 from conftest import shared_path
@@ -95,8 +97,9 @@ def test_panel_cap_keeps_every_building_of_a_small_file_and_the_worst_of_a_large
         D.Row(id="loc", stage="cleanup", before=(203,), after=()),
         D.Row(id="glob", stage="alphashape", before=(302,), after=()),
         D.Row(id="bad", stage="irreparable", before=(104,), after=(104,))]
-    assert panel_ids(rs[:5], cap=5) == ([f"v{i}" for i in range(5)], 0)
-    assert panel_ids(rs, cap=2) == (["bad", "glob"], 1)
+    small, large = PageRows(rs[:5], 5), PageRows(rs, 2)
+    assert ([r.id for r in small.panel_rows()], small.left_out) == ([f"v{i}" for i in range(5)], 0)
+    assert ([r.id for r in large.panel_rows()], large.left_out) == (["bad", "glob"], 1)
 
 
 # --- the graph picture ---------------------------------------------------------------------------
@@ -284,9 +287,9 @@ def test_every_plot_is_an_svg_image_and_heating_colours_the_plan(tmp_path):
 def test_the_page_of_a_large_file_keeps_only_its_panels_whole_and_draws_the_same_plan(tmp_path):
     """read_for_page: the panels' buildings whole, every other one as its footprint only; the
     page drawn from those is the page drawn from every building of the file."""
-    from lod2energy.viz.report import plan_footprint, read_buildings, read_for_page
+    from lod2energy.viz.report import plan_footprint, read_for_page
     src = str(shared_path("denhaag", "DenHaag_01.city.json"))
-    every = read_buildings(src)
+    every = {f.id: f for f in read(src)[1] if isinstance(f, Building)}
     ids = sorted(every)
     wanted = set(ids[:5]) | {"no-such-building"}
     keep, fps = read_for_page(src, wanted)

@@ -35,7 +35,7 @@ def entries_of(b: Building) -> list:
 
 def with_semantics(b: Building, values, surfaces) -> Building:
     """``b`` with its single geometry's surfaces pointing at ``values`` into ``surfaces``."""
-    o, gi, g = b.energy_objects()[0]
+    o, gi, g = b.envelope()[0]
     sh = g.solids[0].shells[0]
     shell = Shell(tuple(Surface(s.rings, v) for s, v in zip(sh.surfaces, values)))
     ng = Geometry(g.type, g.lod, (Solid((shell,) + g.solids[0].shells[1:]),),
@@ -120,7 +120,7 @@ def test_one_entry_per_surface_and_input_attributes_kept():
                             [{"type": "GroundSurface"}, {"type": "RoofSurface"},
                              {"type": "WallSurface", "on_footprint_edge": True, "children": [3]}])
     lab = S.label_building(shared)
-    o, gi, g = lab.energy_objects()[0]
+    o, gi, g = lab.envelope()[0]
     idx = [s.semantic for *_, s in g.iter_surfaces()]
     assert sorted(idx) == list(range(6)) and len(g.semantic_surfaces) == 6
     walls = [e for e in g.semantic_surfaces if e["type"] == "WallSurface"]
@@ -158,7 +158,7 @@ def test_label_building_does_not_mutate_its_input():
 
 def split_face(b: Building, face: int, semantic_of_new=None) -> Building:
     """Replace quad ``face`` by two triangles (as a repair could), with ``semantic_of_new``."""
-    o, gi, g = b.energy_objects()[0]
+    o, gi, g = b.envelope()[0]
     sh = g.solids[0].shells[0]
     q = sh.surfaces[face].outer
     tri = [Surface.from_lists([[q[0], q[1], q[2]]], semantic_of_new),

@@ -93,13 +93,14 @@ def _delft():
 
 def _whole_document(model, buildings, version):
     """The CityJSON document (dict) of ``buildings``, built in memory at once."""
-    from lod2energy.io.cityjson_write import _header_json, _quantise, cityobject_json, transform_for
+    from lod2energy.io.cityjson_grid import quantise
+    from lod2energy.io.cityjson_write import _header_json, cityobject_json, transform_for
     doc = _header_json(model, version)
     doc["transform"] = transform = transform_for(model, buildings)
     cos, verts = {}, []
     for b in buildings:
         off = len(verts)
-        verts.extend(_quantise(b.vertices, transform, model.frame))
+        verts.extend(quantise(b.vertices, transform, model.frame))
         for o in b.objects:
             cos[o.id] = cityobject_json(o, off, version)
     doc["CityObjects"], doc["vertices"] = cos, verts

@@ -163,7 +163,7 @@ def build_case(buildings, region: Region, wind_direction: float, cell_size: floa
     failed = []
     for b in inside:
         try:
-            bodies.append(building_body_of(b, offset, lod))
+            bodies.append(building_body(b, offset, lod))
         except Exception as e:  # noqa: BLE001 - one building's geometry never stops the case
             failed.append((b.id, f"{type(e).__name__}: {e}"))
     if not bodies:
@@ -212,10 +212,6 @@ def _size(united, h_max, ground_level, wind_direction, cell_size, small):
     xy = united.vertices[above][:, :2] if above.any() else united.vertices[:, :2]
     domain = size_domain(xy, h_max, ground_level, wind_direction, fa)
     return domain, plan_mesh(domain, cell_size, small)
-
-
-def building_body_of(b, offset, lod):
-    return building_body(b, offset, lod)
 
 
 def _env():

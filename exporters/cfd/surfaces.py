@@ -27,7 +27,7 @@ from dataclasses import dataclass, field
 import manifold3d as m3
 import numpy as np
 from shapely import STRtree, polygons, union_all
-from shapely.geometry import MultiPolygon, Polygon
+from shapely.geometry import Polygon
 
 from lod2energy.energy.zones.shells import zone_shells
 from lod2energy.exporters.stl.writer import ZONE_WELD_TOL, _closed_by_position, _zone_mesh, ascii_solids, merge_meshes

@@ -11,7 +11,7 @@ from dataclasses import replace
 from collections.abc import Mapping
 
 from lod2energy.crs import cityjson_reference_system
-from lod2energy.io import cityjson as cjio
+from lod2energy.io.cityjson_write import _plain
 from lod2energy.model import CityModel, frozen_mapping
 
 from lod2energy.exporters.cityjson.schema import EXTENSION_FILE, EXTENSION_NAME, EXTENSION_VERSION, _validators
@@ -71,9 +71,9 @@ def _header_fixes(md: dict, ext: dict, version: str) -> list[str]:
 
 
 def model_for(model: CityModel, version: str) -> tuple[CityModel, list[str]]:
-    ext = dict(cjio._plain(model.extensions) or {})
+    ext = dict(_plain(model.extensions) or {})
     ext[EXTENSION_NAME] = {"url": EXTENSION_FILE, "version": EXTENSION_VERSION}
-    md = dict(cjio._plain(model.metadata) or {})
+    md = dict(_plain(model.metadata) or {})
     notes = _header_fixes(md, ext, version)
     extra = dict(model.extra)
     if model.version != version:

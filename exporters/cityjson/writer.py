@@ -34,10 +34,8 @@ listed in ``ExportResult.skipped`` when ``exclude_unready`` is True (default).
 from __future__ import annotations
 
 import itertools
-import json
 import os
 from dataclasses import replace
-from collections.abc import Mapping
 from typing import Any, Iterable, Iterator, Sequence
 
 from lod2energy import safe_write
@@ -45,9 +43,8 @@ from lod2energy.config import DEFAULT
 from lod2energy.energy.figures import with_shared_boundaries
 from lod2energy.errors import Lod2EnergyError
 from lod2energy.run.memory import give_back
-from lod2energy.io import cityjson as cjio
+from lod2energy.io import cityjson as cjio, cityjson_write
 from lod2energy.io.cityjson_grid import on_grid
-from lod2energy.io.cityjson_write import write_document
 from lod2energy.model import Building, CityModel, frozen_mapping
 from lod2energy.semantics import strip_to_energy
 from lod2energy.validate.closed import export_problem
@@ -84,9 +81,9 @@ def _energy_attributes(b: Building) -> dict[str, Any]:
         "+energyRepairStage": str(rep.get("stage", "none")),
     }
     if rep:  # without its timings: the file is byte-reproducible (they stay in report.json)
-        a["+energyRepair"] = _untimed(cjio._plain(rep))
+        a["+energyRepair"] = _untimed(cityjson_write._plain(rep))
     if energy is not None:
-        a["+energyCompliance"] = cjio._plain(energy)
+        a["+energyCompliance"] = cityjson_write._plain(energy)
     a.update(result_attributes(b))  # after export --run: the simulated demand and loads
     return a
 
@@ -158,7 +155,7 @@ def write(path: str, model: CityModel, buildings: Iterable[Building], version: s
         version = cjio.normalise_version(version or model.version)
     except Lod2EnergyError as e:
         return ExportResult((), path, False, (str(e),), version=str(version))
-    if cjio.is_cityjsonseq(path) and version == "1.0":
+    if cityjson_write.is_cityjsonseq(path) and version == "1.0":
         return ExportResult((), path, False, ("CityJSONSeq needs CityJSON 1.1 or 2.0",), version=version)
     skipped: list[tuple[str, str]] = []
     written: list[str] = []
@@ -166,7 +163,7 @@ def write(path: str, model: CityModel, buildings: Iterable[Building], version: s
     if not isinstance(buildings, Sequence):
         buildings = list(buildings)
     m, notes = model_for(model, version)
-    transform = cjio.transform_for(m, buildings)  # iterates the buildings only without a transform
+    transform = cityjson_write.transform_for(m, buildings)  # iterates the buildings only without a transform
     if not m.transform:
         m = replace(m, transform=frozen_mapping(transform))
 
@@ -196,16 +193,16 @@ def write(path: str, model: CityModel, buildings: Iterable[Building], version: s
     base = os.path.basename(path)
     # staged under a name unique per process and call, with the suffix the self-check reads
     tmp = os.path.join(folder, f".{base}.{os.getpid()}.{next(_STAGED)}.tmp"
-                       + (".jsonl" if cjio.is_cityjsonseq(path) else ".json"))
+                       + (".jsonl" if cityjson_write.is_cityjsonseq(path) else ".json"))
     ext_path = os.path.join(folder, EXTENSION_FILE)
     inputs = [model.source] if model.source and os.path.exists(str(model.source)) else []
     try:
         safe_write.write_json(ext_path, extension_schema(version), root=folder, inputs=inputs)
-        if cjio.is_cityjsonseq(path):
-            cjio.write(tmp, m, prepared(), version, root=folder, inputs=inputs)
+        if cityjson_write.is_cityjsonseq(path):
+            cityjson_write.write(tmp, m, prepared(), version, root=folder, inputs=inputs)
         else:
             with safe_write.atomic_write(tmp, "w", root=folder, inputs=inputs) as f:
-                write_document(f, m, prepared(), version, fix_object=lambda co: fix_cityobject(co, version),
+                cityjson_write.write_document(f, m, prepared(), version, fix_object=lambda co: fix_cityobject(co, version),
                                     fix_header=lambda d: fix_header(d, version), scratch_dir=folder)
     except (OSError, ValueError, TypeError, Lod2EnergyError) as e:
         _remove(tmp)

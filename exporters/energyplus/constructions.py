@@ -6,8 +6,6 @@ EnergyPlus reports the input U-value "with film").
 from __future__ import annotations
 
 
-
-
 #: EnergyPlus inside film resistances (m2 K/W) by surface class, and the outside film for
 #: outdoor surfaces (DataHeatBalance::ComputeNominalUwithConvCoeffs).
 R_SI = {"Wall": 0.1197548, "Floor": 0.1620212, "Roof": 0.1074271}

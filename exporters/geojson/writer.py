@@ -319,8 +319,6 @@ def write(buildings: Iterable[Building], path: str | os.PathLike, *, crs: Any = 
                         skipped=tuple(left_out.items()))
 
 
-
-
 def _dumps(x) -> str:
     return json.dumps(x, ensure_ascii=False, separators=(",", ":"), allow_nan=False)
 

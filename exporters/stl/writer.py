@@ -29,12 +29,10 @@ from lod2energy.errors import ParameterError
 from lod2energy.exporters.paths import not_written, output_path, safe_stem
 from lod2energy.exporters.registry import register_writer
 from lod2energy.exporters.result import ExportResult
-from lod2energy.geometry import signed_volume
 from lod2energy.exporters.stl.rows import row_keys, same_position, unique_rows
-from lod2energy.exporters.stl.seams import T_JUNCTION_TOL, split_open_edges, split_t_junctions  # noqa: F401 - part of stl's API
+from lod2energy.exporters.stl.seams import split_open_edges, split_t_junctions
 from lod2energy.geometry.snap import weld
-from lod2energy.geometry import triangle_areas, triangle_normals
-from lod2energy.geometry import collapse_short_edges  # noqa: F401 - re-exported, used below
+from lod2energy.geometry import collapse_short_edges, signed_volume, triangle_areas, triangle_normals
 from lod2energy.model import BUILDING_TYPES, Building
 
 #: Edge-collapse tolerance (m) after the union: removes sliver triangles.
@@ -424,7 +422,7 @@ def write(buildings: Iterable[Building], outdir: str | Path, options: StlOptions
         raise ParameterError(f"--stl-mode must be 'building' or 'dataset', not {options.mode!r}")
     out = Path(outdir)
     out.mkdir(parents=True, exist_ok=True)
-    blist = [b for b in buildings if b.type in BUILDING_TYPES and b.energy_objects(options.lod)]
+    blist = [b for b in buildings if b.type in BUILDING_TYPES and b.envelope(options.lod)]
     groups = [[b] for b in blist] if options.mode == "building" else ([blist] if blist else [])
     used: set[str] = set()
     results = []

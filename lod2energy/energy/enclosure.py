@@ -434,12 +434,7 @@ def enclosure_defects(surfaces: Sequence[np.ndarray], tol: float = POINT_TOL) ->
     """
     arrs = [np.asarray(s, dtype=np.float64) for s in surfaces]
     key = (float(tol),) + tuple((a.shape, a.tobytes()) for a in arrs)
-    return list(cache.remember(DEFECTS, key, lambda: _enclosure_defects(arrs, tol), DEFECTS_KEPT))
-
-
-def _enclosure_defects(arrs: list[np.ndarray], tol: float) -> list[BadEdge]:
-    """:func:`enclosure_defects` of float64 ``(k_i, 3)`` arrays, computed."""
-    return face_defects(eplus_vertices(arrs), tol)
+    return list(cache.remember(DEFECTS, key, lambda: face_defects(eplus_vertices(arrs), tol), DEFECTS_KEPT))
 
 
 def face_defects(faces: Sequence[np.ndarray], tol: float = POINT_TOL) -> list[BadEdge]:

@@ -34,7 +34,7 @@ from lod2energy.config import DEFAULT
 from lod2energy.energy.enclosure import eplus_merge
 from lod2energy.energy.zones.shells import ZoneFace, ZoneShell, classify
 from lod2energy.geometry.polygons import newell_normal, polygon_area3d
-from lod2energy.geometry.snap import drop_repeats as clean_ring
+from lod2energy.geometry.snap import drop_repeats
 from lod2energy.polymesh import Face, PolyMesh, signed_volume
 from lod2energy.repair.footprint import footprint_polygon, roof_height
 from lod2energy.repair.roofs import roof_model
@@ -177,7 +177,7 @@ def separated_zone(zone: ZoneShell) -> ZoneShell | None:
         return None
     kept, faces = [], []
     for f in zone.faces:
-        rings = [tuple(clean_ring([int(idx[i]) for i in r])) for r in f.rings]
+        rings = [tuple(drop_repeats([int(idx[i]) for i in r])) for r in f.rings]
         if len(set(rings[0])) < 3 or any(len(set(r)) < 3 for r in rings[1:]):
             return None
         kept.append(f)

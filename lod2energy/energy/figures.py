@@ -122,7 +122,7 @@ def with_shared_boundaries(b, shared: Mapping[str, Iterable[int]], lod: str | No
     own where the input shares one with other surfaces)."""
     if not shared:
         return b
-    for o, gi, g in b.energy_objects(lod):
+    for o, gi, g in b.envelope(lod):
         entries = list(g.semantic_surfaces)
         copies: dict[int, int] = {}
         solids = []

@@ -136,7 +136,7 @@ class EnergyModel:
 
 
 def _energy_buildings(buildings: Iterable[Building], lod: str | None) -> list[Building]:
-    return [b for b in buildings if b.type in BUILDING_TYPES and b.energy_objects(lod)]
+    return [b for b in buildings if b.type in BUILDING_TYPES and b.envelope(lod)]
 
 
 def _key(own: Sequence[Building], context: Sequence[Building], options) -> tuple:
@@ -317,7 +317,7 @@ def with_energy_model(buildings: Iterable[Building], options, context: Iterable[
         return buildings
     out, bi = [], 0
     for b in buildings:
-        if bi < model.n_own and b.type in BUILDING_TYPES and b.energy_objects(options.lod):
+        if bi < model.n_own and b.type in BUILDING_TYPES and b.envelope(options.lod):
             b = b.with_provenance(energy_model=frozen_mapping({"model": model, **model.record(bi)}))
             bi += 1
         out.append(b)

@@ -10,7 +10,7 @@ import shapely
 from shapely.geometry import Point, Polygon
 
 from lod2energy.energy.zones.shells import ZoneShell
-from lod2energy.geometry.polygons import is_convex_2d as _is_convex_2d, newell_normal, wall_basis as plane_basis, polygon_area3d, unit
+from lod2energy.geometry.polygons import is_convex_2d, newell_normal, wall_basis, polygon_area3d, unit
 from lod2energy.io.openings import polygon_rings
 
 
@@ -29,7 +29,7 @@ def window_for(piece: np.ndarray, wwr: float) -> np.ndarray | None:
     nn = newell_normal(piece)
     area = 0.5 * float(np.linalg.norm(nn))  # polygon_area3d(piece), from the one normal
     n = unit(nn)
-    u, v = plane_basis(n)
+    u, v = wall_basis(n)
     c0 = piece.mean(axis=0)
     xy = np.column_stack([(piece - c0) @ u, (piece - c0) @ v])
     poly = Polygon(xy)
@@ -132,7 +132,7 @@ def split_openings(zone: ZoneShell, recess: float = OPENING_RECESS) -> tuple[Zon
         outer = v[list(w.rings[0])]
         n = unit(newell_normal(outer))
         c = outer.mean(axis=0)
-        a, b = plane_basis(n)
+        a, b = wall_basis(n)
         keep = [w.rings[0]]
         for hole in w.rings[1:]:
             hp = v[list(hole)]
@@ -212,7 +212,7 @@ def _merge_notch(zone: ZoneShell, faces, new_rings, oi: int, drop: set):
         c = outer.mean(axis=0)
         if float(n @ n_o) < 0.999 or np.abs((p - c) @ n).max() > 0.01:
             continue
-        a, b = plane_basis(n)
+        a, b = wall_basis(n)
         to2 = lambda q: np.column_stack([(q - c) @ a, (q - c) @ b])  # noqa: E731
         try:
             union = Polygon(to2(outer), [to2(v[list(r)]) for r in rings[1:]]).union(Polygon(to2(p)))
@@ -242,7 +242,7 @@ def opening_polygon(op: Opening, piece: np.ndarray) -> np.ndarray | None:
     up = np.array([0.0, 0.0, 1.0])
     a = np.cross(up, n)
     if np.linalg.norm(a) < 1e-6:
-        a, _ = plane_basis(n)
+        a, _ = wall_basis(n)
     a = unit(a)
     b = np.cross(n, a)
     c = piece.mean(axis=0)
@@ -254,7 +254,7 @@ def opening_polygon(op: Opening, piece: np.ndarray) -> np.ndarray | None:
     if clip.geom_type != "Polygon" or clip.area < 0.01 or clip.area > 0.98 * polygon_area3d(piece):
         return None
     xy = np.asarray(clip.exterior.coords)[:-1]
-    if len(xy) > 4 or not _is_convex_2d(xy):
+    if len(xy) > 4 or not is_convex_2d(xy):
         (x0, y0, x1, y1), (cx, cy) = clip.bounds, clip.centroid.coords[0]
         t = math.sqrt(clip.area / max((x1 - x0) * (y1 - y0), 1e-12))
         hw, hh = t * (x1 - x0) / 2, t * (y1 - y0) / 2

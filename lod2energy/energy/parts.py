@@ -20,7 +20,7 @@ def floorless_parts(b: Building, lod: str | None = None) -> list[str]:
     follows a roof steeper than 60 degrees.
     """
     out = []
-    for o, _, g in b.energy_objects(lod):
+    for o, _, g in b.envelope(lod):
         nz = [unit(newell_normal(b.vertices[list(s.rings[0])]))[2] for *_, s in g.iter_surfaces()]
         if o.type == "BuildingPart" and nz and not min(nz) < FLOOR_NZ:
             out.append(o.id)

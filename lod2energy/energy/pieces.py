@@ -10,7 +10,7 @@ from typing import Sequence
 
 import numpy as np
 
-from lod2energy.geometry.polygons import is_convex_2d as _is_convex_2d, merge_convex, newell_normal, PLANAR_TOL, wall_basis as plane_basis, triangulate, unit
+from lod2energy.geometry.polygons import is_convex_2d, merge_convex, newell_normal, PLANAR_TOL, wall_basis, triangulate, unit
 from lod2energy.energy.zones.shells import ZoneFace, ZoneShell
 
 #: Decimals of the vertex coordinates written to the IDF (m): 0.1 mm.
@@ -109,9 +109,9 @@ def _pieces_from_points(pts: np.ndarray, ends: Sequence[int], n: np.ndarray, c: 
     tolerance, which its enclosure test cannot match.
     """
     planar = _planar(pts, n, c)
-    u, v = plane_basis(n)
+    u, v = wall_basis(n)
     xy = np.column_stack([(pts - c) @ u, (pts - c) @ v])
-    if len(ends) == 1 and planar and _is_convex_2d(xy):
+    if len(ends) == 1 and planar and is_convex_2d(xy):
         return [pts]
     chains = _near_collinear_chains(xy, ends)
     if chains:
@@ -127,7 +127,7 @@ def _pieces_from_points(pts: np.ndarray, ends: Sequence[int], n: np.ndarray, c: 
 
 
 def _decompose(pts, ends, n, xy, planar) -> list[list[int]]:
-    if len(ends) == 1 and planar and _is_convex_2d(xy):
+    if len(ends) == 1 and planar and is_convex_2d(xy):
         return [list(range(len(pts)))]
     tris = triangulate(pts, ends, n)
     if len(tris) == 0:

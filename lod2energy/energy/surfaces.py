@@ -15,7 +15,7 @@ from shapely.geometry import GeometryCollection, MultiPolygon, Polygon
 from lod2energy.energy.conform import clean_piece, conform, eplus_enclose, keep_corners
 from lod2energy.energy.pieces import Piece, _as_written, _face_frame, _outer_boundary, _pieces_from_points, _planar
 from lod2energy.energy.zones.shells import MIN_PIECE_AREA, WELD_TOL, ZoneFace, ZoneShell
-from lod2energy.geometry.polygons import wall_basis as plane_basis, polygon_area3d
+from lod2energy.geometry.polygons import wall_basis, polygon_area3d
 
 
 #: Party-wall / outdoor parts of a split face thinner than 2 x THIN (m) join the other part:
@@ -97,14 +97,14 @@ def find_party_faces(zones: Sequence[ZoneShell], plane_tol: float = 0.05, min_ar
                     continue
                 if abs(da + db) > plane_tol or np.max(np.abs((pb - ca) @ na)) > plane_tol:
                     continue
-                u, v = plane_basis(na)
+                u, v = wall_basis(na)
                 sa = _shapely_poly(pa, ea, ca, u, v)
                 sb = _shapely_poly(pb, eb, ca, u, v)
                 inter = shapely.intersection(sa, sb)
                 if inter.area < min_area:
                     continue
                 out.setdefault((a, ia), []).append((int(b), inter))
-                ub, vb = plane_basis(nb)
+                ub, vb = wall_basis(nb)
                 sa2 = _shapely_poly(pa, ea, cb, ub, vb)
                 sb2 = _shapely_poly(pb, eb, cb, ub, vb)
                 out.setdefault((int(b), ib), []).append((a, shapely.intersection(sb2, sa2)))
@@ -127,7 +127,7 @@ def _split_face(zone: ZoneShell, face: ZoneFace, overlaps: list, min_area: float
     """(points, boundary) pieces of a face partly shared with other zones."""
     pts, ends, n, c = _face_frame(zone, face)
     outer = _outer_boundary(face.kind)
-    u, v = plane_basis(n)
+    u, v = wall_basis(n)
     whole = _shapely_poly(pts, ends, c, u, v)
     shared = _opening(shapely.intersection(whole, shapely.union_all([g for _, g in overlaps])))
     rest = _opening(shapely.difference(whole, shared))
@@ -223,7 +223,7 @@ def zone_pieces(zone: ZoneShell, zi: int, party: dict, split: bool = True) -> li
 def _whole_face(zone: ZoneShell, face: ZoneFace, overlaps: list) -> list[tuple[np.ndarray, str]]:
     """Unsplit pieces of a face, Adiabatic when at least half of it is shared."""
     pts, ends, n, c = _face_frame(zone, face)
-    u, v = plane_basis(n)
+    u, v = wall_basis(n)
     whole = _shapely_poly(pts, ends, c, u, v)
     shared = shapely.intersection(whole, shapely.union_all([g for _, g in overlaps])).area
     boundary = "Adiabatic" if shared >= 0.5 * whole.area else _outer_boundary(face.kind)

@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from lod2energy.geometry.vectors import _cross, _unit, cross2 as _cross2, plane_bases
+from lod2energy.geometry.vectors import cross_rows, unit_rows, cross2, plane_bases
 
 __all__ = ["bbox_pairs", "segment_triangle_intersect", "triangle_pairs_intersect", "winding_number",
            "closest_on_triangle"]
@@ -88,7 +88,7 @@ def segment_triangle_intersect(s0: np.ndarray, s1: np.ndarray, t0: np.ndarray, t
     -------
     (m,) bool
     """
-    un, ln = _unit(_cross(t1 - t0, t2 - t0))
+    un, ln = unit_rows(cross_rows(t1 - t0, t2 - t0))
     d0 = np.einsum("ij,ij->i", s0 - t0, un)
     d1 = np.einsum("ij,ij->i", s1 - t0, un)
     ok = (ln > 0) & (((d0 > eps) & (d1 < -eps)) | ((d0 < -eps) & (d1 > eps)))
@@ -97,7 +97,7 @@ def segment_triangle_intersect(s0: np.ndarray, s1: np.ndarray, t0: np.ndarray, t
     den = np.where(ok, d0 - d1, 1.0)
     x = s0 + (d0 / den)[:, None] * (s1 - s0)
     for a, b in ((t0, t1), (t1, t2), (t2, t0)):
-        inward, _ = _unit(_cross(un, b - a))           # points into the (CCW) triangle
+        inward, _ = unit_rows(cross_rows(un, b - a))           # points into the (CCW) triangle
         ok &= np.einsum("ij,ij->i", x - a, inward) > eps
     return ok
 
@@ -107,18 +107,18 @@ def _coplanar_overlap(A: np.ndarray, B: np.ndarray, normal: np.ndarray, eps: flo
     m = len(A)
     if m == 0:
         return np.zeros(0, dtype=bool)
-    un, _ = _unit(normal)
+    un, _ = unit_rows(normal)
     e1, e2 = plane_bases(un)
     o = A[:, :1]
     a2 = np.stack([np.einsum("ijk,ik->ij", A - o, e1), np.einsum("ijk,ik->ij", A - o, e2)], -1)
     b2 = np.stack([np.einsum("ijk,ik->ij", B - o, e1), np.einsum("ijk,ik->ij", B - o, e2)], -1)
     for t in (a2, b2):                                   # both counter-clockwise
-        neg = _cross2(t[:, 0], t[:, 1], t[:, 2]) < 0
+        neg = cross2(t[:, 0], t[:, 1], t[:, 2]) < 0
         t[neg] = t[neg][:, ::-1]
 
     def side(p, q, r):                                   # signed distance of r from line pq
         ln = np.linalg.norm(q - p, axis=-1)
-        return np.divide(_cross2(p, q, r), ln, out=np.zeros_like(ln), where=ln > 0)
+        return np.divide(cross2(p, q, r), ln, out=np.zeros_like(ln), where=ln > 0)
 
     hit = np.zeros(m, dtype=bool)
     for i in range(3):
@@ -186,7 +186,7 @@ def _pairs_intersect(vertices: np.ndarray, tris: np.ndarray, pairs: np.ndarray, 
     used = np.unique(pairs)
     P = vertices[tris[used]]
     un_all = np.zeros((len(tris), 3))
-    un_all[used], _ = _unit(_cross(P[:, 1] - P[:, 0], P[:, 2] - P[:, 0]))
+    un_all[used], _ = unit_rows(cross_rows(P[:, 1] - P[:, 0], P[:, 2] - P[:, 0]))
     ta, tb = tris[pairs[:, 0]], tris[pairs[:, 1]]
     eq = ta[:, :, None] == tb[:, None, :]                        # (p, 3, 3)
     in_b = eq.any(axis=2)                                        # vertex k of a is in b
@@ -264,7 +264,7 @@ def _vertex_on_triangle(P: np.ndarray, own: np.ndarray, T: np.ndarray, un: np.nd
         return on.any(axis=1)
     inside = on.copy()
     for a, b in ((0, 1), (1, 2), (2, 0)):
-        inward, _ = _unit(_cross(un, T[:, b] - T[:, a]))
+        inward, _ = unit_rows(cross_rows(un, T[:, b] - T[:, a]))
         inside &= np.einsum("ijk,ik->ij", P - T[:, a][:, None, :], inward) >= -eps
     return inside.any(axis=1)
 

@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from lod2energy.geometry.vectors import _cross
+from lod2energy.geometry.vectors import cross_rows
 
 __all__ = ["triangle_normals", "triangle_areas", "signed_volume", "plane_distance",
            "ring_area_2d"]
@@ -27,7 +27,7 @@ def triangle_normals(vertices: np.ndarray, tris: np.ndarray, unit: bool = True) 
     (T, 3) float
     """
     v = vertices[tris]
-    n = _cross(v[:, 1] - v[:, 0], v[:, 2] - v[:, 0])
+    n = cross_rows(v[:, 1] - v[:, 0], v[:, 2] - v[:, 0])
     if unit:
         ln = np.linalg.norm(n, axis=1, keepdims=True)
         n = np.divide(n, ln, out=np.zeros_like(n), where=ln > 0)
@@ -65,10 +65,10 @@ def signed_volume(vertices: np.ndarray, tris: np.ndarray, origin: str = "centroi
     if origin == "centroid":
         c = vertices[np.unique(tris)].mean(axis=0)
         a, b, d = vertices[tris[:, 0]] - c, vertices[tris[:, 1]] - c, vertices[tris[:, 2]] - c
-        return float(np.einsum("ij,ij->i", a, _cross(b, d)).sum() / 6.0)
+        return float(np.einsum("ij,ij->i", a, cross_rows(b, d)).sum() / 6.0)
     v = vertices[tris]
     v = v - v[0, 0]
-    return float(np.einsum("ij,ij->i", v[:, 0], _cross(v[:, 1], v[:, 2])).sum() / 6.0)
+    return float(np.einsum("ij,ij->i", v[:, 0], cross_rows(v[:, 1], v[:, 2])).sum() / 6.0)
 
 
 def plane_distance(points: np.ndarray) -> float:

@@ -21,7 +21,7 @@ import numpy as np
 
 from lod2energy import cache
 from lod2energy.geometry.cdt import earcut_rings
-from lod2energy.geometry.vectors import newell_normal as _newell, unit, vector_length as _norm
+from lod2energy.geometry.vectors import newell_normal as _newell, unit, vector_length
 
 #: Largest distance of a vertex to its face plane (m) for the face to be written as one piece.
 PLANAR_TOL = 0.01
@@ -50,10 +50,10 @@ def wall_basis(normal: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     n = unit(np.asarray(normal, dtype=np.float64))
     n0, n1, n2 = n.tolist()
     u = np.array([0.0 * n2 - 1.0 * n1, 1.0 * n0 - 0.0 * n2, 0.0 * n1 - 0.0 * n0])
-    lu = _norm(u)
+    lu = vector_length(u)
     if lu < 1e-6:
         u = np.array([1.0, 0.0, 0.0]) - n[0] * n
-        lu = _norm(u)
+        lu = vector_length(u)
     if lu > 0:  # unit(u), its length known
         u = u / lu
     u0, u1, u2 = u.tolist()
@@ -68,7 +68,7 @@ def polygon_area3d(points: np.ndarray, normal: np.ndarray | None = None) -> floa
     """
     if normal is None:
         normal = newell_normal(points)
-    return 0.5 * _norm(normal)
+    return 0.5 * vector_length(normal)
 
 
 def triangulate(points: np.ndarray, ring_ends: Sequence[int], normal: np.ndarray | None = None) -> np.ndarray:

@@ -10,7 +10,7 @@ from __future__ import annotations
 import numpy as np
 
 from lod2energy.geometry.cdt import constrained_delaunay, constrained_delaunay_many, earcut_rings
-from lod2energy.geometry.vectors import _cross, cross2 as _cross2, newell_normal, project_2d
+from lod2energy.geometry.vectors import cross_rows, cross2, newell_normal, project_2d
 
 __all__ = ["triangulate_surface", "triangulate_flat", "SLIVER_RATIO"]
 
@@ -101,7 +101,7 @@ def _sliver_mask(P: np.ndarray) -> np.ndarray:
     """(..., 3, 3) triangle corners -> (...) bool: sliver (2 area / longest edge^2 < SLIVER_RATIO)."""
     e = np.stack([P[..., 1, :] - P[..., 0, :], P[..., 2, :] - P[..., 1, :], P[..., 0, :] - P[..., 2, :]], -2)
     longest = (e * e).sum(-1).max(-1)
-    cr = _cross(e[..., 0, :], -e[..., 2, :])
+    cr = cross_rows(e[..., 0, :], -e[..., 2, :])
     return np.sqrt((cr * cr).sum(-1)) < SLIVER_RATIO * longest
 
 
@@ -126,7 +126,7 @@ def _fan_convex(vertices: np.ndarray, polys: np.ndarray) -> tuple[np.ndarray, np
     m, k = polys.shape
     P = vertices[polys]
     P = P - P.mean(axis=1, keepdims=True)
-    n = _cross(P, np.roll(P, -1, axis=1)).sum(axis=1)
+    n = cross_rows(P, np.roll(P, -1, axis=1)).sum(axis=1)
     ax = np.argmax(np.abs(n), axis=1)
     ij = np.array([(1, 2), (2, 0), (0, 1)])[ax]
     flip = n[np.arange(m), ax] < 0
@@ -166,7 +166,7 @@ def _triangulate_general(vertices, ids, ring_start, ring_len, first_ring, rpp, p
     nxt[rstart + rl - 1] = rstart
     o = P[np.concatenate(([0], np.cumsum(np.bincount(poly_of, minlength=len(polys)))[:-1]))][poly_of]
     Q = P - o
-    cr = _cross(Q, Q[nxt])
+    cr = cross_rows(Q, Q[nxt])
     is_outer = np.zeros(len(rings), dtype=bool)
     is_outer[np.concatenate(([0], np.cumsum(nr)[:-1]))] = True
     cr[~is_outer[ring_of]] = 0.0
@@ -212,7 +212,7 @@ def _triangulate_general(vertices, ids, ring_start, ring_len, first_ring, rpp, p
             ends = rend_local[rcut[k]:rcut[k + 1]]
             if loc is None:  # keep ear clipping when the CDT fails
                 loc = earcut_rings(p2[a:b], ends)
-                ar = _cross2(p2[a:b][loc[:, 0]], p2[a:b][loc[:, 1]], p2[a:b][loc[:, 2]]) if len(loc) else loc
+                ar = cross2(p2[a:b][loc[:, 0]], p2[a:b][loc[:, 1]], p2[a:b][loc[:, 2]]) if len(loc) else loc
                 if len(loc):
                     loc[ar < 0] = loc[ar < 0][:, [0, 2, 1]]
             extra_t.append(loc + a)
@@ -267,7 +267,7 @@ def triangulate_flat(vertices: np.ndarray, ids: np.ndarray, ring_len: np.ndarray
         q = ids[ostart[quad_c, None] + np.arange(4)]
         P = vertices[q]
         P = P - P.mean(axis=1, keepdims=True)
-        normals[quad_c] = _cross(P, np.roll(P, -1, axis=1)).sum(axis=1)
+        normals[quad_c] = cross_rows(P, np.roll(P, -1, axis=1)).sum(axis=1)
         good = np.any(normals[quad_c] != 0, axis=1)
         quad_f = quad_c[good]
         if len(quad_f):

@@ -93,7 +93,7 @@ def _newell_numpy(p: np.ndarray, centred: bool) -> np.ndarray:
         t = np.ascontiguousarray(((p - q)[:, _NEWELL_A] * (p + q)[:, _NEWELL_B]).T)
         return np.add.reduce(t, axis=1)
     p = p - np.add.reduce(p, axis=0) / len(p)
-    return np.add.reduce(_cross(p, roll_next(p)), axis=0)
+    return np.add.reduce(cross_rows(p, roll_next(p)), axis=0)
 
 
 #: Newell's sums: component c is sum((p - q)[:, _NEWELL_A[c]] * (p + q)[:, _NEWELL_B[c]]).
@@ -142,7 +142,7 @@ def newell_normals(vertices: np.ndarray, rings: Sequence[np.ndarray]) -> np.ndar
     nxt[ends] = starts
     p = vertices[idx]
     p = p - p.mean(axis=0)
-    cr = _cross(p, p[nxt])
+    cr = cross_rows(p, p[nxt])
     out = np.add.reduceat(cr, starts, axis=0) if len(idx) else np.zeros((0, 3))
     out[lens == 0] = 0.0
     return out
@@ -214,11 +214,6 @@ def unit(v: np.ndarray) -> np.ndarray:
 def cross2(o, a, b):
     """z of the 2D cross product (a - o) x (b - o), over the last axis of (..., 2) arrays."""
     return (a[..., 0] - o[..., 0]) * (b[..., 1] - o[..., 1]) - (a[..., 1] - o[..., 1]) * (b[..., 0] - o[..., 0])
-
-
-
-_cross = cross_rows
-_unit = unit_rows
 
 
 def rings_normal(vertices: np.ndarray, rings: Sequence[Sequence[int]], centred: bool = True) -> np.ndarray:
@@ -295,9 +290,9 @@ def plane_bases(normals: np.ndarray, helper: str = "x_or_y") -> tuple[np.ndarray
     if helper == "least":
         a = np.zeros((m, 3))
         a[np.arange(m), np.argmin(np.abs(normals), axis=1)] = 1.0
-        u = _cross(normals, a)
+        u = cross_rows(normals, a)
         u /= np.linalg.norm(u, axis=1, keepdims=True)
-        return u, _cross(normals, u)
+        return u, cross_rows(normals, u)
     a = np.where(np.abs(normals[:, :1]) < 0.9, np.array([[1.0, 0, 0]]), np.array([[0, 1.0, 0]]))
-    u, _ = _unit(_cross(normals, a))
-    return u, _cross(normals, u)
+    u, _ = unit_rows(cross_rows(normals, a))
+    return u, cross_rows(normals, u)

@@ -147,13 +147,7 @@ def to_local_frame(model: "CityModel | None", features: "Iterator[Building | Fea
                                      f"({origin[0]:g}, {origin[1]:g}) are not degrees")],
             pending, features)
     frame = LocalFrame(round(lat0, 7), round(lon0, 7), 0.0, lat_first)
-
-    def gen():
-        for f in itertools.chain(pending, features):
-            if isinstance(f, Building) and len(f.vertices):
-                f = replace(f, vertices=frame.to_local(f.vertices)).with_provenance(file_frame=frame)
-            yield f
-    return replace(model, frame=frame), gen()
+    return _in_frame(model, itertools.chain(pending, features), frame)
 
 
 def _scaled(model: CityModel, features, info):
@@ -161,8 +155,11 @@ def _scaled(model: CityModel, features, info):
         return None, iter([FeatureError(None, 901, f"{model.source}: {info.unit_problem}")])
     if info.metric:
         return model, features
-    frame = ScaledFrame(info.to_metre, info.vertical_to_metre, info.unit, info.vertical_unit)
+    return _in_frame(model, features, ScaledFrame(info.to_metre, info.vertical_to_metre, info.unit, info.vertical_unit))
 
+
+def _in_frame(model: CityModel, features, frame):
+    """``model`` in ``frame``, and its buildings' vertices turned into it one at a time."""
     def gen():
         for f in features:
             if isinstance(f, Building) and len(f.vertices):

@@ -70,8 +70,8 @@ from lod2energy.errors import FormatNotSupportedError, InputError
 from lod2energy.io.cityjson import build_feature
 from lod2energy.io.seen_ids import SeenIds
 from lod2energy.io.citygml_attributes import attributes as _attributes
-from lod2energy.io.gml import (SOLID_MEMBERS as _SOLID_MEMBERS, SURFACE_KINDS as _SURFACE_KINDS, XLINK_HREF,
-                               GmlGeometry, gml_id as _gml_id, local_name as _local)
+from lod2energy.io.gml import (SOLID_MEMBERS, SURFACE_KINDS, XLINK_HREF,
+                               GmlGeometry, gml_id, local_name)
 from lod2energy.crs import cityjson_reference_system
 from lod2energy.model import Building, CityModel, FeatureError, frozen_mapping
 
@@ -214,10 +214,10 @@ def _features(path: str) -> Iterator[Building | FeatureError]:
                 stack.append(el)
                 continue
             stack.pop()
-            name = _local(el.tag)
-            if name in TOP_LEVEL and not any(_local(a.tag) in _OBJECT_NAMES for a in stack):
+            name = local_name(el.tag)
+            if name in TOP_LEVEL and not any(local_name(a.tag) in _OBJECT_NAMES for a in stack):
                 n += 1
-                yield _once(_feature_or_error(el, TOP_LEVEL[name], n), _gml_id(el), n, seen)
+                yield _once(_feature_or_error(el, TOP_LEVEL[name], n), gml_id(el), n, seen)
                 if stack:
                     stack[-1].remove(el)  # release it: the tile is streamed
             elif len(stack) == 1:
@@ -244,7 +244,7 @@ def _once(f: Building | FeatureError, gid: str | None, n: int, seen: SeenIds) ->
 
 
 def _feature_or_error(el: ET.Element, ctype: str, n: int) -> Building | FeatureError:
-    oid = _gml_id(el) or f"{ctype}_{n}"
+    oid = gml_id(el) or f"{ctype}_{n}"
     try:
         return _Feature(el, ctype, oid).build()
     except InputError as e:
@@ -265,7 +265,7 @@ def _faces(g: dict) -> list[tuple[ET.Element, bool]]:
 def _relief_lod(el: ET.Element) -> str:
     """The ``dem:lod`` of a relief component (0-4; "1" when missing or not a number)."""
     for prop in el:
-        if _local(prop.tag) == "lod":
+        if local_name(prop.tag) == "lod":
             text = (prop.text or "").strip()
             if text.isdigit() and 0 <= int(text) <= 4:
                 return text
@@ -293,15 +293,15 @@ class _Feature(GmlGeometry):
         todo = [(el, dim, None)]
         while todo:
             e, d, theme = todo.pop()
-            name = _local(e.tag)
+            name = local_name(e.tag)
             sd = e.get("srsDimension")
             if sd is not None:
                 try:
                     d = int(sd)
                 except ValueError:
                     d = -1
-            if name in _SURFACE_KINDS:
-                gid = _gml_id(e)
+            if name in SURFACE_KINDS:
+                gid = gml_id(e)
                 if gid is not None:
                     if self.surfaces.setdefault(gid, e) is not e:
                         self.duplicates.setdefault(gid, 1)
@@ -363,15 +363,15 @@ class _Feature(GmlGeometry):
         out.append((oid, otype, el, parent))
         k = 0
         for prop in el:
-            if _local(prop.tag) in INTERIOR_PROPERTIES:
+            if local_name(prop.tag) in INTERIOR_PROPERTIES:
                 for child in prop:
-                    self.left_out[_local(child.tag)] = self.left_out.get(_local(child.tag), 0) + 1
-            if _local(prop.tag) not in CHILD_PROPERTIES:
+                    self.left_out[local_name(child.tag)] = self.left_out.get(local_name(child.tag), 0) + 1
+            if local_name(prop.tag) not in CHILD_PROPERTIES:
                 continue
             for child in prop:
                 k += 1
-                name = _local(child.tag)
-                cid = _gml_id(child) or f"{oid}_{name}_{k}"
+                name = local_name(child.tag)
+                cid = gml_id(child) or f"{oid}_{name}_{k}"
                 if any(o[0] == cid for o in out):  # ids must be unique within the feature
                     cid = f"{cid}_{k}"
                 self._collect(child, _CHILD_TYPES.get(name, name), cid, oid, out)
@@ -381,10 +381,10 @@ class _Feature(GmlGeometry):
     @staticmethod
     def _geometry_properties(el: ET.Element):
         for prop in el:
-            m = _GEOMETRY_PROPERTY.match(_local(prop.tag))
+            m = _GEOMETRY_PROPERTY.match(local_name(prop.tag))
             if m:
                 yield prop, m.group(1)
-            elif _local(prop.tag) == "tin" and _local(el.tag) == "TINRelief":
+            elif local_name(prop.tag) == "tin" and local_name(el.tag) == "TINRelief":
                 yield prop, _relief_lod(el)
 
     def _target(self, prop: ET.Element, where: str) -> ET.Element | None:
@@ -394,19 +394,19 @@ class _Feature(GmlGeometry):
         return next(iter(prop), None)
 
     def _explicit(self, oid: str, prop: ET.Element, lod: str) -> dict | None:
-        where = f"coid={oid}|{_local(prop.tag)}"
+        where = f"coid={oid}|{local_name(prop.tag)}"
         g = self._target(prop, where)
         if g is None:
             return None
-        name = _local(g.tag)
+        name = local_name(g.tag)
         if name == "Solid":
             out = {"type": "Solid", "lod": lod, "_shells": self.solid(g, where)}
             faces = [f for sh in out["_shells"] for f in sh]
         elif name in ("MultiSolid", "CompositeSolid"):
             out = {"type": name, "lod": lod,
-                   "_solids": [self.solid(s, where) for s in self.members(g, _SOLID_MEMBERS, where)]}
+                   "_solids": [self.solid(s, where) for s in self.members(g, SOLID_MEMBERS, where)]}
             faces = [f for so in out["_solids"] for sh in so for f in sh]
-        elif name in _SURFACE_KINDS:
+        elif name in SURFACE_KINDS:
             # a TIN (TINRelief's dem:tin) is a CompositeSurface of triangles, as in CityJSON
             gtype = name if name in ("MultiSurface", "CompositeSurface") else (
                 "CompositeSurface" if name in ("Shell", "TriangulatedSurface", "Tin") else "MultiSurface")
@@ -421,7 +421,7 @@ class _Feature(GmlGeometry):
         """Area of a polygon's exterior ring in the file's units (0 when it has none or it
         cannot be read)."""
         for part in poly:
-            if _local(part.tag) in ("exterior", "outerBoundaryIs"):
+            if local_name(part.tag) in ("exterior", "outerBoundaryIs"):
                 for ring in part:
                     try:
                         p = np.asarray(self.points(ring, ""), dtype=np.float64)
@@ -452,26 +452,26 @@ class _Feature(GmlGeometry):
 
     def _theme_faces_of(self, oid: str, el: ET.Element):
         for prop in el:
-            if _local(prop.tag) not in BOUNDARY_PROPERTIES:
+            if local_name(prop.tag) not in BOUNDARY_PROPERTIES:
                 continue
             for ts in prop:
-                if _local(ts.tag) in THEMATIC and _local(ts.tag) not in INTERIOR_SURFACES:
-                    yield from self._theme_faces(ts, f"coid={oid}|{_local(ts.tag)}")
+                if local_name(ts.tag) in THEMATIC and local_name(ts.tag) not in INTERIOR_SURFACES:
+                    yield from self._theme_faces(ts, f"coid={oid}|{local_name(ts.tag)}")
 
     def _thematic(self, oid: str, el: ET.Element, first_gi: int) -> list[dict]:
         """One MultiSurface per LoD of the thematic-surface polygons no geometry used."""
         by_lod: dict[str, list[tuple[ET.Element, bool]]] = {}
         for prop in el:
-            if _local(prop.tag) not in BOUNDARY_PROPERTIES:
+            if local_name(prop.tag) not in BOUNDARY_PROPERTIES:
                 continue
             for ts in prop:
-                if _local(ts.tag) not in THEMATIC:
+                if local_name(ts.tag) not in THEMATIC:
                     continue
-                if _local(ts.tag) in INTERIOR_SURFACES:  # interior detail: not envelope, counted
-                    n = sum(len(f) for _, f in self._theme_faces(ts, f"coid={oid}|{_local(ts.tag)}"))
-                    self.left_out[_local(ts.tag)] = self.left_out.get(_local(ts.tag), 0) + n
+                if local_name(ts.tag) in INTERIOR_SURFACES:  # interior detail: not envelope, counted
+                    n = sum(len(f) for _, f in self._theme_faces(ts, f"coid={oid}|{local_name(ts.tag)}"))
+                    self.left_out[local_name(ts.tag)] = self.left_out.get(local_name(ts.tag), 0) + n
                     continue
-                for lod, faces in self._theme_faces(ts, f"coid={oid}|{_local(ts.tag)}"):
+                for lod, faces in self._theme_faces(ts, f"coid={oid}|{local_name(ts.tag)}"):
                     by_lod.setdefault(lod, []).extend(f for f in faces if f[0] not in self.used)
         out = []
         for lod in sorted(by_lod):
@@ -483,15 +483,15 @@ class _Feature(GmlGeometry):
 
     def _theme_faces(self, ts: ET.Element, where: str):
         for prop in ts:
-            name = _local(prop.tag)
+            name = local_name(prop.tag)
             m = _THEMATIC_GEOMETRY.match(name)
             if m:
                 g = self._target(prop, where)
-                if g is not None and _local(g.tag) in _SURFACE_KINDS:
+                if g is not None and local_name(g.tag) in SURFACE_KINDS:
                     yield m.group(1), self.surface(g, where)
             elif name in OPENING_PROPERTIES:
                 for op in prop:
-                    if _local(op.tag) in THEMATIC:
+                    if local_name(op.tag) in THEMATIC:
                         yield from self._theme_faces(op, where)
 
     def _finish(self, oid: str, gi: int, g: dict) -> dict:
@@ -503,8 +503,8 @@ class _Feature(GmlGeometry):
             theme = self.semantic_of.get(poly)
             if theme is not None and theme not in sem_index:
                 sem_index[theme] = len(surfaces)
-                tid = _gml_id(theme)
-                kind = _local(theme.tag)
+                tid = gml_id(theme)
+                kind = local_name(theme.tag)
                 surfaces.append({"type": SEMANTIC_TYPE.get(kind, kind), **({"id": tid} if tid else {})})
             return self.polygon(poly, rev, loc), (sem_index[theme] if theme is not None else None)
 

@@ -11,7 +11,7 @@ import re
 import xml.etree.ElementTree as ET
 from typing import Any
 
-from lod2energy.io.gml import local_name as _local
+from lod2energy.io.gml import local_name
 
 #: Attributes read from the object's own properties (local name -> parser).
 _INT_ATTRS = ("yearOfConstruction", "yearOfDemolition", "storeysAboveGround", "storeysBelowGround")
@@ -43,7 +43,7 @@ def attributes(el: ET.Element) -> dict[str, Any]:
     attrs: dict[str, Any] = {}
     standard: dict[str, Any] = {}
     for prop in el:
-        name = _local(prop.tag)
+        name = local_name(prop.tag)
         text = (prop.text or "").strip()
         if name in _GENERIC or name == "genericAttributeSet":
             k, v = _generic(prop)
@@ -57,7 +57,7 @@ def attributes(el: ET.Element) -> dict[str, Any]:
         elif name == "dateOfConstruction" and re.match(r"^\d{4}", text):
             standard.setdefault("yearOfConstruction", int(text[:4]))
         elif name == "height":  # CityGML 3.0 con:height / con:Height: its value as measuredHeight
-            v = next((e for e in prop.iter() if _local(e.tag) == "value"), None)
+            v = next((e for e in prop.iter() if local_name(e.tag) == "value"), None)
             if v is not None and (v.text or "").strip():
                 standard.setdefault("measuredHeight", _number(v.text.strip(), float))
         elif name in _INT_ATTRS and text:
@@ -76,26 +76,26 @@ def attributes(el: ET.Element) -> dict[str, Any]:
 
 def _generic(el: ET.Element) -> tuple[str | None, Any]:
     name = el.get("name")
-    kind = _local(el.tag)
+    kind = local_name(el.tag)
     if kind == "genericAttributeSet":
-        members = dict(_generic(c) for c in el if _local(c.tag) in _GENERIC or _local(c.tag) == "genericAttributeSet")
+        members = dict(_generic(c) for c in el if local_name(c.tag) in _GENERIC or local_name(c.tag) == "genericAttributeSet")
         members.pop(None, None)
         return name, members
-    value = next((c for c in el if _local(c.tag) == "value"), None)
+    value = next((c for c in el if local_name(c.tag) == "value"), None)
     text = (value.text or "").strip() if value is not None else ""
     return name, _number(text, _GENERIC[kind]) if text else text
 
 
 def _generic3(el: ET.Element) -> tuple[str | None, Any]:
     """A CityGML 3.0 generic attribute: ``gen:XAttribute`` with ``gen:name`` and ``gen:value``."""
-    kind = _local(el.tag)
-    name = next(((c.text or "").strip() for c in el if _local(c.tag) == "name"), None)
+    kind = local_name(el.tag)
+    name = next(((c.text or "").strip() for c in el if local_name(c.tag) == "name"), None)
     if kind == "GenericAttributeSet":
-        members = dict(_generic3(c) for m in el if _local(m.tag) == "genericAttribute" for c in m)
+        members = dict(_generic3(c) for m in el if local_name(m.tag) == "genericAttribute" for c in m)
         members.pop(None, None)
         return name, members
     if kind not in _GENERIC3:
         return None, None
-    value = next((c for c in el if _local(c.tag) == "value"), None)
+    value = next((c for c in el if local_name(c.tag) == "value"), None)
     text = (value.text or "").strip() if value is not None else ""
     return name, _number(text, _GENERIC3[kind]) if text else text

@@ -19,9 +19,7 @@ import numpy as np
 from lod2energy.errors import FormatNotSupportedError, InputError
 from lod2energy.io import shape
 from lod2energy.io.seen_ids import SeenIds
-from lod2energy.io.cityjson_write import (  # noqa: F401 - the writer, importable from the reader's module
-    _plain, feature_document, is_cityjsonseq, transform_for, write,
-)
+from lod2energy.io.cityjson_write import is_cityjsonseq
 from lod2energy.model import (
     MULTISOLID_TYPES, SOLID_TYPES, SURFACE_TYPES, Building, CityModel, CityObject, FeatureError,
     Geometry, Shell, Solid, Surface, frozen_mapping,

@@ -10,16 +10,15 @@ import json
 import os
 import shutil
 import tempfile
-from collections.abc import Mapping as _Mapping
+from collections.abc import Mapping
 from types import MappingProxyType
-from typing import Any, Callable, Iterable, Mapping, Sequence
+from typing import Any, Callable, Iterable, Sequence
 
 import numpy as np
 
 from lod2energy import safe_write
 from lod2energy.crs import cityjson_reference_system
-from lod2energy.io.cityjson_grid import GEOGRAPHIC_SCALE, default_transform, file_coordinates
-from lod2energy.io.cityjson_grid import quantise as _quantise
+from lod2energy.io.cityjson_grid import GEOGRAPHIC_SCALE, default_transform, file_coordinates, quantise
 from lod2energy.io.seen_ids import SeenIds
 from lod2energy.model import SURFACE_TYPES, Building, CityModel, CityObject, Geometry, Shell, Solid, Surface
 
@@ -27,8 +26,6 @@ from lod2energy.model import SURFACE_TYPES, Building, CityModel, CityObject, Geo
 def is_cityjsonseq(path: str) -> bool:
     p = path.lower()
     return p.endswith(".jsonl") or p.endswith(".cjseq") or p.endswith(".city.jsonl")
-
-
 
 
 def _lod_json(lod: str | None, version: str):
@@ -77,7 +74,7 @@ def _plain(x: Any) -> Any:
     t = type(x)
     if t in _LEAF:  # the common leaves, decided by their exact type (no ABC check)
         return x
-    if t is dict or t is MappingProxyType or isinstance(x, _Mapping):
+    if t is dict or t is MappingProxyType or isinstance(x, Mapping):
         return {k: _plain(v) for k, v in x.items()}
     if t is list or t is tuple or isinstance(x, (list, tuple)):
         return [_plain(v) for v in x]
@@ -182,7 +179,7 @@ def write_document(f, model: CityModel, buildings: Iterable[Building], version: 
     n = 0
     with tempfile.TemporaryFile("w+", encoding="utf-8", dir=scratch_dir) as vf:
         for b in buildings:
-            q = _quantise(b.vertices, transform, model.frame)
+            q = quantise(b.vertices, transform, model.frame)
             for o in b.objects:
                 if o.id in seen:
                     raise ValueError(f"two CityObjects with id {o.id!r}")
@@ -204,7 +201,7 @@ def feature_document(b: Building, transform: Mapping, version: str, frame=None) 
     """One CityJSONFeature (dict) for ``b`` (vertices moved back out of ``frame``)."""
     return {"type": "CityJSONFeature", "id": b.id,
             "CityObjects": {o.id: cityobject_json(o, 0, version) for o in b.objects},
-            "vertices": _quantise(b.vertices, transform, frame)}
+            "vertices": quantise(b.vertices, transform, frame)}
 
 
 def write(path: str, model: CityModel, buildings: Iterable[Building], version: str | None = None, *,

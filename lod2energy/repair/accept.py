@@ -28,7 +28,6 @@ from lod2energy.validate.closed import shell_defects
 __all__ = ["val3dity_codes", "is_repaired", "repair_verdict", "output_grid", "grid_rounding"]
 
 
-
 def _probe_geometry(m: PolyMesh, lod) -> Geometry:
     surfaces = tuple(Surface.from_lists([list(r) for r in f.rings]) for f in m.faces)
     return Geometry("Solid", lod, (Solid((Shell(surfaces),)),))

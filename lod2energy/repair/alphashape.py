@@ -231,18 +231,8 @@ def _hull_volume(m: PolyMesh) -> float:
         return 0.0
 
 
-#: A closed candidate whose volume per surface area (m) is below this while it fills less
-#: than a third of the input's convex hull is a skin around the surfaces (about 2 x OFFSET
-#: deep), not a building: a 1.5 m cube has 0.25 m. Default of ``Tolerances.skin_depth``.
-SKIN_DEPTH = DEFAULT.skin_depth
-
-
 def _area(m: PolyMesh) -> float:
     return float(sum(face_area(m.vertices, f) for f in m.faces))
-
-
-def _volume(m: PolyMesh) -> float:
-    return signed_volume(m)
 
 
 def alpha_repair(m: PolyMesh, tol: Tolerances = DEFAULT, deadline: float | None = None,
@@ -274,7 +264,7 @@ def alpha_repair(m: PolyMesh, tol: Tolerances = DEFAULT, deadline: float | None 
             continue
         if accept is not None and not accept(r):
             continue
-        vol = _volume(r)
+        vol = signed_volume(r)
         if vol < hv / 3 and vol < tol.skin_depth * _area(r):
             continue  # a hollow skin around missing walls, not a building (a slender tower
             # fills a third of its hull neither, but its volume per area is metres)

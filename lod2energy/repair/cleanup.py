@@ -327,9 +327,6 @@ def desliver(m: PolyMesh, tol: Tolerances, accept) -> PolyMesh | None:
     return None
 
 
-TJUNCTION_TOL = DEFAULT.tjunction_tol  # m: a vertex this close to another polygon's edge is on it
-
-
 def cleanup(m: PolyMesh, tol: Tolerances = DEFAULT, tjunction_tol: float | None = None) -> PolyMesh:
     """Stage 0: every clean-up step in order (see the module docstring).
 

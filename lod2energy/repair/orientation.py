@@ -8,8 +8,6 @@ from __future__ import annotations
 
 from collections import deque
 
-import numpy as np
-
 from lod2energy.polymesh import PolyMesh, edge_faces, signed_volume
 
 

@@ -53,6 +53,7 @@ from lod2energy.repair.roofs import ROOF_MODEL_MAX_DISPLACEMENT, roof_model
 from lod2energy.repair.unpinch import unpinch
 from lod2energy.validate.closed import shell_defects
 from lod2energy.validate.checks import validate_building, validate_geometry
+from lod2energy.validate.codes import val3dity_valid
 
 STAGES = ("valid", "cleanup", "orientation", "holefill", "refill", "roofs", "alphashape", "footprint",
           "hull", "irreparable")
@@ -510,9 +511,6 @@ def dataset_table(buildings: Iterable[Building]) -> dict:
     rows = [repair_info(b) for b in buildings if isinstance(b, Building) and b.is_building]
     n = len(rows)
 
-    def val3dity_ok(codes):
-        return all(c == 601 or c >= 1000 for c in codes)
-
     def compliant(codes):
         return all(c == 601 for c in codes)
 
@@ -526,8 +524,8 @@ def dataset_table(buildings: Iterable[Building]) -> dict:
     return {
         "total": n,
         "invalid": invalid,
-        "valid_before": sum(1 for r in rows if val3dity_ok(r["defects_before"])),
-        "valid_after": sum(1 for r in rows if val3dity_ok(r["defects_after"])),
+        "valid_before": sum(1 for r in rows if val3dity_valid(r["defects_before"])),
+        "valid_after": sum(1 for r in rows if val3dity_valid(r["defects_after"])),
         "compliant_before": n - invalid,
         "compliant_after": sum(1 for r in rows if compliant(r["defects_after"])),
         "local_repairs": local,

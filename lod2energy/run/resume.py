@@ -27,7 +27,6 @@ buildings' final records: what ``report.json`` and ``report.csv`` are written fr
 """
 from __future__ import annotations
 
-import hashlib
 import json
 import os
 import re
@@ -37,28 +36,17 @@ from pathlib import Path
 from typing import Any, Iterator
 
 from lod2energy.run.record_store import RecordSequence
-from lod2energy.records import BuildingRecord, ExportRecord
+from lod2energy.records import BuildingRecord, ExportRecord, FileRecord
 from lod2energy.safe_write import atomic_write, check_target, json_default
 
 FORMAT = 1
 JOURNAL_NAME = "report.jsonl"
 
 
-def file_digest(path: str) -> tuple[int, str]:
-    """Size (bytes) and SHA-256 of a file."""
-    h = hashlib.sha256()
-    with open(path, "rb") as f:
-        for chunk in iter(lambda: f.read(1 << 20), b""):
-            h.update(chunk)
-    return os.path.getsize(path), h.hexdigest()
-
-
 def header(input_path: str, options: dict) -> dict:
     """The header line of a run on ``input_path`` with ``options`` (JSON-ready)."""
-    try:
-        size, sha = file_digest(input_path)
-    except OSError:
-        size, sha = -1, ""
+    fr = FileRecord.of(input_path)
+    size, sha = (fr.size, fr.sha256) if fr is not None else (-1, "")
     return {"kind": "header", "format": FORMAT, "input": os.path.abspath(input_path), "input_size": size,
             "input_sha256": sha, "options": options}
 
@@ -139,7 +127,6 @@ class Journal:
 def _same_header(a: dict, b: dict) -> bool:
     keys = ("format", "input", "input_size", "input_sha256", "options")
     return json.loads(_dumps({k: a.get(k) for k in keys})) == json.loads(_dumps({k: b.get(k) for k in keys}))
-
 
 
 def records_of(path: str | os.PathLike, start: int = 0) -> "JournalRecords":

@@ -46,7 +46,6 @@ ATTIC_MIN_HEIGHT = 2.0
 MIN_STOREY_HEIGHT = 2.2
 #: Roof faces tilted less than this (degrees) are flat.
 FLAT_TILT = 10.0
-MAX_STOREYS = 200
 
 
 @dataclass(frozen=True)
@@ -141,7 +140,7 @@ def storeys_from_attributes(b: Building, amap: AttributeMap | None = None
 
 
 def _surfaces(b: Building, lod: str | None):
-    for _, _, g in b.energy_objects(lod):
+    for _, _, g in b.envelope(lod):
         for _, hi, _, s in g.iter_surfaces():
             if hi > 0:
                 continue
@@ -177,15 +176,23 @@ def roof_levels(b: Building, lod: str | None = None) -> RoofLevels | None:
     if not roofs:
         top = float(z.max())
         return RoofLevels(z0, top, top, False)
+    eave, pitched = eave_and_pitch(roofs)
+    ridge = max(top for _, top, _, _ in roofs)
+    return RoofLevels(z0, max(eave, z0), max(ridge, eave, z0), pitched)
+
+
+def eave_and_pitch(roofs: list[tuple[float, float, float, float]]) -> tuple[float, bool]:
+    """Eave height (m) and whether the roof is pitched, from ``(z min, z max, area x n_z,
+    tilt in degrees)`` per roof face: the eave is the lowest point of the face at the weighted
+    median of the faces by their lowest point; pitched when faces tilted :data:`FLAT_TILT` or
+    more hold most of the area reaching 0.1 m above the eave."""
     r = np.array(roofs)
     order = np.argsort(r[:, 0])
     w = np.cumsum(r[order, 2])
     k = int(np.searchsorted(w, 0.5 * w[-1])) if w[-1] > 0 else 0
     eave = float(r[order[min(k, len(order) - 1)], 0])
-    ridge = float(r[:, 1].max())
     above = r[r[:, 1] > eave + 0.1]
-    pitched = bool(len(above) and above[above[:, 3] >= FLAT_TILT, 2].sum() > 0.5 * above[:, 2].sum())
-    return RoofLevels(z0, max(eave, z0), max(ridge, eave, z0), pitched)
+    return eave, bool(len(above) and above[above[:, 3] >= FLAT_TILT, 2].sum() > 0.5 * above[:, 2].sum())
 
 
 def estimate_storeys(levels: RoofLevels, use: str = "residential") -> Storeys:

@@ -24,7 +24,7 @@ from typing import Iterable, Mapping, Sequence
 import numpy as np
 
 from lod2energy.config import DEFAULT, Tolerances
-from lod2energy.geometry import cross_rows as _cross, newell_normals, signed_volume, split_at_points, triangle_pairs_intersect
+from lod2energy.geometry import cross_rows, newell_normals, signed_volume, split_at_points, triangle_pairs_intersect
 from lod2energy.geometry.polygons import triangulate
 from lod2energy.geometry.snap import drop_repeats, weld
 from lod2energy.io.cityjson_grid import building_grid, on_grid
@@ -539,16 +539,16 @@ def _surely_outward(v: np.ndarray, polys: list[list[int]]) -> bool:
     # convexity test), through the ring's centroid
     cen = np.add.reduceat(P, starts, axis=0) / lens[:, None]
     rel = P - cen[ring_of]
-    nrm = np.add.reduceat(_cross(rel, rel[nxt]), starts, axis=0)
+    nrm = np.add.reduceat(cross_rows(rel, rel[nxt]), starts, axis=0)
     nlen = np.sqrt(np.sum(nrm * nrm, axis=1))
     if not np.all(nlen > 0):
         return False
     n = nrm / nlen[:, None]
     # in-plane basis u, v (u x v = n): the convexity test in the projection
     helper = np.where(np.abs(n[:, 2:3]) < 0.9, _Z, _X)
-    bu = _cross(helper, n)
+    bu = cross_rows(helper, n)
     bu /= np.sqrt(np.sum(bu * bu, axis=1))[:, None]
-    bv = _cross(n, bu)
+    bv = cross_rows(n, bu)
     x = np.sum(rel * bu[ring_of], axis=1)
     y = np.sum(rel * bv[ring_of], axis=1)
     dx, dy = x[nxt] - x, y[nxt] - y            # edge i: vertex i -> i + 1
@@ -565,7 +565,7 @@ def _surely_outward(v: np.ndarray, polys: list[list[int]]) -> bool:
     p0 = P[starts[ring_of]]
     fan = (pos >= 1) & (pos <= lens[ring_of] - 2)
     a, b, c = p0[fan], P[fan], P[nxt[fan]]
-    dets = np.sum(a * _cross(b, c), axis=1)
+    dets = np.sum(a * cross_rows(b, c), axis=1)
     vol = float(dets.sum()) / 6.0
     # the bound, with room for rounding
     delta = np.maximum.reduceat(np.abs(np.sum(rel * n[ring_of], axis=1)), starts)

@@ -48,8 +48,6 @@ OWN = {
     1001: "ENERGY_NOT_CLOSED_2_MANIFOLD",
     1002: "ENERGY_NORMALS_NOT_OUTWARD",
     1003: "ENERGY_DEGENERATE_OR_SLIVER_FACE",
-    1004: "ENERGY_SURFACE_UNLABELLED",
-    1005: "ENERGY_SURFACE_WITHOUT_U_VALUE",
     1101: "SEMANTIC_ROOF_FACING_DOWN",
     1102: "SEMANTIC_GROUND_NOT_AT_BOTTOM",
     1103: "SEMANTIC_WALL_ABOVE_ROOF",
@@ -64,6 +62,11 @@ NAMES = {**VAL3DITY, **OWN}
 def name(code: int) -> str:
     """Name of ``code`` ("UNKNOWN_ERROR" for codes nobody defined)."""
     return NAMES.get(int(code), "UNKNOWN_ERROR")
+
+
+def val3dity_valid(codes) -> bool:
+    """No val3dity error but 601 among ``codes`` (as ``lod2energy validate`` counts valid)."""
+    return all(c == 601 or c >= 1000 for c in codes)
 
 
 @dataclass(frozen=True, order=True)

@@ -30,7 +30,7 @@ import shapely
 
 from lod2energy import cache
 from lod2energy.config import DEFAULT, Tolerances
-from lod2energy.geometry import constrained_delaunay_many, cross_rows as _cross, plane_bases
+from lod2energy.geometry import constrained_delaunay_many, cross_rows, plane_bases
 from lod2energy.geometry.pairs import close_pairs_grid
 from lod2energy.geometry.snap import snapped_ids
 from lod2energy.model import Shell
@@ -132,11 +132,11 @@ def _normals_deviation(P3: np.ndarray, tri: np.ndarray, tol_deg: float) -> float
     if len(tri) < 2:
         return None
     a, b, c = P3[tri[:, 0]], P3[tri[:, 1]], P3[tri[:, 2]]
-    nrm = _cross(b - a, c - a)
+    nrm = cross_rows(b - a, c - a)
     with np.errstate(invalid="ignore", divide="ignore"):
         nrm = nrm / np.linalg.norm(nrm, axis=1, keepdims=True)
     v0 = nrm[0]
-    cr = np.linalg.norm(_cross(np.broadcast_to(v0, nrm[1:].shape), nrm[1:]), axis=1)
+    cr = np.linalg.norm(cross_rows(np.broadcast_to(v0, nrm[1:].shape), nrm[1:]), axis=1)
     dot = nrm[1:] @ v0
     ang = np.degrees(np.arctan2(cr, dot))
     over = np.nonzero(ang > tol_deg)[0]
@@ -256,7 +256,7 @@ def _check(items: Sequence[tuple[np.ndarray, Shell]], tol: Tolerances) -> list[l
     if tri.any():
         fidx = np.nonzero(tri)[0]
         P = V[ids[face_start[fidx][:, None] + np.arange(3)]]
-        cr = _cross(P[:, 1] - P[:, 0], P[:, 2] - P[:, 0])
+        cr = cross_rows(P[:, 1] - P[:, 0], P[:, 2] - P[:, 0])
         lim = 1e-9 * np.linalg.norm(P[:, 1] - P[:, 0], axis=1) * np.linalg.norm(P[:, 2] - P[:, 0], axis=1)
         close = ~(np.linalg.norm(cr, axis=1) > lim)
         for k in np.nonzero(close)[0].tolist():

@@ -20,7 +20,7 @@ import manifold3d as m3d
 import numpy as np
 
 from lod2energy.config import DEFAULT, Tolerances
-from lod2energy.geometry import bbox_pairs, cross_rows as _cross, signed_volume, winding_number
+from lod2energy.geometry import bbox_pairs, cross_rows, signed_volume, winding_number
 from lod2energy.model import BUILDING_TYPES, Building, Geometry, Solid
 from lod2energy.validate.shell import shell_meshes
 
@@ -398,7 +398,7 @@ def check_parts_overlap(buildings: Sequence[Building], tol: Tolerances = DEFAULT
     origin = np.array([borigin[it[0]] for it in items])
     Q = P - np.repeat(origin, npts, axis=0)
     T3 = V[gtris] - origin[item_of_tri][:, None, :]
-    nrm = _cross(T3[:, 1] - T3[:, 0], T3[:, 2] - T3[:, 0])
+    nrm = cross_rows(T3[:, 1] - T3[:, 0], T3[:, 2] - T3[:, 0])
     ln = np.sqrt(np.einsum("ij,ij->i", nrm, nrm))
     keep = ln > 0
     nrm = nrm[keep] / ln[keep, None]

@@ -18,7 +18,7 @@ import numpy as np
 
 from lod2energy.site import MAX_WEATHER_KM
 from lod2energy.viz.warnings import warning_kinds
-from lod2energy.validate.codes import name as code_name
+from lod2energy.validate.codes import name as code_name, val3dity_valid
 from lod2energy.energy.downgrades import KINDS as DOWNGRADE_KINDS
 
 #: Repair stages in ladder order (as :data:`lod2energy.repair.pipeline.STAGES`).
@@ -110,11 +110,6 @@ class Row:
         """A val3dity error other than 601 in the input: ``validate``'s verdict (the project's
         energy codes, 1001+, are no val3dity error)."""
         return not val3dity_valid(self.before)
-
-
-def val3dity_valid(codes) -> bool:
-    """No val3dity error but 601 among ``codes`` (as ``lod2energy validate`` counts valid)."""
-    return all(c == 601 or c >= 1000 for c in codes)
 
 
 def _input_codes(b: dict, rep: dict) -> tuple[int, ...]:

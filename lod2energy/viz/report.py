@@ -25,7 +25,7 @@ import os
 import time
 from array import array
 from pathlib import Path
-from typing import Iterable, Iterator
+from typing import Iterable
 
 import numpy as np
 
@@ -39,7 +39,7 @@ from lod2energy.validate.checks import validate_building
 from lod2energy.viz import data as D
 from lod2energy.viz import figures as F
 from lod2energy.viz import render as R
-from lod2energy.viz.footprints import (MAX_PANEL_FACES, FootprintSpill, drawable as _drawable, n_faces as _n_faces,
+from lod2energy.viz.footprints import (MAX_PANEL_FACES, FootprintSpill, drawable, n_faces,
                                        plan_footprint)
 from lod2energy.viz.warnings import study_warnings
 
@@ -52,12 +52,6 @@ _SEVERITY = {"irreparable": 0, "repaired globally": 1, "repaired locally": 2, "n
 PLAN_SVG_MAX = 5000
 #: Longer side of the plan picture of a large file, px.
 PLAN_PX = 1600
-
-
-def panel_ids(rs: Iterable[D.Row], cap: int = DEFAULT_CAP) -> tuple[list[str], int]:
-    """Ids of the buildings that get a panel, and how many deserving ones the cap left out."""
-    page = PageRows(rs, cap)
-    return [r.id for r in page.panel_rows()], page.left_out
 
 
 class PageRows:
@@ -194,14 +188,14 @@ def _plan_picture(page: PageRows, footprints, inputs: dict, outputs: dict) -> tu
     for store in (inputs, outputs):
         for i, b in store.items():
             if i not in given and i not in own:
-                own[i] = _drawable(plan_footprint(b))
+                own[i] = drawable(plan_footprint(b))
 
     def items():
         """``(key, rings)``: the footprints given, then the panels' own (drawn last, over the
         others, whether or not a spill holds theirs too)."""
         if isinstance(footprints, dict):
             for i, rings in footprints.items():
-                yield id_key(i), _drawable(rings)
+                yield id_key(i), drawable(rings)
         else:
             mine = {id_key(i) for i in own}
             yield from ((k, rings) for k, rings in footprints if k not in mine)
@@ -268,7 +262,7 @@ def _plan_picture(page: PageRows, footprints, inputs: dict, outputs: dict) -> tu
 
 def _panel(r: D.Row, before: Building | None, after: Building | None, tol: Tolerances) -> dict:
     defects = []
-    too_big = max(_n_faces(before), _n_faces(after)) > MAX_PANEL_FACES
+    too_big = max(n_faces(before), n_faces(after)) > MAX_PANEL_FACES
     if too_big:
         before = after = None
     if before is not None:
@@ -546,11 +540,3 @@ def read_for_page(path: str, wanted: set[str], spill: FootprintSpill | None = No
         elif f.id not in keep:
             fps[f.id] = plan_footprint(f)
     return keep, fps
-
-
-def read_buildings(path: str) -> dict[str, Building]:
-    """Buildings of a file by id (unreadable features left out)."""
-    model, feats = read(path)
-    if model is None:
-        return {}
-    return {f.id: f for f in feats if isinstance(f, Building)}

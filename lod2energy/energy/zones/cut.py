@@ -30,7 +30,7 @@ import numpy as np
 from shapely.geometry import Point, Polygon
 
 from lod2energy.geometry.vectors import cross_rows, roll_next
-from lod2energy.thermal.storeys import FLAT_TILT
+from lod2energy.thermal.storeys import eave_and_pitch
 
 #: A cut is moved to a vertex height this close (m).
 SNAP = 0.4
@@ -368,13 +368,7 @@ def zone_levels(polygons: Sequence[tuple[np.ndarray, str]]) -> tuple[float, floa
     ground = float(allz.min())
     if not roofs:
         return ground, float(allz.max()), float(allz.max()), False
-    r = np.array(roofs)
-    order = np.argsort(r[:, 0])
-    w = np.cumsum(r[order, 2])
-    k = int(np.searchsorted(w, 0.5 * w[-1])) if w[-1] > 0 else 0
-    eave = float(r[order[min(k, len(order) - 1)], 0])
-    above = r[r[:, 1] > eave + 0.1]
-    pitched = bool(len(above) and above[above[:, 3] >= FLAT_TILT, 2].sum() > 0.5 * above[:, 2].sum())
+    eave, pitched = eave_and_pitch(roofs)
     return ground, max(eave, ground), float(allz.max()), pitched
 
 

@@ -17,9 +17,10 @@ import numpy as np
 from lod2energy.model import Building
 from lod2energy.semantics import DEFAULT_RULES
 
-from lod2energy.geometry.polygons import _norm, newell_normal, polygon_area3d, triangulate, unit
+from lod2energy.geometry.polygons import newell_normal, polygon_area3d, triangulate, unit
 from lod2energy.geometry import signed_volume
-from lod2energy.geometry.snap import drop_repeats as clean_ring, weld
+from lod2energy.geometry.vectors import vector_length
+from lod2energy.geometry.snap import drop_repeats, weld
 from lod2energy.energy.uvalues import face_u_value, positive_number, window_u_value
 
 #: Weld distance for zone vertices (m): EnergyPlus warns about vertices closer than 1 cm.
@@ -153,7 +154,7 @@ def _drop_shared_collinear(faces: list, v: np.ndarray, tol: float) -> list:
         if L2 == 0:
             return False
         t = float((b - a) @ ac) / L2
-        return 0 < t < 1 and _norm(a + t * ac - b) < tol
+        return 0 < t < 1 and vector_length(a + t * ac - b) < tol
 
     status: dict[int, bool] = {}
     for f in faces:
@@ -226,7 +227,7 @@ def zone_shells(b: Building, origin: np.ndarray, lod: str | None = None,
     thermal = _thermal(b)
     u_table = thermal.get("u_values") if isinstance(thermal.get("u_values"), Mapping) else {}
     out = []
-    for obj, gi, g in b.energy_objects(lod):
+    for obj, gi, g in b.envelope(lod):
         for si, solid in enumerate(g.solids):
             if not solid.shells:
                 continue
@@ -244,7 +245,7 @@ def zone_shells(b: Building, origin: np.ndarray, lod: str | None = None,
             for fi, s in enumerate(shell.surfaces):
                 rings = []
                 for ri, r in enumerate(s.rings):
-                    cr = clean_ring([remap[int(i)] for i in r])
+                    cr = drop_repeats([remap[int(i)] for i in r])
                     if len(set(cr)) >= 3:
                         rings.append(tuple(cr))
                     elif ri == 0:
