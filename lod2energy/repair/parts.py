@@ -392,8 +392,8 @@ def keep_parts_apart(before: Building, after: Building, tol: Tolerances = DEFAUL
     rec: dict = {"created": [[a, c, vol(pa[(a, c)])] for a, c in bad], "resolved": [], "left": []}
     out = after
     for a, c in bad:
-        # only the pair itself can have changed since it was found (or by an earlier resolution)
-        cur = overlap_pairs(out, tol, meshes=meshes, only=(a, c))
+        # this pair alone, again only once an earlier pair's resolution changed the building
+        cur = pa if out is after else overlap_pairs(out, tol, meshes=meshes, only=(a, c))
         if not worse(cur, (a, c)):
             continue
         parts = meshes.parts
