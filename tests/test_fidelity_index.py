@@ -187,7 +187,8 @@ def scalar_winding_number(q, V, tris) -> float:
     for t in tris:
         a, b, c = (V[k] - q for k in t)
         la, lb, lc = (float(np.sqrt(x @ x)) for x in (a, b, c))
-        det = a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0])
+        det = a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) \
+            + a[2] * (b[0] * c[1] - b[1] * c[0])
         den = la * lb * lc + (a @ b) * lc + (b @ c) * la + (c @ a) * lb
         total += np.arctan2(det, den)
     return total / (2 * np.pi)

@@ -505,7 +505,8 @@ def clip_overlapping_parts(b: Building, tol: Tolerances = DEFAULT, lod=None,
     meshes = PartMeshes(b, lod)  # each part's mesh built once, then again only when it changes
     if len(meshes) < 2:
         return b, {}
-    pairs = {k: v for k, v in overlap_pairs(b, tol, overlaps, meshes=meshes).items() if v is not None and v > min_volume}
+    pairs = {k: v for k, v in overlap_pairs(b, tol, overlaps, meshes=meshes).items()
+             if v is not None and v > min_volume}
     if not pairs:
         return b, {}
     order = {oid: k for k, oid in enumerate(meshes.parts)}
