@@ -221,3 +221,71 @@ def cantilever(dx: float = 10.0, depth: float = 8.0, reach: float = 4.0, storey:
         g = replace(g, solids=(Solid((Shell(faces),)),))
         return replace(built, objects=(replace(built.objects[0], geometries=(g,)),))
     return building_from_polygons(polys, "Solid", sem, id=id)
+
+
+#: Every this many parts, one reaches 5 cm into its eastern neighbour (a 601 overlap to clip).
+OVERLAP_EVERY = 3
+#: In an ``open`` block, every this many parts has no ground face.
+OPEN_EVERY = 4
+
+
+def terraced_block(n: int, kind: str = "solid", width: float = 6.0, depth: float = 9.0) -> dict:
+    """A CityJSON document of one Building of ``n`` BuildingParts: a grid of terraced houses
+    with gable roofs (ridge along y), of varying eave and ridge heights, sharing their side
+    walls (in full or in part) and their gable ends.
+
+    Parameters
+    ----------
+    n : int
+        Number of parts.
+    kind : {"solid", "open"}
+        ``solid``: each part a closed Solid; ``open``: each a MultiSurface, every
+        :data:`OPEN_EVERY` th one without its ground face.
+    width, depth : float, m
+        Footprint of a part (x, y).
+    """
+    cols = max(1, int(np.ceil(np.sqrt(n))))
+    verts: list[list[int]] = []
+    index: dict[tuple, int] = {}
+
+    def vid(p):
+        k = tuple(round(c * 1000) for c in p)
+        if k not in index:
+            index[k] = len(verts)
+            verts.append(list(k))
+        return index[k]
+
+    cos: dict = {"blk": {"type": "Building", "children": []}}
+    for k in range(n):
+        i, j = k % cols, k // cols
+        x0, y0 = i * width, j * depth
+        x1, y1 = x0 + width, y0 + depth
+        if k % OVERLAP_EVERY == OVERLAP_EVERY - 1 and i < cols - 1 and k + 1 < n:
+            x1 += 0.05
+        eave = 5.0 + ((i * 5 + j * 3) % 4) * 1.0
+        ridge = eave + 2.0 + (k % 3) * 0.5
+        xm = (x0 + x1) / 2
+        g = [vid((x0, y0, 0)), vid((x0, y1, 0)), vid((x1, y1, 0)), vid((x1, y0, 0))]
+        e = [vid((x0, y0, eave)), vid((x1, y0, eave)), vid((x1, y1, eave)), vid((x0, y1, eave))]
+        r0, r1 = vid((xm, y0, ridge)), vid((xm, y1, ridge))
+        faces = [[g],                                     # ground
+                 [[e[0], r0, r1, e[3]]],                  # roof, west slope
+                 [[e[1], e[2], r1, r0]],                  # roof, east slope
+                 [[g[0], g[3], e[1], r0, e[0]]],          # south gable
+                 [[g[2], g[1], e[3], r1, e[2]]],          # north gable
+                 [[g[1], g[0], e[0], e[3]]],              # west wall
+                 [[g[3], g[2], e[2], e[1]]]]              # east wall
+        sem = [0, 1, 1, 2, 2, 2, 2]
+        if kind == "open" and k % OPEN_EVERY == OPEN_EVERY - 1:
+            faces, sem = faces[1:], sem[1:]
+        semantics = {"surfaces": [{"type": "GroundSurface"}, {"type": "RoofSurface"}, {"type": "WallSurface"}],
+                     "values": [sem] if kind == "solid" else sem}
+        geom = ({"type": "Solid", "lod": "2.2", "boundaries": [faces], "semantics": semantics} if kind == "solid"
+                else {"type": "MultiSurface", "lod": "2.2", "boundaries": faces, "semantics": semantics})
+        pid = f"blk-p{k:03d}"
+        cos[pid] = {"type": "BuildingPart", "parents": ["blk"], "geometry": [geom]}
+        cos["blk"]["children"].append(pid)
+    return {"type": "CityJSON", "version": "2.0",
+            "transform": {"scale": [0.001] * 3, "translate": [85000.0, 446000.0, 0.0]},
+            "metadata": {"referenceSystem": "https://www.opengis.net/def/crs/EPSG/0/7415"},
+            "CityObjects": cos, "vertices": verts}

@@ -270,6 +270,76 @@ def test_flip_caps_leaves_a_cap_next_to_a_degenerate_neighbour():
     assert t2.shape == t.shape
 
 
+def fanned_box_with_collinear_runs(points_per_edge: int, rng) -> tuple[np.ndarray, np.ndarray]:
+    """A unit cube whose 12 edges each carry ``points_per_edge`` extra points (shared by the two
+    faces of the edge), every face fan-triangulated from a random ring vertex: many caps."""
+    corners = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0, 0, 1], [1, 0, 1], [1, 1, 1], [0, 1, 1]], float)
+    verts, runs, tris = list(corners), {}, []
+    for f in ([0, 3, 2, 1], [4, 5, 6, 7], [0, 1, 5, 4], [1, 2, 6, 5], [2, 3, 7, 6], [3, 0, 4, 7]):
+        ring = []
+        for a, b in zip(f, f[1:] + f[:1]):
+            if (b, a) not in runs:
+                runs[(a, b)] = list(range(len(verts), len(verts) + points_per_edge))
+                verts += [corners[a] + s * (corners[b] - corners[a])
+                          for s in np.sort(rng.uniform(0.05, 0.95, points_per_edge))]
+            ring += [a] + (runs[(a, b)] if (a, b) in runs else runs[(b, a)][::-1])
+        k = int(rng.integers(len(ring)))
+        ring = ring[k:] + ring[:k]
+        tris += [(ring[0], ring[j], ring[j + 1]) for j in range(1, len(ring) - 1)]
+    return np.array(verts), np.array(tris)
+
+
+def test_flip_caps_removes_hundreds_of_caps_and_keeps_the_box():
+    rng = np.random.default_rng(5)
+    v, t = fanned_box_with_collinear_runs(40, rng)
+    t = t[rng.permutation(len(t))]
+    before, _ = stl._caps(v, t)
+    assert before.sum() > 200
+    t2, c2 = stl.flip_caps(v, t, np.arange(len(t)))
+    def balance(tt):  # per undirected edge: uses one way minus the other (0 everywhere: closed)
+        e = np.concatenate([tt[:, [0, 1]], tt[:, [1, 2]], tt[:, [2, 0]]])
+        key, sign = np.sort(e, axis=1), np.where(e[:, 0] < e[:, 1], 1, -1)
+        _, inv = np.unique(key, axis=0, return_inverse=True)
+        return np.bincount(inv.ravel(), weights=sign)
+    assert not balance(t).any() and not balance(t2).any()
+    assert stl.signed_volume(v, t2) == pytest.approx(1.0)
+    after, _ = stl._caps(v, t2)
+    assert after.sum() < before.sum()          # those left lie against another cap's chord
+    tr, cr = reference_flip_caps(v, t, np.arange(len(t)))
+    assert np.array_equal(t2, tr) and np.array_equal(c2, cr)   # the flips of before (len(t) at most)
+
+
+def reference_flip_caps(v, t, c):
+    """flip_caps as it was before its edge index: every cap looked at again after each flip."""
+    t, c = np.array(t, dtype=np.intp).reshape(-1, 3), np.array(c)
+    for _ in range(len(t)):
+        is_cap, L2 = stl._caps(v, t)
+        for k in np.nonzero(is_cap)[0]:
+            i = int(np.argmax(L2[k]))
+            a, b, cc = t[k, i], t[k, (i + 1) % 3], t[k, (i + 2) % 3]
+            hit = [h for h in np.nonzero(((t[:, 0] == b) & (t[:, 1] == a)) | ((t[:, 1] == b) & (t[:, 2] == a))
+                                         | ((t[:, 2] == b) & (t[:, 0] == a)))[0] if h != k]
+            rest = [int(x) for x in t[hit[0]] if x not in (a, b)] if len(hit) == 1 else []
+            if rest and rest[0] != cc:
+                h, d = hit[0], rest[0]
+                t[k], t[h], c[k] = (b, cc, d), (cc, a, d), c[h]
+                break
+        else:
+            break
+    return t, c
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_flip_caps_makes_the_same_flips_in_the_same_order_as_before(seed):
+    rng = np.random.default_rng(seed)
+    v, t = fanned_box_with_collinear_runs(int(rng.integers(1, 12)), rng)
+    t = t[rng.permutation(len(t))]
+    c = rng.integers(0, 4, len(t))
+    t2, c2 = stl.flip_caps(v, t, c)
+    tr, cr = reference_flip_caps(v, t, c)
+    assert np.array_equal(t2, tr) and np.array_equal(c2, cr) and not np.array_equal(t2, t)
+
+
 def test_one_failing_building_does_not_stop_the_batch(tmp_path, monkeypatch):
     good, bad = energy_ready(box()), energy_ready(shifted(box(), (30.0, 0.0, 0.0)))
     bad = type(bad)(bad.id + "_bad", bad.type, bad.vertices, bad.objects, bad.provenance)

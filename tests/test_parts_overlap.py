@@ -111,10 +111,10 @@ def part_volume(b: Building, pid: str) -> float:
 
 def _union_volume(b: Building) -> float:
     import manifold3d as m3
-    from lod2energy.repair.parts import _manifold, _part_meshes_all
-    meshes = [m for *_, m in _part_meshes_all(b, b.default_lod())]
+    from lod2energy.repair.meshops import part_meshes, solid_manifold
+    meshes = [m for *_, m in part_meshes(b, b.default_lod())]
     origin = np.vstack([m.vertices for m in meshes]).mean(axis=0)
-    return m3.Manifold.batch_boolean([_manifold(m, origin) for m in meshes], m3.OpType.Add).volume()
+    return m3.Manifold.batch_boolean([solid_manifold(m, origin) for m in meshes], m3.OpType.Add).volume()
 
 
 def test_input_overlap_is_counted_once_in_the_energy_model():

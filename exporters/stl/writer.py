@@ -12,6 +12,7 @@ lists the names.
 """
 from __future__ import annotations
 
+import heapq
 import json
 import struct
 from dataclasses import dataclass
@@ -128,32 +129,56 @@ def flip_caps(v: np.ndarray, t: np.ndarray, c: np.ndarray, rel: float = 1e-9, he
     """
     t = np.array(t, dtype=np.intp).reshape(-1, 3)
     c = np.array(c)
-    for _ in range(len(t)):
-        is_cap, L2 = _caps(v, t, rel, height)
-        caps = np.nonzero(is_cap)[0]
-        done = False
-        for k in caps:
-            i = int(np.argmax(L2[k]))
-            a, b, cc = t[k, i], t[k, (i + 1) % 3], t[k, (i + 2) % 3]
-            hit = np.nonzero(((t[:, 0] == b) & (t[:, 1] == a)) | ((t[:, 1] == b) & (t[:, 2] == a))
-                             | ((t[:, 2] == b) & (t[:, 0] == a)))[0]
-            hit = [h for h in hit if h != k]
-            if len(hit) != 1:
-                continue
-            h = hit[0]
-            rest = [int(x) for x in t[h] if x not in (a, b)]
-            if not rest:
-                continue  # the neighbour is degenerate too (a, b, a): nothing to flip into
-            d = rest[0]
-            if d == cc:
-                continue
-            t[k] = (b, cc, d)
-            t[h] = (cc, a, d)
-            c[k] = c[h]
-            done = True
-            break
-        if not done:
-            break
+    is_cap, L2 = _caps(v, t, rel, height)
+    if not is_cap.any():
+        return t, c
+    # the caps are tried in index order and the first that can be flipped is, again and again
+    # (at most len(t) flips): a heap of the caps not yet found unflippable, and an index of the
+    # triangles by directed edge, so that a flip re-examines only the caps beside it
+    by_edge: dict[tuple[int, int], set[int]] = {}
+    for r, (x, y, z) in enumerate(t.tolist()):
+        for e in ((x, y), (y, z), (z, x)):
+            by_edge.setdefault(e, set()).add(r)
+    todo = np.flatnonzero(is_cap).tolist()
+    queued = set(todo)
+    flips = 0
+    while todo and flips < len(t):
+        k = heapq.heappop(todo)
+        queued.discard(k)
+        if not is_cap[k]:
+            continue
+        i = int(np.argmax(L2[k]))
+        a, b, cc = int(t[k, i]), int(t[k, (i + 1) % 3]), int(t[k, (i + 2) % 3])
+        hit = by_edge.get((b, a), set()) - {k}
+        if len(hit) != 1:
+            continue
+        (h,) = hit
+        rest = [int(x) for x in t[h] if x not in (a, b)]
+        if not rest or rest[0] == cc:
+            continue  # the neighbour is degenerate too (a, b, a), or the same triangle turned
+        d = rest[0]
+        touched = set()
+        for r in (k, h):
+            x, y, z = t[r].tolist()
+            for e in ((x, y), (y, z), (z, x)):
+                by_edge[e].discard(r)
+                touched.add(e)
+        t[k] = (b, cc, d)
+        t[h] = (cc, a, d)
+        c[k] = c[h]
+        flips += 1
+        for r in (k, h):
+            x, y, z = t[r].tolist()
+            for e in ((x, y), (y, z), (z, x)):
+                by_edge.setdefault(e, set()).add(r)
+                touched.add(e)
+        is_cap[[k, h]], L2[[k, h]] = _caps(v, t[[k, h]], rel, height)
+        # a cap whose longest edge lies against a changed edge may flip (or not) now
+        again = {k, h}.union(*(by_edge.get((y, x), ()) for x, y in touched))
+        for r in again:
+            if is_cap[r] and r not in queued:
+                heapq.heappush(todo, r)
+                queued.add(r)
     return t, c
 
 

@@ -10,16 +10,16 @@ from __future__ import annotations
 from dataclasses import replace
 from typing import Sequence
 
-import manifold3d as m3d
 import numpy as np
 
 from lod2energy.config import DEFAULT, Tolerances
-from lod2energy.geometry import closest_on_triangle, collapse_short_edges
+from lod2energy.geometry import bbox_pairs, closest_on_triangle, collapse_short_edges
 from lod2energy.io.cityjson_grid import building_grid, on_grid
 from lod2energy.model import Building, Geometry, Shell, Solid, Surface
 from lod2energy.polymesh import Face, PolyMesh, compact, face_area, merge_coplanar, signed_volume, triangulate_mesh
 from lod2energy.repair.accept import is_repaired
-from lod2energy.repair.convert import geometry_of_mesh, mesh_of_geometry
+from lod2energy.repair.convert import mesh_of_geometry
+from lod2energy.repair.meshops import PartMeshes, part_mesh, solid_manifold, with_part
 from lod2energy.repair.metrics import _sqdist, winding_number
 from lod2energy.validate.solid import check_parts_overlap
 
@@ -43,11 +43,8 @@ def without_geometry(b: Building, ids, lod) -> Building:
         if o.id in ids else o for o in b.objects))
 
 
-def _manifold(m: PolyMesh, origin):
-    tris, _ = triangulate_mesh(m)
-    man = m3d.Manifold(m3d.Mesh(vert_properties=np.ascontiguousarray(m.vertices - origin, dtype=np.float32),
-                                tri_verts=np.ascontiguousarray(tris, dtype=np.uint32)))
-    return None if man.status() != m3d.Error.NoError else man
+#: Boxes of two parts farther apart than this (m) are not tested for a shared volume.
+BOX_PAD = 1e-3
 
 
 def overlapping_parts(b: Building, lod=None, min_volume: float = 1e-6) -> list[tuple[str, str, float]]:
@@ -57,15 +54,18 @@ def overlapping_parts(b: Building, lod=None, min_volume: float = 1e-6) -> list[t
     if len(parts) < 2:
         return []
     origin = np.vstack([m.vertices for *_, m in parts]).mean(axis=0)
-    mans = [_manifold(m, origin) for *_, m in parts]
+    mans = [solid_manifold(m, origin) for *_, m in parts]
+    # only parts whose boxes come within a millimetre can share volume (the float32
+    # booleans move a corner by far less)
+    lo = np.array([m.vertices.min(axis=0) for *_, m in parts])
+    hi = np.array([m.vertices.max(axis=0) for *_, m in parts])
     out = []
-    for i in range(len(parts)):
-        for j in range(i + 1, len(parts)):
-            if mans[i] is None or mans[j] is None:
-                continue
-            v = (mans[i] ^ mans[j]).volume()
-            if v > min_volume:
-                out.append((parts[i][0].id, parts[j][0].id, float(v)))
+    for i, j in sorted(map(tuple, bbox_pairs(lo, hi, pad=BOX_PAD).tolist())):
+        if mans[i] is None or mans[j] is None:
+            continue
+        v = (mans[i] ^ mans[j]).volume()
+        if v > min_volume:
+            out.append((parts[i][0].id, parts[j][0].id, float(v)))
     return out
 
 
@@ -95,14 +95,14 @@ def touching_part(b: Building, part_id: str, lod=None, gap: float = 0.01) -> str
     m0 = mine[0][3]
     lo0, hi0 = m0.vertices.min(axis=0) - gap, m0.vertices.max(axis=0) + gap
     origin = m0.vertices.mean(axis=0)
-    a = _manifold(m0, origin)
+    a = solid_manifold(m0, origin)
     if a is None:
         return None
     best, best_vol = None, -1.0
     for o, _, _, m in parts:
         if o.id == part_id or np.any(m.vertices.max(axis=0) < lo0) or np.any(m.vertices.min(axis=0) > hi0):
             continue
-        other = _manifold(m, origin)
+        other = solid_manifold(m, origin)
         # touching solids stay two bodies for manifold3d's booleans: ask for the gap instead
         if other is None or a.min_gap(other, 2 * gap) > gap:
             continue
@@ -128,7 +128,7 @@ def merge_parts(b: Building, ids, tol: Tolerances = DEFAULT, lod=None, into: str
     if len(parts) < 2 or len(parts) != len(ids):
         return b
     origin = np.vstack([m.vertices for *_, m in parts]).mean(axis=0)
-    mans = [_manifold(m, origin) for *_, m in parts]
+    mans = [solid_manifold(m, origin) for *_, m in parts]
     if any(x is None for x in mans):
         return b
     union = mans[0]
@@ -187,16 +187,19 @@ def merge_parts(b: Building, ids, tol: Tolerances = DEFAULT, lod=None, into: str
 SNAP_BACK = 0.25
 
 
-def overlap_pairs(b: Building, tol: Tolerances = DEFAULT, overlaps: Sequence[str] | None = None
+def overlap_pairs(b: Building, tol: Tolerances = DEFAULT, overlaps: Sequence[str] | None = None,
+                  meshes: PartMeshes | None = None, only: tuple[str, str] | None = None
                   ) -> dict[tuple[str, str], float | None]:
     """val3dity 601 pairs of ``b`` (at ``tol.overlap_tol``): ``{(id_a, id_b): shared m3}``.
 
     The shared volume is manifold3d's intersection volume (None when a solid is rejected).
     ``overlaps``: the locations of the 601 defects of ``b`` at ``tol`` when the validator
     already found them (:func:`lod2energy.validate.solid.check_parts_overlap` otherwise).
+    ``meshes``: the parts' meshes of ``b`` when the caller has them (at ``b``'s default LoD);
+    ``only``: the one pair of objects to look at (the others are not checked).
     """
     if overlaps is None:
-        overlaps = [loc for loc, _code, _info in check_parts_overlap([b], tol)[0]]
+        overlaps = [loc for loc, _code, _info in check_parts_overlap([b], tol, only=only)[0]]
     out: dict[tuple[str, str], float | None] = {}
     for loc in overlaps:
         a, c = (s.split("|", 1)[0].removeprefix("coid=") for s in loc.split("&&", 1))
@@ -204,23 +207,15 @@ def overlap_pairs(b: Building, tol: Tolerances = DEFAULT, overlaps: Sequence[str
     if not out:
         return out
     lod = b.default_lod()
-    meshes = {o.id: m for o, _gi, _g, m in _part_meshes_all(b, lod)}
-    origin = np.vstack([m.vertices for m in meshes.values()]).mean(axis=0) if meshes else np.zeros(3)
-    mans = {k: _manifold(m, origin) for k, m in meshes.items()}
+    if meshes is None or meshes.building is not b or meshes.lod != lod:
+        meshes = PartMeshes(b, lod)
+    origin = meshes.origin()
     for (a, c) in out:
-        if mans.get(a) is not None and mans.get(c) is not None:
-            out[(a, c)] = float((mans[a] ^ mans[c]).volume())
-    return out
-
-
-def _part_meshes_all(b: Building, lod):
-    """``(object, geom index, geometry, PolyMesh)`` of the Solid of the Building and each part."""
-    out = []
-    for o in b.envelope_objects:
-        for gi, g in enumerate(o.geometries):
-            if g.is_polygonal and g.lod == lod and g.type == "Solid" and g.solids:
-                out.append((o, gi, g, mesh_of_geometry(b.vertices, g)))
-                break
+        ma, mc = meshes.mesh(a), meshes.mesh(c)
+        man_a = None if ma is None else solid_manifold(ma, origin)
+        man_c = None if man_a is None or mc is None else solid_manifold(mc, origin)
+        if man_a is not None and man_c is not None:
+            out[(a, c)] = float((man_a ^ man_c).volume())
     return out
 
 
@@ -296,7 +291,7 @@ def _clip_by(m: PolyMesh, other: PolyMesh, min_edge: float = 0.0, snap_to: np.nd
     its vertices within ``min_edge`` of a corner of ``other`` (or of ``snap_to``, (n, 3) m: the
     corners of the building's other parts) are put onto that corner."""
     origin = np.vstack([m.vertices, other.vertices]).mean(axis=0)
-    a, b = _manifold(m, origin), _manifold(other, origin)
+    a, b = solid_manifold(m, origin), solid_manifold(other, origin)
     if a is None or b is None:
         return None
     mesh = (a - b).to_mesh()
@@ -371,9 +366,13 @@ def keep_parts_apart(before: Building, after: Building, tol: Tolerances = DEFAUL
         "left": [[a, b, m3], ...]}``; empty when the repair made no overlap.
     """
     lod = lod if lod is not None else after.default_lod()
-    if after is before or len(_part_meshes_all(after, lod)) < 2:
+    if after is before:
         return after, {}
-    pb, pa = overlap_pairs(before, tol), overlap_pairs(after, tol)
+    meshes = PartMeshes(after, lod)
+    if len(meshes) < 2:
+        return after, {}
+    before_meshes = PartMeshes(before, lod)
+    pb, pa = overlap_pairs(before, tol, meshes=before_meshes), overlap_pairs(after, tol, meshes=meshes)
 
     def worse(pairs, key) -> bool:
         """A 601 pair new after the repair, or sharing more volume than in the input (a pair
@@ -391,14 +390,14 @@ def keep_parts_apart(before: Building, after: Building, tol: Tolerances = DEFAUL
         return None if x is None else round(x, 6)
 
     rec: dict = {"created": [[a, c, vol(pa[(a, c)])] for a, c in bad], "resolved": [], "left": []}
-    meshes_before = {o.id: m for o, _gi, _g, m in _part_meshes_all(before, lod)}
     out = after
     for a, c in bad:
-        cur = overlap_pairs(out, tol)
+        # this pair alone, again only once an earlier pair's resolution changed the building
+        cur = pa if out is after else overlap_pairs(out, tol, meshes=meshes, only=(a, c))
         if not worse(cur, (a, c)):
             continue
-        parts = {o.id: (o, gi, g, m) for o, gi, g, m in _part_meshes_all(out, lod)}
-        changed = [k for k in (a, c) if k in parts and not _same_solid(parts[k][3], meshes_before.get(k))]
+        parts = meshes.parts
+        changed = [k for k in (a, c) if k in parts and not _same_solid(parts[k][3], before_meshes.mesh(k))]
         done = False
         # the repaired part moves first; the neighbour yields only when that fails
         for mover in changed + [k for k in (a, c) if k not in changed]:
@@ -409,9 +408,10 @@ def keep_parts_apart(before: Building, after: Building, tol: Tolerances = DEFAUL
                 res = cand()
                 if res is None or not is_repaired(res, lod, tol):
                     continue
-                trial = _with_part(out, o.id, gi, g, res)
-                if not worse(overlap_pairs(trial, tol), (a, c)):
-                    out, done = trial, True
+                trial = with_part(out, o.id, gi, g, res)
+                trial_meshes = meshes.replaced(trial, (o.id,))
+                if not worse(overlap_pairs(trial, tol, meshes=trial_meshes, only=(a, c)), (a, c)):
+                    out, meshes, done = trial, trial_meshes, True
                     rec["resolved"].append([mover, other, how])
                     break
             if done:
@@ -426,15 +426,6 @@ def keep_parts_apart(before: Building, after: Building, tol: Tolerances = DEFAUL
 #: Shared volume (m3) from which two overlapping parts are clipped for the energy model; below
 #: it the overlap is numerical noise for the heat balance (10 litres).
 ENERGY_OVERLAP = 0.01
-
-
-def _with_part(b: Building, object_id: str, gi: int, g: Geometry, m: PolyMesh) -> Building:
-    """``b`` with geometry ``gi`` of ``object_id`` replaced by the mesh ``m`` (new vertices appended)."""
-    lookup = {(float(p[0]), float(p[1]), float(p[2])): i for i, p in enumerate(b.vertices)}
-    extra: list = []
-    ng = geometry_of_mesh(m, g, lookup, extra, len(b.vertices))
-    V = np.vstack([b.vertices, np.asarray(extra).reshape(-1, 3)]) if extra else b.vertices
-    return b.replace_geometry(object_id, gi, ng, vertices=V)
 
 
 #: A clipped part keeps no edge shorter than this (m) and no face smaller than this (m2): the
@@ -462,8 +453,9 @@ def _valid_on_grid(b: Building, part_id: str, lod, tol: Tolerances) -> bool:
     rounded to the grid ``b`` will be written on (the writers' final check,
     :func:`lod2energy.validate.closed.export_problem`, judges it there)."""
     snapped = on_grid(b, *building_grid(b))
-    mine = [m for o, _gi, _g, m in _part_meshes_all(snapped, lod) if o.id == part_id]
-    return bool(mine) and is_repaired(mine[0], lod, tol) and _writable(mine[0])
+    o = next((x for x in snapped.envelope_objects if x.id == part_id), None)
+    mine = None if o is None else part_mesh(snapped, o, lod)  # this part's mesh only
+    return mine is not None and is_repaired(mine[2], lod, tol) and _writable(mine[2])
 
 
 def clip_overlapping_parts(b: Building, tol: Tolerances = DEFAULT, lod=None,
@@ -510,21 +502,23 @@ def clip_overlapping_parts(b: Building, tol: Tolerances = DEFAULT, lod=None,
         was to be done.
     """
     lod = lod if lod is not None else b.default_lod()
-    if len(_part_meshes_all(b, lod)) < 2:
+    meshes = PartMeshes(b, lod)  # each part's mesh built once, then again only when it changes
+    if len(meshes) < 2:
         return b, {}
-    pairs = {k: v for k, v in overlap_pairs(b, tol, overlaps).items() if v is not None and v > min_volume}
+    pairs = {k: v for k, v in overlap_pairs(b, tol, overlaps, meshes=meshes).items()
+             if v is not None and v > min_volume}
     if not pairs:
         return b, {}
-    order = {o.id: k for k, (o, *_rest) in enumerate(_part_meshes_all(b, lod))}
+    order = {oid: k for k, oid in enumerate(meshes.parts)}
     rec: dict = {"clipped": [], "united": [], "left": [], "volume_removed_m3": 0.0}
     out = b
     for a, c in sorted(pairs, key=lambda k: sorted((order.get(k[0], 0), order.get(k[1], 0)), reverse=True)):
-        parts = {o.id: (o, gi, g, m) for o, gi, g, m in _part_meshes_all(out, lod)}
+        parts = meshes.parts
         if a not in parts or c not in parts:
             continue
         earlier, later = sorted((a, c), key=lambda k: order.get(k, 0))
         origin = np.vstack([parts[a][3].vertices, parts[c][3].vertices]).mean(axis=0)
-        ma, mc = _manifold(parts[a][3], origin), _manifold(parts[c][3], origin)
+        ma, mc = solid_manifold(parts[a][3], origin), solid_manifold(parts[c][3], origin)
         shared = None if ma is None or mc is None else (ma ^ mc).volume()
         if shared is None or shared <= min_volume:
             continue  # resolved by an earlier clip (or no longer measurable)
@@ -543,10 +537,10 @@ def clip_overlapping_parts(b: Building, tol: Tolerances = DEFAULT, lod=None,
             removed = signed_volume(m) - signed_volume(res)
             if abs(removed - shared) > 0.01 * shared + 1e-3 * signed_volume(m) + 1e-3:
                 continue  # the boolean (and the collapse of its hairline edges) lost or kept more
-            trial = _with_part(out, o.id, gi, g, res)
+            trial = with_part(out, o.id, gi, g, res)
             if not _valid_on_grid(trial, cut, lod, tol):
                 continue
-            out = trial
+            out, meshes = trial, meshes.replaced(trial, (cut,))
             rec["clipped"].append([cut, by, round(shared, 6), round(removed, 6)])
             rec["volume_removed_m3"] += removed
             done = True
@@ -554,7 +548,7 @@ def clip_overlapping_parts(b: Building, tol: Tolerances = DEFAULT, lod=None,
         if not done:
             merged = merge_parts(out, {a, c}, tol, lod, into=earlier)
             if merged is not out and _valid_on_grid(merged, earlier, lod, tol):
-                out = merged
+                out, meshes = merged, PartMeshes(merged, lod)
                 rec["united"].append([earlier, later, round(shared, 6)])
                 rec["volume_removed_m3"] += shared
             else:

@@ -316,8 +316,8 @@ def _separated_pairs(pts, pstart, npts, nrm, off, fstart, nf, pairs, eps: float 
     return sep
 
 
-def check_parts_overlap(buildings: Sequence[Building], tol: Tolerances = DEFAULT
-                        ) -> list[list[tuple[str, int, str]]]:
+def check_parts_overlap(buildings: Sequence[Building], tol: Tolerances = DEFAULT,
+                        only: tuple[str, str] | None = None) -> list[list[tuple[str, int, str]]]:
     """601 BUILDINGPARTS_OVERLAP of many buildings: interiors of a Building's and its
     BuildingParts' solids overlap.
 
@@ -331,6 +331,10 @@ def check_parts_overlap(buildings: Sequence[Building], tol: Tolerances = DEFAULT
         Their geometries already passed levels 1xx-5xx.
     tol : Tolerances
         ``overlap_tol`` as in val3dity.
+    only : (str, str), optional
+        Two object ids: only the geometries of these two objects are tested against each
+        other (their verdict is the one the whole check gives them: every geometry still sets
+        the building's local frame).
 
     Returns
     -------
@@ -389,6 +393,11 @@ def check_parts_overlap(buildings: Sequence[Building], tol: Tolerances = DEFAULT
     pairs = bbox_pairs(glo, ghi, pad=-1e-7)      # boxes that only touch cannot overlap
     if len(pairs):
         pairs = pairs[grp[pairs[:, 0]] == grp[pairs[:, 1]]]
+    if only is not None and len(pairs):
+        wanted = set(only)
+        oid = np.array([it[3] for it in items], dtype=object)
+        a, c = oid[pairs[:, 0]], oid[pairs[:, 1]]
+        pairs = pairs[np.array([{x, y} == wanted for x, y in zip(a, c)], dtype=bool)]
     if len(pairs) == 0:
         return outs
     # separating face planes, in one local frame per building
