@@ -31,7 +31,7 @@ from lod2energy.exporters.footprint import footprint, footprint_geometry
 from lod2energy.geometry import newell_normal
 from lod2energy.model import Building
 from lod2energy.site import SiteError
-from lod2energy.thermal.storeys import storeys
+from lod2energy.thermal.storeys import Storeys, storeys
 from lod2energy.thermal.use import recorded_use
 
 
@@ -96,12 +96,12 @@ class HandoffFacts:
         return self.height
 
 
-def part_pieces(b: Building, lod: str | None = None) -> list[list[Piece]]:
+def part_pieces(b: Building, lod: str | None = None) -> list[tuple[str, list[Piece]]]:
     """The faces of each envelope object's exterior shells as :class:`Piece` s (outer rings,
-    m, kinds by :func:`lod2energy.energy.zones.shells.classify`), one list per object."""
+    m, kinds by :func:`lod2energy.energy.zones.shells.classify`): ``(object id, pieces)`` per object."""
     v = np.asarray(b.vertices, dtype=np.float64)
     out = []
-    for _, _, g in b.envelope(lod):
+    for o, _, g in b.envelope(lod):
         pieces = []
         for _, hi, fi, s in g.iter_surfaces():
             if hi > 0 or len(s.rings[0]) < 3:
@@ -110,19 +110,22 @@ def part_pieces(b: Building, lod: str | None = None) -> list[list[Piece]]:
             if np.all(np.isfinite(pts)):
                 pieces.append(Piece(pts, classify(g.semantic_type(s), newell_normal(pts)), "Outdoors", 0.0, fi))
         if pieces:
-            out.append(pieces)
+            out.append((o.id, pieces))
     return out
 
 
-def floor_area(parts: list[list[Piece]], storey_height: float, attic_mode: str = "unconditioned") -> float:
+def floor_area(parts: list[tuple[str, list[Piece]]], storey_height: float, attic_mode: str = "unconditioned",
+               plan: Storeys | None = None) -> float:
     """Gross floor area (m2) of the storeys of envelope objects ``parts`` (:func:`part_pieces`):
     each object's section at its ground level plus its upper floors as the IDF's storey zoning
-    counts them (:func:`lod2energy.energy.zones.storeys.upper_floor_area`)."""
+    counts them (:func:`lod2energy.energy.zones.storeys.upper_floor_area`, with each object's
+    storeys of the building's ``plan``)."""
     total = 0.0
-    for pieces in parts:
+    for oid, pieces in parts:
         polys = [p.points for p in pieces]
         ground = float(min(p[:, 2].min() for p in polys))
-        total += section_area(polys, ground) + upper_floor_area(pieces, storey_height, attic_mode)
+        part = plan.part(oid) if plan is not None else None
+        total += section_area(polys, ground) + upper_floor_area(pieces, storey_height, attic_mode, part)
     return float(total)
 
 
@@ -150,10 +153,10 @@ def facts(b: Building, use: str | None = None, lod: str | None = None,
     parts = part_pieces(b, lod)
     if not parts:
         return None
-    allz = np.concatenate([p.points[:, 2] for ps in parts for p in ps])
+    allz = np.concatenate([p.points[:, 2] for _, ps in parts for p in ps])
     ground = st.levels.ground if st.levels is not None else float(allz.min())
     ridge = st.levels.ridge if st.levels is not None else float(allz.max())
-    floor = floor_area(parts, float(st.storey_height), attic_mode)
+    floor = floor_area(parts, float(st.storey_height), attic_mode, st)
     thermal = b.provenance.get("thermal") or {}
     vol = thermal.get("volume")
     year_fact = ((thermal.get("facts") or {}).get("year") or {})

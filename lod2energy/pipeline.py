@@ -44,7 +44,8 @@ from lod2energy.run.record_store import RecordStore
 from lod2energy.records import BuildingRecord, ExportRecord
 from lod2energy.prepare import prepare_building
 from lod2energy.reports import (
-    CsvRows, err, note_frame, print_export_summary, refuse_overwriting_inputs, weather_warnings, write_html_report,
+    CsvRows, err, note_frame, print_export_summary, refuse_overwriting_inputs, warning_summary, weather_warnings,
+    write_html_report,
     write_reports_from_journal,
 )
 from lod2energy.run.driver import Command, Run, progress
@@ -577,13 +578,16 @@ def export_file(run: Run) -> None:
 
 
 def print_summary(run: Run) -> None:
-    """The table of what was written (none with ``-q``) and the weather stations' warnings."""
+    """The table of what was written (none with ``-q``), the weather stations' warnings and the
+    warnings by kind (warnings stay with ``-q``)."""
     res, opts = run.made["outcome"], run.made["options"]
     if not run.args.quiet and res.records and res.exit_code in (EXIT_OK, EXIT_INVALID):
         print_export_summary(res.records, opts.formats, run.args.output, res.terrain)
     if res.records and "idf" in opts.formats:
         for line in weather_warnings(res.records):
             log.warning("%s", line)
+    for line in warning_summary(res.records):
+        log.warning("%s", line)
 
 
 EXPORT = Command("export", (export_file, print_summary), writers=chosen_formats)

@@ -22,7 +22,9 @@ from lod2energy.records import CSV_FIELDS, BuildingRecord
 from lod2energy.safe_write import atomic_write, check_target, json_default
 from lod2energy.site import MAX_WEATHER_KM
 from lod2energy.run.spool import load_spooled, spool_path
+from lod2energy.viz.data import iter_rows
 from lod2energy.viz.report import write_report_for_files
+from lod2energy.viz.warnings import WarningTally, warning_lines
 
 if TYPE_CHECKING:
     from lod2energy.run.resume import JournalRecords
@@ -247,6 +249,16 @@ def weather_warnings(records: Iterable[BuildingRecord]) -> list[str]:
             f"{MAX_WEATHER_KM:.0f} km, its climate may not be theirs" for k, v in sorted(far.items())]
 
 
+def warning_summary(records: Iterable[BuildingRecord]) -> list[str]:
+    """The console's warnings by kind (:func:`lod2energy.viz.warnings.warning_lines`): the rows
+    of report.html's "Warnings by kind" table, read from the same report.json entries (the
+    study's own warnings are logged when they arise)."""
+    tally = WarningTally()
+    for row in iter_rows({"buildings": (r.report_entry() for r in records)}):
+        tally.add(row.id, row.warnings)
+    return warning_lines(tally.table())
+
+
 def print_export_summary(records: Iterable[BuildingRecord], formats: Iterable[str], outdir: str,
                          terrain: Iterable[dict] = ()) -> None:
     """The table ``lod2energy export`` prints, then a line for each file that carries the
@@ -256,7 +268,6 @@ def print_export_summary(records: Iterable[BuildingRecord], formats: Iterable[st
     down: dict[str, int] = {}
     ok = dict.fromkeys(formats, 0)
     sources: dict[str, Counter] = {f: Counter() for f in ("year", "storeys", "use")}
-    warned: Counter = Counter()
     maps: Counter = Counter()
     for r in records:  # one pass: ``records`` may rebuild each record as it is read
         if not (r.type == "Building" or r.assessed):
@@ -266,7 +277,6 @@ def print_export_summary(records: Iterable[BuildingRecord], formats: Iterable[st
         for f, c in sources.items():
             if f in facts:
                 c[facts[f].get("source", "")] += 1
-        warned.update(w.get("field", "") for w in r.thermal.detail.get("warnings") or ())
         if r.thermal.detail.get("attribute_map"):
             maps[r.thermal.detail["attribute_map"]] += 1
         comp += bool(r.energy.compliant)
@@ -283,9 +293,6 @@ def print_export_summary(records: Iterable[BuildingRecord], formats: Iterable[st
     if maps:
         print(f"attribute map: {', '.join(sorted(maps))}; " + "; ".join(
             f"{f} from " + ", ".join(f"{k} {v}" for k, v in c.most_common()) for f, c in sources.items() if c))
-    for f, k in sorted(warned.items()):
-        print(f"warning: {k} building(s) with a sentinel or implausible {f} taken as unknown (report.json: "
-              f"thermal.warnings)")
     if down:
         print("energy model downgraded: " + ", ".join(f"{k} {down[k]}" for k in KINDS if k in down)
               + " building(s) (report.csv: downgrades)")

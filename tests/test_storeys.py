@@ -99,3 +99,90 @@ def test_set_back_tower_counts_the_storeys_above_its_podium():
 def test_storeys_above_eave():
     assert storeys_above_eave(2.5, 2.8, False) == 0 and storeys_above_eave(3.0, 2.8, True) == 1
     assert storeys_above_eave(6.0, 2.8, False) == 2 and storeys_above_eave(8.4, 2.8, True) == 1  # an attic, however high
+
+
+# --- one plan: the report's storeys are the IDF's storey zones, or a recorded downgrade says why
+
+def _storey_zones_of(path) -> int:
+    """Storey zones of an IDF: the most zones cut from one Building/BuildingPart (the zone
+    comments ``!- zone NAME: "ID_S2"`` / ``"ID_Attic"``; a zone named ``ID`` alone is one)."""
+    import json
+    import re
+    from collections import Counter
+    per: Counter = Counter()
+    for line in open(path, encoding="ascii"):
+        m = re.match(r'^!- zone [^:]*: (".*")\s*$', line)
+        if m:
+            oid = json.loads(m.group(1))
+            per[re.sub(r"_(S\d+|Attic)$", "", oid)] += 1
+    return max(per.values(), default=0)
+
+
+def _written(b, tmp_path, **opts):
+    """``(storeys fact, storey zones of its IDF, downgrade kinds)`` of ``b`` exported alone."""
+    from export_helpers import energy_ready, shifted
+    from lod2energy.exporters import energyplus
+    ready = energy_ready(shifted(b))
+    res = energyplus.writer.write([ready], tmp_path, energyplus.options.IdfOptions(**opts), crs="EPSG:28992")[0]
+    assert res.ok, res.problems
+    fact = ready.provenance["thermal"]["facts"]["storeys"]
+    kinds = {d["kind"] for d in res.stats.get("downgrades", {}).get(ready.id, ())}
+    assert res.stats["storeys"] == fact["value"]  # the IDF's record reads the same plan
+    return fact, _storey_zones_of(res.path), kinds
+
+
+def _agrees(fact, zones, kinds) -> bool:
+    return zones == fact["value"] or bool(kinds & {"whole_zone", "storeys_merged"})
+
+
+def test_three_storey_house_with_a_pitched_roof_is_three_storeys_and_an_attic(tmp_path):
+    fact, zones, kinds = _written(gabled_house(eaves=8.4, ridge=12.0, id="house"), tmp_path)
+    assert fact == {"value": 4, "source": "geometry"} and zones == 4 and not kinds
+
+
+def test_set_back_tower_report_storeys_are_its_zones(tmp_path):
+    from factories import stepped_tower
+    t = stepped_tower(sizes=(40.0, 28.0, 16.0), tops=(30.0, 75.0, 120.0))
+    fact, zones, kinds = _written(t, tmp_path)
+    assert fact["source"] == "geometry" and fact["value"] >= 38
+    assert _agrees(fact, zones, kinds)
+    a_fact, a_zones, a_kinds = _written(_with_attrs(t, storeysAboveGround=40), tmp_path / "attr")
+    assert a_fact["value"] == 40 and a_fact["source"] == "attribute"
+    assert _agrees(a_fact, a_zones, a_kinds)
+
+
+def test_9999_storeys_is_unknown_and_the_geometry_decides(tmp_path):
+    b = _with_attrs(box(dz=8.4), storeysAboveGround=9999)
+    fact, zones, kinds = _written(b, tmp_path)
+    assert fact == {"value": 3, "source": "geometry"} and zones == 3 and not kinds
+
+
+def test_a_dropped_storey_cut_is_a_recorded_downgrade(tmp_path, monkeypatch):
+    """A cut that cannot be made leaves a zone over two storeys: ``storeys_merged`` says so."""
+    from lod2energy.energy.zones import cut
+    real = cut.storey_cuts
+
+    def first_cut_dropped(*a, **k):
+        cuts, attic = real(*a, **k)
+        return cuts[1:], attic
+    monkeypatch.setattr(cut, "storey_cuts", first_cut_dropped)
+    fact, zones, kinds = _written(box(dz=8.4), tmp_path)
+    assert fact["value"] == 3 and zones == 2 and kinds == {"storeys_merged"}
+
+
+def test_building_storeys_are_its_tallest_part(tmp_path):
+    from export_helpers import parts_building
+    from factories import box_polygons
+    b = parts_building([box_polygons(30, 30, 5.6), box_polygons(10, 10, 14.0, (30, 0, 0))])
+    s = storeys(b)
+    assert s.count == 5 and sorted(p.count for p in s.parts) == [2, 5]
+    fact, zones, kinds = _written(b, tmp_path, wwr=0.0)
+    assert fact["value"] == 5 and zones == 5 and not kinds
+
+
+def test_typology_reads_the_plan():
+    from lod2energy.thermal.facts import Fact
+    from lod2energy.thermal.typology import classify
+    b = gabled_house(eaves=8.4, ridge=12.0)  # 3 storeys and an attic: 4, as report.json says
+    t = classify(b, ground_area=80.0, z_extent=12.0, storeys=Fact(4, "geometry"))
+    assert t.storeys == 4 and t.building_type == "multi-family" and t.sources["storeys"] == "geometry"

@@ -357,7 +357,8 @@ def test_plateau_tile_with_sentinels_reports_them_unknown(tmp_path, capsys):
     out = tmp_path / "out"
     assert main(["export", str(src), "-o", str(out), "--geojson", "-j", "1"]) in (0, 1)
     captured = capsys.readouterr()
-    assert "sentinel or implausible storeys" in captured.out and "sentinel or implausible year" in captured.out
+    assert (f"1 building(s): storeys: a sentinel or implausible value taken as unknown, e.g. {ids[0]}" in captured.err
+            and f"1 building(s): year: a sentinel or implausible value taken as unknown, e.g. {ids[1]}" in captured.err)
     rows = _csv(out / "report.csv")
     assert rows[ids[0]]["storeys_source"] in ("geometry", "default")
     assert rows[ids[1]]["year"] == "" and rows[ids[1]]["year_source"] == "default"

@@ -18,7 +18,7 @@ from lod2energy.geometry import signed_volume
 from lod2energy.geometry.polygons import polygon_area3d
 
 #: Kinds of downgrade, least change first.
-KINDS = ("cleared_zone", "separated_zone", "whole_zone", "party_walls_dropped", "2.5d", "lod1_block")
+KINDS = ("cleared_zone", "separated_zone", "storeys_merged", "whole_zone", "party_walls_dropped", "2.5d", "lod1_block")
 
 #: The kind of each fallback of :data:`lod2energy.energy.fallback.FALLBACKS` (by function name).
 FALLBACK_KIND = {"cleared_zone": "cleared_zone", "separated_zone": "separated_zone", "roof_zone": "2.5d",
@@ -36,6 +36,8 @@ class Downgrade:
         edge moved clear of it), ``separated_zone`` (touching sheets pulled apart), ``2.5d``
         (roof planes kept, walls vertical), ``lod1_block`` (the footprint extruded),
         ``whole_zone`` (one zone over several storeys: no storey cut gives enclosed zones),
+        ``storeys_merged`` (fewer storey zones than the building's storey plan: a dropped cut
+        leaves a zone over two storeys),
         ``party_walls_dropped`` (the zone's party walls written as outdoor walls).
     zone : str
         The zone (Building/BuildingPart id) it applies to.
@@ -113,6 +115,15 @@ def whole_zone(zone: ZoneShell, storey_height: float, upper_floor_area: float, r
     h, _, _ = zone_measures(zone)
     return Downgrade("whole_zone", zone.object_id, reason, _r(max(h - storey_height, 0.0)), 0.0,
                      _r(-upper_floor_area))
+
+
+def storeys_merged(zone: str, planned: int, written: int, d_height: float, d_floor_area: float) -> Downgrade:
+    """Zone ``zone`` cut into ``written`` storey zones where its plan has ``planned``: its
+    tallest zone ``d_height`` (m) higher than a storey, ``d_floor_area`` (m2) of storey floors
+    not written (the merged storeys' floor sections, an area the IDF does not carry)."""
+    return Downgrade("storeys_merged", zone, f"{written} storey zones for {planned} planned storeys: a storey "
+                     "cut would pass too close to a vertex, a horizontal surface or an opening, or would not close",
+                     _r(max(d_height, 0.0)), 0.0, _r(min(d_floor_area, 0.0)))
 
 
 def summed(downgrades) -> tuple[float, float, float]:

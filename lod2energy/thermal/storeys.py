@@ -1,4 +1,11 @@
-"""Number of storeys of a building: from its attributes, else estimated from its LoD2 geometry.
+"""The storey plan of a building: how many storeys, how high, where its eave and ground are.
+
+:func:`storeys` decides it once for every reader: the thermal stage records its count as the
+``storeys`` :class:`~lod2energy.thermal.facts.Fact` (report.json/csv, GeoJSON, the hand-offs),
+the typology classifies by that count, and the zoning (:mod:`lod2energy.energy.zones.storeys`)
+cuts each Building/BuildingPart into the storeys of its :class:`PartStoreys`. A zone whose
+written storeys differ from its part's plan is a recorded downgrade
+(:mod:`lod2energy.energy.downgrades`: ``whole_zone``, ``storeys_merged``).
 
 Order of the sources (the first that gives a count wins; :attr:`Storeys.source` says which):
 
@@ -18,7 +25,12 @@ Order of the sources (the first that gives a count wins; :attr:`Storeys.source` 
    the roof space when it is at least :data:`ATTIC_MIN_HEIGHT` high (``ridge - eave``), as
    a habitable attic counts as a storey (the 3DBAG ``b3_bouwlagen`` counts it too); storeys
    above the eave where the building rises more than a storey above it
-   (:func:`storeys_above_eave`: a tower on a podium, whose eave is the podium's roof).
+   (:func:`storeys_above_eave`: a tower on a podium, whose eave is the podium's roof). The
+   building's count is the largest of its Building/BuildingParts' (:func:`part_levels`, each
+   split by :func:`split_storeys`): a five-storey wing makes a five-storey building.
+
+A given count (table or attribute) is split over the parts too: the tallest part gets it
+(:func:`split_count`), the others their own storeys of the same height, at most the count.
 
 :data:`STOREY_HEIGHT` values are indicative floor-to-floor heights (clear height plus a
 0.3 m floor): residential 2.8 m (Dutch/German stock: 2.4-2.6 m clear), offices 3.5 m,
@@ -27,6 +39,7 @@ Measured on the shared 3DBAG tiles by ``benchmarks/bench_storeys.py``.
 """
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 
 import numpy as np
@@ -96,11 +109,73 @@ class Storeys:
     heights: tuple[float, ...] | None = None
     levels: RoofLevels | None = None
     key: str | None = None
+    #: The plan of each Building/BuildingPart with geometry (:class:`PartStoreys`).
+    parts: tuple["PartStoreys", ...] = ()
+
+    def part(self, object_id: str) -> "PartStoreys | None":
+        """The plan of the part a zone was made of (``object_id``, or ``ID_sK`` for a solid of
+        several), None when no part has that id."""
+        by_id = {p.object_id: p for p in self.parts}
+        if object_id in by_id:
+            return by_id[object_id]
+        base = re.sub(r"_s\d+$", "", object_id)
+        return by_id.get(base)
 
     @property
     def below_eave(self) -> int:
         """Storeys but the attic storey."""
         return max(1, self.count - (1 if self.attic else 0))
+
+
+@dataclass(frozen=True)
+class PartStoreys:
+    """The storeys of one Building/BuildingPart: what its zone is cut into.
+
+    Attributes
+    ----------
+    object_id : str
+    below : int
+        Storeys under the eave (at least 1).
+    attic : bool
+        The top storey is the pitched roof space.
+    above : int
+        Storeys above the eave, the attic included (:func:`storeys_above_eave`).
+    levels : RoofLevels
+    """
+
+    object_id: str
+    below: int
+    attic: bool
+    above: int
+    levels: RoofLevels
+
+    @property
+    def count(self) -> int:
+        return self.below + self.above
+
+
+def split_storeys(levels: RoofLevels, storey_height: float) -> tuple[int, bool, int]:
+    """``(below, attic, above)``: the storeys of a shell of ``levels`` with storeys of
+    ``storey_height`` (m): ``round((eave - ground) / h)`` under the eave, none lower than
+    :data:`MIN_STOREY_HEIGHT`; an attic when the pitched roof space is at least
+    :data:`ATTIC_MIN_HEIGHT` high; :func:`storeys_above_eave` above it. The one rule of the
+    estimate and of the zoning."""
+    span = levels.eave - levels.ground
+    n = max(1, int(round(span / storey_height))) if storey_height > 0 else 1
+    n = max(1, min(n, int(span / MIN_STOREY_HEIGHT)))
+    attic = levels.attic_height >= ATTIC_MIN_HEIGHT
+    return n, attic, storeys_above_eave(levels.ridge - levels.eave, storey_height, attic)
+
+
+def split_count(levels: RoofLevels, count: int, storey_height: float, attic: bool) -> tuple[int, bool, int]:
+    """``(below, attic, above)`` of a given ``count`` of storeys of ``storey_height`` (m):
+    the attic (when ``attic``) on top, the storeys under the eave as many as fit
+    (``round((eave - ground) / h)``, at most ``count`` less the attic), the rest above the eave."""
+    rest = max(1, count - (1 if attic else 0))
+    below = rest
+    if storey_height > 0:
+        below = max(1, min(rest, int(round((levels.eave - levels.ground) / storey_height))))
+    return below, attic and count >= 2, count - below
 
 
 def storeys_above_eave(span: float, storey_height: float, attic: bool) -> int:
@@ -139,23 +214,37 @@ def storeys_from_attributes(b: Building, amap: AttributeMap | None = None
     return (f.value, f.key, f.raw) if f is not None else (None, None, None)
 
 
-def _surfaces(b: Building, lod: str | None):
-    for _, _, g in b.envelope(lod):
+def _surfaces(b: Building, lod: str | None, object_id: str | None = None):
+    for o, _, g in b.envelope(lod):
+        if object_id is not None and o.id != object_id:
+            continue
         for _, hi, _, s in g.iter_surfaces():
             if hi > 0:
                 continue
             yield g.semantic_type(s), b.vertices[np.asarray(s.outer, dtype=np.intp)]
 
 
-def roof_levels(b: Building, lod: str | None = None) -> RoofLevels | None:
-    """Ground, eave and ridge heights of ``b`` from its labelled surfaces (None without geometry).
+def part_levels(b: Building, lod: str | None = None) -> dict[str, RoofLevels]:
+    """:func:`roof_levels` of each Building/BuildingPart of ``b``'s envelope, by object id."""
+    out = {}
+    for o, _, _ in b.envelope(lod):
+        if o.id not in out:
+            lv = roof_levels(b, lod, o.id)
+            if lv is not None:
+                out[o.id] = lv
+    return out
+
+
+def roof_levels(b: Building, lod: str | None = None, object_id: str | None = None) -> RoofLevels | None:
+    """Ground, eave and ridge heights of ``b`` (of its object ``object_id`` only, when given)
+    from its labelled surfaces (None without geometry).
 
     Faces without a semantic label count as roof when they face up (n_z > 0.1) and are not the
     lowest horizontal face.
     """
 
     ground_z, all_z, roofs = [], [], []
-    for kind, p in _surfaces(b, lod):
+    for kind, p in _surfaces(b, lod, object_id):
         if len(p) < 3 or not np.all(np.isfinite(p)):
             continue
         all_z.append(p[:, 2])
@@ -195,13 +284,37 @@ def eave_and_pitch(roofs: list[tuple[float, float, float, float]]) -> tuple[floa
     return eave, bool(len(above) and above[above[:, 3] >= FLAT_TILT, 2].sum() > 0.5 * above[:, 2].sum())
 
 
-def estimate_storeys(levels: RoofLevels, use: str = "residential") -> Storeys:
-    """Storeys from the geometry alone (see the module docstring)."""
+def estimate_storeys(levels: RoofLevels, use: str = "residential",
+                     parts: dict[str, RoofLevels] | None = None) -> Storeys:
+    """Storeys from the geometry alone (see the module docstring): the largest count of the
+    ``parts`` (:func:`part_levels`), else of the building's ``levels``."""
     h = STOREY_HEIGHT.get(use, STOREY_HEIGHT["other"])
-    below = max(1, int(round((levels.eave - levels.ground) / h)))
-    attic = levels.attic_height >= ATTIC_MIN_HEIGHT
-    above = storeys_above_eave(levels.ridge - levels.eave, h, attic)
+    plans = tuple(PartStoreys(k, *split_storeys(lv, h), lv) for k, lv in (parts or {}).items())
+    if plans:
+        top = max(plans, key=lambda p: p.count)
+        return Storeys(top.count, "geometry", h, top.attic, None, levels, None, plans)
+    below, attic, above = split_storeys(levels, h)
     return Storeys(below + above, "geometry", h, attic, None, levels)
+
+
+def _given_parts(parts: dict[str, RoofLevels], n: int, h: float, attic: bool) -> tuple[PartStoreys, ...]:
+    """The parts' plans for a given count ``n`` of storeys ``h`` high: the tallest part (by its
+    ridge) has the ``n`` storeys, each other its own, at most ``n``."""
+    if not parts:
+        return ()
+    tallest = max(parts, key=lambda k: (parts[k].ridge, k))
+    out = []
+    for k, lv in parts.items():
+        if k == tallest:
+            out.append(PartStoreys(k, *split_count(lv, n, h, attic and lv.attic_height >= ATTIC_MIN_HEIGHT), lv))
+            continue
+        below, a, above = split_storeys(lv, h)
+        while below + above > n and above > 0:
+            above -= 1
+            a = a and above > 0
+        below = min(below, n - above)
+        out.append(PartStoreys(k, below, a, above, lv))
+    return tuple(out)
 
 
 def storeys(b: Building, use: str = "residential", lod: str | None = None,
@@ -228,6 +341,7 @@ def storeys(b: Building, use: str = "residential", lod: str | None = None,
         ``(field, text)`` appended for each count taken as unknown.
     """
     levels = roof_levels(b, lod)
+    parts = part_levels(b, lod) if levels is not None else {}
     cands: list[Fact] = []
     if use_attributes:
         known = ((b.provenance.get("thermal") or {}).get("facts") or {}).get("storeys")
@@ -255,7 +369,7 @@ def storeys(b: Building, use: str = "residential", lod: str | None = None,
                 continue
         else:
             h = STOREY_HEIGHT.get(use, 3.0)
-        return Storeys(n, f.source, float(h), attic, heights, levels, f.key)
+        return Storeys(n, f.source, float(h), attic, heights, levels, f.key, _given_parts(parts, n, float(h), attic))
     if levels is None:
         return Storeys(1, "default", STOREY_HEIGHT.get(use, 3.0), False)
-    return estimate_storeys(levels, use)
+    return estimate_storeys(levels, use, parts)

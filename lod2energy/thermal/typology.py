@@ -10,9 +10,10 @@ the ``auto`` profile); the ``--buildings`` row wins over them (:mod:`lod2energy.
   are unknown); unknown -> ``None`` and the table lookup uses :data:`DEFAULT_YEAR` (1970: the
   middle of the European residential stock's age distribution); the construction period is
   then reported with the suffix ``" (assumed)"``.
-- **storeys**: the row's or the attributes' count (as checked by
-  :func:`lod2energy.thermal.storeys.storeys`); else height / 3 m (height from the map's
-  ``height`` keys, else the geometry's vertical extent), at least 1.
+- **storeys**: the building's storey plan (:func:`lod2energy.thermal.storeys.storeys`: the
+  row's or the attributes' count, else the geometry's), the count report.json gives and the
+  zoning cuts; without one (no geometry) height / 3 m (height from the map's ``height`` keys,
+  else the geometry's vertical extent), at least 1.
 - **footprint**: area of the GroundSurfaces of the energy geometries; else the map's
   ``footprint`` (``b3_opp_grond``).
 - **attached**: a shared-wall area attribute (the map's ``shared_wall``, > 1 m2).
@@ -121,7 +122,7 @@ def classify(b: Building, country: str | None = None, ground_area: float | None 
         Default: the ``auto`` profile.
     year, storeys : Fact, optional
         Already resolved (:mod:`lod2energy.thermal.facts`); default: read here. A ``storeys``
-        fact from the geometry or the default is not used (height / 3 m is).
+        fact of the default (no geometry, no attribute) is not used (height / 3 m is).
     function : str, optional
         The use attribute's value, recorded.
     """
@@ -142,7 +143,7 @@ def classify(b: Building, country: str | None = None, ground_area: float | None 
     src["height"] = k
     if storeys is None:
         storeys = next(iter(storeys_candidates(b, amap)), None)
-    if storeys is not None and storeys.source not in ("geometry", "default"):
+    if storeys is not None and storeys.source != "default":
         st, k = float(storeys.value), storeys.key or storeys.source
     else:
         st, k = max(1.0, round(height / STOREY_HEIGHT)), "height"

@@ -41,7 +41,7 @@ from lod2energy.viz import figures as F
 from lod2energy.viz import render as R
 from lod2energy.viz.footprints import (MAX_PANEL_FACES, FootprintSpill, drawable, n_faces,
                                        plan_footprint)
-from lod2energy.viz.warnings import study_warnings
+from lod2energy.viz.warnings import WarningTally, study_warnings
 
 #: Default panel cap (see the module docstring).
 DEFAULT_CAP = 16
@@ -82,7 +82,7 @@ class PageRows:
         self._worst: dict[int, list[D.Row]] = {}  # severity -> the first ``cap`` deserving rows
         self._deserving = 0
         self.keys, self.status, self.heat = array("q"), array("B"), array("d")
-        self.warnings: dict[str, list] = {}  # kind -> [buildings, the first one's id]
+        self.warnings = WarningTally()
         for r in rs:
             self.add(r)
 
@@ -103,16 +103,11 @@ class PageRows:
         self.keys.append(id_key(r.id))
         self.status.append(D.STATUSES.index(r.status))
         self.heat.append(np.nan if r.heating_kwh_m2 is None else r.heating_kwh_m2)
-        for k in r.warnings:
-            self.warnings.setdefault(k, [0, r.id])[0] += 1
+        self.warnings.add(r.id, r.warnings)
 
     def warning_table(self, study: dict | None = None) -> list[dict]:
-        """The warnings by kind, the most frequent first: ``[{"kind", "count", "example"}]``
-        (``example``: the first building of that kind, None for the study's own, ``study``:
-        :func:`lod2energy.viz.warnings.study_warnings`)."""
-        rows = [{"kind": k, "count": v[0], "example": v[1]} for k, v in self.warnings.items()]
-        rows += [{"kind": k, "count": n, "example": None} for k, n in (study or {}).items()]
-        return sorted(rows, key=lambda w: (-w["count"], w["kind"]))
+        """The warnings by kind (:meth:`lod2energy.viz.warnings.WarningTally.table`)."""
+        return self.warnings.table(study)
 
     @property
     def large(self) -> bool:

@@ -5,11 +5,13 @@ implausible value taken as unknown (``thermal.warnings``, by field), an energy m
 than its shell (``energy_downgrades``, by kind), a weather station farther than
 :data:`lod2energy.site.MAX_WEATHER_KM`, an export not written or failing its self-check (by
 format), a job past its time budget. The study's own (``study``: ``--buildings`` ids not in the
-input) are :func:`study_warnings`.
+input) are :func:`study_warnings`. :class:`WarningTally` groups them by kind, for report.html's
+"Warnings by kind" table and for the lines ``lod2energy export`` prints at its end
+(:func:`warning_lines`).
 """
 from __future__ import annotations
 
-from typing import Mapping
+from typing import Iterable, Mapping
 
 from lod2energy.site import MAX_WEATHER_KM
 
@@ -39,3 +41,41 @@ def study_warnings(report: Mapping) -> dict[str, int]:
     study = report.get("study") or {}
     missing = study.get("buildings_table_not_in_input") or ()
     return {"--buildings ids not in the input": len(missing)} if missing else {}
+
+
+class WarningTally:
+    """Warnings grouped by kind over the buildings of a run: per kind, how many buildings have
+    it and the first of them (its id). Fed one building at a time (:meth:`add`)."""
+
+    def __init__(self):
+        self._kinds: dict[str, list] = {}  # kind -> [buildings, the first one's id]
+
+    def add(self, bid: str, kinds: Iterable[str]) -> None:
+        """Count building ``bid`` once for each of its ``kinds`` (:func:`warning_kinds`)."""
+        for k in kinds:
+            self._kinds.setdefault(k, [0, bid])[0] += 1
+
+    def add_entry(self, entry: Mapping) -> None:
+        """Count a building of report.json (an entry of its ``buildings``)."""
+        self.add(str(entry.get("id")), warning_kinds(entry))
+
+    def table(self, study: Mapping[str, int] | None = None) -> list[dict]:
+        """The warnings by kind, the most frequent first: ``[{"kind", "count", "example"}]``
+        (``example``: the first building of that kind, None for the study's own, ``study``:
+        :func:`study_warnings`)."""
+        rows = [{"kind": k, "count": v[0], "example": v[1]} for k, v in self._kinds.items()]
+        rows += [{"kind": k, "count": n, "example": None} for k, n in (study or {}).items()]
+        return sorted(rows, key=lambda w: (-w["count"], w["kind"]))
+
+
+def warning_lines(table: Iterable[Mapping]) -> list[str]:
+    """The console's lines of a :meth:`WarningTally.table`: one per kind, with its count and an
+    example building (``"3 building(s): energy model downgraded (whole_zone), e.g. b1"``);
+    none when there is no warning."""
+    out = []
+    for w in table:
+        if w.get("example") is None:
+            out.append(f"{w['count']}: {w['kind']}")
+        else:
+            out.append(f"{w['count']} building(s): {w['kind']}, e.g. {w['example']}")
+    return out

@@ -350,12 +350,20 @@ def split_storeys(polygons: Sequence[tuple[np.ndarray, Any]], cuts: Sequence[flo
     return out
 
 
-def zone_levels(polygons: Sequence[tuple[np.ndarray, str]]) -> tuple[float, float, float, bool]:
+def zone_levels(polygons: Sequence[tuple[np.ndarray, str]], faces: Sequence[int] | None = None
+                ) -> tuple[float, float, float, bool]:
     """``(ground, eave, ridge, pitched)`` (m) of a zone from its polygons tagged by kind
-    ("roof", "wall", "ground", "floor"): as :func:`lod2energy.thermal.storeys.roof_levels`."""
+    ("roof", "wall", "ground", "floor"): as :func:`lod2energy.thermal.storeys.roof_levels`.
+    ``faces``: the face each polygon is a piece of (>= 0), whose lowest point is each piece's
+    eave, so that a roof face written as several convex pieces has the eave of the face."""
     allz = np.concatenate([p[:, 2] for p, _ in polygons])
+    low: dict[int, float] = {}
+    if faces is not None:
+        for (p, kind), f in zip(polygons, faces):
+            if kind == "roof" and f >= 0:
+                low[f] = min(low.get(f, math.inf), float(p[:, 2].min()))
     roofs = []
-    for p, kind in polygons:
+    for i, (p, kind) in enumerate(polygons):
         if kind != "roof":
             continue
         n = _cross_sum(p) / 2
@@ -363,7 +371,8 @@ def zone_levels(polygons: Sequence[tuple[np.ndarray, str]]) -> tuple[float, floa
         if a <= 1e-9:
             continue
         nz = float(n[2]) / a
-        roofs.append((float(p[:, 2].min()), float(p[:, 2].max()), a * max(nz, 0.0),
+        f = faces[i] if faces is not None else -1
+        roofs.append((low.get(f, float(p[:, 2].min())), float(p[:, 2].max()), a * max(nz, 0.0),
                       float(np.degrees(np.arccos(np.clip(nz, -1, 1))))))
     ground = float(allz.min())
     if not roofs:

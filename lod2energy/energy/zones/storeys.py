@@ -16,9 +16,9 @@ from lod2energy.energy.openings import Opening
 from lod2energy.energy.pieces import Piece, _pieces_from_points
 from lod2energy.energy.zones import cut as zoning
 from lod2energy.energy.zones.shells import ZoneShell
-from lod2energy.geometry.polygons import newell_normal, unit
+from lod2energy.geometry.polygons import newell_normal, polygon_area3d, unit
 from lod2energy.validate.closed import check_closed_outward
-from lod2energy.thermal.storeys import ATTIC_MIN_HEIGHT, MIN_STOREY_HEIGHT, storeys, storeys_above_eave
+from lod2energy.thermal.storeys import PartStoreys, RoofLevels, split_storeys, storeys
 from lod2energy.thermal.facts import is_conditioned
 from lod2energy.thermal.use import recorded_use
 
@@ -81,16 +81,21 @@ class ZoneInfo:
     upper_floor_area: float = 0.0
 
 
-def _storey_plan(pieces: list[Piece], storey_height: float) -> tuple[float, float, float, int, bool, int]:
+def _storey_plan(pieces: list[Piece], storey_height: float, part: PartStoreys | None = None
+                 ) -> tuple[float, float, float, int, bool, int]:
     """``(ground, eave, ridge, storeys below the eave, attic, storeys above the eave)`` of a
     zone's pieces (m): the storeys :func:`storey_zones` cuts it into and the ones
-    :func:`upper_floor_area` counts. Counted from the zone's own levels and the building's
-    storey height, so that a BuildingPart taller than the building's eave gets its storeys."""
-    ground, eave, ridge, pitched = zoning.zone_levels([(p.points, p.kind) for p in pieces])
-    n = max(1, int(round((eave - ground) / storey_height))) if storey_height > 0 else 1
-    n = max(1, min(n, int((eave - ground) / MIN_STOREY_HEIGHT)))
-    attic = pitched and ridge - eave >= ATTIC_MIN_HEIGHT
-    return ground, eave, ridge, n, attic, storeys_above_eave(ridge - eave, storey_height, attic)
+    :func:`upper_floor_area` counts. The counts are the building's plan for the zone's part
+    (``part``, :class:`lod2energy.thermal.storeys.PartStoreys`) when given, else split from the
+    zone's own levels as the plan splits a part (:func:`lod2energy.thermal.storeys.split_storeys`);
+    the levels are the zone's own, each roof face's eave taken from the whole face (not from the
+    convex pieces it is written as)."""
+    ground, eave, ridge, pitched = zoning.zone_levels([(p.points, p.kind) for p in pieces],
+                                                      [p.face_index for p in pieces])
+    if part is not None:
+        return ground, eave, ridge, part.below, part.attic, part.above
+    n, attic, above = split_storeys(RoofLevels(ground, eave, ridge, pitched), storey_height)
+    return ground, eave, ridge, n, attic, above
 
 
 def _levels(ground: float, eave: float, ridge: float, n: int, attic: bool, above: int) -> list[float]:
@@ -100,7 +105,8 @@ def _levels(ground: float, eave: float, ridge: float, n: int, attic: bool, above
     return levels + [eave + k * (ridge - eave) / above for k in range(above)]
 
 
-def upper_floor_area(pieces: list[Piece], storey_height: float, attic_mode: str) -> float:
+def upper_floor_area(pieces: list[Piece], storey_height: float, attic_mode: str,
+                     part: PartStoreys | None = None) -> float:
     """Gross floor area (m2) of the storeys above the lowest of a zone kept whole.
 
     A zone that spans ``n`` storeys (counted as :func:`storey_zones` counts them: the storeys
@@ -121,6 +127,8 @@ def upper_floor_area(pieces: list[Piece], storey_height: float, attic_mode: str)
     storey_height : float, m
         The building's (:attr:`lod2energy.thermal.storeys.Storeys.storey_height`).
     attic_mode : {"unconditioned", "conditioned"}
+    part : PartStoreys, optional
+        The building's plan for the zone's part (:func:`_storey_plan`).
 
     Returns
     -------
@@ -129,7 +137,7 @@ def upper_floor_area(pieces: list[Piece], storey_height: float, attic_mode: str)
     """
     if not pieces:
         return 0.0
-    ground, eave, ridge, n, attic, above = _storey_plan(pieces, storey_height)
+    ground, eave, ridge, n, attic, above = _storey_plan(pieces, storey_height, part)
     levels = _levels(ground, eave, ridge, n, attic, above)
     if attic and attic_mode != "conditioned":
         levels = levels[:-1]
@@ -138,7 +146,8 @@ def upper_floor_area(pieces: list[Piece], storey_height: float, attic_mode: str)
 
 
 def storey_zones(zone: ZoneShell, zi: int, pieces: list[Piece], storey_height: float,
-                 attic_mode: str, openings: Sequence[Opening] = ()) -> tuple[list[tuple[ZoneShell, list[Piece], bool]], str | None]:
+                 attic_mode: str, openings: Sequence[Opening] = (), part: PartStoreys | None = None
+                 ) -> tuple[list[tuple[ZoneShell, list[Piece], bool]], str | None]:
     """One zone per storey of a zone's written pieces (:func:`lod2energy.energy.zones.cut.split_storeys`).
 
     Parameters
@@ -154,11 +163,14 @@ def storey_zones(zone: ZoneShell, zi: int, pieces: list[Piece], storey_height: f
     attic_mode : {"unconditioned", "conditioned"}
     openings : sequence of Opening
         The zone's real windows and doors: no storey cut passes through one.
+    part : PartStoreys, optional
+        The building's plan for the zone's part: its storeys are cut (:func:`_storey_plan`).
 
     Returns
     -------
     zones : list of (ZoneShell, pieces, attic)
         The storey zones, lowest first; ``[(zone, pieces, False)]`` when it stays one zone.
+        Fewer than planned where a cut was dropped (:func:`planned_storeys` tells).
     note : str or None
         Why it stayed one zone (a cut that would not close, a storey EnergyPlus would find not
         enclosed), when it did.
@@ -166,7 +178,7 @@ def storey_zones(zone: ZoneShell, zi: int, pieces: list[Piece], storey_height: f
     single = [(zone, pieces, False)]
     if not pieces:
         return single, None
-    ground, eave, ridge, n, attic, above = _storey_plan(pieces, storey_height)
+    ground, eave, ridge, n, attic, above = _storey_plan(pieces, storey_height, part)
     allz = np.concatenate([p.points[:, 2] for p in pieces])
     horiz = [float(p.points[0, 2]) for p in pieces if np.ptp(p.points[:, 2]) <= 1e-6]
     spans = [(float(o.points[:, 2].min()), float(o.points[:, 2].max())) for o in openings]
@@ -174,7 +186,10 @@ def storey_zones(zone: ZoneShell, zi: int, pieces: list[Piece], storey_height: f
     if not cuts:
         return single, None
     note = None
-    for cs, with_attic in zoning.cut_variants(cuts, attic, allz, horiz):
+    variants = zoning.cut_variants(cuts, attic, allz, horiz)
+    if len(cuts) > 1:  # then one cut fewer: a zone over two storeys (recorded) rather than one zone
+        variants += [(cuts[:i] + cuts[i + 1:], attic and i < len(cuts) - 1) for i in range(len(cuts) - 1, -1, -1)]
+    for cs, with_attic in variants:
         slabs = zoning.split_storeys([(p.points, p) for p in pieces], cs, _pieces_from_points, with_attic)
         if slabs is None:
             note = f"zone {zone.object_id}: kept as one zone (no storey section closes)"
@@ -198,10 +213,30 @@ def storey_zones(zone: ZoneShell, zi: int, pieces: list[Piece], storey_height: f
     return single, note
 
 
+def planned_storeys(pieces: list[Piece], storey_height: float, part: PartStoreys | None = None) -> int:
+    """Storeys (zones) the plan gives a zone of ``pieces`` (:func:`_storey_plan`), the attic included."""
+    if not pieces:
+        return 1
+    _, _, _, n, _, above = _storey_plan(pieces, storey_height, part)
+    return n + above
+
+
+def _merged(zone: ZoneShell, written: list, pieces: list[Piece], storey_height: float, planned: int,
+            part: PartStoreys | None) -> dg.Downgrade:
+    """The ``storeys_merged`` downgrade of a zone cut into fewer storey zones than planned."""
+    upper = upper_floor_area(pieces, storey_height, "conditioned", part)
+    floors = sum(polygon_area3d(p.points) for _, zp, _ in written for p in zp
+                 if p.kind == "floor" and p.boundary == "Surface")
+    tallest = max(float(np.ptp(np.concatenate([p.points[:, 2] for p in zp]))) for _, zp, _ in written)
+    return dg.storeys_merged(zone.object_id, planned, len(written), tallest - storey_height, floors - upper)
+
+
 def _written_zones(blist, zones, zones_of, pieces, options, openings):
     """Per building: the zones to write ``[(ZoneShell, pieces, ZoneInfo, source zone index)]``, notes,
     stats and downgrades (zones kept whole where storey zoning was asked for,
-    :func:`lod2energy.energy.downgrades.whole_zone`)."""
+    :func:`lod2energy.energy.downgrades.whole_zone`; storey cuts dropped,
+    :func:`lod2energy.energy.downgrades.storeys_merged`). Each zone is cut into the storeys of
+    its part in the building's one plan (:func:`lod2energy.thermal.storeys.storeys`)."""
     written_of, notes, bstats, downgrades = {}, {}, {}, {}
     for bi, b in enumerate(blist):
         use = recorded_use(b, options.use)
@@ -211,17 +246,26 @@ def _written_zones(blist, zones, zones_of, pieces, options, openings):
         downgrades[bi] = []
         out = []
         for zi in zones_of[bi]:
+            part = st.part(zones[zi].object_id)
+            if part is None and len(zones_of[bi]) == 1 and st.parts:
+                part = max(st.parts, key=lambda p: p.count)  # the building as one zone (merged parts)
+            note = None
             if options.zoning == "storey":
                 sz, note = storey_zones(zones[zi], zi, pieces[zi], st.storey_height, options.attic,
-                                        openings.get(zi, ()))
+                                        openings.get(zi, ()), part)
                 if note:
                     notes[bi].append(note)
             else:
                 sz = [(zones[zi], pieces[zi], False)]
-            upper = (upper_floor_area(pieces[zi], st.storey_height, options.attic)
+            upper = (upper_floor_area(pieces[zi], st.storey_height, options.attic, part)
                      if len(sz) == 1 else 0.0)
-            if options.zoning == "storey" and note:
-                downgrades[bi].append(dg.whole_zone(zones[zi], st.storey_height, upper, note))
+            if options.zoning == "storey":
+                planned = planned_storeys(pieces[zi], st.storey_height, part)
+                if len(sz) == 1 and planned > 1:
+                    downgrades[bi].append(dg.whole_zone(zones[zi], st.storey_height, upper, note or (
+                        f"zone {zones[zi].object_id}: kept as one zone (no storey cut clears its vertices)")))
+                elif len(sz) < planned:
+                    downgrades[bi].append(_merged(zones[zi], sz, pieces[zi], st.storey_height, planned, part))
             for k, (z, zp, attic) in enumerate(sz):
                 info = ZoneInfo(b.id, (k + 1 if not attic else None) if len(sz) > 1 else None, attic,
                                 (not attic or options.attic == "conditioned") and heated, use.type, upper)
