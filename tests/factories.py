@@ -223,6 +223,21 @@ def cantilever(dx: float = 10.0, depth: float = 8.0, reach: float = 4.0, storey:
     return building_from_polygons(polys, "Solid", sem, id=id)
 
 
+def millimetre_vertices():
+    """``(verts, vid)``: a CityJSON vertex list in mm (scale 0.001) and ``vid(point in m)``, which
+    gives the point's index, appending it the first time it is seen."""
+    verts: list[list[int]] = []
+    index: dict[tuple, int] = {}
+
+    def vid(p):
+        k = tuple(round(c * 1000) for c in p)
+        if k not in index:
+            index[k] = len(verts)
+            verts.append(list(k))
+        return index[k]
+    return verts, vid
+
+
 #: Every this many parts, one reaches 5 cm into its eastern neighbour (a 601 overlap to clip).
 OVERLAP_EVERY = 3
 #: In an ``open`` block, every this many parts has no ground face.
@@ -245,15 +260,7 @@ def terraced_block(n: int, kind: str = "solid", width: float = 6.0, depth: float
         Footprint of a part (x, y).
     """
     cols = max(1, int(np.ceil(np.sqrt(n))))
-    verts: list[list[int]] = []
-    index: dict[tuple, int] = {}
-
-    def vid(p):
-        k = tuple(round(c * 1000) for c in p)
-        if k not in index:
-            index[k] = len(verts)
-            verts.append(list(k))
-        return index[k]
+    verts, vid = millimetre_vertices()
 
     cos: dict = {"blk": {"type": "Building", "children": []}}
     for k in range(n):

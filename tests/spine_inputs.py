@@ -5,6 +5,7 @@ import json
 from pathlib import Path
 
 from cityjson_docs import BOX_FACES, BOX_SEMANTICS
+from factories import millimetre_vertices
 
 
 def _box_object(i: int, x0: float, y0: float, dx: float = 10.0, dy: float = 8.0, dz: float = 6.0,
@@ -37,15 +38,7 @@ def row_of_boxes_seq(path: Path, n: int = 6, touching: bool = True, extra_lines:
 def huge_building_line(n: int = 129, id: str = "huge") -> str:
     """A CityJSONFeature line: a 10 m box tessellated into ``6 n^2`` quads (n=129: ~100,000
     faces), one quad missing (an open shell, so the repair has work to do)."""
-    index: dict[tuple, int] = {}
-    verts: list[list[int]] = []
-
-    def vid(p):
-        k = tuple(round(c * 1000) for c in p)
-        if k not in index:
-            index[k] = len(verts)
-            verts.append(list(k))
-        return index[k]
+    verts, vid = millimetre_vertices()
 
     L = 10.0
     faces = []

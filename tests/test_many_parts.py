@@ -16,7 +16,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 import trimesh
-from factories import terraced_block
+from factories import millimetre_vertices, terraced_block
 
 from lod2energy.cli import main
 from lod2energy.exporters.stl.writer import read_stl
@@ -36,16 +36,8 @@ def many_parts(n: int = 10, size: float = 6.0, solid: bool = False) -> tuple[dic
     solid : bool
         Each part a Solid, else a MultiSurface.
     """
-    verts: list[list[int]] = []
-    index: dict[tuple, int] = {}
+    verts, vid = millimetre_vertices()
     volume = 0.0
-
-    def vid(p):
-        k = tuple(round(c * 1000) for c in p)
-        if k not in index:
-            index[k] = len(verts)
-            verts.append(list(k))
-        return index[k]
 
     cos: dict = {"blk": {"type": "Building", "children": []}}
 
