@@ -280,12 +280,18 @@ class ExportRecord:
         """Not ok by the writer's design (:data:`LEFT_OUT`, :data:`NOT_COMPLIANT`), not by a failure."""
         return not self.ok and bool(self.problems) and self.problems[0].startswith((LEFT_OUT, NOT_COMPLIANT))
 
+    @property
+    def failed_check(self) -> bool:
+        """Not ok because the file it wrote failed its self-check (not: no file, or refused)."""
+        head = f"{self.format.upper()} NOT WRITTEN"
+        return not self.ok and bool(self.path) and not (self.problems and self.problems[0].upper().startswith(head))
+
     def message(self, bid: str) -> str:
         """The user's line for an export of building ``bid`` that is not ok: a written file that
         failed its self-check, or an export that wrote no file (and why)."""
         fmt = self.format.upper()
         head = f"{fmt} NOT WRITTEN"
-        if self.path and not (self.problems and self.problems[0].upper().startswith(head)):
+        if self.failed_check:
             return f"{fmt} export {self.path} failed its self-check: {'; '.join(self.problems[:3])}"
         why = [q[len(head) + 2:] if q.upper().startswith(head + ": ") else q for q in self.problems[:3]]
         return f"{fmt} export {bid} not written: {'; '.join(why) or 'no file'}"

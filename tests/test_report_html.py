@@ -355,7 +355,8 @@ def _expected_warnings(rep) -> dict:
         n.update(f"energy model downgraded ({d['kind']})" for d in b.get("energy_downgrades") or ())
         if any((e.get("weather") or {}).get("distance_km", 0) > 50 for e in b["exports"].values()):
             n["weather station more than 50 km away"] += 1
-        n.update(f"{f}: not written or failed its self-check" for f, e in b["exports"].items() if not e["ok"])
+        n.update(f"{f}: not written" for f, e in b["exports"].items() if not e["ok"] and not e["path"])
+        n.update(f"{f}: failed its self-check" for f, e in b["exports"].items() if not e["ok"] and e["path"])
     n["--buildings ids not in the input"] = len(rep["study"]["buildings_table_not_in_input"])
     return dict(n)
 

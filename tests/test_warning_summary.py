@@ -96,3 +96,18 @@ def test_the_console_and_the_page_group_alike():
     assert warning_lines(table) == ["3: --buildings ids not in the input", "2 building(s): year: x, e.g. a",
                                     "1 building(s): energy model downgraded (whole_zone), e.g. a"]
     assert warning_lines(WarningTally().table()) == []
+
+
+@pytest.mark.parametrize("entry, kind", [
+    ({"ok": False, "path": "", "problems": ["IDF not written: timeout: not finished within 3 s"]}, "not written"),
+    ({"ok": False, "path": "a.idf", "problems": ["IDF not written: the energy model failed"]}, "not written"),
+    ({"ok": False, "path": "a.idf", "problems": ["1 severe: zone not enclosed"]}, "failed its self-check"),
+    ({"ok": False, "path": "x.city.json", "problems": ["in the file, not energy-compliant: a sliver"]},
+     "left out (not energy-compliant)"),
+], ids=["timeout", "no-file", "self-check", "refused"])
+def test_an_export_not_ok_is_counted_by_why(entry, kind):
+    """A timeout is not reported as a failed self-check (the user reads why no file was written)."""
+    fmt = "cityjson" if "city.json" in entry["path"] else "idf"
+    tally = WarningTally()
+    tally.add_entry({"id": "a", "exports": {fmt: entry}})
+    assert [w["kind"] for w in tally.table()] == [f"{fmt}: {kind}"]

@@ -3,8 +3,8 @@
 A building's kinds (:func:`warning_kinds`), each counted once per building: a sentinel or
 implausible value taken as unknown (``thermal.warnings``, by field), an energy model simpler
 than its shell (``energy_downgrades``, by kind), a weather station farther than
-:data:`lod2energy.site.MAX_WEATHER_KM`, an export not written or failing its self-check (by
-format), a job past its time budget. The study's own (``study``: ``--buildings`` ids not in the
+:data:`lod2energy.site.MAX_WEATHER_KM`, an export not written, refused or failing its
+self-check (by format, :func:`export_trouble`), a job past its time budget. The study's own (``study``: ``--buildings`` ids not in the
 input) are :func:`study_warnings`. :class:`WarningTally` groups them by kind, for report.html's
 "Warnings by kind" table and for the lines ``lod2energy export`` prints at its end
 (:func:`warning_lines`).
@@ -13,6 +13,7 @@ from __future__ import annotations
 
 from typing import Iterable, Mapping
 
+from lod2energy.records import ExportRecord
 from lod2energy.site import MAX_WEATHER_KM
 
 
@@ -30,10 +31,20 @@ def warning_kinds(b: Mapping) -> tuple[str, ...]:
         if d is not None and d > MAX_WEATHER_KM:
             kinds.append(f"weather station more than {MAX_WEATHER_KM:.0f} km away")
         if e.get("ok") is False:
-            kinds.append(f"{fmt}: not written or failed its self-check")
+            kinds.append(f"{fmt}: {export_trouble(fmt, e)}")
     if b.get("outcome") == "timeout":
         kinds.append("job stopped at its time budget (timeout)")
     return tuple(dict.fromkeys(kinds))
+
+
+def export_trouble(fmt: str, e: Mapping) -> str:
+    """Why export ``e`` (a building's ``exports[fmt]`` in report.json, not ok) is not ok, as a
+    kind: its file failed the writer's self-check, the writer refused the building (not
+    energy-compliant, left out), or no file was written (a timeout, an error)."""
+    rec = ExportRecord(fmt, False, str(e.get("path") or ""), tuple(e.get("problems") or ()))
+    if rec.refused:
+        return "left out (not energy-compliant)"
+    return "failed its self-check" if rec.failed_check else "not written"
 
 
 def study_warnings(report: Mapping) -> dict[str, int]:
