@@ -20,6 +20,7 @@ from lod2energy.repair import cleanup as cleanup_mod
 from lod2energy.repair import pipeline
 from lod2energy.repair.cleanup import clean_ring, snap_vertices, split_t_junctions
 from lod2energy.repair.convert import mesh_of_geometry
+from lod2energy.repair.orientation import orient
 from lod2energy.repair.verdict import targets
 
 from conftest import shared_path
@@ -174,3 +175,31 @@ def test_the_alpha_search_past_the_deadline_fits_in_the_jobs_budget(monkeypatch)
     stage, _, _ = pipeline.global_stages(t_junction_box(), "2", DEFAULT, now - 1.0, [], grace=3.0)
     assert len(seen) == 1 and seen[0] <= time.monotonic() + 3.0
     assert stage in ("footprint", "hull")
+
+
+def test_the_input_is_cleaned_once_for_the_ladder_and_the_fidelity_envelope(monkeypatch):
+    # internal_wall: non-manifold input, repaired by refill or a global stage, then measured
+    # against its envelope (the ladder's hole-filled input): one clean-up of the input, not two
+    from lod2energy import cache
+    from test_repair import internal_wall
+    b = internal_wall()
+    m = mesh_of_geometry(b.vertices, b.objects[0].geometries[0])
+    cleaned, closed = [], []
+    real_cleanup, real_close = pipeline.cleanup, pipeline.close
+
+    def counting_cleanup(x, tol):
+        cleaned.append(np.array_equal(x.vertices, m.vertices) and x.faces == m.faces)
+        return real_cleanup(x, tol)
+
+    def counting_close(x, tol):
+        closed.append(x)
+        return real_close(x, tol)
+    counting_cleanup.__name__, counting_close.__name__ = "cleanup", "close"
+    monkeypatch.setattr(pipeline, "cleanup", counting_cleanup)
+    monkeypatch.setattr(pipeline, "close", counting_close)
+    cache.clear("repair.ladder-steps")
+    r = pipeline.repair_building(b, timeout=600).provenance["repair"]
+    assert r["geometries"][0]["stage"] in ("refill", "alphashape") and r["geometries"][0]["iou"] is not None
+    assert cleaned.count(True) == 1
+    m1 = orient(real_cleanup(m, DEFAULT))  # the ladder's oriented clean-up: filled once, reused
+    assert sum(np.array_equal(x.vertices, m1.vertices) and x.faces == m1.faces for x in closed) == 1
