@@ -68,7 +68,7 @@ def test_thin_inputs_and_concave_closed_inputs_are_not_hollow():
 
 def test_a_hollow_ladder_result_escalates_up_the_ladder(monkeypatch):
     b = building_from_polygons(skin(), "MultiSurface", id="skin")
-    monkeypatch.setattr(pipeline, "ladder", lambda m, lod, tol, deadline, **_: ("refill", cup(), ["refill: ok"]))
+    monkeypatch.setattr(pipeline, "ladder", lambda m, lod, tol, deadline: ("refill", cup(), ["refill: ok"]))
     rb = repair_building(b, timeout=20)
     r = rb.provenance["repair"]
     (g,) = [g for o in rb.objects for g in o.geometries]
@@ -82,6 +82,6 @@ def test_a_hollow_ladder_result_escalates_up_the_ladder(monkeypatch):
 def test_a_result_that_is_not_hollow_is_kept(monkeypatch):
     b = building_from_polygons(skin(), "MultiSurface", id="skin")
     box = mesh(box_polygons(10, 8, 6))
-    monkeypatch.setattr(pipeline, "ladder", lambda m, lod, tol, deadline, **_: ("refill", box, ["refill: ok"]))
+    monkeypatch.setattr(pipeline, "ladder", lambda m, lod, tol, deadline: ("refill", box, ["refill: ok"]))
     r = repair_building(b, timeout=20).provenance["repair"]
     assert r["stage"] == "refill" and "hollow" not in " ".join(r["geometries"][0]["log"])

@@ -62,20 +62,8 @@ LOCAL = ("cleanup", "orientation", "holefill", "refill")
 GLOBAL = ("roofs", "alphashape", "footprint", "hull")
 DEFAULT_TIMEOUT = 30.0
 #: Seconds the alpha-shape search gets after the budget is spent (the time limit escalates
-#: to a bounded global reconstruction rather than straight to the convex hull), at most.
+#: to a bounded global reconstruction rather than straight to the convex hull).
 GLOBAL_MIN_SECONDS = 25.0
-#: ... and at most this share of the ladder's budget: ``export`` stops a building's job at
-#: ``timeout / 0.8`` (:func:`lod2energy.options.ladder_budget`), a quarter of the ladder's budget
-#: after its deadline; half of that goes to the alpha search, half to what follows it (footprint,
-#: hull, fidelity, the final check, the writers). 25 s after a 24 s deadline overran every 30 s job.
-GLOBAL_GRACE_SHARE = 0.125
-
-
-def grace_seconds(timeout: float) -> float:
-    """Seconds the alpha-shape search may run past the ladder's deadline, for a budget of
-    ``timeout`` s (:data:`GLOBAL_MIN_SECONDS`, :data:`GLOBAL_GRACE_SHARE`)."""
-    return min(GLOBAL_MIN_SECONDS, GLOBAL_GRACE_SHARE * max(float(timeout), 0.0))
-
 
 #: Meshes of :func:`_once` kept per process (a building's few geometries, each a few steps).
 KEPT_STEPS = 16
@@ -97,13 +85,12 @@ def _valid_or_none(m: PolyMesh | None, lod, tol: Tolerances) -> PolyMesh | None:
 # ----------------------------------------------------------------------------- the ladder
 
 def ladder(m: PolyMesh, lod, tol: Tolerances, deadline: float,
-           keep: bool = False, grace: float = GLOBAL_MIN_SECONDS) -> tuple[str, PolyMesh | None, list[str]]:
+           keep: bool = False) -> tuple[str, PolyMesh | None, list[str]]:
     """Run the stages on one shell.
 
     ``keep``: ``m`` is valid as it is (no val3dity code, only the project's energy codes such
     as a sliver): only the local stages may improve it, and when none does the answer is
-    ``("valid", None, log)``, the input kept; a valid input is never replaced. ``grace`` (s):
-    how long the alpha-shape search may run past ``deadline`` (:func:`global_stages`).
+    ``("valid", None, log)``, the input kept; a valid input is never replaced.
 
     Returns
     -------
@@ -184,15 +171,13 @@ def ladder(m: PolyMesh, lod, tol: Tolerances, deadline: float,
     if keep:
         log.append("valid: kept as it is (a valid input is never replaced)")
         return "valid", None, log
-    return global_stages(m0, lod, tol, deadline, log, grace)
+    return global_stages(m0, lod, tol, deadline, log)
 
 
-def global_stages(m0: PolyMesh, lod, tol: Tolerances, deadline: float, log: list[str],
-                  grace: float = GLOBAL_MIN_SECONDS) -> tuple[str, PolyMesh | None, list[str]]:
+def global_stages(m0: PolyMesh, lod, tol: Tolerances, deadline: float,
+                  log: list[str]) -> tuple[str, PolyMesh | None, list[str]]:
     """The global end of the ladder on a cleaned shell: 2.5D roof model, alpha shapes,
-    footprint extrusion, convex hull; "irreparable" when none is valid. The roof model runs
-    before ``deadline`` only; the alpha search until ``deadline`` or ``grace`` s from its start,
-    whichever is later."""
+    footprint extrusion, convex hull; "irreparable" when none is valid."""
     def ok(name, r):
         why = repair_verdict(r, lod, tol)
         log.append(f"{name}: {why or 'ok'}")
@@ -204,7 +189,7 @@ def global_stages(m0: PolyMesh, lod, tol: Tolerances, deadline: float, log: list
             return "roofs", m4r, log
     # escalation: even when the local stages used up the budget, one bounded alpha search
     # runs before the convex hull (which fills courtyards and L-shapes)
-    alpha_deadline = max(deadline, time.monotonic() + grace)
+    alpha_deadline = max(deadline, time.monotonic() + GLOBAL_MIN_SECONDS)
     m4 = alpha_repair(m0, tol, deadline=alpha_deadline,
                       accept=lambda r: not val3dity_codes(r, lod, tol))
     if ok("alphashape", m4):
@@ -292,7 +277,6 @@ def _repair_building(b: Building, tol: Tolerances, timeout: float, merge_parts: 
                      lod: str | None) -> Building:
     t0 = time.monotonic()
     deadline = t0 + timeout
-    grace = grace_seconds(timeout)
     targets = _targets(b, lod)
     lookup = {}
     for i, p in enumerate(b.vertices):
@@ -336,11 +320,11 @@ def _repair_building(b: Building, tol: Tolerances, timeout: float, merge_parts: 
             res = res if stage == "hull" else None
             log = ["timeout: jumped to the convex hull"] + ([f"hull: {verdict}"] if verdict else [])
         elif valid:
-            stage, res, log = ladder(m, g.lod, tol, deadline, keep=True, grace=grace)
+            stage, res, log = ladder(m, g.lod, tol, deadline, keep=True)
         else:
-            stage, res, log = ladder(m, g.lod, tol, deadline, grace=grace)
+            stage, res, log = ladder(m, g.lod, tol, deadline)
             stage, res, log = not_hollow(  # a hollow result goes further up the ladder
-                m, stage, res, log, lambda: global_stages(_once(cleanup, m, tol), g.lod, tol, deadline, [], grace),
+                m, stage, res, log, lambda: global_stages(_once(cleanup, m, tol), g.lod, tol, deadline, []),
                 lambda: _valid_or_none(convex_hull(_once(cleanup, m, tol)), g.lod, tol),
                 closed_volume(snap_vertices(m, tol.snap_tol)))
         entry["log"] = log
@@ -358,7 +342,7 @@ def _repair_building(b: Building, tol: Tolerances, timeout: float, merge_parts: 
             fid = fidelity(m, res, input_closed, env)
             if stage == "refill" and fid["iou"] < REFILL_MIN_IOU and not valid:
                 # the cut took a large part of the shell with it: a global stage may keep more
-                gstage, gres, glog = global_stages(_once(cleanup, m, tol), g.lod, tol, deadline, [], grace)
+                gstage, gres, glog = global_stages(_once(cleanup, m, tol), g.lod, tol, deadline, [])
                 if gres is not None:
                     gres = compact(gres)
                     gclosed, genv = _envelope(m, gres, gstage, tol)
