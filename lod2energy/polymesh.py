@@ -220,13 +220,13 @@ def edge_faces(faces) -> dict[tuple[int, int], list[tuple[int, int]]]:
     """Undirected edge ``(min, max)`` -> list of ``(face_index, +1 if min->max else -1)``."""
     inc: dict[tuple[int, int], list[tuple[int, int]]] = defaultdict(list)
     for fi, f in enumerate(faces):
-        for a, b in f.edges():
-            if a == b:
-                continue
-            if a < b:
-                inc[(a, b)].append((fi, 1))
-            else:
-                inc[(b, a)].append((fi, -1))
+        fwd, bwd = (fi, 1), (fi, -1)
+        for r in f.rings:  # the edges of Face.edges, in its order, without a generator
+            for a, b in zip(r, r[1:] + r[:1]):
+                if a < b:
+                    inc[(a, b)].append(fwd)
+                elif a > b:
+                    inc[(b, a)].append(bwd)
     return inc
 
 

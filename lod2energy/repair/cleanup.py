@@ -93,45 +93,97 @@ def split_t_junctions(m: PolyMesh, tol: float, min_gap: float = 0.001) -> PolyMe
         Largest distance of a vertex to the edge.
     min_gap : float, m
         The vertex must be farther than this from both ends of the edge (the snap tolerance).
+
+    Notes
+    -----
+    One batched ball query over every edge (balls :data:`_PREFILTER` wider than the edge's own)
+    finds the few edges with a vertex near them besides their ends; only those are tested
+    exactly (:func:`_on_edge`). An edge whose ball holds its two ends alone gets no vertex.
     """
     V = m.vertices
     used = np.array(sorted({i for f in m.faces for r in f.rings for i in r}), dtype=np.int64)
     if len(used) < 3:
         return m
-    P = V[used]
     from scipy.spatial import cKDTree
-    tree = cKDTree(P)
-    changed = False
-    faces = []
+    tree = cKDTree(V[used])
+    A = [a for f in m.faces for r in f.rings for a in r]
+    B = [b for f in m.faces for r in f.rings for b in r[1:] + r[:1]]
+    if not A:
+        return m
+    A, B = np.asarray(A, dtype=np.int64), np.asarray(B, dtype=np.int64)
+    E = V[B] - V[A]
+    L = np.sqrt(np.einsum("ij,ij->i", E, E))
+    inserted = {}
+    for k in _near_edges(V, used, tree, A, B, E, L, tol, min_gap).tolist():
+        ids = _on_edge(V, used, tree, int(A[k]), int(B[k]), tol, min_gap)
+        if ids:
+            inserted[k] = ids
+    if not inserted:
+        return m
+    faces, k = [], 0
     for f in m.faces:
         rings = []
         for r in f.rings:
             new = []
-            n = len(r)
-            for i in range(n):
-                a, b = r[i], r[(i + 1) % n]
+            for a in r:
                 new.append(a)
-                pa, pb = V[a], V[b]
-                e = pb - pa
-                L = float(np.linalg.norm(e))
-                if L <= 2 * min_gap:
-                    continue
-                cand = tree.query_ball_point((pa + pb) / 2, L / 2 + tol)
-                if len(cand) <= 2:
-                    continue
-                ids = used[cand]
-                Q = V[ids]
-                t = (Q - pa) @ e / (L * L)
-                d = np.linalg.norm(pa + t[:, None] * e - Q, axis=1)
-                ok = (d <= tol) & (t * L > min_gap) & ((1 - t) * L > min_gap) & (ids != a) & (ids != b)
-                if ok.any():
-                    sel = np.flatnonzero(ok)
-                    sel = sel[np.argsort(t[sel], kind="stable")]
-                    new.extend(int(ids[k]) for k in sel)
-                    changed = True
+                if k in inserted:
+                    new.extend(inserted[k])
+                k += 1
             rings.append(clean_ring(tuple(new)))
         faces.append(Face(tuple(rings), f.source, f.semantic))
-    return m.with_faces(faces) if changed else m
+    return m.with_faces(faces)
+
+
+#: Slack of :func:`_near_edges`, m: covers the rounding by which the batched lengths and
+#: distances may differ from the ones :func:`_on_edge` computes edge by edge.
+_PREFILTER = 1e-9
+
+
+def _near_edges(V, used, tree, A, B, E, L, tol: float, min_gap: float) -> np.ndarray:
+    """Indices of the edges ``A[k] B[k]`` (vectors ``E``, lengths ``L``) that may have a vertex
+    of ``used`` on them: :func:`_on_edge`'s test for all edges at once, :data:`_PREFILTER`
+    looser (a superset of the edges it finds a vertex on)."""
+    long = np.flatnonzero(L > 2 * min_gap - _PREFILTER)
+    if not len(long):
+        return long
+    C = (V[A[long]] + V[B[long]]) / 2
+    hits = tree.query_ball_point(C, L[long] / 2 + tol + _PREFILTER, return_sorted=False)
+    n = np.fromiter((len(h) for h in hits), dtype=np.int64, count=len(hits))
+    busy = np.flatnonzero(n > 2)  # more than the edge's two ends
+    if not len(busy):
+        return busy
+    k = np.repeat(long[busy], n[busy])
+    ids = used[np.concatenate([np.asarray(hits[i], dtype=np.int64) for i in busy])]
+    pa, e, Lk = V[A[k]], E[k], L[k]
+    t = np.einsum("ij,ij->i", V[ids] - pa, e) / (Lk * Lk)
+    d = np.linalg.norm(pa + t[:, None] * e - V[ids], axis=1)
+    ok = (d <= tol + _PREFILTER) & (t * Lk > min_gap - _PREFILTER) & ((1 - t) * Lk > min_gap - _PREFILTER) \
+        & (ids != A[k]) & (ids != B[k])
+    return np.unique(k[ok])
+
+
+def _on_edge(V: np.ndarray, used: np.ndarray, tree, a: int, b: int, tol: float, min_gap: float) -> list[int]:
+    """The vertices of ``used`` on edge ``a b`` (within ``tol``, farther than ``min_gap`` from
+    both ends), in order from ``a``."""
+    pa, pb = V[a], V[b]
+    e = pb - pa
+    L = float(np.linalg.norm(e))
+    if L <= 2 * min_gap:
+        return []
+    cand = tree.query_ball_point((pa + pb) / 2, L / 2 + tol)
+    if len(cand) <= 2:
+        return []
+    ids = used[cand]
+    Q = V[ids]
+    t = (Q - pa) @ e / (L * L)
+    d = np.linalg.norm(pa + t[:, None] * e - Q, axis=1)
+    ok = (d <= tol) & (t * L > min_gap) & ((1 - t) * L > min_gap) & (ids != a) & (ids != b)
+    if not ok.any():
+        return []
+    sel = np.flatnonzero(ok)
+    sel = sel[np.argsort(t[sel], kind="stable")]
+    return [int(ids[k]) for k in sel]
 
 
 def _same_cycle(r1, r2) -> bool:

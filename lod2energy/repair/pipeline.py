@@ -28,6 +28,7 @@ from typing import Iterable, Iterator, Mapping
 
 import numpy as np
 
+from lod2energy import cache
 from lod2energy.config import DEFAULT, Tolerances
 from lod2energy.model import (
     BUILDING_TYPES, Building, FeatureError, Geometry, frozen_mapping,
@@ -64,6 +65,18 @@ DEFAULT_TIMEOUT = 30.0
 #: to a bounded global reconstruction rather than straight to the convex hull).
 GLOBAL_MIN_SECONDS = 25.0
 
+#: Meshes of :func:`_once` kept per process (a building's few geometries, each a few steps).
+KEPT_STEPS = 16
+
+
+def _once(step, m: PolyMesh, tol: Tolerances) -> PolyMesh:
+    """``step(m, tol)`` (:func:`cleanup`, :func:`close`) once per content of ``m``: the ladder, the
+    global stages it may be re-entered at and the fidelity's envelope (:func:`_envelope`, the
+    ladder's hole-filled input again) all clean the same input; kept in ``cache``'s table
+    ``repair.ladder-steps``."""
+    key = (step.__name__, cache.digest(m.vertices, m.faces, tol))
+    return cache.remember("repair.ladder-steps", key, lambda: step(m, tol), KEPT_STEPS)
+
 
 def _valid_or_none(m: PolyMesh | None, lod, tol: Tolerances) -> PolyMesh | None:
     return m if is_repaired(m, lod, tol) else None
@@ -97,16 +110,16 @@ def ladder(m: PolyMesh, lod, tol: Tolerances, deadline: float,
     def late():
         return time.monotonic() > deadline
 
-    m0 = cleanup(m, tol)
+    m0 = _once(cleanup, m, tol)
     if ok("cleanup", m0):
         return "cleanup", m0, log
     m1 = orient(m0)
     if ok("orientation", m1):
         return "orientation", m1, log
-    m2 = close(m1, tol)
+    m2 = _once(close, m1, tol)
     if not topology(m2).boundary and shell_defects([m2], tol, first_only=True)[0]:
         # filled faces may leave new slivers or T-junctions: one more clean-up round
-        m2b = close(cleanup(m2, tol), tol)
+        m2b = _once(close, _once(cleanup, m2, tol), tol)
         if ok("holefill", m2b):
             return "holefill", m2b, log
     if ok("holefill", m2):
@@ -122,7 +135,7 @@ def ladder(m: PolyMesh, lod, tol: Tolerances, deadline: float,
             if u is None:
                 continue
             first = first or u
-            for cand in (u, close(cleanup(u, tol), tol)):
+            for cand in (u, _once(close, _once(cleanup, u, tol), tol)):
                 if accept(cand):
                     m3 = cand
                     break
@@ -301,7 +314,7 @@ def _repair_building(b: Building, tol: Tolerances, timeout: float, merge_parts: 
             stage, res, log = "irreparable", None, [why]
             entry["error"] = why
         elif time.monotonic() > deadline:
-            res = convex_hull(cleanup(m, tol))
+            res = convex_hull(_once(cleanup, m, tol))
             verdict = repair_verdict(res, g.lod, tol)
             stage = "hull" if verdict is None else "irreparable"
             res = res if stage == "hull" else None
@@ -311,8 +324,8 @@ def _repair_building(b: Building, tol: Tolerances, timeout: float, merge_parts: 
         else:
             stage, res, log = ladder(m, g.lod, tol, deadline)
             stage, res, log = not_hollow(  # a hollow result goes further up the ladder
-                m, stage, res, log, lambda: global_stages(cleanup(m, tol), g.lod, tol, deadline, []),
-                lambda: _valid_or_none(convex_hull(cleanup(m, tol)), g.lod, tol),
+                m, stage, res, log, lambda: global_stages(_once(cleanup, m, tol), g.lod, tol, deadline, []),
+                lambda: _valid_or_none(convex_hull(_once(cleanup, m, tol)), g.lod, tol),
                 closed_volume(snap_vertices(m, tol.snap_tol)))
         entry["log"] = log
         if stage == "valid":
@@ -329,7 +342,7 @@ def _repair_building(b: Building, tol: Tolerances, timeout: float, merge_parts: 
             fid = fidelity(m, res, input_closed, env)
             if stage == "refill" and fid["iou"] < REFILL_MIN_IOU and not valid:
                 # the cut took a large part of the shell with it: a global stage may keep more
-                gstage, gres, glog = global_stages(cleanup(m, tol), g.lod, tol, deadline, [])
+                gstage, gres, glog = global_stages(_once(cleanup, m, tol), g.lod, tol, deadline, [])
                 if gres is not None:
                     gres = compact(gres)
                     gclosed, genv = _envelope(m, gres, gstage, tol)
@@ -413,7 +426,7 @@ def _envelope(m: PolyMesh, res: PolyMesh, stage: str, tol: Tolerances) -> tuple[
         return True, orient(s)
     if stage in ("cleanup", "orientation", "holefill"):
         return False, res  # the result is the input with its holes filled
-    env = close(orient(cleanup(m, tol)), tol)
+    env = _once(close, orient(_once(cleanup, m, tol)), tol)
     t = topology(env)
     if t.boundary or t.nonmanifold or t.nm_vertices:
         return False, None
