@@ -214,37 +214,40 @@ def storeys_from_attributes(b: Building, amap: AttributeMap | None = None
     return (f.value, f.key, f.raw) if f is not None else (None, None, None)
 
 
-def _surfaces(b: Building, lod: str | None, object_id: str | None = None):
+def _surfaces(b: Building, lod: str | None):
+    """``(object id, semantic type, outer ring (n, 3) m)`` of every surface of ``b``'s envelope."""
     for o, _, g in b.envelope(lod):
-        if object_id is not None and o.id != object_id:
-            continue
         for _, hi, _, s in g.iter_surfaces():
             if hi > 0:
                 continue
-            yield g.semantic_type(s), b.vertices[np.asarray(s.outer, dtype=np.intp)]
+            yield o.id, g.semantic_type(s), b.vertices[np.asarray(s.outer, dtype=np.intp)]
 
 
 def part_levels(b: Building, lod: str | None = None) -> dict[str, RoofLevels]:
-    """:func:`roof_levels` of each Building/BuildingPart of ``b``'s envelope, by object id."""
-    out = {}
-    for o, _, _ in b.envelope(lod):
-        if o.id not in out:
-            lv = roof_levels(b, lod, o.id)
-            if lv is not None:
-                out[o.id] = lv
-    return out
+    """:func:`roof_levels` of each Building/BuildingPart of ``b``'s envelope, by object id (one
+    pass over the surfaces)."""
+    by_part: dict[str, list] = {}
+    for oid, kind, p in _surfaces(b, lod):
+        by_part.setdefault(oid, []).append((kind, p))
+    levels = {oid: levels_of(surfaces) for oid, surfaces in by_part.items()}
+    return {oid: lv for oid, lv in levels.items() if lv is not None}
 
 
-def roof_levels(b: Building, lod: str | None = None, object_id: str | None = None) -> RoofLevels | None:
-    """Ground, eave and ridge heights of ``b`` (of its object ``object_id`` only, when given)
-    from its labelled surfaces (None without geometry).
+def roof_levels(b: Building, lod: str | None = None) -> RoofLevels | None:
+    """Ground, eave and ridge heights of ``b`` from its labelled surfaces (None without
+    geometry): :func:`levels_of` its surfaces."""
+    return levels_of((kind, p) for _, kind, p in _surfaces(b, lod))
+
+
+def levels_of(surfaces) -> RoofLevels | None:
+    """Ground, eave and ridge heights of ``(semantic type, outer ring (n, 3) m)`` surfaces (None
+    when none is usable).
 
     Faces without a semantic label count as roof when they face up (n_z > 0.1) and are not the
     lowest horizontal face.
     """
-
     ground_z, all_z, roofs = [], [], []
-    for kind, p in _surfaces(b, lod, object_id):
+    for kind, p in surfaces:
         if len(p) < 3 or not np.all(np.isfinite(p)):
             continue
         all_z.append(p[:, 2])
